@@ -1,0 +1,42 @@
+#pragma once
+// Where each panel goes in the main window. Pure arithmetic, so it is unit-tested without a
+// window: the viewer feeds it the window size and the user's splitter positions.
+
+namespace lenslab::app {
+
+struct Rect {
+  float x = 0, y = 0, width = 0, height = 0;
+  float right() const { return x + width; }
+  float bottom() const { return y + height; }
+};
+
+// The user's splitter positions, as fractions of the window so they survive a resize.
+// Persisted in the settings file.
+struct LayoutFractions {
+  float lensTableWidth = 0.30f;  // left column (lens table) share of the width
+  float previewWidth = 0.36f;    // right column (render preview) share of the width
+  float logHeight = 0.20f;       // bottom strip (log) share of the height below the menu
+};
+
+struct PanelLayout {
+  Rect lensTable;
+  Rect crossSection;
+  Rect renderPreview;
+  Rect log;
+  // The draggable gaps between panels.
+  Rect leftSplitter;    // between lens table and cross-section
+  Rect rightSplitter;   // between cross-section and preview
+  Rect bottomSplitter;  // between the upper panels and the log
+};
+
+inline constexpr float kSplitterThickness = 6.0f;
+inline constexpr float kMinPanelExtent = 80.0f;
+
+// Keeps each fraction within what leaves every panel at least kMinPanelExtent wide/high.
+LayoutFractions clampFractions(LayoutFractions fractions, float width, float height);
+
+// With includeLog false the upper panels take the whole height and the log rects are empty.
+PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,
+                          const LayoutFractions& fractions, bool includeLog = true);
+
+}  // namespace lenslab::app

@@ -1,0 +1,72 @@
+#include "app/settings.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+namespace lenslab::app {
+
+std::filesystem::path configDirectory() {
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg != nullptr && *xdg != '\0') {
+    return std::filesystem::path(xdg) / "lenslab";
+  }
+  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
+    return std::filesystem::path(home) / ".config" / "lenslab";
+  }
+  return {};
+}
+
+Settings loadSettings(const std::filesystem::path& file, std::string* warning) {
+  Settings settings;
+  std::ifstream input(file);
+  if (!input) return settings;  // first run: defaults, nothing to warn about
+  try {
+    const nlohmann::json json = nlohmann::json::parse(input);
+    const Settings defaults;
+    settings.windowWidth = json.value("window_width", defaults.windowWidth);
+    settings.windowHeight = json.value("window_height", defaults.windowHeight);
+    if (const auto layout = json.find("layout"); layout != json.end() && layout->is_object()) {
+      settings.layout.lensTableWidth =
+          layout->value("lens_table_width", defaults.layout.lensTableWidth);
+      settings.layout.previewWidth = layout->value("preview_width", defaults.layout.previewWidth);
+      settings.layout.logHeight = layout->value("log_height", defaults.layout.logHeight);
+    }
+    settings.recentFiles = json.value("recent_files", std::vector<std::string>{});
+    if (settings.windowWidth < 200 || settings.windowHeight < 150) {
+      settings.windowWidth = defaults.windowWidth;
+      settings.windowHeight = defaults.windowHeight;
+    }
+  } catch (const nlohmann::json::exception& error) {
+    if (warning) *warning = file.string() + ": ignored unreadable settings (" + error.what() + ")";
+    return Settings{};
+  }
+  return settings;
+}
+
+std::string saveSettings(const std::filesystem::path& file, const Settings& settings) {
+  const nlohmann::json json = {
+      {"window_width", settings.windowWidth},
+      {"window_height", settings.windowHeight},
+      {"layout",
+       {{"lens_table_width", settings.layout.lensTableWidth},
+        {"preview_width", settings.layout.previewWidth},
+        {"log_height", settings.layout.logHeight}}},
+      {"recent_files", settings.recentFiles},
+  };
+  std::error_code error;
+  std::filesystem::create_directories(file.parent_path(), error);
+  if (error) return "cannot create " + file.parent_path().string() + ": " + error.message();
+  std::filesystem::path temporary = file;
+  temporary += ".tmp";
+  {
+    std::ofstream output(temporary, std::ios::trunc);
+    output << json.dump(2) << '\n';
+    if (!output) return "cannot write " + temporary.string();
+  }
+  std::filesystem::rename(temporary, file, error);
+  if (error) return "cannot write " + file.string() + ": " + error.message();
+  return {};
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,30 @@
+#pragma once
+// The viewer's persistent settings: window size, panel layout and recent files. They live in
+// the user's config directory ($XDG_CONFIG_HOME/lenslab, else ~/.config/lenslab), never in the
+// current directory.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/layout.h"
+
+namespace lenslab::app {
+
+struct Settings {
+  int windowWidth = 1600;
+  int windowHeight = 900;
+  LayoutFractions layout;
+  std::vector<std::string> recentFiles;  // most recent first
+};
+
+// $XDG_CONFIG_HOME/lenslab, else $HOME/.config/lenslab; empty when neither is set.
+std::filesystem::path configDirectory();
+
+// Missing or unreadable files give defaults; `warning` says why when the file was unusable.
+Settings loadSettings(const std::filesystem::path& file, std::string* warning);
+
+// Writes atomically (temporary file, then rename). Returns an error message, or "" on success.
+std::string saveSettings(const std::filesystem::path& file, const Settings& settings);
+
+}  // namespace lenslab::app

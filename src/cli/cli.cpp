@@ -1,0 +1,81 @@
+#include "cli/cli.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "app/viewer.h"
+#include "cli/size_argument.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+constexpr int kUsageError = 2;
+
+struct ViewerArguments {
+  std::string lensPath;
+  std::string scenePath;
+  std::string screenshotPath;
+  int frames = 10;
+  std::string size;
+};
+
+void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
+  app.add_option("--lens", arguments.lensPath, "Lens file to open (.dat)")->check(CLI::ExistingFile);
+  app.add_option("--scene", arguments.scenePath, "Scene file to open (.pbrt)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--screenshot", arguments.screenshotPath,
+                 "Draw --frames frames, save the window as this PNG, and exit");
+  app.add_option("--frames", arguments.frames, "Frames to draw before --screenshot (default 10)")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--size", arguments.size, "Window size WIDTHxHEIGHT, e.g. 1280x800");
+}
+
+int runViewer(const ViewerArguments& arguments) {
+  app::ViewerOptions options;
+  options.lensPath = arguments.lensPath;
+  options.scenePath = arguments.scenePath;
+  options.frames = arguments.frames;
+  if (!arguments.screenshotPath.empty()) options.screenshotPath = arguments.screenshotPath;
+  if (!arguments.size.empty()) {
+    std::string error;
+    const auto size = parsePixelSize(arguments.size, &error);
+    if (!size) {
+      std::fprintf(stderr, "lenslab: --size: %s\n", error.c_str());
+      return kUsageError;
+    }
+    options.width = size->width;
+    options.height = size->height;
+  }
+  return app::runViewer(options);
+}
+
+}  // namespace
+
+int run(int argc, char** argv) {
+  CLI::App app{"lenslab: see what a real camera lens does", "lenslab"};
+  app.set_version_flag("--version", std::string("lenslab ") + LENSLAB_VERSION);
+  app.footer(
+      "With no subcommand, opens the viewer (needs a display).\n"
+      "Headless: lenslab SUBCOMMAND --help for each subcommand.");
+  ViewerArguments viewerArguments;
+  addViewerOptions(app, viewerArguments);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForVersion& version) {
+    return app.exit(version);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
+    return kUsageError;
+  }
+  return runViewer(viewerArguments);
+}
+
+}  // namespace lenslab::cli

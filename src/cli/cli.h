@@ -1,0 +1,9 @@
+#pragma once
+
+namespace lenslab::cli {
+
+// Parses the command line and runs the viewer or a headless subcommand; returns the exit code.
+// Usage errors exit 2 after printing the usage message.
+int run(int argc, char** argv);
+
+}  // namespace lenslab::cli

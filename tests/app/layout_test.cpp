@@ -1,0 +1,38 @@
+#include "app/layout.h"
+
+#include <gtest/gtest.h>
+
+namespace lenslab::app {
+namespace {
+
+TEST(Layout, PanelsTileTheWindowBelowTheMenuWithoutOverlap) {
+  const PanelLayout layout = computeLayout(1600, 900, 22, LayoutFractions{});
+  EXPECT_FLOAT_EQ(layout.lensTable.y, 22);
+  EXPECT_FLOAT_EQ(layout.lensTable.x, 0);
+  EXPECT_FLOAT_EQ(layout.crossSection.x, layout.leftSplitter.right());
+  EXPECT_FLOAT_EQ(layout.renderPreview.x, layout.rightSplitter.right());
+  EXPECT_FLOAT_EQ(layout.renderPreview.right(), 1600);
+  EXPECT_FLOAT_EQ(layout.log.y, layout.bottomSplitter.bottom());
+  EXPECT_FLOAT_EQ(layout.log.bottom(), 900);
+  EXPECT_FLOAT_EQ(layout.lensTable.bottom(), layout.bottomSplitter.y);
+  EXPECT_NEAR(layout.lensTable.width, 0.30f * 1600, 1e-3);
+  EXPECT_GT(layout.crossSection.width, 400);
+}
+
+TEST(Layout, ExtremeFractionsStillLeaveEveryPanelVisible) {
+  LayoutFractions fractions{0.95f, 0.95f, 0.99f};
+  const PanelLayout layout = computeLayout(1000, 700, 20, fractions);
+  for (const Rect& panel : {layout.lensTable, layout.crossSection, layout.renderPreview, layout.log}) {
+    EXPECT_GE(panel.width, kMinPanelExtent / 2);
+    EXPECT_GE(panel.height, kMinPanelExtent / 2 - 1);
+  }
+}
+
+TEST(Layout, WithoutTheLogTheUpperPanelsTakeTheWholeHeight) {
+  const PanelLayout layout = computeLayout(1200, 800, 20, LayoutFractions{}, false);
+  EXPECT_FLOAT_EQ(layout.crossSection.bottom(), 800);
+  EXPECT_FLOAT_EQ(layout.log.height, 0);
+}
+
+}  // namespace
+}  // namespace lenslab::app

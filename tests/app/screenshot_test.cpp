@@ -1,0 +1,97 @@
+// Opens the real viewer under Xvfb (this executable runs inside tests/app/with-xvfb) and checks
+// pixels of its --screenshot output against the layout the viewer promises.
+
+#include <gtest/gtest.h>
+
+#include "app/layout.h"
+#include "support/png_image.h"
+#include "support/run_process.h"
+
+namespace lenslab {
+namespace {
+
+using testing::Rgb;
+
+// Dear ImGui's dark style (imgui 1.86 StyleColorsDark) and the viewer's own canvas colours.
+constexpr Rgb kMenuBar{36, 36, 36};
+constexpr Rgb kTitleBar{10, 10, 10};
+constexpr Rgb kTitleBarActive{41, 74, 122};
+constexpr Rgb kCrossSectionCanvas{18, 20, 26};
+constexpr Rgb kPreviewCanvas{0, 0, 0};
+
+class ViewerScreenshot : public ::testing::Test {
+ protected:
+  testing::PngImage shoot(const std::string& size) {
+    const auto png = scratch / "window.png";
+    const auto result = testing::runProcess(std::string("'") + LENSLAB_BINARY +
+                                                "' --screenshot '" + png.string() +
+                                                "' --frames 5 --size " + size,
+                                            scratch);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    return testing::PngImage::load(png);
+  }
+  // The menu bar's height: a one-pixel border row, rows of the bar colour (checked at the right
+  // edge, away from labels), and one border row below.
+  static int menuBarHeight(const testing::PngImage& image) {
+    int row = 1;
+    while (row < image.height && image.at(image.width - 3, row).maxDifference(kMenuBar) <= 3) {
+      ++row;
+    }
+    return row == 1 ? 0 : row + 1;
+  }
+  std::filesystem::path scratch = testing::makeTestDirectory("shot");
+};
+
+TEST_F(ViewerScreenshot, HasTheRequestedSizeAndIsNotASingleColour) {
+  const testing::PngImage image = shoot("1024x640");
+  ASSERT_TRUE(image.valid());
+  EXPECT_EQ(image.width, 1024);
+  EXPECT_EQ(image.height, 640);
+  EXPECT_GT(image.distinctColours(), 20u);
+}
+
+TEST_F(ViewerScreenshot, DrawsTheMenuBarWithItsLabels) {
+  const testing::PngImage image = shoot("1280x800");
+  ASSERT_TRUE(image.valid());
+  const int menu = menuBarHeight(image);
+  EXPECT_GE(menu, 15);
+  EXPECT_LE(menu, 40);
+  // Most of the bar is the bar colour; the left part holds bright label text (File, Lens, ...).
+  EXPECT_GT(image.fractionNear(0, 0, image.width, menu, kMenuBar, 3), 0.85);
+  int brightLabelPixels = 0;
+  for (int y = 0; y < menu; ++y) {
+    for (int x = 0; x < 200; ++x) brightLabelPixels += image.at(x, y).brightness() > 150;
+  }
+  EXPECT_GT(brightLabelPixels, 40);
+}
+
+TEST_F(ViewerScreenshot, DrawsEachPanelWhereTheLayoutPutsIt) {
+  const testing::PngImage image = shoot("1280x800");
+  ASSERT_TRUE(image.valid());
+  const int menu = menuBarHeight(image);
+  const app::PanelLayout layout =
+      app::computeLayout(1280, 800, static_cast<float>(menu), app::LayoutFractions{});
+  const auto isTitleBar = [&](const app::Rect& panel) {
+    const Rgb colour = image.at(static_cast<int>(panel.x + panel.width - 10),
+                                static_cast<int>(panel.y + 6));
+    return colour.maxDifference(kTitleBar) <= 3 || colour.maxDifference(kTitleBarActive) <= 3;
+  };
+  EXPECT_TRUE(isTitleBar(layout.lensTable));
+  EXPECT_TRUE(isTitleBar(layout.crossSection));
+  EXPECT_TRUE(isTitleBar(layout.renderPreview));
+  EXPECT_TRUE(isTitleBar(layout.log));
+
+  const auto interiorFraction = [&](const app::Rect& panel, Rgb colour) {
+    return image.fractionNear(static_cast<int>(panel.x + 20), static_cast<int>(panel.y + 40),
+                              static_cast<int>(panel.right() - 20),
+                              static_cast<int>(panel.bottom() - 20), colour, 3);
+  };
+  EXPECT_GT(interiorFraction(layout.crossSection, kCrossSectionCanvas), 0.9);
+  EXPECT_GT(interiorFraction(layout.renderPreview, kPreviewCanvas), 0.9);
+  // Neither canvas leaks into the lens table.
+  EXPECT_LT(interiorFraction(layout.lensTable, kCrossSectionCanvas), 0.05);
+  EXPECT_LT(interiorFraction(layout.lensTable, kPreviewCanvas), 0.05);
+}
+
+}  // namespace
+}  // namespace lenslab
