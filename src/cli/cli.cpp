@@ -6,7 +6,10 @@
 #include <string>
 
 #include "app/viewer.h"
+#include "cli/focus_command.h"
+#include "cli/info_command.h"
 #include "cli/size_argument.h"
+#include "cli/subcommand.h"
 
 namespace lenslab::cli {
 
@@ -62,6 +65,9 @@ int run(int argc, char** argv) {
       "Headless: lenslab SUBCOMMAND --help for each subcommand.");
   ViewerArguments viewerArguments;
   addViewerOptions(app, viewerArguments);
+  SubcommandRunner subcommand;  // set when a headless subcommand was named
+  addInfoCommand(app, subcommand);
+  addFocusCommand(app, subcommand);
 
   try {
     app.parse(argc, argv);
@@ -75,6 +81,7 @@ int run(int argc, char** argv) {
     std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
     return kUsageError;
   }
+  if (subcommand) return subcommand();
   return runViewer(viewerArguments);
 }
 

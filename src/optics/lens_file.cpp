@@ -88,7 +88,7 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
     std::string_view data = line.substr(0, hash);
     for (std::size_t i = 0; i < line.size(); ++i) {
       const unsigned char ch = static_cast<unsigned char>(line[i]);
-      if (ch == 0 || (ch < 32 && !isBlank(line[i]) && i < data.size()))
+      if (ch == 0 || ((ch < 32 || ch == 127) && !isBlank(line[i]) && i < data.size()))
         return fail(lineNumber, static_cast<int>(i) + 1,
                     "unexpected control character (is this a binary file?)");
     }
