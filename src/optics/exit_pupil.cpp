@@ -250,7 +250,24 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     }
     for (auto& c : b.cdf) c /= total;
     b.cdf[kSectors - 1] = 1.0;
+    for (int k = 0; k < kSectors; ++k) {
+      const double width = b.cdf[k] - (k == 0 ? 0.0 : b.cdf[k - 1]);
+      b.invWidth[k] = width > 0.0 ? 1.0 / width : 0.0;
+    }
     b.areaMm2 = total;
+    b.invAreaPerMm2 = 1.0 / total;
+  }
+  // Empty bins take the centre of the nearest non-empty bin (used by the centre interpolation).
+  for (int pass = 0; pass < 2; ++pass) {
+    int last = -1;
+    for (int step = 0; step < radialBins; ++step) {
+      const int j = pass == 0 ? step : radialBins - 1 - step;
+      if (!bins_[j].empty) {
+        last = j;
+      } else if (last >= 0 && (pass == 0 || bins_[j].centreXMm == 0.0)) {
+        bins_[j].centreXMm = bins_[last].centreXMm;
+      }
+    }
   }
 }
 
@@ -269,9 +286,7 @@ ExitPupilTable::Lookup ExitPupilTable::lookup(double r) const {
   out.f = std::clamp(t - out.j, 0.0, 1.0);
   const Bin& b0 = bins_[out.j];
   const Bin& b1 = bins_[out.j + 1];
-  out.centreX = b0.empty   ? b1.centreXMm
-                : b1.empty ? b0.centreXMm
-                           : (1.0 - out.f) * b0.centreXMm + out.f * b1.centreXMm;
+  out.centreX = (1.0 - out.f) * b0.centreXMm + out.f * b1.centreXMm;  // as in sample()
   return out;
 }
 
@@ -298,8 +313,8 @@ bool ExitPupilTable::inside(const Bin& b, double centreX, double x, double y) co
 double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
   const double r = std::sqrt(film.x * film.x + film.y * film.y);
   if (bins_.empty() || r > filmRadiusMaxMm_) {
-    if (point.x * point.x + point.y * point.y > fallbackRadiusMm_ * fallbackRadiusMm_) return 0.0;
-    return 1.0 / (std::numbers::pi * fallbackRadiusMm_ * fallbackRadiusMm_);
+    if (std::abs(point.x) > fallbackRadiusMm_ || std::abs(point.y) > fallbackRadiusMm_) return 0.0;
+    return 1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_);
   }
   double c = 1.0, sn = 0.0;
   if (r > 0.0) {
@@ -318,48 +333,45 @@ std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u)
   const double r = std::sqrt(film.x * film.x + film.y * film.y);
   if (bins_.empty() || r > filmRadiusMaxMm_) {
     if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return std::nullopt;
-    // Outside the table: uniform over the disk the table search covered (concentric mapping
-    // would do as well; polar is enough here).
-    const double radius = fallbackRadiusMm_ * std::sqrt(u.x);
-    const double angle = 2.0 * std::numbers::pi * u.y;
-    return PupilSample{{radius * std::cos(angle), radius * std::sin(angle), planeZMm_},
-                       1.0 / (std::numbers::pi * fallbackRadiusMm_ * fallbackRadiusMm_)};
+    // Outside the table: uniform over the square around the disk the table search covered
+    // (no trigonometry; rays through the corners are simply blocked).
+    const double half = fallbackRadiusMm_;
+    return PupilSample{{half * (2.0 * u.x - 1.0), half * (2.0 * u.y - 1.0), planeZMm_},
+                       1.0 / (4.0 * half * half)};
   }
-  const auto [j, f, centreX] = lookup(r);
+  // Written without unpredictable branches: the renderer calls this for every camera ray.
+  const double x = r / filmRadiusMaxMm_;
+  const double t = 0.5 * (x + x * x) * binScale_;
+  const int j = std::min(static_cast<int>(t), static_cast<int>(bins_.size()) - 2);
+  const double f = std::clamp(t - j, 0.0, 1.0);
   const Bin& b0 = bins_[j];
   const Bin& b1 = bins_[j + 1];
-  double ux = u.x;
-  const Bin* chosen;
-  if (ux < 1.0 - f) {
-    chosen = &b0;
-    ux /= (1.0 - f);
-  } else {
-    chosen = &b1;
-    ux = (ux - (1.0 - f)) / f;
-  }
-  if (chosen->empty) return std::nullopt;
-  ux = std::min(ux, 0.99999999999);
-  const int k = static_cast<int>(std::upper_bound(chosen->cdf.begin(), chosen->cdf.end(), ux) -
-                                 chosen->cdf.begin());
-  const double lo = k == 0 ? 0.0 : chosen->cdf[k - 1];
-  const double width = chosen->cdf[k] - lo;
-  const double w = width > 0.0 ? (ux - lo) / width : 0.5;
+  // Empty bins carry their non-empty neighbour's centre (see the constructor), so the lerp is
+  // always meaningful.
+  const double centreX = (1.0 - f) * b0.centreXMm + f * b1.centreXMm;
+  const bool second = u.x >= 1.0 - f;
+  const Bin& chosen = second ? b1 : b0;
+  if (chosen.empty) return std::nullopt;
+  const double ux =
+      std::min((second ? u.x - (1.0 - f) : u.x) / (second ? f : 1.0 - f), 0.99999999999);
+  // Branch-free binary search: the number of CDF entries <= ux (kSectors = 32).
+  static_assert(kSectors == 32);
+  int k = 0;
+  for (int step = 16; step > 0; step >>= 1) k += chosen.cdf[k + step - 1] <= ux ? step : 0;
+  const double lo = k == 0 ? 0.0 : chosen.cdf[k - 1];
+  const double w = (ux - lo) * chosen.invWidth[k];
   // Uniform in the triangle (centre, A, B): p = centre + sqrt(w) ((1 - v) A + v B).
   const double s = std::sqrt(w);
   const double v = u.y;
-  const double a = (1.0 - v) * chosen->vertexRadiusMm[k];
-  const double bb = v * chosen->vertexRadiusMm[(k + 1) % kSectors];
+  const double a = (1.0 - v) * chosen.vertexRadiusMm[k];
+  const double bb = v * chosen.vertexRadiusMm[(k + 1) & (kSectors - 1)];
   const double lx = centreX + s * (a * cosAt_[k] + bb * cosAt_[k + 1]);
   const double ly = s * (a * sinAt_[k] + bb * sinAt_[k + 1]);
   // Rotate from the bin frame (film point on +x) to the film point's azimuth.
-  double c = 1.0, sn = 0.0;
-  if (r > 0.0) {
-    c = film.x / r;
-    sn = film.y / r;
-  }
-  double pdf = 0.0;
-  if (!b0.empty) pdf += (1.0 - f) / b0.areaMm2;
-  if (!b1.empty) pdf += f / b1.areaMm2;
+  const double invR = r > 0.0 ? 1.0 / r : 0.0;
+  const double c = r > 0.0 ? film.x * invR : 1.0;
+  const double sn = film.y * invR;
+  const double pdf = (1.0 - f) * b0.invAreaPerMm2 + f * b1.invAreaPerMm2;
   return PupilSample{{c * lx - sn * ly, sn * lx + c * ly, planeZMm_}, pdf};
 }
 

@@ -48,7 +48,7 @@ class ExitPupilTable {
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
 
   // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
-  // falls back to the disk of radius fallbackRadiusMm() (1.5 x the rear semi-aperture).
+  // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture).
   double filmRadiusMaxMm() const { return filmRadiusMaxMm_; }
   double fallbackRadiusMm() const { return fallbackRadiusMm_; }
   double planeZMm() const { return planeZMm_; }
@@ -63,7 +63,9 @@ class ExitPupilTable {
     double centreXMm = 0.0;
     std::array<double, kSectors> vertexRadiusMm{};  // polygon vertex k at angle k 2 pi / kSectors
     std::array<double, kSectors> cdf{};             // cumulative area fraction of the triangles
+    std::array<double, kSectors> invWidth{};        // 1 / (cdf[k] - cdf[k - 1])
     double areaMm2 = 0.0;
+    double invAreaPerMm2 = 0.0;  // 0 for an empty bin
   };
   const Bin& bin(int j) const { return bins_[j]; }
 
