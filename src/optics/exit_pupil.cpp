@@ -171,6 +171,40 @@ bool anyPasses(const Probe& probe, double filmR, double domainR) {
 
 }  // namespace
 
+// Walker's alias method (Vose's construction, "A linear algorithm for generating random numbers
+// with a given distribution", IEEE TSE 17(9), 1991): sector k is drawn in O(1) from one uniform.
+static void buildAliasTable(ExitPupilTable::Bin& b) {
+  constexpr int n = ExitPupilTable::kSectors;
+  std::array<double, n> scaled{};
+  std::array<int, n> small{}, large{};
+  int smallCount = 0, largeCount = 0;
+  for (int k = 0; k < n; ++k) {
+    scaled[k] = (b.cdf[k] - (k == 0 ? 0.0 : b.cdf[k - 1])) * n;
+    if (scaled[k] < 1.0)
+      small[smallCount++] = k;
+    else
+      large[largeCount++] = k;
+  }
+  while (smallCount > 0 && largeCount > 0) {
+    const int s = small[--smallCount], l = large[--largeCount];
+    b.aliasProbability[s] = scaled[s];
+    b.alias[s] = l;
+    scaled[l] -= 1.0 - scaled[s];
+    if (scaled[l] < 1.0)
+      small[smallCount++] = l;
+    else
+      large[largeCount++] = l;
+  }
+  for (int i = 0; i < largeCount; ++i) {
+    b.aliasProbability[large[i]] = 1.0;
+    b.alias[large[i]] = large[i];
+  }
+  for (int i = 0; i < smallCount; ++i) {  // rounding leftovers
+    b.aliasProbability[small[i]] = 1.0;
+    b.alias[small[i]] = small[i];
+  }
+}
+
 ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threads) {
   planeZMm_ = lens.rearVertexZ();
   fallbackRadiusMm_ = 1.5 * lens.rearApertureRadiusMm();
@@ -250,9 +284,11 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     }
     for (auto& c : b.cdf) c /= total;
     b.cdf[kSectors - 1] = 1.0;
+    buildAliasTable(b);
     for (int k = 0; k < kSectors; ++k) {
-      const double width = b.cdf[k] - (k == 0 ? 0.0 : b.cdf[k - 1]);
-      b.invWidth[k] = width > 0.0 ? 1.0 / width : 0.0;
+      const double keep = b.aliasProbability[k];
+      b.invAliasProbability[k] = keep > 0.0 ? 1.0 / keep : 0.0;
+      b.invAliasComplement[k] = keep < 1.0 ? 1.0 / (1.0 - keep) : 0.0;
     }
     b.areaMm2 = total;
     b.invAreaPerMm2 = 1.0 / total;
@@ -354,12 +390,16 @@ std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u)
   if (chosen.empty) return std::nullopt;
   const double ux =
       std::min((second ? u.x - (1.0 - f) : u.x) / (second ? f : 1.0 - f), 0.99999999999);
-  // Branch-free binary search: the number of CDF entries <= ux (kSectors = 32).
-  static_assert(kSectors == 32);
-  int k = 0;
-  for (int step = 16; step > 0; step >>= 1) k += chosen.cdf[k + step - 1] <= ux ? step : 0;
-  const double lo = k == 0 ? 0.0 : chosen.cdf[k - 1];
-  const double w = (ux - lo) * chosen.invWidth[k];
+  // Alias method: slot = floor(32 ux); its fractional part decides between the slot's sector and
+  // its alias and is then stretched back to [0, 1) for the position inside the triangle.
+  const double scaled = ux * kSectors;
+  const int slot = std::min(static_cast<int>(scaled), kSectors - 1);
+  const double fraction = scaled - slot;
+  const double keep = chosen.aliasProbability[slot];
+  const bool stay = fraction < keep;
+  const int k = stay ? slot : chosen.alias[slot];
+  const double w = stay ? fraction * chosen.invAliasProbability[slot]
+                        : (fraction - keep) * chosen.invAliasComplement[slot];
   // Uniform in the triangle (centre, A, B): p = centre + sqrt(w) ((1 - v) A + v B).
   const double s = std::sqrt(w);
   const double v = u.y;

@@ -61,9 +61,11 @@ class ExitPupilTable {
   struct Bin {
     bool empty = true;
     double centreXMm = 0.0;
-    std::array<double, kSectors> vertexRadiusMm{};  // polygon vertex k at angle k 2 pi / kSectors
-    std::array<double, kSectors> cdf{};             // cumulative area fraction of the triangles
-    std::array<double, kSectors> invWidth{};        // 1 / (cdf[k] - cdf[k - 1])
+    std::array<double, kSectors> vertexRadiusMm{};    // polygon vertex k at angle k 2 pi / kSectors
+    std::array<double, kSectors> cdf{};               // cumulative area fraction of the triangles
+    std::array<double, kSectors> aliasProbability{};  // alias table over the triangles
+    std::array<int, kSectors> alias{};
+    std::array<double, kSectors> invAliasProbability{}, invAliasComplement{};  // reciprocals
     double areaMm2 = 0.0;
     double invAreaPerMm2 = 0.0;  // 0 for an empty bin
   };
