@@ -365,15 +365,19 @@ double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
   return density;
 }
 
-std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u) const {
-  const double r = std::sqrt(film.x * film.x + film.y * film.y);
+// The sampling routine shared by sample() and sampleRays(); false when there is no sample.
+inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, double u1,
+                                         double& pointX, double& pointY, double& pdf) const {
+  const double r = std::sqrt(filmX * filmX + filmY * filmY);
   if (bins_.empty() || r > filmRadiusMaxMm_) {
-    if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return std::nullopt;
+    if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return false;
     // Outside the table: uniform over the square around the disk the table search covered
     // (no trigonometry; rays through the corners are simply blocked).
     const double half = fallbackRadiusMm_;
-    return PupilSample{{half * (2.0 * u.x - 1.0), half * (2.0 * u.y - 1.0), planeZMm_},
-                       1.0 / (4.0 * half * half)};
+    pointX = half * (2.0 * u0 - 1.0);
+    pointY = half * (2.0 * u1 - 1.0);
+    pdf = 1.0 / (4.0 * half * half);
+    return true;
   }
   // Written without unpredictable branches: the renderer calls this for every camera ray.
   const double x = r / filmRadiusMaxMm_;
@@ -385,11 +389,11 @@ std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u)
   // Empty bins carry their non-empty neighbour's centre (see the constructor), so the lerp is
   // always meaningful.
   const double centreX = (1.0 - f) * b0.centreXMm + f * b1.centreXMm;
-  const bool second = u.x >= 1.0 - f;
+  const bool second = u0 >= 1.0 - f;
   const Bin& chosen = second ? b1 : b0;
-  if (chosen.empty) return std::nullopt;
+  if (chosen.empty) return false;
   const double ux =
-      std::min((second ? u.x - (1.0 - f) : u.x) / (second ? f : 1.0 - f), 0.99999999999);
+      std::min((second ? u0 - (1.0 - f) : u0) / (second ? f : 1.0 - f), 0.99999999999);
   // Alias method: slot = floor(32 ux); its fractional part decides between the slot's sector and
   // its alias and is then stretched back to [0, 1) for the position inside the triangle.
   const double scaled = ux * kSectors;
@@ -402,17 +406,45 @@ std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u)
                         : (fraction - keep) * chosen.invAliasComplement[slot];
   // Uniform in the triangle (centre, A, B): p = centre + sqrt(w) ((1 - v) A + v B).
   const double s = std::sqrt(w);
-  const double v = u.y;
-  const double a = (1.0 - v) * chosen.vertexRadiusMm[k];
-  const double bb = v * chosen.vertexRadiusMm[(k + 1) & (kSectors - 1)];
+  const double a = (1.0 - u1) * chosen.vertexRadiusMm[k];
+  const double bb = u1 * chosen.vertexRadiusMm[(k + 1) & (kSectors - 1)];
   const double lx = centreX + s * (a * cosAt_[k] + bb * cosAt_[k + 1]);
   const double ly = s * (a * sinAt_[k] + bb * sinAt_[k + 1]);
   // Rotate from the bin frame (film point on +x) to the film point's azimuth.
   const double invR = r > 0.0 ? 1.0 / r : 0.0;
-  const double c = r > 0.0 ? film.x * invR : 1.0;
-  const double sn = film.y * invR;
-  const double pdf = (1.0 - f) * b0.invAreaPerMm2 + f * b1.invAreaPerMm2;
-  return PupilSample{{c * lx - sn * ly, sn * lx + c * ly, planeZMm_}, pdf};
+  const double c = r > 0.0 ? filmX * invR : 1.0;
+  const double sn = filmY * invR;
+  pointX = c * lx - sn * ly;
+  pointY = sn * lx + c * ly;
+  pdf = (1.0 - f) * b0.invAreaPerMm2 + f * b1.invAreaPerMm2;
+  return true;
+}
+
+std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u) const {
+  double x = 0.0, y = 0.0, pdf = 0.0;
+  if (!sampleInline(film.x, film.y, u.x, u.y, x, y, pdf)) return std::nullopt;
+  return PupilSample{{x, y, planeZMm_}, pdf};
+}
+
+void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const float* u0,
+                                const float* u1, std::size_t n, LensRayBatch& rays,
+                                float* pdfPerMm2) const {
+  rays.resize(n);
+  const float planeZ = static_cast<float>(planeZMm_);
+  for (std::size_t i = 0; i < n; ++i) {
+    double x = 0.0, y = 0.0, pdf = 0.0;
+    const bool ok = sampleInline(filmX[i], filmY[i], u0[i], u1[i], x, y, pdf);
+    const float dx = static_cast<float>(x) - filmX[i], dy = static_cast<float>(y) - filmY[i];
+    const float invLength = 1.0f / std::sqrt(dx * dx + dy * dy + planeZ * planeZ);
+    rays.ox[i] = filmX[i];
+    rays.oy[i] = filmY[i];
+    rays.oz[i] = 0.0f;
+    rays.dx[i] = dx * invLength;
+    rays.dy[i] = dy * invLength;
+    rays.dz[i] = planeZ * invLength;
+    rays.alive[i] = ok ? 1 : 0;
+    pdfPerMm2[i] = ok ? static_cast<float>(pdf) : 0.0f;
+  }
 }
 
 }  // namespace lenslab::optics

@@ -31,6 +31,7 @@
 namespace lenslab::optics {
 
 class LensSystem;
+struct LensRayBatch;
 struct PupilSample;
 
 class ExitPupilTable {
@@ -43,6 +44,9 @@ class ExitPupilTable {
                           int threads = 2);
 
   std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
+  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays).
+  void sampleRays(const float* filmX, const float* filmY, const float* u0, const float* u1,
+                  std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
   // The density sample() has at a point of the plane (0 outside the sampled region), for tests
   // and for multiple importance sampling.
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
@@ -72,6 +76,8 @@ class ExitPupilTable {
   const Bin& bin(int j) const { return bins_[j]; }
 
  private:
+  bool sampleInline(double filmX, double filmY, double u0, double u1, double& pointX,
+                    double& pointY, double& pdf) const;
   bool inside(const Bin& b, double centreX, double x, double y) const;
   struct Lookup {
     int j = 0;
