@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -77,6 +78,9 @@ TEST(ExitPupil, AtLeastNinetyPercentOfSamplesPass) {
       if (passes(*lens, film, s->pointMm)) ++passed;
     }
     ASSERT_GT(generated, 10000);
+    std::printf("  exit pupil: stop %.3f mm, rear z %.3f mm: %.4f of %d samples pass\n",
+                lens->stopDiameterMm(), lens->rearVertexZ(),
+                static_cast<double>(passed) / generated, generated);
     EXPECT_GE(static_cast<double>(passed) / generated, 0.90)
         << "stop " << lens->stopDiameterMm() << " rear z " << lens->rearVertexZ();
   }
