@@ -12,20 +12,80 @@ namespace lenslab::optics {
 namespace {
 
 constexpr int kHalfDirections = ExitPupilTable::kSectors + 1;  // angles m * pi / 32, m = 0..32
-constexpr int kGrid = 16;  // coarse search grid over the plane (x), half of it in y
-constexpr int kBisections = 16;
-constexpr double kBracket = 0.002;  // relative precision of a boundary radius
+constexpr int kGrid = 16;        // coarse search grid over the plane (x), half of it in y
+constexpr int kBisections = 10;  // after a 25% bracket: 0.025% precision
 constexpr double kRelativeMargin = 0.01;
 
+// Traces rays from the film point (filmR, 0, 0) through points of the plane z = planeZ. Many at
+// once through the vectorized batch trace: the table build is thousands of such rays per bin.
+// (Single precision; the 1% margin is far larger than its rounding.)
 struct Probe {
   const LensSystem& lens;
   double planeZ;
-  bool passes(double filmR, double px, double py) const {
-    const glm::dvec3 origin{filmR, 0.0, 0.0};
-    const glm::dvec3 direction = glm::normalize(glm::dvec3{px - filmR, py, planeZ});
-    return lens.traceFromFilm({origin, direction}).has_value();
+  LensRayBatch batch{};
+
+  bool passes(double filmR, double px, double py) {
+    const glm::dvec2 point{px, py};
+    std::vector<std::uint8_t> result;
+    passesAll(filmR, &point, 1, result);
+    return result[0] != 0;
+  }
+  void passesAll(double filmR, const glm::dvec2* points, std::size_t n,
+                 std::vector<std::uint8_t>& result) {
+    batch.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec3 d = glm::normalize(glm::dvec3{points[i].x - filmR, points[i].y, planeZ});
+      batch.ox[i] = static_cast<float>(filmR);
+      batch.oy[i] = 0.0f;
+      batch.oz[i] = 0.0f;
+      batch.dx[i] = static_cast<float>(d.x);
+      batch.dy[i] = static_cast<float>(d.y);
+      batch.dz[i] = static_cast<float>(d.z);
+      batch.alive[i] = 1;
+    }
+    lens.traceFromFilmBatch(batch);
+    result.assign(batch.alive.begin(), batch.alive.begin() + static_cast<std::ptrdiff_t>(n));
   }
 };
+
+// Distance from (centre, 0) to the region's boundary along each angle, all directions in
+// lock-step: first radii growing by 25% from minStep until a ray fails (the first failure
+// brackets the boundary, as the region is an interval along each ray), then bisection. Returns
+// the failing end of each bracket (conservative).
+std::vector<double> boundaries(Probe& probe, double filmR, double centre,
+                               const std::vector<double>& angles, double minStep, double maxR) {
+  const std::size_t m = angles.size();
+  std::vector<double> radii;
+  for (double r = minStep; r < maxR * 1.25; r *= 1.25) radii.push_back(r);
+  const std::size_t steps = radii.size();
+  std::vector<glm::dvec2> points(m * steps), dirs(m);
+  for (std::size_t a = 0; a < m; ++a) dirs[a] = {std::cos(angles[a]), std::sin(angles[a])};
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t j = 0; j < steps; ++j)
+      points[a * steps + j] = {centre + radii[j] * dirs[a].x, radii[j] * dirs[a].y};
+  std::vector<std::uint8_t> pass;
+  probe.passesAll(filmR, points.data(), points.size(), pass);
+  std::vector<double> lo(m, 0.0), hi(m, radii.back());
+  for (std::size_t a = 0; a < m; ++a) {
+    for (std::size_t j = 0; j < steps; ++j) {
+      if (!pass[a * steps + j]) {
+        hi[a] = radii[j];
+        lo[a] = j > 0 ? radii[j - 1] : 0.0;
+        break;
+      }
+    }
+  }
+  points.resize(m);
+  for (int i = 0; i < kBisections; ++i) {
+    for (std::size_t a = 0; a < m; ++a) {
+      const double mid = 0.5 * (lo[a] + hi[a]);
+      points[a] = {centre + mid * dirs[a].x, mid * dirs[a].y};
+    }
+    probe.passesAll(filmR, points.data(), m, pass);
+    for (std::size_t a = 0; a < m; ++a) (pass[a] ? lo[a] : hi[a]) = 0.5 * (lo[a] + hi[a]);
+  }
+  return hi;
+}
 
 // Raw bound of the pass region for the film point (filmR, 0): centre and the bound radius per
 // half-plane sector (before the margin and the neighbour union). Returns false when no ray passes.
@@ -36,24 +96,37 @@ struct RawBin {
       vertexRadius{};  // angles k * 2 pi / kSectors
 };
 
-RawBin measure(const Probe& probe, double filmR, double domainR,
-               const std::vector<glm::dvec2>& extraSeeds = {}) {
-  RawBin out;
+std::vector<glm::dvec2> gridPoints(double domainR) {
   const double spacing = 2.0 * domainR / kGrid;
-  std::vector<glm::dvec2> passing;
+  std::vector<glm::dvec2> points;
   for (int iy = 0; iy < kGrid / 2; ++iy) {
     for (int ix = 0; ix < kGrid; ++ix) {
       const double x = -domainR + (ix + 0.5) * spacing;
       const double y = (iy + 0.5) * spacing;
-      if (x * x + y * y > domainR * domainR * 1.1) continue;
-      if (probe.passes(filmR, x, y)) passing.push_back({x, y});
+      if (x * x + y * y <= domainR * domainR * 1.1) points.push_back({x, y});
     }
   }
+  return points;
+}
+
+RawBin measure(Probe& probe, double filmR, double domainR,
+               const std::vector<glm::dvec2>& extraSeeds = {}) {
+  RawBin out;
+  std::vector<glm::dvec2> passing;
+  std::vector<std::uint8_t> pass;
+  const std::vector<glm::dvec2> grid = gridPoints(domainR);
+  probe.passesAll(filmR, grid.data(), grid.size(), pass);
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (pass[i]) passing.push_back(grid[i]);
   // Near the rim of the image circle the region is a sliver the grid can miss: the caller passes
   // seeds from the neighbouring bin.
-  if (passing.empty())
-    for (const auto& p : extraSeeds)
-      if (probe.passes(filmR, p.x, std::abs(p.y))) passing.push_back({p.x, std::abs(p.y)});
+  if (passing.empty() && !extraSeeds.empty()) {
+    std::vector<glm::dvec2> seeds;
+    for (const auto& p : extraSeeds) seeds.push_back({p.x, std::abs(p.y)});
+    probe.passesAll(filmR, seeds.data(), seeds.size(), pass);
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+      if (pass[i]) passing.push_back(seeds[i]);
+  }
   // The region may be too small for the grid (tiny stop): try the aim at the paraxial exit
   // pupil centre as well.
   const FirstOrderData& fo = probe.lens.firstOrder();
@@ -81,40 +154,12 @@ RawBin measure(const Probe& probe, double filmR, double domainR,
 
   // Boundary distance along a direction from the centre: expand until a ray fails, then bisect;
   // keep the failing end of the bracket (conservative).
-  // `guess` (the previous direction's answer) starts the bracket; the bracket is refined to 0.2%.
-  const double minStep = 1e-3 * domainR;
-  auto boundary = [&](double angle, double guess) {
-    const double cx = std::cos(angle), cy = std::sin(angle);
-    double lo = 0.0, hi = std::max(guess, minStep);
-    if (probe.passes(filmR, centre + hi * cx, hi * cy)) {
-      lo = hi;
-      hi *= 1.25;
-      while (hi < 4.0 * domainR && probe.passes(filmR, centre + hi * cx, hi * cy)) {
-        lo = hi;
-        hi *= 1.25;
-      }
-    } else if (hi > minStep) {
-      lo = hi * 0.8;
-      while (lo > minStep && !probe.passes(filmR, centre + lo * cx, lo * cy)) {
-        hi = lo;
-        lo *= 0.8;
-      }
-      if (lo <= minStep) lo = 0.0;
-    }
-    for (int i = 0; i < kBisections && hi - lo > kBracket * hi; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      if (probe.passes(filmR, centre + mid * cx, mid * cy))
-        lo = mid;
-      else
-        hi = mid;
-    }
-    return hi;
-  };
+  const double minStep = 1e-3 * domainR, maxR = 4.0 * domainR;
   // Re-centre on the middle of the region's extent along the x axis, so that centres vary smoothly
   // from bin to bin (the grid centroid jitters with the grid).
   {
-    const double right = boundary(0.0, spacing), left = boundary(std::numbers::pi, spacing);
-    const double shifted = centre + 0.5 * (right - left);
+    const auto ends = boundaries(probe, filmR, centre, {0.0, std::numbers::pi}, minStep, maxR);
+    const double shifted = centre + 0.5 * (ends[0] - ends[1]);
     if (probe.passes(filmR, shifted, 0.0)) centre = shifted;
   }
   out.centreX = centre;
@@ -122,9 +167,10 @@ RawBin measure(const Probe& probe, double filmR, double domainR,
   // Polygon vertices on the sector edges, at the boundary; each edge is then pushed out until it
   // also contains the boundary point measured half-way between its vertices. For chord ends at
   // radii a, b and half-angle h, the chord crosses the bisector at 2 a b cos(h) / (a + b).
-  std::array<double, kHalfDirections> rho{};
+  std::vector<double> angles(kHalfDirections);
   for (int m = 0; m < kHalfDirections; ++m)
-    rho[m] = boundary(m * std::numbers::pi / (kHalfDirections - 1), m == 0 ? spacing : rho[m - 1]);
+    angles[m] = m * std::numbers::pi / (kHalfDirections - 1);
+  const std::vector<double> rho = boundaries(probe, filmR, centre, angles, minStep, maxR);
   constexpr int kHalfVertices = ExitPupilTable::kSectors / 2 + 1;
   const double cosHalf = std::cos(std::numbers::pi / ExitPupilTable::kSectors);
   for (int k = 0; k < kHalfVertices; ++k) out.vertexRadius[k] = rho[2 * k];
@@ -161,12 +207,11 @@ RawBin measure(const Probe& probe, double filmR, double domainR,
   return out;
 }
 
-bool anyPasses(const Probe& probe, double filmR, double domainR) {
-  const double spacing = 2.0 * domainR / kGrid;
-  for (int iy = 0; iy < kGrid / 2; ++iy)
-    for (int ix = 0; ix < kGrid; ++ix)
-      if (probe.passes(filmR, -domainR + (ix + 0.5) * spacing, (iy + 0.5) * spacing)) return true;
-  return false;
+bool anyPasses(Probe& probe, double filmR, double domainR) {
+  const std::vector<glm::dvec2> grid = gridPoints(domainR);
+  std::vector<std::uint8_t> pass;
+  probe.passesAll(filmR, grid.data(), grid.size(), pass);
+  return std::any_of(pass.begin(), pass.end(), [](std::uint8_t p) { return p != 0; });
 }
 
 }  // namespace
@@ -213,7 +258,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     cosAt_[k] = std::cos(k * sectorAngle);
     sinAt_[k] = std::sin(k * sectorAngle);
   }
-  const Probe probe{lens, planeZMm_};
+  Probe probe{lens, planeZMm_};
   if (!(planeZMm_ > 0.0)) return;  // film at the rear vertex: nothing to tabulate
 
   // Image circle: the largest of 24 coarse radii where some ray passes, plus one step.
@@ -228,8 +273,9 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
 
   std::vector<RawBin> raw(radialBins);
   auto work = [&](int first, int stride) {
+    Probe own{lens, planeZMm_};  // each thread its own ray batch
     for (int j = first; j < radialBins; j += stride)
-      raw[j] = measure(probe, binRadiusMm(j), fallbackRadiusMm_);
+      raw[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_);
   };
   threads = std::max(1, threads);
   std::vector<std::thread> pool;
