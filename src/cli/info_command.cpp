@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/lens_loading.h"
+#include "optics/field.h"
 
 namespace lenslab::cli {
 
@@ -34,6 +35,7 @@ nlohmann::json pupilJson(const optics::PupilData& pupil, const char* reference) 
 
 nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& arguments) {
   const optics::FirstOrderData& fo = lens.firstOrder();
+  const auto realField = optics::realFieldOfViewDeg(lens, arguments.filmDiagonalMm);
   nlohmann::json surfaces = nlohmann::json::array();
   for (std::size_t i = 0; i < lens.prescription().surfaces.size(); ++i) {
     const optics::Surface& s = lens.prescription().surfaces[i];
@@ -47,25 +49,27 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
                         {"aperture_diameter_mm", s.apertureDiameterMm},
                         {"vertex_z_mm", lens.surfaces()[i].vertexZMm}});
   }
-  return {{"lens", arguments.lensPath},
-          {"wavelength_nm", lens.wavelengthNm()},
-          {"afocal", fo.afocal},
-          {"efl_mm", number(fo.eflMm)},
-          {"bfl_mm", number(fo.bflMm)},
-          {"ffl_mm", number(fo.fflMm)},
-          {"front_principal_plane_mm", number(fo.frontPrincipalPlaneMm)},
-          {"rear_principal_plane_mm", number(fo.rearPrincipalPlaneMm)},
-          {"f_number", number(fo.fNumber)},
-          {"total_track_mm", fo.totalTrackMm},
-          {"lens_length_mm", fo.lensLengthMm},
-          {"film_distance_mm", lens.filmDistanceMm()},
-          {"entrance_pupil", pupilJson(fo.entrancePupil, "front_vertex")},
-          {"exit_pupil", pupilJson(fo.exitPupil, "rear_vertex")},
-          {"stop_surface", lens.stopIndex()},
-          {"stop_diameter_mm", lens.stopDiameterMm()},
-          {"film_diagonal_mm", arguments.filmDiagonalMm},
-          {"field_of_view_deg", fo.fieldOfViewDeg(arguments.filmDiagonalMm)},
-          {"surfaces", surfaces}};
+  return {
+      {"lens", arguments.lensPath},
+      {"wavelength_nm", lens.wavelengthNm()},
+      {"afocal", fo.afocal},
+      {"efl_mm", number(fo.eflMm)},
+      {"bfl_mm", number(fo.bflMm)},
+      {"ffl_mm", number(fo.fflMm)},
+      {"front_principal_plane_mm", number(fo.frontPrincipalPlaneMm)},
+      {"rear_principal_plane_mm", number(fo.rearPrincipalPlaneMm)},
+      {"f_number", number(fo.fNumber)},
+      {"total_track_mm", fo.totalTrackMm},
+      {"lens_length_mm", fo.lensLengthMm},
+      {"film_distance_mm", lens.filmDistanceMm()},
+      {"entrance_pupil", pupilJson(fo.entrancePupil, "front_vertex")},
+      {"exit_pupil", pupilJson(fo.exitPupil, "rear_vertex")},
+      {"stop_surface", lens.stopIndex()},
+      {"stop_diameter_mm", lens.stopDiameterMm()},
+      {"film_diagonal_mm", arguments.filmDiagonalMm},
+      {"field_of_view_deg", fo.fieldOfViewDeg(arguments.filmDiagonalMm)},
+      {"field_of_view_real_deg", realField ? nlohmann::json(*realField) : nlohmann::json(nullptr)},
+      {"surfaces", surfaces}};
 }
 
 void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
@@ -92,6 +96,10 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   line("total track", fo.totalTrackMm, "mm (front vertex to film)");
   std::printf("%-34s %12.4f deg (paraxial, %.2f mm film diagonal)\n", "field of view",
               fo.fieldOfViewDeg(arguments.filmDiagonalMm), arguments.filmDiagonalMm);
+  if (const auto real = optics::realFieldOfViewDeg(lens, arguments.filmDiagonalMm))
+    std::printf("%-34s %12.4f deg (chief ray)\n", "field of view, real", *real);
+  else
+    std::printf("%-34s %12s (no chief ray reaches the film corner)\n", "field of view, real", "-");
   std::printf("(positions are positive toward the film)\n");
 }
 

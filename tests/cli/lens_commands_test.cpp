@@ -43,6 +43,7 @@ TEST_F(LensCommands, InfoJsonHasTheFirstOrderKeys) {
   EXPECT_GT(json.at("exit_pupil").at("diameter_mm").get<double>(), 20.0);
   EXPECT_TRUE(json.at("exit_pupil").at("position_mm").is_number());
   EXPECT_EQ(json.at("stop_surface").get<int>(), 5);
+  EXPECT_NEAR(json.at("field_of_view_real_deg").get<double>(), 46.7, 0.5);
   EXPECT_EQ(json.at("surfaces").size(), 11u);
   EXPECT_TRUE(json.at("surfaces").at(5).at("stop").get<bool>());
 }
