@@ -97,7 +97,11 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
       while (!comment.empty() && (comment.back() == '\r' || comment.back() == '\n'))
         comment.remove_suffix(1);
       if (!comment.empty() && comment.front() == ' ') comment.remove_prefix(1);
-      lens.headerComments.emplace_back(comment);
+      // Column headings ("radius thickness ...", as the writer and pbrt's files have them) are
+      // not kept: the writer adds its own, so a read-write cycle does not repeat them.
+      std::string_view trimmed = comment;
+      while (!trimmed.empty() && isBlank(trimmed.front())) trimmed.remove_prefix(1);
+      if (trimmed.substr(0, 6) != "radius") lens.headerComments.emplace_back(comment);
     }
 
     std::vector<Token> tokens;
