@@ -163,7 +163,24 @@ bool cpuHasAvx2() {
 
 }  // namespace
 
+bool LensSystem::batchKernelAvailable(BatchKernel kernel) {
+  switch (kernel) {
+    case BatchKernel::Auto:
+    case BatchKernel::Portable:
+      return true;
+    case BatchKernel::Avx2:
+      return cpuHasAvx2();
+    case BatchKernel::Avx512:
+      return cpuHasAvx512();
+  }
+  return false;
+}
+
 void LensSystem::traceFromFilmBatch(LensRayBatch& rays) const {
+  traceFromFilmBatch(rays, BatchKernel::Auto);
+}
+
+void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) const {
   constexpr int kMaxOnStack = 64;
   SurfaceF stackSurfaces[kMaxOnStack];
   std::vector<SurfaceF> heapSurfaces;
@@ -186,10 +203,16 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays) const {
                   eta != 1.0,
                   flat};
   }
-  static const bool useAvx512 = cpuHasAvx512() && !std::getenv("LENSLAB_NO_AVX512");
-  if (useAvx512)
+  if (!batchKernelAvailable(kernel)) kernel = BatchKernel::Auto;
+  if (kernel == BatchKernel::Auto) {
+    static const bool useAvx512 = cpuHasAvx512() && !std::getenv("LENSLAB_NO_AVX512");
+    kernel = useAvx512      ? BatchKernel::Avx512
+             : cpuHasAvx2() ? BatchKernel::Avx2
+                            : BatchKernel::Portable;
+  }
+  if (kernel == BatchKernel::Avx512)
     traceAvx512(list, count, rays);
-  else if (cpuHasAvx2())
+  else if (kernel == BatchKernel::Avx2)
     traceAvx2(list, count, rays);
   else
     tracePortable(list, count, rays);

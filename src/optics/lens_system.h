@@ -29,7 +29,8 @@ struct LensRay {
 
 // Structure-of-arrays rays for the batch trace; all arrays have the same length. On input
 // `alive` marks the rays to trace; on output it is 0 for every ray the lens blocked, and the
-// origin/direction of the live rays describe the ray leaving the lens.
+// origin/direction of the live rays describe the ray leaving the lens (origin on the front
+// surface). The origin/direction of blocked rays are unspecified. resize() marks new rays alive.
 struct LensRayBatch {
   std::vector<float> ox, oy, oz, dx, dy, dz;
   std::vector<std::uint8_t> alive;
@@ -51,7 +52,8 @@ const char* toString(RayStop stop);
 struct RayPath {
   // points[0] is the ray origin; points[i] for i >= 1 is the hit point on surface
   // surfaceIndices[i - 1]. For a clipped ray the last point is where it met the surface outside
-  // the clear aperture; a missed surface or TIR adds no point beyond the last one reached.
+  // the clear aperture; for total internal reflection, where it met the reflecting surface; a
+  // missed surface adds no point.
   std::vector<glm::dvec3> points;
   std::vector<int> surfaceIndices;
   RayStop stop = RayStop::Passed;
@@ -95,7 +97,8 @@ class LensSystem {
   // Return null when the value is not positive and finite.
   std::shared_ptr<const LensSystem> withFilmDistance(double filmDistanceMm) const;
   std::shared_ptr<const LensSystem> withStopDiameter(double stopDiameterMm) const;
-  // Same geometry, indices at another wavelength (for spectral rendering).
+  // Same geometry, indices at another wavelength (for spectral rendering: a few microseconds;
+  // each such system builds its own exit-pupil table when first sampled).
   std::shared_ptr<const LensSystem> withWavelength(double wavelengthNm) const;
 
   const Prescription& prescription() const { return prescription_; }
@@ -118,9 +121,14 @@ class LensSystem {
   RayPath traceFromFilmPath(const LensRay& ray) const;
   RayPath traceFromScenePath(const LensRay& ray) const;
 
-  // Batch film-to-scene trace in single precision, vectorized (AVX2 when the CPU has it, a
-  // portable path otherwise).
+  // Batch film-to-scene trace in single precision, vectorized: AVX-512 or AVX2+FMA when the CPU
+  // has them (chosen at run time; LENSLAB_NO_AVX512=1 in the environment skips AVX-512), a
+  // portable build of the same kernel otherwise.
   void traceFromFilmBatch(LensRayBatch& rays) const;
+  enum class BatchKernel { Auto, Portable, Avx2, Avx512 };
+  static bool batchKernelAvailable(BatchKernel kernel);
+  // The same with a chosen kernel (tests, benchmarks); an unavailable one falls back to Auto.
+  void traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) const;
 
   // Samples a point on the plane z = rearVertexZ() through which a ray from the film point
   // (x, y, 0) likely passes the lens. u in [0,1)^2. pdfPerMm2 is the density per unit area on that

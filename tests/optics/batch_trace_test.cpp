@@ -9,7 +9,10 @@
 namespace lenslab::optics {
 namespace {
 
-TEST(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
+class BatchTrace : public ::testing::TestWithParam<LensSystem::BatchKernel> {};
+
+TEST_P(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
+  if (!LensSystem::batchKernelAvailable(GetParam())) GTEST_SKIP() << "CPU lacks this kernel";
   for (const auto& course : testing::kCourseLenses) {
     const auto lens =
         testing::loadLens(testing::referenceLensDir() / course.file, course.filmDistanceMm);
@@ -33,7 +36,7 @@ TEST(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
       batch.dz[i] = static_cast<float>(rays[i].direction.z);
       batch.alive[i] = i % 17 == 0 ? 0 : 1;  // some rays arrive dead and must stay dead
     }
-    lens->traceFromFilmBatch(batch);
+    lens->traceFromFilmBatch(batch, GetParam());
     int agree = 0, alive = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const auto scalar = lens->traceFromFilm(rays[i]);
@@ -55,6 +58,12 @@ TEST(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
     EXPECT_GT(alive, 20) << course.file;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Kernels, BatchTrace,
+                         ::testing::Values(LensSystem::BatchKernel::Auto,
+                                           LensSystem::BatchKernel::Portable,
+                                           LensSystem::BatchKernel::Avx2,
+                                           LensSystem::BatchKernel::Avx512));
 
 }  // namespace
 }  // namespace lenslab::optics
