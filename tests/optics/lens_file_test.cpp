@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <random>
 
 #include "test_lenses.h"
 
@@ -161,6 +162,33 @@ TEST(LensFile, MissingFileAndDirectoryAreErrors) {
   ASSERT_FALSE(missing.ok());
   EXPECT_EQ(missing.errors.front().toString(), "/nonexistent/lens.dat:1:1: no such file");
   EXPECT_FALSE(readLensFile(std::filesystem::temp_directory_path()).ok());
+}
+
+}  // namespace
+}  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+// Random text made of lens-file characters and junk: always a lens or a located error.
+TEST(LensFile, RandomTextIsALensOrALocatedError) {
+  std::mt19937 rng(17);
+  const std::string alphabet = "0123456789 .-+e\t\n\r#\"infa\x01\xff";
+  std::uniform_int_distribution<std::size_t> pick(0, alphabet.size() - 1);
+  std::uniform_int_distribution<int> length(0, 200);
+  for (int i = 0; i < 3000; ++i) {
+    std::string text;
+    for (int n = length(rng); n > 0; --n) text += alphabet[pick(rng)];
+    const auto r = parseLensText(text, "r.dat");
+    if (r.ok()) {
+      EXPECT_TRUE(r.errors.empty());
+      EXPECT_TRUE(LensSystem::build(r.lens->prescription).ok());
+    } else {
+      ASSERT_FALSE(r.errors.empty());
+      EXPECT_GE(r.errors.front().line, 1);
+      EXPECT_GE(r.errors.front().column, 1);
+    }
+  }
 }
 
 }  // namespace
