@@ -174,6 +174,7 @@ void ScriptRunner::fail(ScriptHost& host, const std::string& message) {
 }
 
 bool ScriptRunner::step(ScriptHost& host) {
+  changedThisStep_ = false;
   while (next_ < commands_.size()) {
     const ScriptCommand& command = commands_[next_];
     if (!execute(command, host)) {
@@ -202,6 +203,11 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     return true;
   };
   const std::string& verb = command.verb;
+  const bool isCapture = verb == "screenshot" || verb == "screenshot-render" ||
+                         verb == "screenshot-cross-section" || verb == "dump-ui";
+  if (isCapture && changedThisStep_) return false;  // let a frame show the change first
+  const bool isWait = verb.rfind("wait-", 0) == 0;
+  if (!isCapture && !isWait) changedThisStep_ = true;
   if (verb == "load-lens") return check(host.loadLens(a[0]));
   if (verb == "load-scene") return check(host.loadScene(a[0]));
   if (verb == "save-lens") return check(host.saveLens(a[0]));

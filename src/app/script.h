@@ -90,6 +90,8 @@ class ScriptRunner {
   std::vector<ScriptCommand> commands_;
   std::size_t next_ = 0;
   std::optional<std::chrono::steady_clock::time_point> waitStarted_;
+  // A screenshot after a change in the same step waits a frame, so it shows the change.
+  bool changedThisStep_ = false;
   int framesWaited_ = 0;
   bool failed_ = false;
 };

@@ -2,18 +2,49 @@
 // The state the viewer's panels share, owned by runViewer() and passed by reference.
 
 #include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "app/cross_section_view.h"
 #include "app/layout.h"
+#include "app/lens_document.h"
+#include "app/lens_table_state.h"
 #include "app/log.h"
 #include "app/settings.h"
 
 namespace lenslab::app {
 
+// What a press in the cross-section grabbed, for the rest of the drag.
+enum class CrossSectionGrab { None, Pan, Film, StopEdge };
+
 struct ViewerState {
   Settings settings;
   std::filesystem::path settingsFile;  // empty: do not persist (no config directory)
   Log log;
+  LensDocument lens;
+  std::vector<LensProblem> lensProblems;  // validation of lens.prescription(); empty when valid
+  LensTableState lensTable;
+  CrossSectionView crossSectionView;
+  bool crossSectionNeedsFit = true;
+  CrossSectionGrab crossSectionGrab = CrossSectionGrab::None;
+  // The film's diagonal, drawn as the film plane's extent and used for the field of view. The
+  // scene's film sets it; 43.27 mm is the 36 x 24 mm full frame.
+  double filmDiagonalMm = 43.27;
   PanelLayout layout;
+  // Edits made by panels this frame, applied by the main loop (which logs refusals). The string
+  // is the merge key: a drag sends the same key every frame so it undoes as one step.
+  std::vector<std::pair<EditCommand, std::string>> pendingEdits;
+  void requestEdit(EditCommand command, std::string mergeKey = {}) {
+    pendingEdits.emplace_back(std::move(command), std::move(mergeKey));
+  }
+
+  // Screen rectangles of named widgets, recorded while drawing, for `dump-ui` (tests click them).
+  std::map<std::string, Rect> uiRects;
+  // Render preview settings.
+  double exposureStops = 0.0;
+  bool pinholeCamera = false;
   // Requests made by menus and shortcuts, carried out by the main loop between frames.
   bool quitRequested = false;
   bool windowScreenshotRequested = false;
@@ -21,5 +52,9 @@ struct ViewerState {
   bool showLog = true;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
 };
+
+// Applies state.pendingEdits to the lens document in order, logging what each did and why any
+// was refused, and clears the list.
+void applyPendingEdits(ViewerState& state);
 
 }  // namespace lenslab::app

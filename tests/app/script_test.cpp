@@ -88,6 +88,7 @@ TEST(ScriptRun, AppliesEditsUndoAndQuits) {
   ASSERT_TRUE(script.errors.empty()) << script.errors[0];
   FakeHost host;
   ScriptRunner runner(script.commands);
+  EXPECT_TRUE(runner.step(host));  // the screenshot waits for a frame that shows the edits
   EXPECT_FALSE(runner.step(host));
   EXPECT_DOUBLE_EQ(host.document.prescription().surfaces[0].radiusMm, 35.0);
   EXPECT_DOUBLE_EQ(host.document.prescription().surfaces[2].thicknessMm, 40.0);  // undone
