@@ -10,8 +10,10 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "app/panels/panels.h"
+#include "app/resources.h"
 #include "app/screenshot.h"
 #include "app/script.h"
 #include "app/svg_export.h"
@@ -83,6 +85,8 @@ class Viewer final : public ScriptHost {
   void handleShortcuts();
   void openDroppedFiles();
   void carryOutRequests();
+  void askForPath(FileRequest::Kind kind);
+  std::optional<std::string> perform(const FileRequest& request);
   std::string saveWindowScreenshotToDefault();
 
   Window& window_;
@@ -127,20 +131,62 @@ void Viewer::drawFrame() {
   drawRenderPreviewPanel(state_, state_.layout.renderPreview);
   if (state_.showLog) drawLogPanel(state_, state_.layout.log);
   drawAboutWindow(state_);
+  if (const auto chosen = state_.fileBrowser.draw(); chosen && state_.browserPurpose) {
+    state_.fileRequests.push_back({*state_.browserPurpose, chosen->string()});
+  }
   applyPendingEdits(state_);
 }
 
 void Viewer::openDroppedFiles() {
-  for (const std::string& path : window_.takeDroppedFiles()) {
-    const std::string extension = std::filesystem::path(path).extension().string();
-    std::optional<std::string> error;
-    if (extension == ".pbrt") {
-      error = loadScene(path);
-    } else {
-      error = loadLens(path);
-    }
-    if (error) state_.log.error(*error);
+  for (std::string& path : window_.takeDroppedFiles()) {
+    state_.fileRequests.push_back({FileRequest::Kind::Open, std::move(path)});
   }
+}
+
+void Viewer::askForPath(FileRequest::Kind kind) {
+  using Kind = FileRequest::Kind;
+  const std::filesystem::path lenses = findResourceDirectory("lenses");
+  const std::filesystem::path scenes = findResourceDirectory("scenes");
+  const std::filesystem::path here = std::filesystem::current_path();
+  state_.browserPurpose = kind;
+  switch (kind) {
+    case Kind::Open:
+    case Kind::OpenLens:
+      state_.fileBrowser.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
+      break;
+    case Kind::OpenScene:
+      state_.fileBrowser.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
+      break;
+    case Kind::SaveLens:
+      state_.fileBrowser.show("Save lens as", FileBrowser::Mode::Save, {".dat"}, here,
+                              render::nonClobberingPath(here, "lens", ".dat").filename());
+      break;
+    case Kind::SaveRender:
+      state_.fileBrowser.show("Save render as (.png or .exr)", FileBrowser::Mode::Save,
+                              {".png", ".exr"}, here,
+                              render::nonClobberingPath(here, "lenslab-render", ".png").filename());
+      break;
+    case Kind::SaveCrossSection:
+      state_.fileBrowser.show(
+          "Save cross-section as (.png or .svg)", FileBrowser::Mode::Save, {".png", ".svg"}, here,
+          render::nonClobberingPath(here, "lenslab-cross-section", ".svg").filename());
+      break;
+  }
+}
+
+std::optional<std::string> Viewer::perform(const FileRequest& request) {
+  using Kind = FileRequest::Kind;
+  const std::string& path = request.path;
+  switch (request.kind) {
+    case Kind::Open:
+      return std::filesystem::path(path).extension() == ".pbrt" ? loadScene(path) : loadLens(path);
+    case Kind::OpenLens: return loadLens(path);
+    case Kind::OpenScene: return loadScene(path);
+    case Kind::SaveLens: return saveLens(path);
+    case Kind::SaveRender: return saveRender(path);
+    case Kind::SaveCrossSection: return saveCrossSection(path);
+  }
+  return std::nullopt;
 }
 
 std::string Viewer::saveWindowScreenshotToDefault() {
@@ -151,6 +197,13 @@ std::string Viewer::saveWindowScreenshotToDefault() {
 }
 
 void Viewer::carryOutRequests() {
+  for (const FileRequest& request : std::exchange(state_.fileRequests, {})) {
+    if (request.path.empty()) {
+      askForPath(request.kind);
+    } else if (const auto error = perform(request)) {
+      state_.log.error(*error);
+    }
+  }
   if (state_.windowScreenshotRequested) {
     state_.windowScreenshotRequested = false;
     if (const std::string error = saveWindowScreenshotToDefault(); !error.empty()) {

@@ -2,6 +2,12 @@
 
 namespace lenslab::app {
 
+// Out of line on purpose: inlined into every caller, GCC 12 reports false
+// -Wmaybe-uninitialized warnings for the variant's inactive members.
+void ViewerState::requestEdit(EditCommand command, std::string mergeKey) {
+  pendingEdits.emplace_back(std::move(command), std::move(mergeKey));
+}
+
 void applyPendingEdits(ViewerState& state) {
   for (auto& [command, mergeKey] : state.pendingEdits) {
     if (const auto refusal = state.lens.apply(command, mergeKey)) {

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,10 +12,19 @@
 #include "app/layout.h"
 #include "app/lens_document.h"
 #include "app/lens_table_state.h"
+#include "app/panels/file_browser.h"
 #include "app/log.h"
 #include "app/settings.h"
 
 namespace lenslab::app {
+
+// A file operation asked for by a menu, the file browser, a drop or the recent-files list;
+// carried out by the viewer between frames.
+struct FileRequest {
+  enum class Kind { Open, OpenLens, OpenScene, SaveLens, SaveRender, SaveCrossSection };
+  Kind kind;
+  std::string path;  // empty: ask with the file browser first
+};
 
 // What a press in the cross-section grabbed, for the rest of the drag.
 enum class CrossSectionGrab { None, Pan, Film, StopEdge };
@@ -32,19 +42,22 @@ struct ViewerState {
   // The film's diagonal, drawn as the film plane's extent and used for the field of view. The
   // scene's film sets it; 43.27 mm is the 36 x 24 mm full frame.
   double filmDiagonalMm = 43.27;
+  // Effective focal length of the last valid lens (0 when unknown), for "scale to focal length".
+  double lensEflMm = 0.0;
   PanelLayout layout;
   // Edits made by panels this frame, applied by the main loop (which logs refusals). The string
   // is the merge key: a drag sends the same key every frame so it undoes as one step.
   std::vector<std::pair<EditCommand, std::string>> pendingEdits;
-  void requestEdit(EditCommand command, std::string mergeKey = {}) {
-    pendingEdits.emplace_back(std::move(command), std::move(mergeKey));
-  }
+  void requestEdit(EditCommand command, std::string mergeKey = {});
 
   // Screen rectangles of named widgets, recorded while drawing, for `dump-ui` (tests click them).
   std::map<std::string, Rect> uiRects;
   // Render preview settings.
   double exposureStops = 0.0;
   bool pinholeCamera = false;
+  FileBrowser fileBrowser;
+  std::vector<FileRequest> fileRequests;
+  std::optional<FileRequest::Kind> browserPurpose;  // what the browser's answer is for
   // Requests made by menus and shortcuts, carried out by the main loop between frames.
   bool quitRequested = false;
   bool windowScreenshotRequested = false;
