@@ -13,6 +13,7 @@
 #include "app/lens_document.h"
 #include "app/lens_table_state.h"
 #include "app/panels/file_browser.h"
+#include "app/preview_state.h"
 #include "app/log.h"
 #include "app/settings.h"
 
@@ -55,6 +56,7 @@ struct ViewerState {
   // Render preview settings.
   double exposureStops = 0.0;
   bool pinholeCamera = false;
+  PreviewState preview;
   FileBrowser fileBrowser;
   std::vector<FileRequest> fileRequests;
   std::optional<FileRequest::Kind> browserPurpose;  // what the browser's answer is for
