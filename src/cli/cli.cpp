@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/viewer.h"
+#include "cli/render_command.h"
 #include "cli/size_argument.h"
 
 namespace lenslab::cli {
@@ -67,6 +68,7 @@ int run(int argc, char** argv) {
       "Headless: lenslab SUBCOMMAND --help for each subcommand.");
   ViewerArguments viewerArguments;
   addViewerOptions(app, viewerArguments);
+  const auto renderArguments = registerRenderCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -80,6 +82,7 @@ int run(int argc, char** argv) {
     std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
     return kUsageError;
   }
+  if (renderArguments->command->parsed()) return runRenderCommand(*renderArguments);
   return runViewer(viewerArguments);
 }
 
