@@ -1,6 +1,7 @@
 #include "app/cross_section_drawing.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace lenslab::app {
 
@@ -66,6 +67,44 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
   film.widthPx = 2.0f;
   drawing.lines.push_back(std::move(film));
   return drawing;
+}
+
+}  // namespace lenslab::app
+
+namespace lenslab::app {
+
+namespace {
+
+Polyline rayLine(const optics::FanRay& ray, Colour colour, float width) {
+  Polyline line;
+  for (const glm::dvec3& point : ray.path.points) line.points.push_back({point.z, point.y});
+  if (ray.filmPoint) line.points.push_back({ray.filmPoint->z, ray.filmPoint->y});
+  line.colour = colour;
+  line.widthPx = width;
+  return line;
+}
+
+}  // namespace
+
+void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked) {
+  constexpr std::size_t kColours = std::size(palette::kFieldColours);
+  for (std::size_t f = 0; f < fans.fans.size(); ++f) {
+    const optics::RayFan& fan = fans.fans[f];
+    const Colour colour = palette::kFieldColours[f % kColours];
+    for (const optics::FanRay& ray : fan.rays) {
+      const bool passed = ray.filmPoint.has_value();
+      if (!passed && !showBlocked) continue;
+      Colour shade = colour;
+      if (!passed) shade.a = 110;
+      drawing.lines.push_back(rayLine(ray, shade, 1.0f));
+    }
+    if (fan.chief) {
+      Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f);
+      chief.dashed = true;
+      drawing.lines.push_back(std::move(chief));
+    }
+  }
+  if (fans.marginal) drawing.lines.push_back(rayLine(*fans.marginal, palette::kMarginalRay, 1.6f));
 }
 
 }  // namespace lenslab::app

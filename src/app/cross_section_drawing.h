@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "optics/lens_outline.h"
+#include "optics/ray_fan.h"
 
 namespace lenslab::app {
 
@@ -47,9 +48,18 @@ inline constexpr Colour kGlassEdge{170, 200, 240, 255};
 inline constexpr Colour kStop{235, 200, 80, 255};
 inline constexpr Colour kAxis{110, 110, 120, 255};
 inline constexpr Colour kFilm{240, 240, 240, 255};
+// One colour per field position: on axis, 0.7 field, full field (and more if asked).
+inline constexpr Colour kFieldColours[] = {
+    {80, 220, 120, 255}, {250, 180, 60, 255}, {235, 90, 200, 255}, {90, 170, 255, 255}};
+inline constexpr Colour kChiefRay{255, 255, 255, 255};
+inline constexpr Colour kMarginalRay{90, 230, 240, 255};
 }  // namespace palette
 
 // filmHalfDiagonalMm: half the film diagonal, drawn as the film plane's extent.
 CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalfDiagonalMm);
+
+// Adds the fans' rays: each ends at the film, or at the surface that blocked it (blocked rays are
+// fainter, and left out when showBlocked is false). Chief rays dashed, the marginal ray cyan.
+void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked);
 
 }  // namespace lenslab::app

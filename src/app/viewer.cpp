@@ -20,6 +20,7 @@
 #include "app/ui_dump.h"
 #include "app/viewer_state.h"
 #include "app/window.h"
+#include "optics/lens_file.h"
 #include "render/image_io.h"
 
 namespace lenslab::app {
@@ -27,6 +28,13 @@ namespace lenslab::app {
 namespace {
 
 constexpr const char* kHeadlessHint = "lenslab render SCENE --out image.png";
+
+// The double-Gauss 50 mm: the lens the course and the default scene use.
+std::string defaultLensPath() {
+  const std::filesystem::path lenses = findResourceDirectory("lenses");
+  return lenses.empty() ? std::string("lenses/dgauss-50mm.dat")
+                        : (lenses / "dgauss-50mm.dat").string();
+}
 
 // Reads part of the back buffer: a window-coordinate rectangle scaled to framebuffer pixels.
 FramebufferImage cropToRect(const FramebufferImage& image, const Rect& rect, float scale) {
@@ -116,6 +124,7 @@ void Viewer::drawFrame() {
   const float width = static_cast<float>(window_.width());
   const float height = static_cast<float>(window_.height());
   state_.uiRects.clear();
+  refreshLens(state_);
   handleShortcuts();
   const float menuHeight = drawMainMenu(state_);
   applyPendingEdits(state_);
@@ -213,7 +222,20 @@ void Viewer::carryOutRequests() {
 }
 
 std::optional<std::string> Viewer::loadLens(const std::string& path) {
-  return "cannot open " + path + ": lens files are not supported yet";
+  optics::LensFileResult file = optics::readLensFile(path);
+  if (!file.ok()) {
+    // The current lens stays; every problem goes to the log with its file:line:column.
+    std::string message = "cannot open lens " + path + ":";
+    for (const optics::LensFileError& error : file.errors) message += "\n  " + error.toString();
+    return message;
+  }
+  state_.lens.apply(ReplaceLens{std::move(file.lens->prescription), path});
+  state_.lensHeaderComments = std::move(file.lens->headerComments);
+  addRecentFile(state_.settings, path);
+  state_.crossSectionNeedsFit = true;
+  refreshLens(state_);
+  state_.log.info("Opened lens " + path);
+  return std::nullopt;
 }
 
 std::optional<std::string> Viewer::loadScene(const std::string& path) {
@@ -221,7 +243,14 @@ std::optional<std::string> Viewer::loadScene(const std::string& path) {
 }
 
 std::optional<std::string> Viewer::saveLens(const std::string& path) {
-  return "cannot save " + path + ": lens files are not supported yet";
+  std::string error;
+  if (!optics::writeLensFile(path, state_.lens.prescription(), state_.lensHeaderComments, &error)) {
+    return error;
+  }
+  state_.lens.markSaved(path);
+  addRecentFile(state_.settings, path);
+  state_.log.info("Saved lens to " + path);
+  return std::nullopt;
 }
 
 std::optional<std::string> Viewer::saveWindowScreenshot(const std::string& path) {
@@ -329,6 +358,15 @@ int runViewer(const ViewerOptions& options) {
   if (!state.settingsFile.empty()) state.log.info("Settings: " + state.settingsFile.string());
 
   Viewer viewer(*window, state);
+  if (const auto lensError = viewer.loadLens(options.lensPath.empty() ? defaultLensPath()
+                                                                      : options.lensPath)) {
+    state.log.error(*lensError);
+    if (!options.lensPath.empty()) {
+      std::fprintf(stderr, "lenslab: %s\n", lensError->c_str());
+      return 1;
+    }
+  }
+  state.lens = LensDocument(state.lens.prescription(), state.lens.path());  // nothing to undo yet
   const int exitCode = viewer.run(options, std::move(script));
 
   if (!state.settingsFile.empty()) {

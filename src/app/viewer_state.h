@@ -2,7 +2,9 @@
 // The state the viewer's panels share, owned by runViewer() and passed by reference.
 
 #include <filesystem>
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +16,8 @@
 #include "app/lens_table_state.h"
 #include "app/panels/file_browser.h"
 #include "app/preview_state.h"
+#include "optics/lens_system.h"
+#include "optics/ray_fan.h"
 #include "app/log.h"
 #include "app/settings.h"
 
@@ -27,6 +31,15 @@ struct FileRequest {
   std::string path;  // empty: ask with the file browser first
 };
 
+// How the cross-section's ray fans are traced.
+struct FanSettings {
+  bool objectAtInfinity = true;
+  double objectDistanceMm = 2000.0;  // from the front vertex, when not at infinity
+  bool showBlocked = true;
+  int raysPerFan = 13;
+  bool operator==(const FanSettings&) const = default;
+};
+
 // What a press in the cross-section grabbed, for the rest of the drag.
 enum class CrossSectionGrab { None, Pan, Film, StopEdge };
 
@@ -35,7 +48,16 @@ struct ViewerState {
   std::filesystem::path settingsFile;  // empty: do not persist (no config directory)
   Log log;
   LensDocument lens;
+  std::vector<std::string> lensHeaderComments;  // kept from the opened file for saving
   std::vector<LensProblem> lensProblems;  // validation of lens.prescription(); empty when valid
+  // The last valid lens, built; it keeps rendering while the document is invalid.
+  std::shared_ptr<const optics::LensSystem> lensSystem;
+  bool lensSystemIsCurrent = false;  // lensSystem was built from the current document
+  std::uint64_t lensBuiltGeneration = ~std::uint64_t{0};
+  FanSettings fanSettings;
+  FanSettings fansComputedWith;
+  optics::RayFans rayFans;  // for lensSystem, when lensSystemIsCurrent
+  double focusDistanceInputMm = 3000.0;
   LensTableState lensTable;
   CrossSectionView crossSectionView;
   bool crossSectionNeedsFit = true;
@@ -67,6 +89,10 @@ struct ViewerState {
   bool showLog = true;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
 };
+
+// Rebuilds what depends on the lens document when its generation changed: validation, the
+// LensSystem (when valid), the first-order figures and the ray fans.
+void refreshLens(ViewerState& state);
 
 // Applies state.pendingEdits to the lens document in order, logging what each did and why any
 // was refused, and clears the list.

@@ -79,6 +79,8 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   }
   glfwSetWindowUserPointer(window->window_, window.get());
   glfwSetDropCallback(window->window_, onDrop);
+  // Installed before ImGui's backend, which chains to it.
+  glfwSetKeyCallback(window->window_, onKey);
   glfwMakeContextCurrent(window->window_);
   glfwSwapInterval(options.testMode ? 0 : 1);
   if (gladLoadGL(glfwGetProcAddress) == 0) {
@@ -116,6 +118,30 @@ void Window::onDrop(GLFWwindow* handle, int count, const char** paths) {
   for (int i = 0; i < count; ++i) window->dropped_.emplace_back(paths[i]);
 }
 
+void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, int /*mods*/) {
+  auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
+  if (action == GLFW_PRESS && key >= 0) window->pressedKeys_.push_back(key);
+}
+
+// Dear ImGui 1.86 samples key state once per frame, so a key pressed and released between two
+// frames (a quick tap, or xdotool's "key Return") is never seen as pressed. Keep such a key down
+// for one frame, as ImGui 1.87's input queue would.
+void Window::holdTappedKeys() {
+  ImGuiIO& io = ImGui::GetIO();
+  constexpr int kKeyCount = static_cast<int>(IM_ARRAYSIZE(io.KeysDown));
+  for (int key : heldKeys_) {
+    if (key < kKeyCount && glfwGetKey(window_, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+  }
+  heldKeys_.clear();
+  for (int key : pressedKeys_) {
+    if (key < kKeyCount && !io.KeysDown[key]) {
+      io.KeysDown[key] = true;
+      heldKeys_.push_back(key);
+    }
+  }
+  pressedKeys_.clear();
+}
+
 std::vector<std::string> Window::takeDroppedFiles() { return std::exchange(dropped_, {}); }
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
@@ -131,6 +157,7 @@ void Window::waitEvents(double seconds) const {
 void Window::beginFrame() {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  holdTappedKeys();
   ImGui::NewFrame();
 }
 

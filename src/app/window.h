@@ -45,11 +45,16 @@ class Window {
  private:
   Window() = default;
   static void onDrop(GLFWwindow* window, int count, const char** paths);
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+  void holdTappedKeys();
 
   GLFWwindow* window_ = nullptr;
   bool imguiReady_ = false;
   float contentScale_ = 1.0f;
   std::vector<std::string> dropped_;
+  // Keys pressed since the last frame, and keys held down artificially for one frame (see
+  // holdTappedKeys).
+  std::vector<int> pressedKeys_, heldKeys_;
 };
 
 // True when a display server is named in the environment (DISPLAY or WAYLAND_DISPLAY).

@@ -43,10 +43,10 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
   const int x = static_cast<int>(cell["x"].get<double>() + cell["width"].get<double>() / 2);
   const int y = static_cast<int>(cell["y"].get<double>() + cell["height"].get<double>() / 2);
 
-  // Under Xvfb there is no window manager, so the window sits at the screen's origin; still,
-  // move relative to the window found by its title.
+  // Under Xvfb there is no window manager to give the window focus, and GLFW reports the cursor
+  // only to a focused window: focus it explicitly, then move relative to it.
   const std::string window = "$(xdotool search --sync --onlyvisible --name '^lenslab$' | head -n1)";
-  const std::string input = "W=" + window + " && xdotool mousemove --window $W " +
+  const std::string input = "W=" + window + " && xdotool windowfocus --sync $W && xdotool mousemove --window $W " +
                             std::to_string(x) + " " + std::to_string(y) +
                             " && sleep 0.2 && xdotool click 1 && sleep 0.3 && "
                             "xdotool key ctrl+a && xdotool type --delay 30 '24.5' && "

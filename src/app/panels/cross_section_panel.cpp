@@ -58,6 +58,41 @@ void paint(ImDrawList* draw, const CrossSectionDrawing& drawing, const CrossSect
   }
 }
 
+void drawFanControls(ViewerState& state) {
+  FanSettings& fans = state.fanSettings;
+  if (ImGui::SmallButton("Fit")) state.crossSectionNeedsFit = true;
+  ImGui::SameLine();
+  ImGui::Checkbox("Object at infinity", &fans.objectAtInfinity);
+  if (!fans.objectAtInfinity) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    double distance = fans.objectDistanceMm;
+    if (ImGui::InputDouble("mm##object", &distance, 0, 0, "%.0f",
+                           ImGuiInputTextFlags_EnterReturnsTrue) &&
+        distance > 0) {
+      fans.objectDistanceMm = distance;
+    }
+  }
+  ImGui::SameLine();
+  ImGui::Checkbox("Blocked rays", &fans.showBlocked);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  ImGui::SliderInt("rays", &fans.raysPerFan, 3, 41);
+  // The legend: one colour per field position.
+  const auto legend = [](Colour colour, const char* text) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(colour.r / 255.f, colour.g / 255.f, colour.b / 255.f, 1.f), "%s", text);
+  };
+  ImGui::TextDisabled("field:");
+  legend(palette::kFieldColours[0], "0");
+  legend(palette::kFieldColours[1], "0.7");
+  legend(palette::kFieldColours[2], "1.0");
+  legend(palette::kChiefRay, "chief (dashed)");
+  legend(palette::kMarginalRay, "marginal");
+  ImGui::SameLine();
+  ImGui::TextDisabled("  wheel: zoom, drag: pan, drag film/stop edge: edit");
+}
+
 }  // namespace
 
 void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
@@ -65,9 +100,7 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
     ImGui::End();
     return;
   }
-  if (ImGui::SmallButton("Fit")) state.crossSectionNeedsFit = true;
-  ImGui::SameLine();
-  ImGui::TextDisabled("wheel: zoom   drag: pan   drag film or stop edge: edit");
+  drawFanControls(state);
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
@@ -146,9 +179,12 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
 
   applyPendingEdits(state);
   const optics::LensOutline outline = optics::computeLensOutline(state.lens.prescription());
-  const CrossSectionDrawing drawing = drawLens(outline, 0.5 * state.filmDiagonalMm);
+  CrossSectionDrawing drawing = drawLens(outline, 0.5 * state.filmDiagonalMm);
+  // Fit to the lens alone: rays start in front of it and would shrink it.
+  const BoundsMm lensBounds = drawing.bounds;
+  drawRayFans(drawing, state.rayFans, state.fanSettings.showBlocked);
   if (state.crossSectionNeedsFit && drawing.bounds.hasPoints) {
-    view.fit(drawing.bounds, size.x, size.y);
+    view.fit(lensBounds, size.x, size.y);
     state.crossSectionNeedsFit = false;
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -156,6 +192,10 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
   draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
                       toImColour(palette::kBackground));
   paint(draw, drawing, view, centre);
+  if (!state.lensSystemIsCurrent) {
+    draw->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(255, 140, 120, 255),
+                  "The lens is invalid (see the lens table): rays are hidden until it is fixed.");
+  }
   draw->PopClipRect();
   ImGui::End();
 }
