@@ -29,6 +29,7 @@ class FanTracer {
     // Rays start a little in front of the lens: far enough to read as incoming, close enough
     // that the lens stays the subject of the drawing.
     startZ_ = lens.frontVertexZ() + std::max(5.0, 0.25 * lens.totalTrackMm());
+    farObjectZ_ = lens.frontVertexZ() + 2.0 * lens.totalTrackMm();
   }
 
   // The ray of `field` through height `pupilHeight` on the entrance-pupil plane.
@@ -42,8 +43,9 @@ class FanTracer {
     } else {
       ray.direction = glm::normalize(onPupil - field.point);
       ray.origin = field.point;
-      // Start near the lens when the object is far, so the drawing stays readable.
-      if (field.point.z > startZ_) {
+      // Draw from the object point when it is near (close focus is worth seeing); start near
+      // the lens when it is far, so the drawing stays readable.
+      if (field.point.z > farObjectZ_) {
         ray.origin = field.point + ray.direction * ((field.point.z - startZ_) / -ray.direction.z);
       }
     }
@@ -141,7 +143,7 @@ class FanTracer {
  private:
   const LensSystem& lens_;
   const FanSpec& spec_;
-  double pupilZ_ = 0, pupilRadius_ = 0, startZ_ = 0;
+  double pupilZ_ = 0, pupilRadius_ = 0, startZ_ = 0, farObjectZ_ = 0;
 };
 
 }  // namespace
