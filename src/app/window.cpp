@@ -118,9 +118,9 @@ void Window::onDrop(GLFWwindow* handle, int count, const char** paths) {
   for (int i = 0; i < count; ++i) window->dropped_.emplace_back(paths[i]);
 }
 
-void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, int /*mods*/) {
+void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, int mods) {
   auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
-  if (action == GLFW_PRESS && key >= 0) window->pressedKeys_.push_back(key);
+  if (action == GLFW_PRESS && key >= 0) window->pressedKeys_.push_back({key, mods});
 }
 
 // Dear ImGui 1.86 samples key state once per frame, so a key pressed and released between two
@@ -129,14 +129,27 @@ void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, in
 void Window::holdTappedKeys() {
   ImGuiIO& io = ImGui::GetIO();
   constexpr int kKeyCount = static_cast<int>(IM_ARRAYSIZE(io.KeysDown));
-  for (int key : heldKeys_) {
-    if (key < kKeyCount && glfwGetKey(window_, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+  if (!heldKeys_.empty()) {
+    for (int key : heldKeys_) {
+      if (key < kKeyCount && glfwGetKey(window_, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+    }
+    heldKeys_.clear();
+    // Back to the modifiers' real state.
+    const auto down = [&](int a, int b) {
+      return glfwGetKey(window_, a) == GLFW_PRESS || glfwGetKey(window_, b) == GLFW_PRESS;
+    };
+    io.KeyCtrl = down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
+    io.KeyShift = down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+    io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
   }
-  heldKeys_.clear();
-  for (int key : pressedKeys_) {
-    if (key < kKeyCount && !io.KeysDown[key]) {
-      io.KeysDown[key] = true;
-      heldKeys_.push_back(key);
+  for (const KeyPress& press : pressedKeys_) {
+    if (press.key < kKeyCount && !io.KeysDown[press.key]) {
+      io.KeysDown[press.key] = true;
+      // The modifiers that were down with it (Ctrl+Z tapped quickly is still Ctrl+Z).
+      io.KeyCtrl |= (press.mods & GLFW_MOD_CONTROL) != 0;
+      io.KeyShift |= (press.mods & GLFW_MOD_SHIFT) != 0;
+      io.KeyAlt |= (press.mods & GLFW_MOD_ALT) != 0;
+      heldKeys_.push_back(press.key);
     }
   }
   pressedKeys_.clear();

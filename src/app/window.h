@@ -54,7 +54,12 @@ class Window {
   std::vector<std::string> dropped_;
   // Keys pressed since the last frame, and keys held down artificially for one frame (see
   // holdTappedKeys).
-  std::vector<int> pressedKeys_, heldKeys_;
+  struct KeyPress {
+    int key;
+    int mods;
+  };
+  std::vector<KeyPress> pressedKeys_;
+  std::vector<int> heldKeys_;
 };
 
 // True when a display server is named in the environment (DISPLAY or WAYLAND_DISPLAY).

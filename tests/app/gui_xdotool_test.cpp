@@ -1,5 +1,6 @@
-// Real input: xdotool clicks a cell of the lens table in the running viewer, types a new radius
-// and presses Enter; the cross-section must change and the saved lens must hold the new value.
+// Real input: xdotool clicks a cell of the lens table in the running viewer (which selects its
+// text), types a new radius and presses Enter; the cross-section must change and the saved lens
+// must hold the new value.
 
 #include <gtest/gtest.h>
 
@@ -49,7 +50,7 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
   const std::string input = "W=" + window + " && xdotool windowfocus --sync $W && xdotool mousemove --window $W " +
                             std::to_string(x) + " " + std::to_string(y) +
                             " && sleep 0.2 && xdotool click 1 && sleep 0.3 && "
-                            "xdotool key ctrl+a && xdotool type --delay 30 '24.5' && "
+                            "xdotool type --delay 30 '24.5' && "
                             "sleep 0.1 && xdotool key Return";
   const auto typed = testing::runProcess(input, scratch);
   ASSERT_EQ(typed.exitCode, 0) << typed.err;
