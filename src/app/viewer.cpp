@@ -124,6 +124,7 @@ void Viewer::drawFrame() {
   const float width = static_cast<float>(window_.width());
   const float height = static_cast<float>(window_.height());
   state_.uiRects.clear();
+  state_.dragging = false;
   refreshLens(state_);
   handleShortcuts();
   const float menuHeight = drawMainMenu(state_);

@@ -58,6 +58,9 @@ struct ViewerState {
   FanSettings fansComputedWith;
   optics::RayFans rayFans;  // for lensSystem, when lensSystemIsCurrent
   double focusDistanceInputMm = 3000.0;
+  // A value is being dragged this frame (film, stop, a splitter): the preview renders at reduced
+  // resolution until it is released.
+  bool dragging = false;
   LensTableState lensTable;
   CrossSectionView crossSectionView;
   bool crossSectionNeedsFit = true;

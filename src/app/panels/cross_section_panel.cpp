@@ -143,6 +143,7 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
   }
   if (hovered && (nearFilm || nearStop)) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
   if (ImGui::IsItemActive()) {
+    state.dragging |= grab == Grab::Film || grab == Grab::StopEdge;
     const ImVec2 delta = io.MouseDelta;
     switch (grab) {
       case Grab::Pan: view.panByPixels(delta.x, delta.y); break;

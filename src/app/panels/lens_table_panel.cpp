@@ -1,5 +1,6 @@
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -122,8 +123,11 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
   constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
                                           ImGuiTableFlags_SizingStretchProp |
                                           ImGuiTableFlags_ScrollY;
-  const float tableHeight = std::max(80.0f, ImGui::GetContentRegionAvail().y -
-                                                ImGui::GetTextLineHeightWithSpacing() * 4);
+  // The table takes the rows it needs (up to 60% of the panel); first-order data goes below.
+  const float rowHeight = ImGui::GetFrameHeightWithSpacing() + 1.0f;
+  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + 6.0f;
+  const float tableHeight =
+      std::clamp(wanted, 80.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y * 0.6f));
   if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 28.0f);
@@ -179,6 +183,10 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
     ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "%s%s", where.c_str(),
                        problem.message.c_str());
   }
+  ImGui::Separator();
+  ImGui::BeginChild("first-order-data");
+  drawFirstOrderSection(state);
+  ImGui::EndChild();
   ImGui::End();
 }
 
