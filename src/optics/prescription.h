@@ -2,24 +2,39 @@
 // A lens prescription as a lens designer writes it: surfaces from the object side (front) to the
 // film side (rear), lengths in millimetres.
 
+#include <cmath>
+#include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
 namespace lenslab::optics {
 
+// Radius value of a flat refracting surface (a plane window, the flat back of a plano-convex
+// element). pbrt has no way to write one (mmp/pbrt-v3#91); lenslab uses an infinite radius, which
+// is also what the curvature 1/R = 0 means, so the tracing code needs no special case.
+inline constexpr double kFlatRadius = std::numeric_limits<double>::infinity();
+
 struct Surface {
   // Signed radius of curvature; > 0 puts the centre of curvature toward the film.
-  // 0 marks the aperture stop (pbrt convention).
+  // 0 marks the aperture stop (pbrt convention); +-infinity (kFlatRadius) is a flat refracting
+  // surface.
   double radiusMm = 0.0;
   // Axial distance to the next surface; for the last surface, the distance to the film.
   double thicknessMm = 0.0;
-  // Refractive index (at the d line) of the medium after this surface; 1 is air.
+  // Refractive index (at the d line) of the medium after this surface; 1 is air. 0 also means
+  // air, as in pbrt's lens files, where the stop row carries 0.
   double indexD = 1.0;
   // Abbe number of that medium, when known; empty means non-dispersive.
   std::optional<double> abbeD;
   double apertureDiameterMm = 0.0;
 
   bool isStop() const { return radiusMm == 0.0; }
+  bool isFlat() const { return std::isinf(radiusMm); }
+  // 1/R, 0 for flat surfaces and the stop.
+  double curvaturePerMm() const { return isStop() || isFlat() ? 0.0 : 1.0 / radiusMm; }
+  // The index with pbrt's "0 means air" resolved.
+  double mediumIndexD() const { return indexD == 0.0 ? 1.0 : indexD; }
 };
 
 struct Prescription {

@@ -1,0 +1,86 @@
+#pragma once
+// Where to aim from a film point so that the ray passes the lens: a table over film radius of
+// conservative, star-shaped bounds of the pass region on the plane z = rearVertexZ.
+//
+// For a film point on the +x axis at radius r, the set of plane points whose rays pass is (up to
+// aberrations) an intersection of the images of the clear apertures: a disk on axis, a cat's eye
+// off axis. It is symmetric about the x axis and convex in practice. Each table bin stores a
+// centre (cx, 0) inside that region and a star-shaped polygon around it with kSectors vertices at
+// equal angles: each vertex lies on the region's boundary (found by bisection), each edge is pushed
+// out to contain the boundary point half-way between its vertices, and the result is enlarged by
+// a margin and by the same vertex at the neighbouring film radii. A sample picks one of the
+// kSectors triangles (centre, vertex k, vertex k+1) with probability proportional to its area and
+// a uniform point in it, so the density is uniform, 1 / (polygon area), and needs no
+// trigonometry. Other film points rotate the bin's frame by their azimuth.
+//
+// Bins are equally spaced in (x + x^2) / 2, x = r / rMax: three times denser at the rim of the
+// image circle, where the cat's eye changes fastest, than on the axis.
+//
+// No banding: between two table radii the bin is chosen stochastically with the linear
+// interpolation weights, and the centre is interpolated, so the density
+// (1 - f) / A_j + f / A_{j+1} varies continuously with the film radius. It is exact (and the
+// estimator unbiased) wherever both bins contain the true pass region, which is why each bin's
+// bound is the union of its neighbours'.
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace lenslab::optics {
+
+class LensSystem;
+struct PupilSample;
+
+class ExitPupilTable {
+ public:
+  static constexpr int kSectors = 32;  // over the full circle
+  static constexpr int kDefaultRadialBins = 128;
+  static constexpr double kMaxFilmRadiusMm = 60.0;  // search range for the image circle
+
+  explicit ExitPupilTable(const LensSystem& lens, int radialBins = kDefaultRadialBins,
+                          int threads = 2);
+
+  std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
+  // The density sample() has at a point of the plane (0 outside the sampled region), for tests
+  // and for multiple importance sampling.
+  double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
+
+  // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
+  // falls back to the disk of radius fallbackRadiusMm() (1.5 x the rear semi-aperture).
+  double filmRadiusMaxMm() const { return filmRadiusMaxMm_; }
+  double fallbackRadiusMm() const { return fallbackRadiusMm_; }
+  double planeZMm() const { return planeZMm_; }
+  // Largest tabulated film radius with a non-empty bin (the image circle at the table's
+  // resolution).
+  double imageCircleRadiusMm() const;
+  int radialBins() const { return static_cast<int>(bins_.size()); }
+  double binRadiusMm(int j) const;
+
+  struct Bin {
+    bool empty = true;
+    double centreXMm = 0.0;
+    std::array<double, kSectors> vertexRadiusMm{};  // polygon vertex k at angle k 2 pi / kSectors
+    std::array<double, kSectors> cdf{};             // cumulative area fraction of the triangles
+    double areaMm2 = 0.0;
+  };
+  const Bin& bin(int j) const { return bins_[j]; }
+
+ private:
+  bool inside(const Bin& b, double centreX, double x, double y) const;
+  struct Lookup {
+    int j = 0;
+    double f = 0.0, centreX = 0.0;
+  };
+  Lookup lookup(double filmRadius) const;
+
+  std::vector<Bin> bins_;
+  double binScale_ = 0.0;  // bins - 1
+  double filmRadiusMaxMm_ = 0.0;
+  double fallbackRadiusMm_ = 0.0;
+  double planeZMm_ = 0.0;
+  std::array<double, kSectors + 1> cosAt_{}, sinAt_{};  // sector edge directions
+};
+
+}  // namespace lenslab::optics

@@ -1,0 +1,214 @@
+#include "optics/focus.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "optics/lens_system.h"
+
+namespace lenslab::optics {
+
+namespace {
+
+constexpr int kZones = 8;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A ray from the axial object through the front-vertex plane at height y.
+LensRay launch(const LensSystem& lens, double objectFromFront, double y) {
+  const double zFront = lens.frontVertexZ();
+  if (std::isinf(objectFromFront)) return {{y, 0.0, zFront + 1.0}, {0.0, 0.0, -1.0}};
+  const glm::dvec3 origin{0.0, 0.0, zFront + objectFromFront};
+  return {origin, glm::normalize(glm::dvec3{y, 0.0, zFront} - origin)};
+}
+
+// Height at the stop plane of that ray, ignoring clear apertures (only aiming); nullopt when it
+// misses a surface or is totally reflected on the way.
+std::optional<double> heightAtStop(const LensSystem& lens, LensRay ray) {
+  const auto& surfaces = lens.surfaces();
+  for (std::size_t k = 0; k <= lens.stopIndex(); ++k) {
+    const SurfaceGeometry& s = surfaces[k];
+    double t = 0.0;
+    if (!intersectSurface(s, ray.origin, ray.direction, t)) return std::nullopt;
+    ray.origin += t * ray.direction;
+    if (k == lens.stopIndex()) return ray.origin.x;
+    glm::dvec3 refracted;
+    if (!refract(ray.direction, surfaceNormal(s, ray.origin), s.indexFront / s.indexRear,
+                 refracted))
+      return std::nullopt;
+    ray.direction = refracted;
+  }
+  return std::nullopt;
+}
+
+// Launch height whose ray crosses the stop at `target`, by the secant method from a paraxial
+// start.
+std::optional<double> aim(const LensSystem& lens, double objectFromFront, double target) {
+  const double probe = 1e-4 * lens.surfaces().front().semiApertureMm;
+  const auto small = heightAtStop(lens, launch(lens, objectFromFront, probe));
+  if (!small || *small == 0.0) return std::nullopt;
+  double y0 = probe, f0 = *small - target;
+  double y1 = target * probe / *small;
+  for (int i = 0; i < 40; ++i) {
+    const auto h = heightAtStop(lens, launch(lens, objectFromFront, y1));
+    if (!h) {
+      y1 = 0.5 * (y0 + y1);  // overshot into a region the ray cannot take; back off
+      continue;
+    }
+    const double f1 = *h - target;
+    if (std::abs(f1) < 1e-10 * (1.0 + std::abs(target))) return y1;
+    if (f1 == f0) break;
+    const double next = y1 - f1 * (y1 - y0) / (f1 - f0);
+    y0 = y1;
+    f0 = f1;
+    y1 = next;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<double> bestFocusBehindRearVertexMm(const LensSystem& lens,
+                                                  double objectFromFrontVertexMm) {
+  if (!(objectFromFrontVertexMm > 0.0)) return std::nullopt;
+  const double stopRadius = lens.surfaces()[lens.stopIndex()].semiApertureMm;
+  // y(z) = a + b z for each exit ray in the meridional plane; the least-squares focus minimizes
+  // sum (a_i + b_i z)^2, i.e. z* = -sum a_i b_i / sum b_i^2.
+  double sumAB = 0.0, sumBB = 0.0;
+  int used = 0;
+  for (int i = 0; i < kZones; ++i) {
+    const double rho = std::sqrt((i + 0.5) / kZones);  // equal-area zones
+    const auto y = aim(lens, objectFromFrontVertexMm, 0.999 * rho * stopRadius);
+    if (!y) continue;
+    const auto out = lens.traceFromScene(launch(lens, objectFromFrontVertexMm, *y));
+    if (!out || out->direction.z >= 0.0) continue;
+    const double b = out->direction.x / out->direction.z;
+    const double a = out->origin.x - out->origin.z * b;
+    sumAB += a * b;
+    sumBB += b * b;
+    ++used;
+  }
+  if (used == 0 || sumBB < 1e-18) return std::nullopt;
+  const double zFocus = -sumAB / sumBB;
+  return lens.rearVertexZ() - zFocus;
+}
+
+FocusResult filmDistanceForObjectDistance(const LensSystem& lens, double objectDistanceMm) {
+  FocusResult result;
+  if (!(objectDistanceMm > 0.0)) {
+    result.whyNot = "the object distance must be positive";
+    return result;
+  }
+  const auto atInfinity = bestFocusBehindRearVertexMm(lens, kInfinity);
+  if (!atInfinity || *atInfinity <= 0.0) {
+    result.whyNot = "the lens forms no real image of an object at infinity";
+    return result;
+  }
+  if (std::isinf(objectDistanceMm)) {
+    result.valueMm = *atInfinity;
+    return result;
+  }
+  const double lensLength = lens.frontVertexZ() - lens.rearVertexZ();
+  // g(t) = focus(object at d - t - L from the front vertex) - t; g > 0 while the film is too
+  // near. Scan from the infinity focus for the first sign change (the solution nearer the lens),
+  // then bisect.
+  auto g = [&](double t) -> std::optional<double> {
+    const double fromFront = objectDistanceMm - t - lensLength;
+    if (fromFront <= 0.0) return std::nullopt;
+    const auto focus = bestFocusBehindRearVertexMm(lens, fromFront);
+    if (!focus || *focus <= 0.0) return std::nullopt;  // virtual image: object inside the focus
+    return *focus - t;
+  };
+  const double efl = std::abs(lens.firstOrder().eflMm);
+  double lo = *atInfinity;
+  auto glo = g(lo);
+  if (!glo) {
+    result.whyNot = "the object is inside the lens's focal length or behind its front";
+    return result;
+  }
+  constexpr int kSteps = 96;
+  const double span = 1.5 * (efl > 0 ? efl : *atInfinity);
+  for (int i = 1; i <= kSteps; ++i) {
+    const double hi = *atInfinity + span * i / kSteps;
+    const auto ghi = g(hi);
+    if (!ghi) break;
+    if (*ghi <= 0.0) {
+      double a = lo, b = hi;
+      for (int k = 0; k < 60 && b - a > 1e-10 * b; ++k) {
+        const double m = 0.5 * (a + b);
+        const auto gm = g(m);
+        if (gm && *gm > 0.0)
+          a = m;
+        else
+          b = m;
+      }
+      result.valueMm = 0.5 * (a + b);
+      return result;
+    }
+    lo = hi;
+  }
+  std::ostringstream why;
+  why << "no film position focuses an object " << objectDistanceMm
+      << " mm from the film: it is nearer than the closest focus (about 4 x EFL = " << 4 * efl
+      << " mm for a thin lens)";
+  result.whyNot = why.str();
+  return result;
+}
+
+FocusResult objectDistanceForFilmDistance(const LensSystem& lens, double filmDistanceMm) {
+  FocusResult result;
+  if (!(filmDistanceMm > 0.0) || std::isinf(filmDistanceMm)) {
+    result.whyNot = "the film distance must be a positive number";
+    return result;
+  }
+  const auto atInfinity = bestFocusBehindRearVertexMm(lens, kInfinity);
+  if (!atInfinity) {
+    result.whyNot = "the lens forms no real image";
+    return result;
+  }
+  if (filmDistanceMm < *atInfinity - 1e-9 * *atInfinity) {
+    std::ostringstream why;
+    why << "the film is nearer the lens than the infinity focus (" << *atInfinity
+        << " mm): nothing is in focus";
+    result.whyNot = why.str();
+    return result;
+  }
+  if (filmDistanceMm <= *atInfinity * (1.0 + 1e-12)) {
+    result.valueMm = kInfinity;
+    return result;
+  }
+  const double lensLength = lens.frontVertexZ() - lens.rearVertexZ();
+  const double efl = std::abs(lens.firstOrder().eflMm);
+  // Search over the object vergence v = 1 / s (s from the front vertex): v = 0 is infinity and the
+  // focus moves back as v grows until the object reaches the front focal point. "past" (focus at
+  // or beyond the film, or no real image any more) is false below the answer and true above it.
+  auto past = [&](double v) {
+    const auto focus = bestFocusBehindRearVertexMm(lens, 1.0 / v);
+    return !focus || *focus <= 0.0 || *focus >= filmDistanceMm;
+  };
+  double lo = 0.0, hi = 1e-3 / (efl > 0 ? efl : 1.0);
+  while (!past(hi)) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e6) {
+      result.whyNot = "no object distance focuses at this film distance";
+      return result;
+    }
+  }
+  for (int k = 0; k < 100 && hi - lo > 1e-13 * hi; ++k) {
+    const double m = 0.5 * (lo + hi);
+    if (past(m))
+      hi = m;
+    else
+      lo = m;
+  }
+  const double v = 0.5 * (lo + hi);
+  const auto focus = bestFocusBehindRearVertexMm(lens, 1.0 / v);
+  if (!focus || std::abs(*focus - filmDistanceMm) > 1e-6 * (1.0 + filmDistanceMm)) {
+    result.whyNot = "no object distance focuses at this film distance";
+    return result;
+  }
+  result.valueMm = (v == 0.0 ? kInfinity : 1.0 / v) + lensLength + filmDistanceMm;
+  return result;
+}
+
+}  // namespace lenslab::optics

@@ -1,0 +1,15 @@
+#include "optics/glass.h"
+
+namespace lenslab::optics {
+
+double refractiveIndex(double nD, std::optional<double> abbeD, double wavelengthNm) {
+  if (!abbeD || *abbeD <= 0.0 || nD <= 1.0) return nD;
+  // n_F - n_C = B (1/lF^2 - 1/lC^2) = (nD - 1)/V  =>  B; then A from n(d) = nD.
+  const double invF2 = 1.0 / (kWavelengthFNm * kWavelengthFNm);
+  const double invC2 = 1.0 / (kWavelengthCNm * kWavelengthCNm);
+  const double b = (nD - 1.0) / *abbeD / (invF2 - invC2);
+  const double a = nD - b / (kWavelengthDNm * kWavelengthDNm);
+  return a + b / (wavelengthNm * wavelengthNm);
+}
+
+}  // namespace lenslab::optics

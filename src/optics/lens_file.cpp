@@ -1,0 +1,207 @@
+#include "optics/lens_file.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "optics/lens_system.h"
+
+namespace lenslab::optics {
+
+namespace {
+
+constexpr std::size_t kMaxFileBytes = 16u << 20;  // a lens file is a few hundred bytes
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+struct Token {
+  std::string_view text;
+  int column = 0;
+};
+
+const char* kColumnNames[] = {"radius", "thickness", "refractive index", "aperture diameter",
+                              "Abbe number"};
+
+// Parses one number token; radius may be inf/infinity (a flat surface). Returns an error message
+// or empty.
+std::string parseNumber(std::string_view text, int columnIndex, double& value) {
+  std::string_view body = text;
+  if (!body.empty() && body.front() == '+') body.remove_prefix(1);
+  const char* end = body.data() + body.size();
+  const auto [stop, error] = std::from_chars(body.data(), end, value);
+  // Messages are built with a stream: GCC 12 flags std::string operator+ chains here with a
+  // false -Wrestrict positive.
+  std::ostringstream message;
+  const char* what = kColumnNames[columnIndex];
+  if (error == std::errc::result_out_of_range) {
+    message << "number '" << text << "' is out of range";
+    return message.str();
+  }
+  if (error != std::errc() || stop != end || body.empty()) {
+    message << "'" << text << "' is not a number (expected the " << what << ")";
+    return message.str();
+  }
+  if (std::isnan(value)) {
+    message << "NaN is not allowed (expected the " << what << ")";
+    return message.str();
+  }
+  if (std::isinf(value)) {
+    if (columnIndex != 0) {
+      message << "infinity is not allowed here (expected a finite " << what
+              << "; only the radius may be 'inf', for a flat surface)";
+      return message.str();
+    }
+    value = kFlatRadius;
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string LensFileError::toString() const {
+  std::ostringstream s;
+  s << file << ':' << line << ':' << column << ": " << message;
+  return s.str();
+}
+
+LensFileResult parseLensText(std::string_view text, const std::string& fileName) {
+  LensFileResult result;
+  auto fail = [&](int line, int column, std::string message) {
+    result.errors.push_back({fileName, line, column, std::move(message)});
+    return result;
+  };
+  LensFile lens;
+  bool seenRow = false;
+  int lineNumber = 0;
+  std::size_t position = 0;
+  while (position <= text.size()) {
+    if (position == text.size() && (text.empty() || text.back() == '\n')) break;
+    ++lineNumber;
+    const std::size_t newline = text.find('\n', position);
+    std::string_view line = text.substr(
+        position, newline == std::string_view::npos ? std::string_view::npos : newline - position);
+    position = newline == std::string_view::npos ? text.size() + 1 : newline + 1;
+
+    // Binary data: a NUL or another control character outside comments is not a lens file.
+    const std::size_t hash = line.find('#');
+    std::string_view data = line.substr(0, hash);
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const unsigned char ch = static_cast<unsigned char>(line[i]);
+      if (ch == 0 || (ch < 32 && !isBlank(line[i]) && i < data.size()))
+        return fail(lineNumber, static_cast<int>(i) + 1,
+                    "unexpected control character (is this a binary file?)");
+    }
+    if (hash != std::string_view::npos && !seenRow) {
+      std::string_view comment = line.substr(hash + 1);
+      while (!comment.empty() && (comment.back() == '\r' || comment.back() == '\n'))
+        comment.remove_suffix(1);
+      if (!comment.empty() && comment.front() == ' ') comment.remove_prefix(1);
+      lens.headerComments.emplace_back(comment);
+    }
+
+    std::vector<Token> tokens;
+    for (std::size_t i = 0; i < data.size();) {
+      if (isBlank(data[i])) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < data.size() && !isBlank(data[j])) ++j;
+      tokens.push_back({data.substr(i, j - i), static_cast<int>(i) + 1});
+      i = j;
+    }
+    if (tokens.empty()) continue;
+    seenRow = true;
+    if (tokens.size() > 5)
+      return fail(lineNumber, tokens[5].column,
+                  "too many numbers in this row: expected 4 (radius thickness n aperture) or 5 "
+                  "(with V_d)");
+    double values[5] = {};
+    for (std::size_t k = 0; k < tokens.size(); ++k) {
+      const std::string error = parseNumber(tokens[k].text, static_cast<int>(k), values[k]);
+      if (!error.empty()) return fail(lineNumber, tokens[k].column, error);
+    }
+    if (tokens.size() < 4) {
+      const Token& lastToken = tokens.back();
+      return fail(lineNumber, lastToken.column + static_cast<int>(lastToken.text.size()),
+                  "short row: " + std::to_string(tokens.size()) +
+                      " number(s), expected 4 (radius thickness n aperture) or 5 (with V_d); "
+                      "missing the " +
+                      kColumnNames[tokens.size()]);
+    }
+    Surface surface;
+    surface.radiusMm = values[0];
+    surface.thicknessMm = values[1];
+    surface.indexD = values[2];
+    surface.apertureDiameterMm = values[3];
+    if (tokens.size() == 5) surface.abbeD = values[4];
+    lens.prescription.surfaces.push_back(surface);
+    lens.rowLines.push_back(lineNumber);
+  }
+  if (lens.prescription.surfaces.empty())
+    return fail(std::max(lineNumber, 1), 1,
+                text.empty() ? "empty file: no lens surfaces"
+                             : "no lens surfaces (expected rows of: radius thickness n aperture)");
+
+  for (const ValidationError& e : validate(lens.prescription)) {
+    const int line = e.surface >= 0 ? lens.rowLines[e.surface] : lens.rowLines.front();
+    const std::string where =
+        e.surface >= 0 ? "surface " + std::to_string(e.surface) + ": " : std::string();
+    result.errors.push_back({fileName, line, 1, where + e.message});
+  }
+  if (!result.errors.empty()) return result;
+  result.lens = std::move(lens);
+  return result;
+}
+
+LensFileResult readLensFile(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return {std::nullopt, {{name, 1, 1, "no such file"}}};
+  if (std::filesystem::is_directory(path, ec))
+    return {std::nullopt, {{name, 1, 1, "is a directory, not a lens file"}}};
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {std::nullopt, {{name, 1, 1, "cannot open the file for reading"}}};
+  std::string text;
+  char buffer[4096];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxFileBytes)
+      return {std::nullopt, {{name, 1, 1, "file is too large to be a lens file"}}};
+  }
+  return parseLensText(text, name);
+}
+
+std::string formatLensText(const Prescription& prescription,
+                           const std::vector<std::string>& headerComments) {
+  auto number = [](double value) {
+    if (std::isinf(value)) return std::string("inf");
+    char buffer[64];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return error == std::errc() ? std::string(buffer, end) : std::string("nan");
+  };
+  std::string out;
+  for (const std::string& comment : headerComments) out += "# " + comment + "\n";
+  out += "# radius\tthickness\tn_d\taperture\t[V_d]\n";
+  for (const Surface& s : prescription.surfaces) {
+    out += number(s.radiusMm) + '\t' + number(s.thicknessMm) + '\t' + number(s.indexD) + '\t' +
+           number(s.apertureDiameterMm);
+    if (s.abbeD) out += '\t' + number(*s.abbeD);
+    out += '\n';
+  }
+  return out;
+}
+
+bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
+                   const std::vector<std::string>& headerComments, std::string* error) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (out) out << formatLensText(prescription, headerComments);
+  if (!out) {
+    if (error) *error = path.string() + ": cannot write the file";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace lenslab::optics

@@ -1,0 +1,52 @@
+#pragma once
+// Lens files in pbrt's format: one surface per row, "radius thickness n aperture-diameter", front
+// to rear, `#` starts a comment. lenslab also reads and writes an optional fifth column, V_d, and
+// `inf` as the radius of a flat refracting surface. Radius 0 is the aperture stop, n 0 means air.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "optics/prescription.h"
+
+namespace lenslab::optics {
+
+struct LensFileError {
+  std::string file;
+  int line = 0;    // 1-based
+  int column = 0;  // 1-based, in bytes
+  std::string message;
+  // "file:line:column: message"
+  std::string toString() const;
+};
+
+struct LensFile {
+  Prescription prescription;
+  // Comment lines before the first row, without the leading '#' and one following space.
+  std::vector<std::string> headerComments;
+  // Line number (1-based) of each surface row, for error messages that point at a row.
+  std::vector<int> rowLines;
+};
+
+struct LensFileResult {
+  std::optional<LensFile> lens;       // set only when the whole file is valid
+  std::vector<LensFileError> errors;  // empty on success
+  bool ok() const { return lens.has_value(); }
+};
+
+// Parses lens file text; `fileName` is only used in the error messages. The prescription is
+// checked with validate() as well, so a successful result always builds a LensSystem.
+LensFileResult parseLensText(std::string_view text, const std::string& fileName);
+LensFileResult readLensFile(const std::filesystem::path& path);
+
+// Text that parseLensText reads back to the identical prescription (shortest round-trip number
+// formatting).
+std::string formatLensText(const Prescription& prescription,
+                           const std::vector<std::string>& headerComments = {});
+// Returns false and sets `error` when the file cannot be written.
+bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
+                   const std::vector<std::string>& headerComments, std::string* error);
+
+}  // namespace lenslab::optics

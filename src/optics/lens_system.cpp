@@ -1,0 +1,164 @@
+#include "optics/lens_system.h"
+
+#include <cmath>
+
+#include "optics/exit_pupil.h"
+#include "optics/glass.h"
+
+namespace lenslab::optics {
+
+void LensRayBatch::resize(std::size_t n) {
+  ox.resize(n);
+  oy.resize(n);
+  oz.resize(n);
+  dx.resize(n);
+  dy.resize(n);
+  dz.resize(n);
+  alive.resize(n, 1);
+}
+
+const char* toString(RayStop stop) {
+  switch (stop) {
+    case RayStop::Passed:
+      return "passed";
+    case RayStop::ClippedByAperture:
+      return "clipped by aperture";
+    case RayStop::MissedSurface:
+      return "missed surface";
+    case RayStop::TotalInternalReflection:
+      return "total internal reflection";
+  }
+  return "?";
+}
+
+LensSystem::LensSystem(Private, Prescription prescription, double wavelengthNm)
+    : prescription_(std::move(prescription)), wavelengthNm_(wavelengthNm) {
+  stopIndex_ = *prescription_.stopIndex();
+  place();
+}
+
+LensSystem::~LensSystem() = default;
+
+void LensSystem::place() {
+  const auto& rows = prescription_.surfaces;
+  surfaces_.resize(rows.size());
+  double z = 0.0;  // film plane
+  for (std::size_t k = rows.size(); k-- > 0;) {
+    z += rows[k].thicknessMm;
+    SurfaceGeometry& s = surfaces_[k];
+    s.vertexZMm = z;
+    s.curvaturePerMm = rows[k].curvaturePerMm();
+    s.semiApertureMm = 0.5 * rows[k].apertureDiameterMm;
+    s.isStop = rows[k].isStop();
+    s.indexRear = refractiveIndex(rows[k].mediumIndexD(), rows[k].abbeD, wavelengthNm_);
+  }
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    surfaces_[k].indexFront = k == 0 ? 1.0 : surfaces_[k - 1].indexRear;
+  firstOrder_ = computeFirstOrder(surfaces_, stopIndex_, wavelengthNm_);
+}
+
+BuildResult LensSystem::build(const Prescription& prescription, double wavelengthNm) {
+  BuildResult result;
+  result.errors = validate(prescription);
+  if (!(std::isfinite(wavelengthNm) && wavelengthNm > 0.0))
+    result.errors.push_back({-1, "wavelength must be a positive number of nanometres"});
+  if (!result.errors.empty()) return result;
+  result.system = std::make_shared<LensSystem>(Private{}, prescription, wavelengthNm);
+  return result;
+}
+
+std::shared_ptr<const LensSystem> LensSystem::withFilmDistance(double filmDistanceMm) const {
+  if (!(std::isfinite(filmDistanceMm) && filmDistanceMm > 0.0)) return nullptr;
+  Prescription p = prescription_;
+  p.surfaces.back().thicknessMm = filmDistanceMm;
+  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
+}
+
+std::shared_ptr<const LensSystem> LensSystem::withStopDiameter(double stopDiameterMm) const {
+  if (!(std::isfinite(stopDiameterMm) && stopDiameterMm > 0.0)) return nullptr;
+  Prescription p = prescription_;
+  p.surfaces[stopIndex_].apertureDiameterMm = stopDiameterMm;
+  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
+}
+
+std::shared_ptr<const LensSystem> LensSystem::withWavelength(double wavelengthNm) const {
+  if (!(std::isfinite(wavelengthNm) && wavelengthNm > 0.0)) return nullptr;
+  return std::make_shared<LensSystem>(Private{}, prescription_, wavelengthNm);
+}
+
+FirstOrderData LensSystem::firstOrderAt(double wavelengthNm) const {
+  if (wavelengthNm == wavelengthNm_) return firstOrder_;
+  return withWavelength(wavelengthNm)->firstOrder();
+}
+
+template <bool kRecord>
+std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* path) const {
+  const int n = static_cast<int>(surfaces_.size());
+  if constexpr (kRecord) {
+    path->points.assign(1, ray.origin);
+    path->surfaceIndices.clear();
+    path->stop = RayStop::Passed;
+    path->stopSurface = -1;
+    path->exitRay.reset();
+  }
+  auto fail = [&](RayStop why, int k) -> std::optional<LensRay> {
+    if constexpr (kRecord) {
+      path->stop = why;
+      path->stopSurface = k;
+    }
+    return std::nullopt;
+  };
+  for (int step = 0; step < n; ++step) {
+    const int k = fromFilm ? n - 1 - step : step;
+    const SurfaceGeometry& s = surfaces_[k];
+    double t = 0.0;
+    if (!intersectSurface(s, ray.origin, ray.direction, t)) return fail(RayStop::MissedSurface, k);
+    const glm::dvec3 hit = ray.origin + t * ray.direction;
+    if constexpr (kRecord) {
+      path->points.push_back(hit);
+      path->surfaceIndices.push_back(k);
+    }
+    if (hit.x * hit.x + hit.y * hit.y > s.semiApertureMm * s.semiApertureMm)
+      return fail(RayStop::ClippedByAperture, k);
+    ray.origin = hit;
+    const double eta = fromFilm ? s.indexRear / s.indexFront : s.indexFront / s.indexRear;
+    if (eta != 1.0) {
+      glm::dvec3 refracted;
+      if (!refract(ray.direction, surfaceNormal(s, hit), eta, refracted))
+        return fail(RayStop::TotalInternalReflection, k);
+      ray.direction = refracted;
+    }
+  }
+  if constexpr (kRecord) path->exitRay = ray;
+  return ray;
+}
+
+std::optional<LensRay> LensSystem::traceFromFilm(const LensRay& ray) const {
+  return trace<false>(ray, true, nullptr);
+}
+std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray) const {
+  return trace<false>(ray, false, nullptr);
+}
+RayPath LensSystem::traceFromFilmPath(const LensRay& ray) const {
+  RayPath path;
+  trace<true>(ray, true, &path);
+  return path;
+}
+RayPath LensSystem::traceFromScenePath(const LensRay& ray) const {
+  RayPath path;
+  trace<true>(ray, false, &path);
+  return path;
+}
+
+const ExitPupilTable& LensSystem::exitPupilTable() const {
+  std::call_once(pupilOnce_, [this] { pupil_ = std::make_unique<ExitPupilTable>(*this); });
+  return *pupil_;
+}
+
+double LensSystem::exitPupilTableRadiusMm() const { return exitPupilTable().filmRadiusMaxMm(); }
+
+std::optional<PupilSample> LensSystem::sampleExitPupil(glm::dvec2 filmPointMm, glm::dvec2 u) const {
+  return exitPupilTable().sample(filmPointMm, u);
+}
+
+}  // namespace lenslab::optics

@@ -1,0 +1,166 @@
+#pragma once
+// An immutable, validated lens built from a Prescription: surface geometry in the lens frame,
+// exact ray tracing in both directions (scalar, path-recording and batched), first-order data and
+// exit-pupil sampling.
+//
+// Lens frame (millimetres): the optical axis is z; the film plane is z = 0; the lens lies at
+// z > 0 and the scene is toward +z. Rays traced "from the film" travel toward +z.
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "optics/paraxial.h"
+#include "optics/prescription.h"
+#include "optics/surface_geometry.h"
+
+namespace lenslab::optics {
+
+struct LensRay {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0, 0.0, 1.0};  // normalized
+};
+
+// Structure-of-arrays rays for the batch trace; all arrays have the same length. On input
+// `alive` marks the rays to trace; on output it is 0 for every ray the lens blocked, and the
+// origin/direction of the live rays describe the ray leaving the lens.
+struct LensRayBatch {
+  std::vector<float> ox, oy, oz, dx, dy, dz;
+  std::vector<std::uint8_t> alive;
+
+  void resize(std::size_t n);
+  std::size_t size() const { return ox.size(); }
+};
+
+// Why a traced ray stopped.
+enum class RayStop : std::uint8_t {
+  Passed,                   // left the lens
+  ClippedByAperture,        // hit surface `stopSurface` outside its clear aperture (or the stop)
+  MissedSurface,            // did not intersect the sphere of surface `stopSurface` at all
+  TotalInternalReflection,  // at surface `stopSurface`
+};
+const char* toString(RayStop stop);
+
+// A traced ray as the cross-section draws it.
+struct RayPath {
+  // points[0] is the ray origin; points[i] for i >= 1 is the hit point on surface
+  // surfaceIndices[i - 1]. For a clipped ray the last point is where it met the surface outside
+  // the clear aperture; a missed surface or TIR adds no point beyond the last one reached.
+  std::vector<glm::dvec3> points;
+  std::vector<int> surfaceIndices;
+  RayStop stop = RayStop::Passed;
+  int stopSurface = -1;            // prescription index where the ray stopped, -1 if it passed
+  std::optional<LensRay> exitRay;  // the ray leaving the lens, when it passed
+};
+
+// Density with respect to area on the plane z = LensSystem::rearVertexZ().
+struct PupilSample {
+  glm::dvec3 pointMm{0.0};
+  double pdfPerMm2 = 0.0;
+};
+
+struct ValidationError {
+  int surface = -1;  // prescription row (0-based), -1 for the lens as a whole
+  std::string message;
+};
+
+class LensSystem;
+class ExitPupilTable;
+
+struct BuildResult {
+  std::shared_ptr<const LensSystem> system;  // null when errors is non-empty
+  std::vector<ValidationError> errors;
+  bool ok() const { return system != nullptr; }
+};
+
+// Checks a prescription without building it: crossing neighbours (negative edge thickness),
+// semi-aperture larger than |radius|, n < 1, non-positive aperture, missing or repeated stop,
+// non-finite numbers.
+std::vector<ValidationError> validate(const Prescription& prescription);
+
+class LensSystem {
+ public:
+  static constexpr double kDefaultWavelengthNm = 587.56;
+
+  static BuildResult build(const Prescription& prescription,
+                           double wavelengthNm = kDefaultWavelengthNm);
+
+  // Cheap variants (no validation beyond the changed value, exit-pupil table rebuilt lazily).
+  // Return null when the value is not positive and finite.
+  std::shared_ptr<const LensSystem> withFilmDistance(double filmDistanceMm) const;
+  std::shared_ptr<const LensSystem> withStopDiameter(double stopDiameterMm) const;
+  // Same geometry, indices at another wavelength (for spectral rendering).
+  std::shared_ptr<const LensSystem> withWavelength(double wavelengthNm) const;
+
+  const Prescription& prescription() const { return prescription_; }
+  const std::vector<SurfaceGeometry>& surfaces() const { return surfaces_; }
+  std::size_t stopIndex() const { return stopIndex_; }
+  double wavelengthNm() const { return wavelengthNm_; }
+
+  double rearVertexZ() const { return surfaces_.back().vertexZMm; }
+  double frontVertexZ() const { return surfaces_.front().vertexZMm; }
+  double rearApertureRadiusMm() const { return surfaces_.back().semiApertureMm; }
+  double filmDistanceMm() const { return prescription_.surfaces.back().thicknessMm; }
+  double stopDiameterMm() const { return prescription_.surfaces[stopIndex_].apertureDiameterMm; }
+  // Front vertex to film.
+  double totalTrackMm() const { return frontVertexZ(); }
+
+  // Exact trace through every surface; nullopt when the lens blocks the ray.
+  std::optional<LensRay> traceFromFilm(const LensRay& ray) const;   // travels toward +z
+  std::optional<LensRay> traceFromScene(const LensRay& ray) const;  // travels toward -z
+  // The same, recording the path and why it stopped.
+  RayPath traceFromFilmPath(const LensRay& ray) const;
+  RayPath traceFromScenePath(const LensRay& ray) const;
+
+  // Batch film-to-scene trace in single precision, vectorized (AVX2 when the CPU has it, a
+  // portable path otherwise).
+  void traceFromFilmBatch(LensRayBatch& rays) const;
+
+  // Samples a point on the plane z = rearVertexZ() through which a ray from the film point
+  // (x, y, 0) likely passes the lens. u in [0,1)^2. pdfPerMm2 is the density per unit area on that
+  // plane: the estimator f / pdf is unbiased (the sampled region contains every point whose ray
+  // passes). nullopt when no ray from this film point passes (or with the probability that the
+  // stochastic blend between two table radii picked an empty one; then the sample is simply
+  // black). The table is built on first use (thread-safe), in a few milliseconds.
+  std::optional<PupilSample> sampleExitPupil(glm::dvec2 filmPointMm, glm::dvec2 u) const;
+  // Forces the table build now (e.g. on a worker thread); returns its film-radius range.
+  double exitPupilTableRadiusMm() const;
+  const ExitPupilTable& exitPupilTable() const;
+
+  // First-order (paraxial) data at the system's wavelength, or at another one.
+  const FirstOrderData& firstOrder() const { return firstOrder_; }
+  FirstOrderData firstOrderAt(double wavelengthNm) const;
+
+  LensSystem(const LensSystem&) = delete;
+  LensSystem& operator=(const LensSystem&) = delete;
+  ~LensSystem();
+
+ private:
+  struct Private {};
+
+ public:
+  // Use build(); public only for std::make_shared.
+  LensSystem(Private, Prescription prescription, double wavelengthNm);
+
+ private:
+  void place();  // fills surfaces_, firstOrder_ from prescription_ and wavelengthNm_
+  template <bool kRecord>
+  std::optional<LensRay> trace(LensRay ray, bool fromFilm, RayPath* path) const;
+
+  Prescription prescription_;
+  double wavelengthNm_;
+  std::size_t stopIndex_ = 0;
+  std::vector<SurfaceGeometry> surfaces_;
+  FirstOrderData firstOrder_;
+
+  mutable std::once_flag pupilOnce_;
+  mutable std::unique_ptr<ExitPupilTable> pupil_;
+};
+
+}  // namespace lenslab::optics

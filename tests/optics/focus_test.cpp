@@ -1,0 +1,131 @@
+// Real-ray focusing: agrees with paraxial optics at small apertures, inverts itself, and says
+// clearly when there is no solution.
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "optics/focus.h"
+#include "test_lenses.h"
+
+namespace lenslab::optics {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Paraxial image distance behind the rear vertex for an object s in front of the front vertex,
+// from the system matrix (computed here independently by tracing a paraxial ray with y-nu steps).
+double paraxialImageDistance(const LensSystem& lens, double s) {
+  const auto& surfaces = lens.surfaces();
+  double y = 0.0, nu = 1.0;  // object point on the axis, unit reduced angle
+  double distance = std::isinf(s) ? 0.0 : s;
+  if (std::isinf(s)) {
+    y = 1.0;
+    nu = 0.0;
+  } else {
+    y = distance * nu;  // at the front vertex (n = 1)
+  }
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    if (k > 0)
+      y += (surfaces[k - 1].vertexZMm - surfaces[k].vertexZMm) / surfaces[k - 1].indexRear * nu;
+    nu -= (surfaces[k].indexRear - surfaces[k].indexFront) * surfaces[k].curvaturePerMm * y;
+  }
+  return -y / nu;  // n' = 1
+}
+
+TEST(Focus, SmallApertureRealRayFocusEqualsParaxialFocus) {
+  const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  ASSERT_TRUE(lens);
+  const auto tiny = lens->withStopDiameter(0.2);
+  for (double s : {kInf, 5000.0, 1000.0, 300.0}) {
+    const auto real = bestFocusBehindRearVertexMm(*tiny, s);
+    ASSERT_TRUE(real) << s;
+    EXPECT_NEAR(*real, paraxialImageDistance(*tiny, s), 2e-3) << s;
+  }
+  // Paraxial infinity focus is the BFL.
+  EXPECT_NEAR(paraxialImageDistance(*tiny, kInf), tiny->firstOrder().bflMm, 1e-9);
+}
+
+TEST(Focus, FullApertureFocusDiffersFromParaxialBySphericalAberration) {
+  const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  const auto real = bestFocusBehindRearVertexMm(*lens, kInf);
+  ASSERT_TRUE(real);
+  // Undercorrected zones focus short: a small shift, but not zero.
+  EXPECT_NEAR(*real, lens->firstOrder().bflMm, 0.5);
+  EXPECT_GT(std::abs(*real - lens->firstOrder().bflMm), 1e-4);
+}
+
+TEST(Focus, FilmAndObjectDistanceInvertEachOther) {
+  for (const auto& course : testing::kCourseLenses) {
+    const auto lens =
+        testing::loadLens(testing::referenceLensDir() / course.file, course.filmDistanceMm);
+    ASSERT_TRUE(lens);
+    const double efl = lens->firstOrder().eflMm;
+    const double track = lens->frontVertexZ() - lens->rearVertexZ() + lens->firstOrder().bflMm;
+    for (double d : {track + 100.0 * efl, track + 20.0 * efl, track + 6.0 * efl}) {
+      const auto film = filmDistanceForObjectDistance(*lens, d);
+      ASSERT_TRUE(film.ok()) << course.file << " " << d << ": " << film.whyNot;
+      const auto object = objectDistanceForFilmDistance(*lens, *film.valueMm);
+      ASSERT_TRUE(object.ok()) << course.file << " " << object.whyNot;
+      EXPECT_NEAR(*object.valueMm, d, 1e-5 * d) << course.file;
+      // And the film distance is the real-ray focus for that geometry.
+      const double fromFront = d - *film.valueMm - (lens->frontVertexZ() - lens->rearVertexZ());
+      EXPECT_NEAR(*bestFocusBehindRearVertexMm(*lens, fromFront), *film.valueMm, 1e-6);
+    }
+  }
+}
+
+TEST(Focus, CourseSceneFilmDistanceFocusesNearTheScene) {
+  // The course's double-Gauss scene puts the film 36.77 mm behind the rear vertex, about 0.6 mm
+  // behind the infinity focus: by Newton's x x' = f^2, an object some 4 m away.
+  const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  const auto object = objectDistanceForFilmDistance(*lens, 36.77);
+  ASSERT_TRUE(object.ok()) << object.whyNot;
+  EXPECT_GT(*object.valueMm, 2000.0);
+  EXPECT_LT(*object.valueMm, 8000.0);
+}
+
+TEST(Focus, CloseFocusAtOneToOneAndSmallApertures) {
+  const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  for (double stop : {17.1, 2.0, 0.5}) {
+    const auto l = lens->withStopDiameter(stop);
+    // Near 1:1 the object-to-film distance is about 4 f plus the principal-plane gap.
+    const double d = 4.3 * l->firstOrder().eflMm;
+    const auto film = filmDistanceForObjectDistance(*l, d);
+    ASSERT_TRUE(film.ok()) << stop << ": " << film.whyNot;
+    EXPECT_GT(*film.valueMm, l->firstOrder().bflMm + 20.0) << stop;
+  }
+}
+
+TEST(Focus, NoSolutionIsSaidClearly) {
+  const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  const auto tooClose = filmDistanceForObjectDistance(*lens, 150.0);
+  EXPECT_FALSE(tooClose.ok());
+  EXPECT_FALSE(tooClose.whyNot.empty());
+  const auto tooShort = objectDistanceForFilmDistance(*lens, 20.0);
+  EXPECT_FALSE(tooShort.ok());
+  EXPECT_NE(tooShort.whyNot.find("infinity"), std::string::npos);
+  EXPECT_FALSE(filmDistanceForObjectDistance(*lens, -5.0).ok());
+  const auto infinity = filmDistanceForObjectDistance(*lens, kInf);
+  ASSERT_TRUE(infinity.ok());
+  const auto back = objectDistanceForFilmDistance(*lens, *infinity.valueMm);
+  ASSERT_TRUE(back.ok());
+  EXPECT_TRUE(std::isinf(*back.valueMm));
+}
+
+TEST(Focus, PlaneParallelPlateShiftWithRealRaysAtSmallAperture) {
+  const double t = 10.0, n = 1.6;
+  Prescription bare = testing::singlet(60.0, -60.0, 4.0, 1.5, 20.0, 16.0);
+  bare.surfaces.back().apertureDiameterMm = 0.5;
+  Prescription plate = bare;
+  plate.surfaces.back().thicknessMm = 5.0;
+  plate.surfaces.push_back({kFlatRadius, t, n, std::nullopt, 30.0});
+  plate.surfaces.push_back({kFlatRadius, 20.0, 1.0, std::nullopt, 30.0});
+  const auto a = LensSystem::build(bare).system, b = LensSystem::build(plate).system;
+  const double focusA = 1.0 + *bestFocusBehindRearVertexMm(*a, kInf);
+  const double focusB = 1.0 + 5.0 + t + *bestFocusBehindRearVertexMm(*b, kInf);
+  EXPECT_NEAR(focusB - focusA, t * (1.0 - 1.0 / n), 1e-3);
+}
+
+}  // namespace
+}  // namespace lenslab::optics

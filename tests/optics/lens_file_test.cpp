@@ -1,0 +1,162 @@
+// The pbrt lens-file format: what it must accept, what it must refuse (with file:line:column),
+// and that lenslab reads what it writes.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "test_lenses.h"
+
+namespace lenslab::optics {
+namespace {
+
+const char* kFourRows =
+    "# a test lens\n"
+    "50 5 1.5 20\n"
+    "0 5 0 10\n"
+    "-50 40 1 20\n";
+
+LensFileResult parse(const std::string& text) { return parseLensText(text, "t.dat"); }
+
+std::string firstError(const LensFileResult& r) {
+  return r.errors.empty() ? std::string("(no error)") : r.errors.front().toString();
+}
+
+TEST(LensFile, ReadsPbrtRowsAndComments) {
+  const auto r = parse(kFourRows);
+  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto& s = r.lens->prescription.surfaces;
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].radiusMm, 50.0);
+  EXPECT_EQ(s[1].isStop(), true);
+  EXPECT_EQ(s[1].mediumIndexD(), 1.0);  // n 0 means air
+  EXPECT_EQ(s[2].thicknessMm, 40.0);
+  ASSERT_EQ(r.lens->headerComments.size(), 1u);
+  EXPECT_EQ(r.lens->headerComments[0], "a test lens");
+}
+
+TEST(LensFile, AcceptsCrlfAndNoFinalNewline) {
+  const auto crlf = parse("# x\r\n50\t5\t1.5\t20\r\n0 5 0 10\r\n-50 40 1 20");
+  ASSERT_TRUE(crlf.ok()) << firstError(crlf);
+  ASSERT_EQ(crlf.lens->prescription.surfaces.size(), 3u);
+  // pbrt drops a last number without trailing whitespace; lenslab keeps it.
+  EXPECT_EQ(crlf.lens->prescription.surfaces[2].apertureDiameterMm, 20.0);
+}
+
+TEST(LensFile, AcceptsStrayQuotesInComments) {
+  const auto r = parse("# US patent 2,673,491 Tronnier\"\t\t\n# Modern Lens Design, p.312\"\n" +
+                       std::string(kFourRows));
+  ASSERT_TRUE(r.ok()) << firstError(r);
+  EXPECT_EQ(r.lens->prescription.surfaces.size(), 3u);
+}
+
+TEST(LensFile, FifthColumnIsTheAbbeNumberAndInfIsAFlatSurface) {
+  const auto r = parse("50 5 1.67 20 47.1\ninf 1 1 20\n0 5 0 10\n-50 40 1 20\n");
+  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto& s = r.lens->prescription.surfaces;
+  ASSERT_TRUE(s[0].abbeD.has_value());
+  EXPECT_EQ(*s[0].abbeD, 47.1);
+  EXPECT_FALSE(s[2].abbeD.has_value());
+  EXPECT_TRUE(s[1].isFlat());
+  EXPECT_FALSE(s[1].isStop());
+}
+
+TEST(LensFile, ReadsTheCourseReferenceFiles) {
+  for (const auto& lens : testing::kCourseLenses) {
+    const auto r = readLensFile(testing::referenceLensDir() / lens.file);
+    ASSERT_TRUE(r.ok()) << firstError(r);
+    EXPECT_GE(r.lens->prescription.surfaces.size(), 7u);
+  }
+}
+
+TEST(LensFile, WritesWhatItReadsIdentically) {
+  Prescription p;
+  p.surfaces = {{29.475, 3.76, 1.67, 47.1, 25.2},
+                {kFlatRadius, 0.12, 1.0, std::nullopt, 25.2},
+                {0.0, 4.5, 0.0, std::nullopt, 17.1},
+                {-1.0 / 3.0, 0.1 + 0.2, 1.603, 38.0, 0.6},
+                {-39.73, 36.77, 1.0, std::nullopt, 20.0}};
+  const std::string text = formatLensText(p, {"round trip", "second line"});
+  EXPECT_TRUE(parse(text).ok()) << firstError(parse(text));
+  p.surfaces[3] = {-14.495, 1.0 / 3.0, 1.603, 38.0, 17.0};
+  const auto again = parse(formatLensText(p, {"round trip"}));
+  ASSERT_TRUE(again.ok()) << firstError(again) << "\n" << formatLensText(p);
+  const auto& s = again.lens->prescription.surfaces;
+  ASSERT_EQ(s.size(), p.surfaces.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    EXPECT_EQ(s[i].radiusMm, p.surfaces[i].radiusMm) << i;
+    EXPECT_EQ(s[i].thicknessMm, p.surfaces[i].thicknessMm) << i;
+    EXPECT_EQ(s[i].indexD, p.surfaces[i].indexD) << i;
+    EXPECT_EQ(s[i].abbeD, p.surfaces[i].abbeD) << i;
+    EXPECT_EQ(s[i].apertureDiameterMm, p.surfaces[i].apertureDiameterMm) << i;
+  }
+  EXPECT_EQ(again.lens->headerComments.front(), "round trip");
+  // And the text itself is a fixed point.
+  EXPECT_EQ(formatLensText(again.lens->prescription, {"round trip"}),
+            formatLensText(p, {"round trip"}));
+}
+
+TEST(LensFile, WritesAndReadsAFile) {
+  const auto dir = std::filesystem::temp_directory_path() / "lenslab_lens_file_test";
+  std::filesystem::create_directories(dir);
+  const Prescription p = testing::loadPrescription(testing::referenceLensDir() / "wide.22mm.dat");
+  std::string error;
+  ASSERT_TRUE(writeLensFile(dir / "wide.dat", p, {"copy"}, &error)) << error;
+  const Prescription q = testing::loadPrescription(dir / "wide.dat");
+  ASSERT_EQ(q.surfaces.size(), p.surfaces.size());
+  for (std::size_t i = 0; i < q.surfaces.size(); ++i)
+    EXPECT_EQ(q.surfaces[i].radiusMm, p.surfaces[i].radiusMm);
+}
+
+struct BadCase {
+  const char* text;
+  int line, column;
+  const char* fragment;
+};
+
+TEST(LensFile, BadInputGivesFileLineColumnErrors) {
+  const BadCase cases[] = {
+      {"50 5 1.5 20\n0 5 x 10\n-50 40 1 20\n", 2, 5, "not a number"},
+      {"50 5 1.5 20\n0 5 1.5e 10\n-50 40 1 20\n", 2, 5, "not a number"},
+      {"50 5 1.5 20\n0 5 0\n-50 40 1 20\n", 2, 6, "short row"},
+      {"50 5 1.5 20 40 7\n0 5 0 10\n-50 40 1 20\n", 1, 16, "too many"},
+      {"", 1, 1, "empty"},
+      {"# only a comment\n", 1, 1, "no lens surfaces"},
+      {"50 5 nan 20\n0 5 0 10\n-50 40 1 20\n", 1, 6, "NaN"},
+      {"50 inf 1.5 20\n0 5 0 10\n-50 40 1 20\n", 1, 4, "infinity"},
+      {"50 5 1.5 20\n-50 40 1 20\n", 1, 1, "no aperture stop"},
+      {"50 5 1.5 20\n0 5 0 10\n0 5 0 10\n-50 40 1 20\n", 3, 1, "second aperture stop"},
+      {"50 5 1.5 20\n0 5 0 10\n\x01\x02\x03\x04\n", 3, 1, "binary"},
+      {"50 5 1.5 20\n0 5 0 -3\n-50 40 1 20\n", 2, 1, "aperture diameter"},
+      {"50 5 0.5 20\n0 5 0 10\n-50 40 1 20\n", 1, 1, "below 1"},
+  };
+  for (const auto& c : cases) {
+    const std::string text(c.text);
+    const auto r = parse(text);
+    EXPECT_FALSE(r.ok()) << c.text;
+    ASSERT_FALSE(r.errors.empty()) << c.text;
+    const auto& e = r.errors.front();
+    EXPECT_EQ(e.line, c.line) << e.toString();
+    EXPECT_EQ(e.column, c.column) << e.toString();
+    EXPECT_NE(e.message.find(c.fragment), std::string::npos) << e.toString();
+    EXPECT_EQ(e.toString().rfind("t.dat:" + std::to_string(c.line) + ":", 0), 0u) << e.toString();
+  }
+}
+
+TEST(LensFile, EmbeddedNulIsBinary) {
+  const std::string text("50 5 1.5 20\n0 5\0 0 10\n", 22);
+  const auto r = parse(text);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.errors.front().line, 2);
+  EXPECT_EQ(r.errors.front().column, 4);
+}
+
+TEST(LensFile, MissingFileAndDirectoryAreErrors) {
+  const auto missing = readLensFile("/nonexistent/lens.dat");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.errors.front().toString(), "/nonexistent/lens.dat:1:1: no such file");
+  EXPECT_FALSE(readLensFile(std::filesystem::temp_directory_path()).ok());
+}
+
+}  // namespace
+}  // namespace lenslab::optics

@@ -1,0 +1,85 @@
+#include <gtest/gtest.h>
+
+#include "optics/glass.h"
+#include "test_lenses.h"
+
+namespace lenslab::optics {
+namespace {
+
+using testing::kCourseLenses;
+
+TEST(Paraxial, CourseLensesHaveThePublishedFocalLengths) {
+  for (const auto& lens : kCourseLenses) {
+    for (const auto& path :
+         {testing::referenceLensDir() / lens.file, testing::bundledLensDir() / lens.bundled}) {
+      const auto system = testing::loadLens(path);
+      ASSERT_TRUE(system) << path;
+      EXPECT_NEAR(system->firstOrder().eflMm, lens.eflMm, lens.eflMm * 0.0005) << path;
+    }
+  }
+}
+
+TEST(Paraxial, ThickSingletMatchesTheLensmakersFormula) {
+  // 1/f = (n - 1) (1/R1 - 1/R2 + (n - 1) d / (n R1 R2)) (e.g. Hecht, Optics, 4th ed., eq. 6.2).
+  const double r1 = 40.0, r2 = -60.0, d = 6.0, n = 1.5168;
+  const auto built = LensSystem::build(testing::singlet(r1, r2, d, n, 50.0));
+  ASSERT_TRUE(built.ok());
+  const double power = (n - 1.0) * (1.0 / r1 - 1.0 / r2 + (n - 1.0) * d / (n * r1 * r2));
+  const FirstOrderData& fo = built.system->firstOrder();
+  EXPECT_NEAR(fo.eflMm, 1.0 / power, 1e-9);
+  // Principal planes of a thick lens: h2 = -f (n - 1) d / (n R1) from the rear vertex.
+  EXPECT_NEAR(fo.rearPrincipalPlaneMm + 1.0, -(1.0 / power) * (n - 1.0) * d / (n * r1), 1e-9);
+  EXPECT_NEAR(fo.frontPrincipalPlaneMm, -(1.0 / power) * (n - 1.0) * d / (n * r2), 1e-9);
+}
+
+TEST(Paraxial, PupilsOfAStopBehindALens) {
+  // A thin-ish lens with the stop 1 mm behind it: the exit pupil is the stop itself; the entrance
+  // pupil is its image through the lens, magnified, behind the lens.
+  const auto built = LensSystem::build(testing::singlet(50.0, -50.0, 6.0, 1.5, 40.0, 30.0));
+  ASSERT_TRUE(built.ok());
+  const FirstOrderData& fo = built.system->firstOrder();
+  EXPECT_NEAR(fo.exitPupil.positionMm, 0.0, 1e-12);
+  EXPECT_NEAR(fo.exitPupil.diameterMm, 30.0, 1e-12);
+  // The stop, 7 mm behind the front vertex, is seen through 6 mm of glass: it looks nearer
+  // (about 6 / 1.5 + 1 = 5 mm) and, through the positive lens, magnified.
+  EXPECT_GT(fo.entrancePupil.positionMm, 4.5);
+  EXPECT_LT(fo.entrancePupil.positionMm, 7.0);
+  EXPECT_GT(fo.entrancePupil.diameterMm, 30.0);
+  EXPECT_NEAR(fo.fNumber, fo.eflMm / fo.entrancePupil.diameterMm, 1e-12);
+}
+
+TEST(Paraxial, DoubleGaussPupilsAndFNumber) {
+  const auto system = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  ASSERT_TRUE(system);
+  const FirstOrderData& fo = system->firstOrder();
+  // The Tronnier double-Gauss is an f/2 design (MLD p. 312) with the stop near the middle.
+  EXPECT_NEAR(fo.fNumber, 2.0, 0.15);
+  EXPECT_GT(fo.entrancePupil.positionMm, 0.0);
+  EXPECT_LT(fo.exitPupil.positionMm, 0.0);  // in front of the rear vertex
+  EXPECT_NEAR(fo.totalTrackMm, system->frontVertexZ(), 1e-12);
+  EXPECT_NEAR(fo.fieldOfViewDeg(43.27), 2.0 * std::atan(43.27 / 2.0 / fo.eflMm) * 180 / M_PI, 1e-9);
+}
+
+TEST(Dispersion, CauchyFitHitsTheAbbeDefinition) {
+  const double nD = 1.67, vD = 47.1;
+  EXPECT_NEAR(refractiveIndex(nD, vD, kWavelengthDNm), nD, 1e-12);
+  EXPECT_NEAR(refractiveIndex(nD, vD, kWavelengthFNm) - refractiveIndex(nD, vD, kWavelengthCNm),
+              (nD - 1.0) / vD, 1e-12);
+  EXPECT_GT(refractiveIndex(nD, vD, 450.0), refractiveIndex(nD, vD, 650.0));
+  EXPECT_EQ(refractiveIndex(nD, std::nullopt, 450.0), nD);
+}
+
+TEST(Dispersion, BlueFocalLengthIsShorterForAPositiveSinglet) {
+  Prescription p = testing::singlet(40.0, -60.0, 6.0, 1.5168, 50.0);
+  p.surfaces[0].abbeD = 64.2;
+  const auto built = LensSystem::build(p);
+  ASSERT_TRUE(built.ok());
+  const double blue = built.system->firstOrderAt(kWavelengthFNm).eflMm;
+  const double red = built.system->firstOrderAt(kWavelengthCNm).eflMm;
+  EXPECT_LT(blue, red);
+  // Longitudinal chromatic aberration of a thin lens: f_C - f_F ~ f / V.
+  EXPECT_NEAR(red - blue, built.system->firstOrder().eflMm / 64.2, 0.05);
+}
+
+}  // namespace
+}  // namespace lenslab::optics
