@@ -1,7 +1,9 @@
 #include "render/camera_factory.h"
 
 #include "render/realistic_camera.h"
-#include "render/traced_lens.h"
+#include "optics/focus.h"
+#include "optics/lens_file.h"
+#include "render/optics_lens.h"
 
 namespace lenslab::render {
 
@@ -13,51 +15,74 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
   const CameraDescription& camera = scene.camera;
   const ParamSet& params = camera.params;
   const std::filesystem::path lensPath = overrides.lensPath.value_or(camera.lensPath);
-  std::string error;
-  const auto rows = TracedLens::readFile(lensPath, error);
-  if (!rows) {
-    diagnostics.error(camera.location, error);
+  const optics::LensFileResult file = optics::readLensFile(lensPath);
+  if (!file.ok()) {
+    for (const optics::LensFileError& error : file.errors) {
+      diagnostics.error({error.file, error.line, error.column}, error.message);
+    }
+    if (file.errors.empty()) diagnostics.error(camera.location, "cannot read " + lensPath.string());
+    return nullptr;
+  }
+  const optics::BuildResult built = optics::LensSystem::build(file.lens->prescription);
+  if (!built.ok()) {
+    for (const optics::ValidationError& error : built.errors) {
+      const int line = error.surface >= 0 && error.surface < static_cast<int>(file.lens->rowLines.size())
+                           ? file.lens->rowLines[static_cast<std::size_t>(error.surface)]
+                           : 0;
+      diagnostics.error({lensPath.string(), line, 1}, error.message);
+    }
     return nullptr;
   }
   for (const char* ignored : {"hither", "yon", "shutteropen", "shutterclose", "specfile",
                               "lensfile", "simpleweighting"}) {
     params.find(ignored);
   }
-  double filmDistanceMm = 0.0;
-  double stopDiameterMm = 0.0;
+  std::shared_ptr<const optics::LensSystem> system = built.system;
   double filmDiagonalMm = scene.film.diagonalMm;
   double sceneUnitsPerMm = 0.001;  // pbrt-v3: camera space in metres
   double cameraOriginZMm = 0.0;    // pbrt-v3: the film sits at the camera-space origin
+  const char* stopParameter = camera.courseParameters ? "aperture_diameter" : "aperturediameter";
+  const double stopDiameterMm = params.getFloat(stopParameter, camera.courseParameters ? 0.0 : 1.0);
+  if (stopDiameterMm > 0.0) {
+    if (stopDiameterMm > system->stopDiameterMm()) {
+      diagnostics.warning(camera.location,
+                          "aperture diameter " + std::to_string(stopDiameterMm) +
+                              " mm is larger than the lens's stop; the stop's " +
+                              std::to_string(system->stopDiameterMm()) + " mm is used");
+    } else {
+      system = system->withStopDiameter(stopDiameterMm);
+    }
+  }
   if (camera.courseParameters) {
     // The course's pbrt-v2 camera: camera space in millimetres, film distance given directly.
     sceneUnitsPerMm = 1.0;
-    filmDistanceMm = params.getFloat("filmdistance", 0.0);
-    stopDiameterMm = params.getFloat("aperture_diameter", 0.0);
     filmDiagonalMm = params.getFloat("filmdiag", filmDiagonalMm);
-    if (filmDistanceMm <= 0.0) {
+    const double filmDistanceMm = params.getFloat("filmdistance", 0.0);
+    system = filmDistanceMm > 0.0 ? system->withFilmDistance(filmDistanceMm) : nullptr;
+    if (!system) {
       diagnostics.error(camera.location, "realistic camera needs \"float filmdistance\" > 0");
       return nullptr;
     }
     // The course's reference renders put the front lens vertex at the camera-space origin
     // (the seed report noticed its own images framed slightly closer with the film there).
-    cameraOriginZMm = filmDistanceMm;
-    for (std::size_t i = 0; i + 1 < rows->size(); ++i) cameraOriginZMm += (*rows)[i].thicknessMm;
+    cameraOriginZMm = system->frontVertexZ();
   } else {
-    stopDiameterMm = params.getFloat("aperturediameter", 1.0);
     const double focusDistance = params.getFloat("focusdistance", 10.0);
-    const auto focused = TracedLens::focusFilmDistance(*rows, stopDiameterMm,
-                                                       focusDistance / sceneUnitsPerMm);
-    if (!focused) {
+    const optics::FocusResult focus =
+        optics::filmDistanceForObjectDistance(*system, focusDistance / sceneUnitsPerMm);
+    if (!focus.ok()) {
       diagnostics.error(camera.location, "the lens cannot focus at " +
-                                             std::to_string(focusDistance) + " scene units");
+                                             std::to_string(focusDistance) + ": " + focus.whyNot);
       return nullptr;
     }
-    filmDistanceMm = *focused;
+    system = system->withFilmDistance(*focus.valueMm);
   }
   params.warnUnused(diagnostics, "Camera \"realistic\"");
-  auto lens = std::make_shared<TracedLens>(*rows, filmDistanceMm, stopDiameterMm);
-  return std::make_shared<RealisticCamera>(std::move(lens), camera.cameraFromWorld, width, height,
-                                           filmDiagonalMm, sceneUnitsPerMm, cameraOriginZMm);
+  // Build the exit-pupil table now, on the loading thread, not inside the first render wave.
+  system->exitPupilTableRadiusMm();
+  return std::make_shared<RealisticCamera>(std::make_shared<OpticsLens>(system),
+                                           camera.cameraFromWorld, width, height, filmDiagonalMm,
+                                           sceneUnitsPerMm, cameraOriginZMm);
 }
 
 }  // namespace
