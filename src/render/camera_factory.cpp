@@ -3,7 +3,6 @@
 #include "render/realistic_camera.h"
 #include "optics/focus.h"
 #include "optics/lens_file.h"
-#include "render/optics_lens.h"
 
 namespace lenslab::render {
 
@@ -80,7 +79,7 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
   params.warnUnused(diagnostics, "Camera \"realistic\"");
   // Build the exit-pupil table now, on the loading thread, not inside the first render wave.
   system->exitPupilTableRadiusMm();
-  return std::make_shared<RealisticCamera>(std::make_shared<OpticsLens>(system),
+  return std::make_shared<RealisticCamera>(std::move(system),
                                            camera.cameraFromWorld, width, height, filmDiagonalMm,
                                            sceneUnitsPerMm, cameraOriginZMm);
 }

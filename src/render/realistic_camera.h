@@ -8,8 +8,8 @@
 
 #include <memory>
 
+#include "optics/lens_system.h"
 #include "render/camera.h"
-#include "render/camera_lens.h"
 
 namespace lenslab::render {
 
@@ -19,13 +19,21 @@ class RealisticCamera final : public Camera {
   // whose camera space is in mm; 0.001 for pbrt-v3 scenes in metres).
   // `cameraOriginZMm`: the lens-frame z that sits at the camera-space origin. pbrt-v3 puts the
   // film there (0); the course's pbrt-v2 reference camera put the front lens vertex there.
-  RealisticCamera(std::shared_ptr<const CameraLens> lens, const glm::dmat4& cameraFromWorld,
-                  int width, int height, double filmDiagonalMm, double sceneUnitsPerMm,
-                  double cameraOriginZMm = 0.0);
+  RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
+                  const glm::dmat4& cameraFromWorld, int width, int height,
+                  double filmDiagonalMm, double sceneUnitsPerMm, double cameraOriginZMm = 0.0);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
+  // Traces the whole batch with the optics library's vectorised trace.
+  void generateRays(std::size_t count, const glm::vec2* rasterPoints, const glm::vec2* lensSamples,
+                    CameraRay* rays, std::uint8_t* passed) const override;
+
+  const optics::LensSystem& lens() const { return *lens_; }
 
  private:
-  std::shared_ptr<const CameraLens> lens_;
+  glm::dvec2 filmPointMm(glm::vec2 raster) const;
+  void finishRay(glm::dvec3 exitOriginMm, glm::dvec3 exitDirection, CameraRay& ray) const;
+
+  std::shared_ptr<const optics::LensSystem> lens_;
   glm::dmat4 worldFromCamera_;
   double filmWidthMm_, filmHeightMm_;
   double sceneUnitsPerMm_;
