@@ -60,6 +60,8 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
       statistics.cameraSamples += n;
       glm::vec3 sum(0.0f);
       for (std::size_t i = 0; i < n; ++i) {
+        // Large waves: look for a newer job every few samples too, not only between pixels.
+        if ((i & 63u) == 63u && cancelled()) return false;
         if (!passed[i]) continue;
         ++statistics.lensPassed;
         const CameraRay& ray = rays[i];
@@ -200,8 +202,10 @@ void ProgressiveRenderer::controllerLoop() {
       job = std::move(pending_);
       hasPending_ = false;
       generation = requestedGeneration_.load();
+      busy_ = true;
     }
     runJob(job, generation);
+    busy_ = false;
     {
       std::lock_guard lock(mutex_);
       if (requestedGeneration_.load() == generation) finishedGeneration_ = generation;
