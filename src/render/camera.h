@@ -3,6 +3,8 @@
 // world-space ray and an exposure weight. Framing follows pbrt: camera space looks down +z with
 // +y up, and raster (0, 0) is the top-left corner of the image.
 
+#include <cstddef>
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -20,6 +22,15 @@ class Camera {
   virtual ~Camera() = default;
   // Returns false when no ray leaves the lens for this sample (vignetted or blocked).
   virtual bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const = 0;
+  // Many rays at once (cameras with a lens trace them as a batch); passed[i] says whether
+  // rays[i] left the lens.
+  virtual void generateRays(std::size_t count, const glm::vec2* rasterPoints,
+                            const glm::vec2* lensSamples, CameraRay* rays,
+                            std::uint8_t* passed) const {
+    for (std::size_t i = 0; i < count; ++i) {
+      passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
+    }
+  }
   int width() const { return width_; }
   int height() const { return height_; }
 

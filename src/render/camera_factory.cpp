@@ -1,6 +1,90 @@
 #include "render/camera_factory.h"
 
+#include "render/realistic_camera.h"
+#include "optics/focus.h"
+#include "optics/lens_file.h"
+
 namespace lenslab::render {
+
+namespace {
+
+std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
+                                            const CameraOverrides& overrides, int width,
+                                            int height, Diagnostics& diagnostics) {
+  const CameraDescription& camera = scene.camera;
+  const ParamSet& params = camera.params;
+  const std::filesystem::path lensPath = overrides.lensPath.value_or(camera.lensPath);
+  const optics::LensFileResult file = optics::readLensFile(lensPath);
+  if (!file.ok()) {
+    for (const optics::LensFileError& error : file.errors) {
+      diagnostics.error({error.file, error.line, error.column}, error.message);
+    }
+    if (file.errors.empty()) diagnostics.error(camera.location, "cannot read " + lensPath.string());
+    return nullptr;
+  }
+  const optics::BuildResult built = optics::LensSystem::build(file.lens->prescription);
+  if (!built.ok()) {
+    for (const optics::ValidationError& error : built.errors) {
+      const int line = error.surface >= 0 && error.surface < static_cast<int>(file.lens->rowLines.size())
+                           ? file.lens->rowLines[static_cast<std::size_t>(error.surface)]
+                           : 0;
+      diagnostics.error({lensPath.string(), line, 1}, error.message);
+    }
+    return nullptr;
+  }
+  for (const char* ignored : {"hither", "yon", "shutteropen", "shutterclose", "specfile",
+                              "lensfile", "simpleweighting"}) {
+    params.find(ignored);
+  }
+  std::shared_ptr<const optics::LensSystem> system = built.system;
+  double filmDiagonalMm = scene.film.diagonalMm;
+  double sceneUnitsPerMm = 0.001;  // pbrt-v3: camera space in metres
+  double cameraOriginZMm = 0.0;    // pbrt-v3: the film sits at the camera-space origin
+  const char* stopParameter = camera.courseParameters ? "aperture_diameter" : "aperturediameter";
+  const double stopDiameterMm = params.getFloat(stopParameter, camera.courseParameters ? 0.0 : 1.0);
+  if (stopDiameterMm > 0.0) {
+    if (stopDiameterMm > system->stopDiameterMm()) {
+      diagnostics.warning(camera.location,
+                          "aperture diameter " + std::to_string(stopDiameterMm) +
+                              " mm is larger than the lens's stop; the stop's " +
+                              std::to_string(system->stopDiameterMm()) + " mm is used");
+    } else {
+      system = system->withStopDiameter(stopDiameterMm);
+    }
+  }
+  if (camera.courseParameters) {
+    // The course's pbrt-v2 camera: camera space in millimetres, film distance given directly.
+    sceneUnitsPerMm = 1.0;
+    filmDiagonalMm = params.getFloat("filmdiag", filmDiagonalMm);
+    const double filmDistanceMm = params.getFloat("filmdistance", 0.0);
+    system = filmDistanceMm > 0.0 ? system->withFilmDistance(filmDistanceMm) : nullptr;
+    if (!system) {
+      diagnostics.error(camera.location, "realistic camera needs \"float filmdistance\" > 0");
+      return nullptr;
+    }
+    // The course's reference renders put the front lens vertex at the camera-space origin
+    // (the seed report noticed its own images framed slightly closer with the film there).
+    cameraOriginZMm = system->frontVertexZ();
+  } else {
+    const double focusDistance = params.getFloat("focusdistance", 10.0);
+    const optics::FocusResult focus =
+        optics::filmDistanceForObjectDistance(*system, focusDistance / sceneUnitsPerMm);
+    if (!focus.ok()) {
+      diagnostics.error(camera.location, "the lens cannot focus at " +
+                                             std::to_string(focusDistance) + ": " + focus.whyNot);
+      return nullptr;
+    }
+    system = system->withFilmDistance(*focus.valueMm);
+  }
+  params.warnUnused(diagnostics, "Camera \"realistic\"");
+  // Build the exit-pupil table now, on the loading thread, not inside the first render wave.
+  system->exitPupilTableRadiusMm();
+  return std::make_shared<RealisticCamera>(std::move(system),
+                                           camera.cameraFromWorld, width, height, filmDiagonalMm,
+                                           sceneUnitsPerMm, cameraOriginZMm);
+}
+
+}  // namespace
 
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
                                          const CameraOverrides& overrides,
@@ -9,10 +93,7 @@ std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
   const int width = overrides.width.value_or(scene.film.xResolution);
   const int height = overrides.height.value_or(scene.film.yResolution);
   const ParamSet& params = camera.params;
-  if (camera.type == "realistic") {
-    diagnostics.error(camera.location, "the realistic camera needs the optics library");
-    return nullptr;
-  }
+  if (camera.type == "realistic") return makeRealistic(scene, overrides, width, height, diagnostics);
   double fov = params.getFloat("fov", 90.0);
   const double halfFov = params.getFloat("halffov", -1.0);
   if (halfFov > 0.0) fov = 2.0 * halfFov;

@@ -57,11 +57,6 @@ class Parser {
     }
   }
 
-  void finish(bool sawV2Forms) {
-    if (!scene_.integrator.explicitlyNamed && sawV2Forms) {
-      scene_.integrator.kind = IntegratorKind::DirectLighting;
-    }
-  }
   bool sawV2Forms() const { return v2Forms_; }
 
  private:
@@ -652,6 +647,7 @@ ParseResult finishParse(SceneDescription&& scene, Diagnostics&& diagnostics, boo
     if (!scene.integrator.explicitlyNamed && sawV2Forms) {
       scene.integrator.kind = IntegratorKind::DirectLighting;
     }
+    scene.pbrtV2 = sawV2Forms;
     result.scene = std::move(scene);
   }
   return result;

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <limits>
 
 namespace lenslab::render {
 
@@ -81,7 +82,17 @@ Token PbrtTokenizer::scan(Diagnostics& diagnostics) {
     token.text = text_.substr(start, position_ - start);
     const char* begin = token.text.data() + (token.text[0] == '+' ? 1 : 0);
     const char* end = token.text.data() + token.text.size();
-    const auto [stop, error] = std::from_chars(begin, end, token.number);
+    auto [stop, error] = std::from_chars(begin, end, token.number);
+    if (error == std::errc::result_out_of_range && stop == end) {
+      // Too large for a double (1e999): keep it as infinity so that checks downstream can name
+      // what it broke (a non-finite vertex, say). Underflow becomes 0.
+      const bool huge = token.text.find_first_of("eE") != std::string::npos &&
+                        token.text.find("e-") == std::string::npos &&
+                        token.text.find("E-") == std::string::npos;
+      const double sign = token.text[0] == '-' ? -1.0 : 1.0;
+      token.number = huge ? sign * std::numeric_limits<double>::infinity() : 0.0;
+      error = std::errc();
+    }
     if (error != std::errc() || stop != end) {
       diagnostics.error(token.location, "malformed number '" + token.text + "'");
       return Token{TokenKind::End, {}, 0.0, token.location};

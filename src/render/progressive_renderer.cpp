@@ -35,25 +35,39 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
                 RenderStatistics& statistics) {
   const Camera& camera = *job.camera;
   const int width = camera.width();
+  // Per-thread scratch for one pixel's samples: camera rays go to the camera as one batch.
+  thread_local std::vector<PixelSampler> samplers;
+  thread_local std::vector<glm::vec2> rasterPoints, lensSamples;
+  thread_local std::vector<CameraRay> rays;
+  thread_local std::vector<std::uint8_t> passed;
+  const auto n = static_cast<std::size_t>(count);
+  rasterPoints.resize(n);
+  lensSamples.resize(n);
+  rays.resize(n);
+  passed.resize(n);
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       if (cancelled()) return false;
       const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
+      samplers.clear();
+      for (std::size_t i = 0; i < n; ++i) {
+        samplers.emplace_back(pixelIndex, static_cast<std::uint32_t>(firstSample + static_cast<int>(i)),
+                              job.settings.seed);
+        rasterPoints[i] = glm::vec2(x, y) + samplers[i].next2D();
+        lensSamples[i] = samplers[i].next2D();
+      }
+      camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());
+      statistics.cameraSamples += n;
       glm::vec3 sum(0.0f);
-      for (int s = firstSample; s < firstSample + count; ++s) {
-        PixelSampler sampler(pixelIndex, static_cast<std::uint32_t>(s), job.settings.seed);
-        const glm::vec2 pixelOffset = sampler.next2D();
-        const glm::vec2 lensSample = sampler.next2D();
-        ++statistics.cameraSamples;
-        CameraRay ray;
-        if (!camera.generateRay(glm::vec2(x, y) + pixelOffset, lensSample, ray) ||
-            ray.weight <= 0.0f) {
-          continue;
-        }
+      for (std::size_t i = 0; i < n; ++i) {
+        // Large waves: look for a newer job every few samples too, not only between pixels.
+        if ((i & 63u) == 63u && cancelled()) return false;
+        if (!passed[i]) continue;
         ++statistics.lensPassed;
+        const CameraRay& ray = rays[i];
         const glm::vec3 radiance =
-            ray.weight *
-            incomingRadiance(*job.scene, ray.origin, ray.direction, sampler, job.settings.integrator);
+            ray.weight * incomingRadiance(*job.scene, ray.origin, ray.direction, samplers[i],
+                                          job.settings.integrator);
         if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
             !std::isfinite(radiance.z)) {
           ++statistics.discardedSamples;
@@ -188,8 +202,10 @@ void ProgressiveRenderer::controllerLoop() {
       job = std::move(pending_);
       hasPending_ = false;
       generation = requestedGeneration_.load();
+      busy_ = true;
     }
     runJob(job, generation);
+    busy_ = false;
     {
       std::lock_guard lock(mutex_);
       if (requestedGeneration_.load() == generation) finishedGeneration_ = generation;

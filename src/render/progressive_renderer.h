@@ -68,6 +68,9 @@ class ProgressiveRenderer {
   // Blocks until the job of `generation` is complete or replaced, or the timeout passes
   // (for the CLI and tests; the viewer polls snapshot() instead). Returns true if complete.
   bool waitForCompletion(std::uint64_t generation, double timeoutSeconds) const;
+  // True while a job is being rendered (false once it completed or was cancelled and its
+  // workers returned).
+  bool busy() const { return busy_.load(); }
 
  private:
   void controllerLoop();
@@ -81,6 +84,7 @@ class ProgressiveRenderer {
   bool quit_ = false;
   std::atomic<std::uint64_t> requestedGeneration_{0};
   std::uint64_t finishedGeneration_ = 0;
+  std::atomic<bool> busy_{false};
   std::thread controller_;
 };
 

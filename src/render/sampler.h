@@ -18,8 +18,7 @@ inline std::uint32_t reverseBits(std::uint32_t x) {
   x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
   x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
   x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-  return (x >> 16) | (x << 16);
+  return __builtin_bswap32(x);
 }
 
 // A hash that only lets each bit depend on lower bits (Laine and Karras 2011, constants from
@@ -37,13 +36,32 @@ inline std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
   return reverseBits(laineKarras(reverseBits(x), seed));
 }
 
-// Second Sobol dimension (direction numbers of x + 1), as 32-bit fixed point.
-inline std::uint32_t sobolSecond(std::uint32_t index) {
-  std::uint32_t result = 0;
-  for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
-    if (index & 1u) result ^= v;
+// Second Sobol dimension (direction numbers v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1)), as
+// 32-bit fixed point. The map is linear over GF(2), so four byte-indexed tables give it with
+// four lookups.
+struct SobolSecondTables {
+  std::uint32_t byByte[4][256];
+  constexpr SobolSecondTables() : byByte{} {
+    std::uint32_t direction[32] = {};
+    direction[0] = 1u << 31;
+    for (int k = 1; k < 32; ++k) direction[k] = direction[k - 1] ^ (direction[k - 1] >> 1);
+    for (int table = 0; table < 4; ++table) {
+      for (int value = 0; value < 256; ++value) {
+        std::uint32_t result = 0;
+        for (int bit = 0; bit < 8; ++bit) {
+          if (value & (1 << bit)) result ^= direction[8 * table + bit];
+        }
+        byByte[table][value] = result;
+      }
+    }
   }
-  return result;
+};
+inline constexpr SobolSecondTables kSobolSecond{};
+
+inline std::uint32_t sobolSecond(std::uint32_t index) {
+  const auto& t = kSobolSecond.byByte;
+  return t[0][index & 0xFFu] ^ t[1][(index >> 8) & 0xFFu] ^ t[2][(index >> 16) & 0xFFu] ^
+         t[3][index >> 24];
 }
 
 inline std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
@@ -73,7 +91,8 @@ class PixelSampler {
     using namespace sampler_detail;
     const std::uint32_t pairSeed = hashCombine(pixelSeed_, dimensionPair_++);
     const std::uint32_t index = owenScramble(sampleIndex_, pairSeed);
-    const std::uint32_t x = owenScramble(reverseBits(index), hashCombine(pairSeed, 1u));
+    // owenScramble(reverseBits(i)) simplifies to reverseBits(laineKarras(i)).
+    const std::uint32_t x = reverseBits(laineKarras(index, hashCombine(pairSeed, 1u)));
     const std::uint32_t y = owenScramble(sobolSecond(index), hashCombine(pairSeed, 2u));
     return {toUnitFloat(x), toUnitFloat(y)};
   }

@@ -207,6 +207,7 @@ class SceneBuilder {
         texture.image = loadImage(description.imagePath, srgb, description.location);
         if (!texture.image) continue;
         texture.imageScale = static_cast<float>(params.getFloat("scale", 1.0));
+        texture.flipT = !description_.pbrtV2;
         if (params.getBool("invert", false)) {
           diagnostics_.warning(description.location, "imagemap \"invert\" is not supported");
         }

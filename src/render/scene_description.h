@@ -103,6 +103,9 @@ struct InstanceDescription {
 
 struct SceneDescription {
   std::filesystem::path sourcePath;
+  // The file used pbrt-v2 forms (SurfaceIntegrator, "area" lights, the course camera): some
+  // defaults follow pbrt-v2 then.
+  bool pbrtV2 = false;
   CameraDescription camera;
   FilmDescription film;
   int pixelSamples = 16;

@@ -43,7 +43,7 @@ glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv) const {
 glm::vec3 TextureSet::lookupImage(const Texture& texture, glm::vec2 st) const {
   const FloatImage& image = *texture.image;
   const float x = st.x * static_cast<float>(image.width) - 0.5f;
-  const float y = (1.0f - st.y) * static_cast<float>(image.height) - 0.5f;
+  const float y = (texture.flipT ? 1.0f - st.y : st.y) * static_cast<float>(image.height) - 0.5f;
   const int x0 = static_cast<int>(std::floor(x));
   const int y0 = static_cast<int>(std::floor(y));
   const float fx = x - static_cast<float>(x0);

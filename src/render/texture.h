@@ -24,6 +24,8 @@ struct Texture {
   float imageScale = 1.0f;
   bool clampWrap = false;
   bool blackWrap = false;
+  // pbrt-v3 puts t = 0 at the bottom row of an image; pbrt-v2 at the top row.
+  bool flipT = true;
 };
 
 class TextureSet {
