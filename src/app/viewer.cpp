@@ -12,7 +12,10 @@
 #include <string>
 #include <utility>
 
+#include "app/focus_pick.h"
 #include "app/panels/panels.h"
+#include "app/preview_controller.h"
+#include "app/viewer_stats.h"
 #include "app/resources.h"
 #include "app/screenshot.h"
 #include "app/script.h"
@@ -20,7 +23,10 @@
 #include "app/ui_dump.h"
 #include "app/viewer_state.h"
 #include "app/window.h"
+#include "optics/focus.h"
 #include "optics/lens_file.h"
+#include "render/camera_factory.h"
+#include "render/realistic_camera.h"
 #include "render/image_io.h"
 
 namespace lenslab::app {
@@ -30,6 +36,12 @@ namespace {
 constexpr const char* kHeadlessHint = "lenslab render SCENE --out image.png";
 
 // The double-Gauss 50 mm: the lens the course and the default scene use.
+// The project's own scene: a chart, a receding ground and objects at several depths.
+std::string defaultScenePath() {
+  const std::filesystem::path scenes = findResourceDirectory("scenes");
+  return scenes.empty() ? std::string("scenes/default.pbrt") : (scenes / "default.pbrt").string();
+}
+
 std::string defaultLensPath() {
   const std::filesystem::path lenses = findResourceDirectory("lenses");
   return lenses.empty() ? std::string("lenses/dgauss-50mm.dat")
@@ -81,7 +93,7 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> dumpUi(const std::string& path) override {
     return asError(writeUiDump(path, state_, window_.width(), window_.height()));
   }
-  std::optional<int> previewSpp() const override { return std::nullopt; }
+  std::optional<int> previewSpp() const override;
   void quit(int exitCode) override {
     state_.quitRequested = true;
     exitCode_ = exitCode;
@@ -91,6 +103,8 @@ class Viewer final : public ScriptHost {
  private:
   void drawFrame();
   void handleShortcuts();
+  void updatePreview();
+  void focusOnClick();
   void openDroppedFiles();
   void carryOutRequests();
   void askForPath(FileRequest::Kind kind);
@@ -99,7 +113,14 @@ class Viewer final : public ScriptHost {
 
   Window& window_;
   ViewerState& state_;
+  PreviewController preview_;
+  ViewerStats stats_;
   int exitCode_ = 0;
+
+ public:
+  // With a lens given on the command line, opening a scene keeps it instead of the scene's.
+  bool keepLensOnSceneLoad = false;
+  const ViewerStats& stats() const { return stats_; }
 };
 
 void Viewer::handleShortcuts() {
@@ -240,7 +261,83 @@ std::optional<std::string> Viewer::loadLens(const std::string& path) {
 }
 
 std::optional<std::string> Viewer::loadScene(const std::string& path) {
-  return "cannot open " + path + ": scenes are not supported yet";
+  const LoadedScene loaded = loadSceneFile(path);
+  if (!loaded.error.empty()) return "cannot open scene " + path + ":\n" + loaded.error;
+  for (const std::string& warning : loaded.warnings) state_.log.warning(warning);
+  preview_.setScene(loaded);
+  state_.scenePath = path;
+  state_.filmDiagonalMm = render::framingOf(*loaded.description).filmDiagonalMm;
+  state_.crossSectionNeedsFit = true;
+  addRecentFile(state_.settings, path);
+  state_.log.info("Opened scene " + path);
+  // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
+  // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
+  if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
+    render::Diagnostics diagnostics;
+    const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
+    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
+    if (realistic != nullptr) {
+      state_.lens.apply(ReplaceLens{realistic->lens().prescription(),
+                                    loaded.description->camera.lensPath.string()});
+      state_.lensHeaderComments.clear();
+      refreshLens(state_);
+      state_.log.info("Using the scene's lens " + loaded.description->camera.lensPath.string());
+    } else {
+      for (const render::Diagnostic& diagnostic : diagnostics.all()) {
+        state_.log.warning(diagnostic.format());
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<int> Viewer::previewSpp() const {
+  if (!preview_.hasScene() || !state_.lensSystem) return std::nullopt;
+  return preview_.currentSpp();
+}
+
+void Viewer::updatePreview() {
+  if (const auto generation =
+          preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
+    stats_.editSubmitted(*generation, ViewerStats::Clock::now());
+  }
+  preview_.poll(state_.preview, state_.exposureStops, stats_);
+  if (!preview_.hasScene()) {
+    state_.preview.status = "No scene: File > Open scene.";
+  } else if (!state_.lensSystem) {
+    state_.preview.status = "No valid lens to render through.";
+  } else if (!state_.lensSystemIsCurrent) {
+    state_.preview.status = "Showing the last valid lens: fix the lens table to update.";
+  } else {
+    state_.preview.status.clear();
+  }
+}
+
+void Viewer::focusOnClick() {
+  const auto click = std::exchange(state_.preview.focusClick, std::nullopt);
+  if (!click || !state_.lensSystem || !preview_.hasScene()) return;
+  const auto [width, height] = preview_.previewSize(false);
+  const double x = click->first * width / std::max(1, state_.preview.imageWidth);
+  const double y = click->second * height / std::max(1, state_.preview.imageHeight);
+  const auto distance = objectDistanceUnderPixelMm(*preview_.description(), *preview_.scene(),
+                                                   state_.lensSystem, width, height, x, y);
+  if (!distance) {
+    state_.log.info("Nothing to focus on there (no surface under that pixel).");
+    return;
+  }
+  const optics::FocusResult focus =
+      optics::filmDistanceForObjectDistance(*state_.lensSystem, *distance);
+  if (!focus.ok()) {
+    state_.log.error("cannot focus at " + std::to_string(*distance / 1000.0) + " m: " +
+                     focus.whyNot);
+    return;
+  }
+  state_.lens.apply(SetFilmDistance{*focus.valueMm});
+  state_.focusDistanceInputMm = *distance;
+  char message[128];
+  std::snprintf(message, sizeof message, "Focused at %.3f m (film distance %.3f mm)",
+                *distance / 1000.0, *focus.valueMm);
+  state_.log.info(message);
 }
 
 std::optional<std::string> Viewer::saveLens(const std::string& path) {
@@ -263,7 +360,16 @@ std::optional<std::string> Viewer::saveWindowScreenshot(const std::string& path)
 }
 
 std::optional<std::string> Viewer::saveRender(const std::string& path) {
-  return "cannot save " + path + ": there is no render yet";
+  const auto snapshot = preview_.latest();
+  if (!snapshot || snapshot->samplesPerPixel == 0) {
+    return "cannot save " + path + ": there is no render yet";
+  }
+  const render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
+  const render::WriteResult result = render::writeImage(path, image, state_.exposureStops);
+  if (!result.ok) return result.error;
+  state_.log.info("Saved render (" + std::to_string(snapshot->samplesPerPixel) + " spp) to " +
+                  path);
+  return std::nullopt;
 }
 
 std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {
@@ -292,13 +398,16 @@ std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {
 int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script) {
   const bool testMode = options.screenshotPath.has_value();
   for (int frame = 0; !window_.shouldClose() && !state_.quitRequested; ++frame) {
-    // Idle when nothing happens: wake for input, or a few times a second. Tests and scripts
-    // poll, so they run at full speed.
-    window_.waitEvents(testMode || script ? 0.0 : 0.25);
+    // Idle when nothing happens: wake for input, or a few times a second; while the preview
+    // renders, wake at the display rate to show its progress. Tests and scripts poll.
+    window_.waitEvents(testMode || script ? 0.0 : preview_.busy() ? 1.0 / 60.0 : 0.25);
     openDroppedFiles();
     window_.beginFrame();
     drawFrame();
     window_.renderFrame();
+    focusOnClick();
+    updatePreview();
+    stats_.frameDrawn(ViewerStats::Clock::now(), preview_.busy());
     carryOutRequests();
     if (script) script->step(*this);
     if (testMode && frame + 1 >= options.frames) {
@@ -359,6 +468,7 @@ int runViewer(const ViewerOptions& options) {
   if (!state.settingsFile.empty()) state.log.info("Settings: " + state.settingsFile.string());
 
   Viewer viewer(*window, state);
+  viewer.keepLensOnSceneLoad = !options.lensPath.empty();
   if (const auto lensError = viewer.loadLens(options.lensPath.empty() ? defaultLensPath()
                                                                       : options.lensPath)) {
     state.log.error(*lensError);
@@ -367,8 +477,22 @@ int runViewer(const ViewerOptions& options) {
       return 1;
     }
   }
+  const std::string scenePath = options.scenePath.empty() ? defaultScenePath() : options.scenePath;
+  if (const auto sceneError = viewer.loadScene(scenePath)) {
+    state.log.error(*sceneError);
+    if (!options.scenePath.empty()) {
+      std::fprintf(stderr, "lenslab: %s\n", sceneError->c_str());
+      return 1;
+    }
+  }
   state.lens = LensDocument(state.lens.prescription(), state.lens.path());  // nothing to undo yet
   const int exitCode = viewer.run(options, std::move(script));
+  if (!options.statsJsonPath.empty()) {
+    if (const std::string statsError = viewer.stats().writeJson(options.statsJsonPath);
+        !statsError.empty()) {
+      std::fprintf(stderr, "lenslab: %s\n", statsError.c_str());
+    }
+  }
 
   if (!state.settingsFile.empty()) {
     state.settings.windowWidth = window->width();

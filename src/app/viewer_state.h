@@ -82,6 +82,7 @@ struct ViewerState {
   double exposureStops = 0.0;
   bool pinholeCamera = false;
   PreviewState preview;
+  std::string scenePath;
   FileBrowser fileBrowser;
   std::vector<FileRequest> fileRequests;
   std::optional<FileRequest::Kind> browserPurpose;  // what the browser's answer is for

@@ -20,6 +20,7 @@ struct ViewerArguments {
   std::string scenePath;
   std::string screenshotPath;
   std::string scriptPath;
+  std::string statsJsonPath;
   int frames = 10;
   std::string size;
 };
@@ -33,6 +34,8 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
   app.add_option("--script", arguments.scriptPath,
                  "Run viewer commands from this file (see src/app/script.h)")
       ->check(CLI::ExistingFile);
+  app.add_option("--stats-json", arguments.statsJsonPath,
+                 "On exit, write the viewer's frame times and edit-to-preview latency as JSON");
   app.add_option("--frames", arguments.frames, "Frames to draw before --screenshot (default 10)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--size", arguments.size, "Window size WIDTHxHEIGHT, e.g. 1280x800");
@@ -44,6 +47,7 @@ int runViewer(const ViewerArguments& arguments) {
   options.scenePath = arguments.scenePath;
   options.frames = arguments.frames;
   options.scriptPath = arguments.scriptPath;
+  options.statsJsonPath = arguments.statsJsonPath;
   if (!arguments.screenshotPath.empty()) options.screenshotPath = arguments.screenshotPath;
   if (!arguments.size.empty()) {
     std::string error;

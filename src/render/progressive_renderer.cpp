@@ -7,6 +7,9 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
+
+#include "render/thread_priority.h"
 
 namespace lenslab::render {
 
@@ -98,6 +101,11 @@ void renderWaves(const RenderJob& job, std::uint64_t generation,
   const int threads = job.settings.threads > 0 ? job.settings.threads
                                                : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
+  std::optional<LowPriorityWorkers> lowPriority;
+  if (job.settings.lowPriority) {
+    arena.initialize();
+    lowPriority.emplace(arena);
+  }
   const int target = job.settings.samplesPerPixel;
   int done = 0;
   for (int wave = 0; target == 0 || done < target; ++wave) {

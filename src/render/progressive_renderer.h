@@ -25,6 +25,8 @@ struct RenderSettings {
   std::uint32_t seed = 0;
   IntegratorSettings integrator;
   int tileSize = 16;
+  // Run the workers at a lower priority than other threads of the process (the viewer's UI).
+  bool lowPriority = false;
 };
 
 struct RenderJob {
