@@ -79,9 +79,12 @@ std::optional<std::uint64_t> PreviewController::update(
   return generation_;
 }
 
-int PreviewController::currentSpp() const {
+int PreviewController::currentSpp(const std::shared_ptr<const optics::LensSystem>& lens,
+                                  bool pinhole) const {
+  const Submitted wanted{lens.get(), pinhole, false, sceneVersion_};
+  if (!submitted_ || !(*submitted_ == wanted)) return 0;
   const auto snapshot = renderer_.snapshot();
-  if (!snapshot || !submitted_ || submitted_->draft || snapshot->generation != generation_) return 0;
+  if (!snapshot || snapshot->generation != generation_) return 0;
   return snapshot->samplesPerPixel;
 }
 

@@ -41,9 +41,10 @@ class PreviewController {
   bool hasScene() const { return description_ != nullptr; }
   const render::SceneDescription* description() const { return description_.get(); }
   const render::Scene* scene() const { return scene_.get(); }
-  // Samples per pixel of the newest job at full preview resolution (0 before its first pass or
-  // while a draft renders).
-  int currentSpp() const;
+  // Samples per pixel rendered so far for this lens and camera at full preview resolution: 0
+  // before the first pass, while a draft renders, or when they differ from the running job's
+  // (the new job starts on the next update).
+  int currentSpp(const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole) const;
 
   // Starts a new job when anything it depends on changed. Returns the new generation, if any.
   std::optional<std::uint64_t> update(const std::shared_ptr<const optics::LensSystem>& lens,

@@ -80,11 +80,23 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> loadLens(const std::string& path) override;
   std::optional<std::string> loadScene(const std::string& path) override;
   std::optional<std::string> saveLens(const std::string& path) override;
+  // Script edits take effect at once (validation, LensSystem, fans), so a following wait-spp
+  // waits for the render of the edited lens.
   std::optional<std::string> edit(const EditCommand& command) override {
-    return state_.lens.apply(command);
+    auto refusal = state_.lens.apply(command);
+    refreshLens(state_);
+    return refusal;
   }
-  bool undo() override { return state_.lens.undo(); }
-  bool redo() override { return state_.lens.redo(); }
+  bool undo() override {
+    const bool done = state_.lens.undo();
+    refreshLens(state_);
+    return done;
+  }
+  bool redo() override {
+    const bool done = state_.lens.redo();
+    refreshLens(state_);
+    return done;
+  }
   void setExposure(double stops) override { state_.exposureStops = stops; }
   void setPinholeCamera(bool pinhole) override { state_.pinholeCamera = pinhole; }
   std::optional<std::string> saveWindowScreenshot(const std::string& path) override;
@@ -293,7 +305,7 @@ std::optional<std::string> Viewer::loadScene(const std::string& path) {
 
 std::optional<int> Viewer::previewSpp() const {
   if (!preview_.hasScene() || !state_.lensSystem) return std::nullopt;
-  return preview_.currentSpp();
+  return preview_.currentSpp(state_.lensSystem, state_.pinholeCamera);
 }
 
 void Viewer::updatePreview() {

@@ -46,6 +46,55 @@ TEST_F(ScriptedViewer, AnEditChangesTheCrossSectionAndUndoRestoresIt) {
   EXPECT_EQ(testing::countDifferentPixels(before, undone), 0u);
 }
 
+TEST_F(ScriptedViewer, AnEditChangesThePreviewAndUndoRestoresIt) {
+  const auto result = runScript(
+      "wait-spp 2\n"
+      "screenshot-render before.png\n"
+      "set stop-diameter 3.5\n"  // f/2.5 to about f/10: two stops darker
+      "wait-spp 2\n"
+      "screenshot-render stopped-down.png\n"
+      "undo\n"
+      "wait-spp 2\n"
+      "screenshot-render undone.png\n"
+      "quit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto before = image("before.png"), stopped = image("stopped-down.png"),
+             undone = image("undone.png");
+  ASSERT_TRUE(before.valid() && stopped.valid() && undone.valid());
+  EXPECT_EQ(before.width, 600);  // the default scene's film, within the preview's size limit
+  EXPECT_EQ(before.height, 400);
+  const double bright = testing::meanBrightness(before);
+  EXPECT_GT(bright, 40.0);  // a picture, not a black frame
+  EXPECT_LT(testing::meanBrightness(stopped), 0.75 * bright);
+  EXPECT_NEAR(testing::meanBrightness(undone), bright, 0.03 * bright);
+}
+
+TEST_F(ScriptedViewer, AnInvalidValueIsFlaggedAndTheLastValidLensKeepsRendering) {
+  const auto result = runScript(
+      "wait-spp 1\n"
+      "set surface 3 thickness -30\n"  // surfaces 3 and 4 now cross
+      "set surface 7 radius 0\n"       // a second stop
+      "wait-frames 3\n"
+      "screenshot window.png\n"
+      "wait-spp 2\n"
+      "screenshot-render render.png\n"
+      "quit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto window = image("window.png");
+  ASSERT_TRUE(window.valid());
+  // Flagged rows are tinted red in the lens table (left column, rows below the header).
+  int redPixels = 0;
+  for (int y = 100; y < 400; ++y) {
+    for (int x = 5; x < 300; ++x) {
+      const auto c = window.at(x, y);
+      redPixels += c.r > c.g + 25 && c.r > c.b + 25;
+    }
+  }
+  EXPECT_GT(redPixels, 500);
+  // The preview still shows the last valid lens's picture.
+  EXPECT_GT(testing::meanBrightness(image("render.png")), 40.0);
+}
+
 TEST_F(ScriptedViewer, ScriptErrorsAreReportedWithTheirLocationAndExit2) {
   const auto result = runScript("wait-frames 1\nset surface one radius 3\n");
   EXPECT_EQ(result.exitCode, 2);

@@ -77,3 +77,17 @@ inline std::size_t countDifferentPixels(const PngImage& a, const PngImage& b, in
 }
 
 }  // namespace lenslab::testing
+
+namespace lenslab::testing {
+
+// Mean of (r + g + b) / 3 over the image, 0..255.
+inline double meanBrightness(const PngImage& image) {
+  if (!image.valid()) return 0;
+  double sum = 0;
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+    sum += (image.rgb[i] + image.rgb[i + 1] + image.rgb[i + 2]) / 3.0;
+  }
+  return sum / (static_cast<double>(image.width) * image.height);
+}
+
+}  // namespace lenslab::testing
