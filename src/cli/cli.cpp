@@ -8,6 +8,7 @@
 #include "app/viewer.h"
 #include "cli/focus_command.h"
 #include "cli/info_command.h"
+#include "cli/render_command.h"
 #include "cli/size_argument.h"
 #include "cli/subcommand.h"
 
@@ -21,6 +22,8 @@ struct ViewerArguments {
   std::string lensPath;
   std::string scenePath;
   std::string screenshotPath;
+  std::string scriptPath;
+  std::string statsJsonPath;
   int frames = 10;
   std::string size;
 };
@@ -31,6 +34,11 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", arguments.screenshotPath,
                  "Draw --frames frames, save the window as this PNG, and exit");
+  app.add_option("--script", arguments.scriptPath,
+                 "Run viewer commands from this file (see src/app/script.h)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--stats-json", arguments.statsJsonPath,
+                 "On exit, write the viewer's frame times and edit-to-preview latency as JSON");
   app.add_option("--frames", arguments.frames, "Frames to draw before --screenshot (default 10)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--size", arguments.size, "Window size WIDTHxHEIGHT, e.g. 1280x800");
@@ -41,6 +49,8 @@ int runViewer(const ViewerArguments& arguments) {
   options.lensPath = arguments.lensPath;
   options.scenePath = arguments.scenePath;
   options.frames = arguments.frames;
+  options.scriptPath = arguments.scriptPath;
+  options.statsJsonPath = arguments.statsJsonPath;
   if (!arguments.screenshotPath.empty()) options.screenshotPath = arguments.screenshotPath;
   if (!arguments.size.empty()) {
     std::string error;
@@ -65,6 +75,7 @@ int run(int argc, char** argv) {
       "Headless: lenslab SUBCOMMAND --help for each subcommand.");
   ViewerArguments viewerArguments;
   addViewerOptions(app, viewerArguments);
+  const auto renderArguments = registerRenderCommand(app);
   SubcommandRunner subcommand;  // set when a headless subcommand was named
   addInfoCommand(app, subcommand);
   addFocusCommand(app, subcommand);
@@ -81,6 +92,7 @@ int run(int argc, char** argv) {
     std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
     return kUsageError;
   }
+  if (renderArguments->command->parsed()) return runRenderCommand(*renderArguments);
   if (subcommand) return subcommand();
   return runViewer(viewerArguments);
 }

@@ -60,3 +60,34 @@ struct PngImage {
 };
 
 }  // namespace lenslab::testing
+
+namespace lenslab::testing {
+
+// Pixels that differ by more than `tolerance` in any channel; images of different sizes differ
+// everywhere.
+inline std::size_t countDifferentPixels(const PngImage& a, const PngImage& b, int tolerance = 24) {
+  if (a.width != b.width || a.height != b.height) {
+    return static_cast<std::size_t>(std::max(a.width * a.height, b.width * b.height));
+  }
+  std::size_t different = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) different += a.at(x, y).maxDifference(b.at(x, y)) > tolerance;
+  }
+  return different;
+}
+
+}  // namespace lenslab::testing
+
+namespace lenslab::testing {
+
+// Mean of (r + g + b) / 3 over the image, 0..255.
+inline double meanBrightness(const PngImage& image) {
+  if (!image.valid()) return 0;
+  double sum = 0;
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+    sum += (image.rgb[i] + image.rgb[i + 1] + image.rgb[i + 2]) / 3.0;
+  }
+  return sum / (static_cast<double>(image.width) * image.height);
+}
+
+}  // namespace lenslab::testing

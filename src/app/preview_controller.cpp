@@ -1,0 +1,123 @@
+#include "app/preview_controller.h"
+
+#include <algorithm>
+#include <thread>
+
+#include "render/camera_factory.h"
+#include "render/image_io.h"
+#include "render/pbrt_parser.h"
+#include "render/scene_builder.h"
+
+namespace lenslab::app {
+
+LoadedScene loadSceneFile(const std::filesystem::path& path) {
+  LoadedScene loaded;
+  render::ParseResult parsed = render::parsePbrtFile(path);
+  const auto collect = [&](const render::Diagnostics& diagnostics) {
+    for (const render::Diagnostic& diagnostic : diagnostics.all()) {
+      if (diagnostic.severity == render::Severity::Warning) {
+        loaded.warnings.push_back(diagnostic.format());
+      } else {
+        if (!loaded.error.empty()) loaded.error += '\n';
+        loaded.error += diagnostic.format();
+      }
+    }
+  };
+  collect(parsed.diagnostics);
+  if (!parsed.scene) {
+    if (loaded.error.empty()) loaded.error = path.string() + ": cannot read the scene";
+    return loaded;
+  }
+  render::BuildResult built = render::buildScene(*parsed.scene);
+  collect(built.diagnostics);
+  if (!built.scene) {
+    if (loaded.error.empty()) loaded.error = path.string() + ": cannot build the scene";
+    return loaded;
+  }
+  loaded.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
+  loaded.scene = std::move(built.scene);
+  return loaded;
+}
+
+void PreviewController::setScene(const LoadedScene& loaded) {
+  description_ = loaded.description;
+  scene_ = loaded.scene;
+  ++sceneVersion_;
+}
+
+std::pair<int, int> PreviewController::previewSize(bool draft) const {
+  if (!description_) return {0, 0};
+  const int filmWidth = std::max(1, description_->film.xResolution);
+  const int filmHeight = std::max(1, description_->film.yResolution);
+  const double scale = std::min(1.0, static_cast<double>(kMaxPreviewExtent) /
+                                         std::max(filmWidth, filmHeight)) *
+                       (draft ? 0.5 : 1.0);
+  return {std::max(1, static_cast<int>(filmWidth * scale)),
+          std::max(1, static_cast<int>(filmHeight * scale))};
+}
+
+std::optional<std::uint64_t> PreviewController::update(
+    const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft) {
+  if (!description_ || !scene_ || !lens) return std::nullopt;
+  const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_};
+  if (submitted_ && *submitted_ == wanted) return std::nullopt;
+  const auto [width, height] = previewSize(draft);
+  render::RenderJob job;
+  job.camera = pinhole ? render::makeMatchingPinholeCamera(*description_, *lens, width, height)
+                       : render::makeLensCamera(*description_, lens, width, height);
+  job.scene = scene_;
+  job.settings.samplesPerPixel = kMaxPreviewSpp;
+  job.settings.integrator.kind = description_->integrator.kind;
+  job.settings.integrator.maxDepth = description_->integrator.maxDepth;
+  // All cores, at a lower scheduling priority than the UI thread (see RenderSettings).
+  job.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  job.settings.lowPriority = true;
+  generation_ = renderer_.start(std::move(job));
+  submitted_ = wanted;
+  submittedLens_ = lens;
+  firstPassReported_ = false;
+  return generation_;
+}
+
+int PreviewController::currentSpp(const std::shared_ptr<const optics::LensSystem>& lens,
+                                  bool pinhole) const {
+  const Submitted wanted{lens.get(), pinhole, false, sceneVersion_};
+  if (!submitted_ || !(*submitted_ == wanted)) return 0;
+  const auto snapshot = renderer_.snapshot();
+  if (!snapshot || snapshot->generation != generation_) return 0;
+  return snapshot->samplesPerPixel;
+}
+
+bool PreviewController::busy() const {
+  const auto snapshot = renderer_.snapshot();
+  return submitted_ && (!snapshot || snapshot->generation != generation_ || !snapshot->complete);
+}
+
+void PreviewController::poll(PreviewState& preview, double exposureStops, ViewerStats& stats) {
+  const auto snapshot = renderer_.snapshot();
+  preview.rendering = busy();
+  if (!snapshot) return;
+  const bool fresh = snapshot->generation != shownGeneration_ ||
+                     snapshot->samplesPerPixel != shownSpp_;
+  if (!fresh && exposureStops == shownExposure_) return;
+  render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
+  preview.texture.upload(snapshot->width, snapshot->height,
+                         render::encodeSrgbRgba8(image, exposureStops));
+  preview.imageWidth = snapshot->width;
+  preview.imageHeight = snapshot->height;
+  preview.samplesPerPixel = snapshot->samplesPerPixel;
+  preview.seconds = snapshot->renderSeconds;
+  preview.raysPerSecond = snapshot->renderSeconds > 0
+                              ? snapshot->statistics.cameraSamples / snapshot->renderSeconds
+                              : 0.0;
+  preview.reducedResolution = submitted_ && submitted_->draft;
+  shownGeneration_ = snapshot->generation;
+  shownSpp_ = snapshot->samplesPerPixel;
+  shownExposure_ = exposureStops;
+  if (snapshot->generation == generation_ && !firstPassReported_) {
+    stats.firstPassShown(generation_, ViewerStats::Clock::now());
+    firstPassReported_ = true;
+  }
+}
+
+}  // namespace lenslab::app

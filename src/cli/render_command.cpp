@@ -1,0 +1,177 @@
+#include "cli/render_command.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/size_argument.h"
+#include "render/camera_factory.h"
+#include "render/image_io.h"
+#include "render/pbrt_parser.h"
+#include "render/progressive_renderer.h"
+#include "render/scene_builder.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kUsageError = 2;
+constexpr int kFailure = 1;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void printDiagnostics(const render::Diagnostics& diagnostics) {
+  std::fputs(diagnostics.formatAll().c_str(), stderr);
+}
+
+void drawProgress(double fraction) {
+  constexpr int kWidth = 40;
+  const int filled = static_cast<int>(fraction * kWidth + 0.5);
+  std::string bar(static_cast<std::size_t>(filled), '#');
+  bar.resize(kWidth, '.');
+  std::fprintf(stderr, "\r[%s] %3d%%", bar.c_str(), static_cast<int>(fraction * 100.0 + 0.5));
+  if (fraction >= 1.0) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+bool writeStats(const std::string& path, const nlohmann::json& stats, std::string& error) {
+  const std::string temporary = path + ".tmp-lenslab";
+  {
+    std::ofstream out(temporary);
+    out << stats.dump(2) << "\n";
+    if (!out.flush()) {
+      error = "cannot write " + path;
+      std::remove(temporary.c_str());
+      return false;
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    error = "cannot write " + path;
+    std::remove(temporary.c_str());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
+  auto arguments = std::make_shared<RenderArguments>();
+  CLI::App* command = app.add_subcommand("render", "Render a pbrt scene to an image, headless");
+  arguments->command = command;
+  command->add_option("scene", arguments->scenePath, "Scene file (.pbrt)")->required();
+  command->add_option("--lens", arguments->lensPath, "Lens file replacing the scene's (.dat)");
+  command->add_option("--spp", arguments->samplesPerPixel, "Samples per pixel (default: scene's)")
+      ->check(CLI::Range(1, 1 << 20));
+  command->add_option("--resolution", arguments->resolution, "Image size WIDTHxHEIGHT");
+  command->add_option("--threads", arguments->threads, "Worker threads (default: all)")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--seed", arguments->seed, "Sample seed");
+  command->add_option("--integrator", arguments->integrator, "path or direct")
+      ->check(CLI::IsMember({"path", "direct"}));
+  command->add_option("--out", arguments->outPath,
+                      "Output image; format from the extension: .png .exr .pfm "
+                      "(default: the scene's film filename, else out.png)");
+  command->add_option("--stats-json", arguments->statsJsonPath, "Write timing statistics here");
+  command->add_option("--exposure", arguments->exposureStops, "PNG exposure in stops");
+  command->add_flag("--quiet", arguments->quiet, "No progress bar");
+  return arguments;
+}
+
+int runRenderCommand(const RenderArguments& arguments) {
+  const Clock::time_point started = Clock::now();
+  render::CameraOverrides overrides;
+  if (!arguments.resolution.empty()) {
+    std::string error;
+    const auto size = parsePixelSize(arguments.resolution, &error);
+    if (!size) {
+      std::fprintf(stderr, "lenslab render: --resolution: %s\n", error.c_str());
+      return kUsageError;
+    }
+    overrides.width = size->width;
+    overrides.height = size->height;
+  }
+  if (!arguments.lensPath.empty()) overrides.lensPath = arguments.lensPath;
+
+  render::ParseResult parsed = render::parsePbrtFile(arguments.scenePath);
+  printDiagnostics(parsed.diagnostics);
+  if (!parsed.scene) return kFailure;
+  const render::SceneDescription& description = *parsed.scene;
+
+  std::string outPath = arguments.outPath;
+  if (outPath.empty()) outPath = description.film.filename.empty() ? "out.png" : description.film.filename;
+  const std::string extension = std::filesystem::path(outPath).extension().string();
+  if (extension != ".png" && extension != ".exr" && extension != ".pfm") {
+    std::fprintf(stderr, "lenslab render: %s: unknown image format (use .png, .exr or .pfm)\n",
+                 outPath.c_str());
+    return kUsageError;
+  }
+
+  render::Diagnostics cameraDiagnostics;
+  auto camera = render::makeCamera(description, overrides, cameraDiagnostics);
+  printDiagnostics(cameraDiagnostics);
+  if (!camera) return kFailure;
+  render::BuildResult built = render::buildScene(description);
+  printDiagnostics(built.diagnostics);
+  if (!built.scene) return kFailure;
+  const double setupSeconds = secondsSince(started);
+
+  render::RenderJob job;
+  job.camera = camera;
+  job.scene = built.scene;
+  job.settings.samplesPerPixel =
+      arguments.samplesPerPixel > 0 ? arguments.samplesPerPixel : description.pixelSamples;
+  job.settings.threads = arguments.threads;
+  job.settings.seed = arguments.seed;
+  job.settings.integrator.kind = description.integrator.kind;
+  job.settings.integrator.maxDepth = description.integrator.maxDepth;
+  if (arguments.integrator == "path") job.settings.integrator.kind = render::IntegratorKind::Path;
+  if (arguments.integrator == "direct") {
+    job.settings.integrator.kind = render::IntegratorKind::DirectLighting;
+  }
+  const bool showProgress = !arguments.quiet && isatty(STDERR_FILENO);
+  const auto snapshot =
+      render::renderToCompletion(job, showProgress ? std::function<void(double)>(drawProgress)
+                                                   : std::function<void(double)>());
+  if (!snapshot) {
+    std::fprintf(stderr, "lenslab render: nothing was rendered\n");
+    return kFailure;
+  }
+  render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
+  const render::WriteResult written = render::writeImage(outPath, image, arguments.exposureStops);
+  if (!written.ok) {
+    std::fprintf(stderr, "lenslab render: %s\n", written.error.c_str());
+    return kFailure;
+  }
+  if (!arguments.statsJsonPath.empty()) {
+    const auto& statistics = snapshot->statistics;
+    nlohmann::json stats;
+    stats["wall_seconds"] = secondsSince(started);
+    stats["setup_seconds"] = setupSeconds;
+    stats["render_seconds"] = snapshot->renderSeconds;
+    stats["spp"] = snapshot->samplesPerPixel;
+    stats["width"] = snapshot->width;
+    stats["height"] = snapshot->height;
+    stats["camera_samples"] = statistics.cameraSamples;
+    stats["lens_pass_fraction"] =
+        statistics.cameraSamples > 0
+            ? static_cast<double>(statistics.lensPassed) / statistics.cameraSamples
+            : 0.0;
+    stats["discarded_samples"] = statistics.discardedSamples;
+    stats["output"] = outPath;
+    std::string error;
+    if (!writeStats(arguments.statsJsonPath, stats, error)) {
+      std::fprintf(stderr, "lenslab render: %s\n", error.c_str());
+      return kFailure;
+    }
+  }
+  return 0;
+}
+
+}  // namespace lenslab::cli

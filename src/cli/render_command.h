@@ -1,0 +1,30 @@
+#pragma once
+// `lenslab render SCENE ...`: the headless renderer.
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+namespace lenslab::cli {
+
+struct RenderArguments {
+  CLI::App* command = nullptr;
+  std::string scenePath;
+  std::string lensPath;
+  int samplesPerPixel = 0;  // 0: the scene's
+  std::string resolution;
+  int threads = 0;
+  unsigned seed = 0;
+  std::string integrator;  // empty: the scene's
+  std::string outPath;
+  std::string statsJsonPath;
+  double exposureStops = 0.0;
+  bool quiet = false;
+};
+
+// Adds the subcommand to `app`; the returned arguments fill in when it is parsed.
+std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app);
+// Runs it; returns the process exit code.
+int runRenderCommand(const RenderArguments& arguments);
+
+}  // namespace lenslab::cli

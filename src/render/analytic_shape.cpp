@@ -1,0 +1,179 @@
+#include "render/analytic_shape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+namespace lenslab::render {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+
+// Roots of a t^2 + b t + c = 0 in ascending order, computed without cancellation (the
+// "citardauq" form, Press et al., Numerical Recipes 5.6).
+bool solveQuadratic(double a, double b, double c, double& t0, double& t1) {
+  if (a == 0.0) {
+    if (b == 0.0) return false;
+    t0 = t1 = -c / b;
+    return true;
+  }
+  const double discriminant = b * b - 4.0 * a * c;
+  if (discriminant < 0.0) return false;
+  const double root = std::sqrt(discriminant);
+  const double q = b < 0.0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  t0 = q / a;
+  t1 = q != 0.0 ? c / q : t0;
+  if (t0 > t1) std::swap(t0, t1);
+  return true;
+}
+
+double phiOf(const glm::dvec3& p) {
+  double phi = std::atan2(p.y, p.x);
+  return phi < 0.0 ? phi + kTwoPi : phi;
+}
+
+}  // namespace
+
+std::optional<QuadricHit> Quadric::intersect(glm::dvec3 o, glm::dvec3 d, double tMin,
+                                             double tMax) const {
+  if (kind == QuadricKind::Disk) {
+    if (d.z == 0.0) return std::nullopt;
+    const double t = (height - o.z) / d.z;
+    if (!(t > tMin && t < tMax)) return std::nullopt;
+    const glm::dvec3 p = o + t * d;
+    const double r2 = p.x * p.x + p.y * p.y;
+    if (r2 > radius * radius || r2 < innerRadius * innerRadius) return std::nullopt;
+    const double phi = phiOf(p);
+    if (phi > phiMax) return std::nullopt;
+    const double r = std::sqrt(r2);
+    return QuadricHit{t, {0.0, 0.0, 1.0},
+                      {phi / phiMax, (radius - r) / std::max(1e-300, radius - innerRadius)}};
+  }
+  double a, b, c;
+  if (kind == QuadricKind::Sphere) {
+    a = glm::dot(d, d);
+    b = 2.0 * glm::dot(d, o);
+    c = glm::dot(o, o) - radius * radius;
+  } else if (kind == QuadricKind::Cylinder) {
+    a = d.x * d.x + d.y * d.y;
+    b = 2.0 * (d.x * o.x + d.y * o.y);
+    c = o.x * o.x + o.y * o.y - radius * radius;
+  } else {  // cone: x^2 + y^2 = k (z - h)^2 with k = (r / h)^2
+    const double k = (radius / height) * (radius / height);
+    const double oz = o.z - height;
+    a = d.x * d.x + d.y * d.y - k * d.z * d.z;
+    b = 2.0 * (d.x * o.x + d.y * o.y - k * d.z * oz);
+    c = o.x * o.x + o.y * o.y - k * oz * oz;
+  }
+  double roots[2];
+  if (!solveQuadratic(a, b, c, roots[0], roots[1])) return std::nullopt;
+  for (double t : roots) {
+    if (!(t > tMin && t < tMax)) continue;
+    const glm::dvec3 p = o + t * d;
+    const double phi = phiOf(p);
+    if (phi > phiMax) continue;
+    if (kind == QuadricKind::Sphere) {
+      if (p.z < zMin || p.z > zMax) continue;
+      const double cosTheta = std::clamp(p.z / radius, -1.0, 1.0);
+      const double thetaMin = std::acos(std::clamp(zMin / radius, -1.0, 1.0));
+      const double thetaMax = std::acos(std::clamp(zMax / radius, -1.0, 1.0));
+      const double v = (std::acos(cosTheta) - thetaMin) / (thetaMax - thetaMin);
+      return QuadricHit{t, p, {phi / phiMax, v}};
+    }
+    if (kind == QuadricKind::Cylinder) {
+      if (p.z < zMin || p.z > zMax) continue;
+      return QuadricHit{t, {p.x, p.y, 0.0}, {phi / phiMax, (p.z - zMin) / (zMax - zMin)}};
+    }
+    if (p.z < 0.0 || p.z > height) continue;
+    const double k = (radius / height) * (radius / height);
+    return QuadricHit{t, {p.x, p.y, -k * (p.z - height)}, {phi / phiMax, p.z / height}};
+  }
+  return std::nullopt;
+}
+
+void Quadric::bounds(glm::dvec3& lower, glm::dvec3& upper) const {
+  switch (kind) {
+    case QuadricKind::Sphere:
+      lower = {-radius, -radius, zMin};
+      upper = {radius, radius, zMax};
+      break;
+    case QuadricKind::Disk:
+      lower = {-radius, -radius, height};
+      upper = {radius, radius, height};
+      break;
+    case QuadricKind::Cylinder:
+      lower = {-radius, -radius, zMin};
+      upper = {radius, radius, zMax};
+      break;
+    case QuadricKind::Cone:
+      lower = {-radius, -radius, 0.0};
+      upper = {radius, radius, height};
+      break;
+  }
+}
+
+double Quadric::area() const {
+  const double fraction = phiMax / kTwoPi;
+  switch (kind) {
+    case QuadricKind::Sphere:
+      return phiMax * radius * (zMax - zMin);
+    case QuadricKind::Disk:
+      return 0.5 * phiMax * (radius * radius - innerRadius * innerRadius);
+    case QuadricKind::Cylinder:
+      return phiMax * radius * (zMax - zMin);
+    case QuadricKind::Cone:
+      return fraction * 3.14159265358979323846 * radius * std::sqrt(height * height + radius * radius);
+  }
+  return 0.0;
+}
+
+glm::dvec3 Quadric::sampleArea(glm::dvec2 u, glm::dvec3& normal) const {
+  const double phi = u.y * phiMax;
+  switch (kind) {
+    case QuadricKind::Sphere: {
+      // Archimedes: z is uniform over a sphere's zone.
+      const double z = zMin + u.x * (zMax - zMin);
+      const double r = std::sqrt(std::max(0.0, radius * radius - z * z));
+      const glm::dvec3 p(r * std::cos(phi), r * std::sin(phi), z);
+      normal = p;
+      return p;
+    }
+    case QuadricKind::Disk: {
+      const double r = std::sqrt(innerRadius * innerRadius +
+                                 u.x * (radius * radius - innerRadius * innerRadius));
+      normal = {0.0, 0.0, 1.0};
+      return {r * std::cos(phi), r * std::sin(phi), height};
+    }
+    case QuadricKind::Cylinder: {
+      const double z = zMin + u.x * (zMax - zMin);
+      normal = {std::cos(phi), std::sin(phi), 0.0};
+      return {radius * std::cos(phi), radius * std::sin(phi), z};
+    }
+    case QuadricKind::Cone: {
+      // Lateral area grows linearly with the distance s from the apex: s = sqrt(u).
+      const double s = std::sqrt(u.x);
+      const double r = radius * s;
+      const double z = height * (1.0 - s);
+      const double k = (radius / height) * (radius / height);
+      const glm::dvec3 p(r * std::cos(phi), r * std::sin(phi), z);
+      normal = {p.x, p.y, -k * (z - height)};
+      return p;
+    }
+  }
+  normal = {0.0, 0.0, 1.0};
+  return glm::dvec3(0.0);
+}
+
+void PlacedQuadric::place(const glm::dmat4& transform, bool reverseOrientation) {
+  parentFromObject = transform;
+  objectFromParent = glm::inverse(transform);
+  const glm::dmat3 linear(transform);
+  normalToParent = glm::transpose(glm::inverse(linear));
+  // The inverse transpose keeps normals outward even under a mirroring transform, so only
+  // ReverseOrientation turns them inward.
+  flipNormal = reverseOrientation;
+}
+
+}  // namespace lenslab::render

@@ -1,0 +1,59 @@
+#pragma once
+// Cameras map a point on the film (raster coordinates, pixels, y down) and a lens sample to a
+// world-space ray and an exposure weight. Framing follows pbrt: camera space looks down +z with
+// +y up, and raster (0, 0) is the top-left corner of the image.
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace lenslab::render {
+
+struct CameraRay {
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, 1.0f};  // unit
+  float weight = 1.0f;                     // exposure weight; 0 means the lens blocked it
+};
+
+class Camera {
+ public:
+  virtual ~Camera() = default;
+  // Returns false when no ray leaves the lens for this sample (vignetted or blocked).
+  virtual bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const = 0;
+  // Many rays at once (cameras with a lens trace them as a batch); passed[i] says whether
+  // rays[i] left the lens.
+  virtual void generateRays(std::size_t count, const glm::vec2* rasterPoints,
+                            const glm::vec2* lensSamples, CameraRay* rays,
+                            std::uint8_t* passed) const {
+    for (std::size_t i = 0; i < count; ++i) {
+      passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
+    }
+  }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ protected:
+  Camera(int width, int height) : width_(width), height_(height) {}
+  int width_;
+  int height_;
+};
+
+// The pinhole (or thin lens when lensRadius > 0), as pbrt's "perspective" camera: `fov` spans the
+// shorter image axis.
+class PerspectiveCamera final : public Camera {
+ public:
+  PerspectiveCamera(const glm::dmat4& cameraFromWorld, double fovDegrees, int width, int height,
+                    double lensRadius = 0.0, double focalDistance = 1e6);
+  bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
+
+ private:
+  glm::mat4 worldFromCamera_;
+  glm::vec3 origin_;
+  float screenMinX_, screenMaxY_, screenWidth_, screenHeight_;
+  float tanHalfFov_;
+  float lensRadius_, focalDistance_;
+};
+
+}  // namespace lenslab::render

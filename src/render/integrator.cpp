@@ -1,0 +1,202 @@
+#include "render/integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "render/material.h"
+#include "render/sampling.h"
+
+namespace lenslab::render {
+
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Offsets a ray origin off the surface along the geometric normal, on the side of `direction`,
+// so that the new ray does not hit the surface it starts on. The offset grows with the
+// coordinates' magnitude because float spacing does.
+glm::vec3 offsetOrigin(const SurfaceHit& hit, glm::vec3 direction) {
+  const float magnitude = std::max({1.0f, std::abs(hit.point.x), std::abs(hit.point.y),
+                                    std::abs(hit.point.z)});
+  const float epsilon = 2e-5f * magnitude;
+  const float side = glm::dot(hit.geometricNormal, direction) >= 0.0f ? 1.0f : -1.0f;
+  return hit.point + side * epsilon * hit.geometricNormal;
+}
+
+bool isBlack(glm::vec3 v) { return v.x <= 0.0f && v.y <= 0.0f && v.z <= 0.0f; }
+
+// Radiance from the lights escaping rays see (infinite lights).
+glm::vec3 escapedRadiance(const Scene& scene, glm::vec3 direction) {
+  glm::vec3 sum(0.0f);
+  for (int index : scene.infiniteLights()) {
+    sum += infiniteRadiance(scene.lights()[static_cast<std::size_t>(index)], direction);
+  }
+  return sum;
+}
+
+// One light's direct contribution at a hit, from one light sample and (for non-delta lights)
+// one BSDF sample combined with the power heuristic (pbrt-v2's EstimateDirect).
+glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf,
+                         glm::vec3 wo, int lightIndex, glm::vec2 uLight, float uLobe,
+                         glm::vec2 uBsdf, bool sampleBsdf, float selectionProbability = 1.0f) {
+  const Light& light = scene.lights()[static_cast<std::size_t>(lightIndex)];
+  glm::vec3 result(0.0f);
+  LightSample ls;
+  if (sampleLight(light, hit.point, uLight, scene.radius(), ls) && !isBlack(ls.radiance)) {
+    float bsdfPdf = 0.0f;
+    const glm::vec3 f = bsdf.evaluate(wo, ls.wi, bsdfPdf);
+    if (!isBlack(f)) {
+      const glm::vec3 origin = offsetOrigin(hit, ls.wi);
+      const float distance =
+          std::isinf(ls.distance) ? kInfinity : ls.distance * (1.0f - 1e-4f);
+      if (!scene.occluded(origin, ls.wi, distance)) {
+        const float lightPdf = ls.pdf * selectionProbability;
+        const float weight = light.isDelta() ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
+        result += f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight /
+                  lightPdf;
+      }
+    }
+  }
+  if (!sampleBsdf || light.isDelta()) return result;
+  BsdfSample bs;
+  if (!bsdf.sample(wo, uLobe, uBsdf, bs) || bs.specular) return result;
+  SurfaceHit lightHit;
+  const glm::vec3 origin = offsetOrigin(hit, bs.wi);
+  glm::vec3 radiance(0.0f);
+  float lightPdf = 0.0f;
+  if (light.kind == LightKind::Area) {
+    if (!scene.intersect(origin, bs.wi, kInfinity, lightHit) || lightHit.light != lightIndex) {
+      return result;
+    }
+    radiance = areaRadiance(light, lightHit.geometricNormal, -bs.wi);
+    lightPdf = areaPdf(light, hit.point, lightHit.point, lightHit.geometricNormal);
+  } else {  // infinite
+    if (scene.occluded(origin, bs.wi, kInfinity)) return result;
+    radiance = infiniteRadiance(light, bs.wi);
+    lightPdf = infinitePdf(light);
+  }
+  if (lightPdf <= 0.0f) return result;
+  return result + bs.weight * radiance * powerHeuristic(bs.pdf, lightPdf);
+}
+
+glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
+                         PixelSampler& sampler, int maxDepth) {
+  glm::vec3 radiance(0.0f), throughput(1.0f);
+  for (int depth = 0;; ++depth) {
+    SurfaceHit hit;
+    if (!scene.intersect(origin, direction, kInfinity, hit)) {
+      radiance += throughput * escapedRadiance(scene, direction);
+      break;
+    }
+    const glm::vec3 wo = -direction;
+    if (hit.light >= 0) {
+      radiance += throughput * areaRadiance(scene.lights()[static_cast<std::size_t>(hit.light)],
+                                            hit.geometricNormal, wo);
+    }
+    const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal);
+    if (!bsdf.isSpecular()) {
+      // pbrt-v2's default strategy: every light, with its own number of samples.
+      const auto& lights = scene.lights();
+      for (std::size_t l = 0; l < lights.size(); ++l) {
+        const int count = lights[l].samples;
+        glm::vec3 sum(0.0f);
+        for (int s = 0; s < count; ++s) {
+          const glm::vec2 uLight = sampler.next2D();
+          const glm::vec2 uBsdf = sampler.next2D();
+          sum += estimateDirect(scene, hit, bsdf, wo, static_cast<int>(l), uLight, uBsdf.x,
+                                sampler.next2D(), true);
+        }
+        radiance += throughput * sum / static_cast<float>(count);
+      }
+      break;
+    }
+    // Follow perfect specular reflection and refraction up to maxDepth.
+    if (depth + 1 >= maxDepth) break;
+    BsdfSample bs;
+    const glm::vec2 u = sampler.next2D();
+    if (!bsdf.sample(wo, u.x, sampler.next2D(), bs)) break;
+    throughput *= bs.weight;
+    if (isBlack(throughput)) break;
+    origin = offsetOrigin(hit, bs.wi);
+    direction = bs.wi;
+  }
+  return radiance;
+}
+
+glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
+                    PixelSampler& sampler, int maxDepth) {
+  glm::vec3 radiance(0.0f), throughput(1.0f);
+  bool specularBounce = true;
+  float previousPdf = 0.0f;
+  glm::vec3 previousPoint(0.0f);
+  const auto& lights = scene.lights();
+  const float lightCount = static_cast<float>(lights.size());
+  for (int depth = 0;; ++depth) {
+    SurfaceHit hit;
+    if (!scene.intersect(origin, direction, kInfinity, hit)) {
+      for (int index : scene.infiniteLights()) {
+        const Light& light = lights[static_cast<std::size_t>(index)];
+        const glm::vec3 le = infiniteRadiance(light, direction);
+        const float weight =
+            specularBounce ? 1.0f
+                           : powerHeuristic(previousPdf, infinitePdf(light) / lightCount);
+        radiance += throughput * le * weight;
+      }
+      break;
+    }
+    const glm::vec3 wo = -direction;
+    if (hit.light >= 0) {
+      const Light& light = lights[static_cast<std::size_t>(hit.light)];
+      const glm::vec3 le = areaRadiance(light, hit.geometricNormal, wo);
+      float weight = 1.0f;
+      if (!specularBounce) {
+        const float lightPdf =
+            areaPdf(light, previousPoint, hit.point, hit.geometricNormal) / lightCount;
+        weight = powerHeuristic(previousPdf, lightPdf);
+      }
+      radiance += throughput * le * weight;
+    }
+    if (depth >= maxDepth) break;
+    const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal);
+    const glm::vec2 uChoose = sampler.next2D();
+    const glm::vec2 uLight = sampler.next2D();
+    const glm::vec2 uBsdf = sampler.next2D();
+    if (!bsdf.isSpecular() && !lights.empty()) {
+      // Next-event estimation toward one light chosen uniformly.
+      const int index = std::min(static_cast<int>(uChoose.x * lightCount),
+                                 static_cast<int>(lights.size()) - 1);
+      radiance += throughput * estimateDirect(scene, hit, bsdf, wo, index, uLight, 0.0f,
+                                              glm::vec2(0.0f), false, 1.0f / lightCount);
+    }
+    BsdfSample bs;
+    if (!bsdf.sample(wo, uChoose.y, uBsdf, bs)) break;
+    throughput *= bs.weight;
+    specularBounce = bs.specular;
+    previousPdf = bs.pdf;
+    previousPoint = hit.point;
+    if (isBlack(throughput)) break;
+    // Russian roulette after a few bounces keeps long paths cheap without bias.
+    if (depth >= 3) {
+      const float survive = std::min(0.95f, std::max({throughput.x, throughput.y, throughput.z}));
+      if (sampler.next1D() >= survive) break;
+      throughput /= survive;
+    }
+    origin = offsetOrigin(hit, bs.wi);
+    direction = bs.wi;
+  }
+  return radiance;
+}
+
+}  // namespace
+
+glm::vec3 incomingRadiance(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
+                           PixelSampler& sampler, const IntegratorSettings& settings) {
+  if (settings.kind == IntegratorKind::DirectLighting) {
+    return directLighting(scene, origin, direction, sampler, settings.maxDepth);
+  }
+  return pathTrace(scene, origin, direction, sampler, settings.maxDepth);
+}
+
+}  // namespace lenslab::render

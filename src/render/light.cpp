@@ -1,0 +1,120 @@
+#include "render/light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "render/sampling.h"
+
+namespace lenslab::render {
+
+glm::vec3 Emitter::sample(glm::vec2 u, glm::vec3& normal) const {
+  glm::vec3 point;
+  if (isQuadric) {
+    glm::dvec3 objectNormal;
+    const glm::dvec3 p = quadric.quadric.sampleArea(glm::dvec2(u), objectNormal);
+    point = glm::vec3(quadric.parentFromObject * glm::dvec4(p, 1.0));
+    normal = glm::vec3(glm::normalize(quadric.normalToParent * objectNormal));
+  } else {
+    // Pick a triangle by area, then reuse the leftover of u.x inside it.
+    const float target = u.x * cumulativeArea.back();
+    const auto found = std::upper_bound(cumulativeArea.begin(), cumulativeArea.end(), target);
+    const std::size_t index =
+        std::min<std::size_t>(static_cast<std::size_t>(found - cumulativeArea.begin()),
+                              cumulativeArea.size() - 1);
+    const float before = index == 0 ? 0.0f : cumulativeArea[index - 1];
+    const float width = cumulativeArea[index] - before;
+    const float reused = width > 0.0f ? std::clamp((target - before) / width, 0.0f, 0.99999994f)
+                                      : 0.5f;
+    const glm::vec2 b = uniformTriangle({reused, u.y});
+    const glm::vec3& a = triangles[3 * index];
+    const glm::vec3& bb = triangles[3 * index + 1];
+    const glm::vec3& c = triangles[3 * index + 2];
+    point = b.x * a + b.y * bb + (1.0f - b.x - b.y) * c;
+    normal = glm::normalize(glm::cross(bb - a, c - a));
+  }
+  if (flipNormal) normal = -normal;
+  return point;
+}
+
+glm::vec3 areaRadiance(const Light& light, glm::vec3 normal, glm::vec3 wo) {
+  return (light.twoSided || glm::dot(normal, wo) > 0.0f) ? light.intensity : glm::vec3(0.0f);
+}
+
+float areaPdf(const Light& light, glm::vec3 point, glm::vec3 lightPoint, glm::vec3 lightNormal) {
+  const glm::vec3 toLight = lightPoint - point;
+  const float distance2 = glm::dot(toLight, toLight);
+  const float cosLight = std::abs(glm::dot(lightNormal, toLight)) / std::sqrt(distance2);
+  if (cosLight <= 0.0f || light.emitter->area <= 0.0f) return 0.0f;
+  return distance2 / (cosLight * light.emitter->area);
+}
+
+glm::vec3 infiniteRadiance(const Light& light, glm::vec3 direction) {
+  if (!light.map) return light.intensity;
+  // Equirectangular: theta from the light's +z, phi around it (pbrt's convention).
+  const glm::vec3 w = glm::normalize(light.lightFromWorld * direction);
+  const float theta = std::acos(std::clamp(w.z, -1.0f, 1.0f));
+  float phi = std::atan2(w.y, w.x);
+  if (phi < 0.0f) phi += 2.0f * kPi;
+  const FloatImage& image = *light.map;
+  const int x = std::clamp(static_cast<int>(phi / (2.0f * kPi) * image.width), 0, image.width - 1);
+  const int y = std::clamp(static_cast<int>(theta / kPi * image.height), 0, image.height - 1);
+  const float* texel = &image.rgb[(static_cast<std::size_t>(y) * image.width + x) * 3];
+  return light.intensity * glm::vec3(texel[0], texel[1], texel[2]);
+}
+
+float infinitePdf(const Light&) { return 1.0f / (4.0f * kPi); }
+
+bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float /*sceneRadius*/,
+                 LightSample& out) {
+  switch (light.kind) {
+    case LightKind::Point:
+    case LightKind::Spot: {
+      const glm::vec3 toLight = light.position - point;
+      const float distance2 = glm::dot(toLight, toLight);
+      if (distance2 <= 0.0f) return false;
+      out.distance = std::sqrt(distance2);
+      out.wi = toLight / out.distance;
+      out.pdf = 1.0f;
+      out.radiance = light.intensity / distance2;
+      if (light.kind == LightKind::Spot) {
+        const float cosAngle = glm::dot(-out.wi, light.direction);
+        if (cosAngle < light.cosTotalWidth) return false;
+        if (cosAngle < light.cosFalloffStart) {
+          // pbrt's spot falloff: the fourth power of the normalised cosine.
+          const float delta = (cosAngle - light.cosTotalWidth) /
+                              (light.cosFalloffStart - light.cosTotalWidth);
+          out.radiance *= (delta * delta) * (delta * delta);
+        }
+      }
+      return true;
+    }
+    case LightKind::Distant:
+      out.wi = light.direction;
+      out.distance = std::numeric_limits<float>::infinity();
+      out.pdf = 1.0f;
+      out.radiance = light.intensity;
+      return true;
+    case LightKind::Infinite:
+      out.wi = uniformSphere(u);
+      out.distance = std::numeric_limits<float>::infinity();
+      out.pdf = infinitePdf(light);
+      out.radiance = infiniteRadiance(light, out.wi);
+      return true;
+    case LightKind::Area: {
+      glm::vec3 normal;
+      const glm::vec3 lightPoint = light.emitter->sample(u, normal);
+      const glm::vec3 toLight = lightPoint - point;
+      const float distance2 = glm::dot(toLight, toLight);
+      if (distance2 <= 0.0f) return false;
+      out.distance = std::sqrt(distance2);
+      out.wi = toLight / out.distance;
+      out.radiance = areaRadiance(light, normal, -out.wi);
+      out.pdf = areaPdf(light, point, lightPoint, normal);
+      return out.pdf > 0.0f && (out.radiance.x > 0 || out.radiance.y > 0 || out.radiance.z > 0);
+    }
+  }
+  return false;
+}
+
+}  // namespace lenslab::render

@@ -1,0 +1,73 @@
+#pragma once
+// Light sources: point, spot, distant, infinite (constant or equirectangular map) and diffuse
+// area emitters on shapes. Radiometry follows pbrt's definitions of each light's parameters.
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+#include "render/analytic_shape.h"
+#include "render/image_io.h"
+
+namespace lenslab::render {
+
+enum class LightKind { Point, Spot, Distant, Infinite, Area };
+
+// The surface of an area light, in world space.
+struct Emitter {
+  // Triangles: world-space vertices, three per triangle, with a cumulative area table.
+  std::vector<glm::vec3> triangles;
+  std::vector<float> cumulativeArea;
+  // Or one quadric.
+  bool isQuadric = false;
+  PlacedQuadric quadric;
+  double areaScale = 1.0;  // world area / object area of the quadric
+  float area = 0.0f;       // world-space area
+  bool flipNormal = false;
+
+  // A uniform point on the surface with its unit normal (emitting side when one-sided).
+  glm::vec3 sample(glm::vec2 u, glm::vec3& normal) const;
+};
+
+struct Light {
+  LightKind kind = LightKind::Point;
+  glm::vec3 position{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, 1.0f};  // spot: axis; distant: toward the light
+  glm::vec3 intensity{1.0f};              // point/spot: I; distant/infinite/area: L
+  float cosTotalWidth = 0.0f, cosFalloffStart = 1.0f;
+  int samples = 1;  // pbrt-v2 nsamples for area and infinite lights
+  // Infinite light with a map: lat-long image, and the rotation from world to light space.
+  std::shared_ptr<const FloatImage> map;
+  glm::mat3 lightFromWorld{1.0f};
+  // Area light
+  std::shared_ptr<const Emitter> emitter;
+  bool twoSided = false;
+
+  bool isDelta() const {
+    return kind == LightKind::Point || kind == LightKind::Spot || kind == LightKind::Distant;
+  }
+};
+
+struct LightSample {
+  glm::vec3 wi{0.0f};  // unit, toward the light
+  float distance = 0.0f;  // to the sampled point; infinity for lights at infinity
+  glm::vec3 radiance{0.0f};
+  float pdf = 0.0f;  // solid angle (1 for delta lights)
+};
+
+// Samples incident light at `point`; returns false if the sample carries nothing.
+bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float sceneRadius,
+                 LightSample& out);
+// Radiance an area light emits from a point with normal `normal` toward `wo`.
+glm::vec3 areaRadiance(const Light& light, glm::vec3 normal, glm::vec3 wo);
+// Solid-angle density with which sampleLight picks the emitter point `lightPoint` seen from
+// `point` (area lights).
+float areaPdf(const Light& light, glm::vec3 point, glm::vec3 lightPoint, glm::vec3 lightNormal);
+// Radiance of an infinite light in world direction `direction`, and the density of sampleLight
+// for it.
+glm::vec3 infiniteRadiance(const Light& light, glm::vec3 direction);
+float infinitePdf(const Light& light);
+
+}  // namespace lenslab::render

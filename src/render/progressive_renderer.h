@@ -1,0 +1,98 @@
+#pragma once
+// A progressive, threaded renderer. start() hands it a job and returns at once; a controller
+// thread renders the image in waves of 1, 1, 2, 4, ... samples per pixel, tiles in parallel on a
+// oneTBB arena, and publishes a snapshot after each wave. A newer job cancels the running one:
+// tiles check for it between pixels, so the switch takes well under 10 ms.
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/integrator.h"
+#include "render/scene.h"
+
+namespace lenslab::render {
+
+struct RenderSettings {
+  int samplesPerPixel = 16;  // the job ends after this many; 0 refines until replaced
+  int threads = 0;           // 0: all hardware threads
+  std::uint32_t seed = 0;
+  IntegratorSettings integrator;
+  int tileSize = 16;
+  // Run the workers at a lower priority than other threads of the process (the viewer's UI).
+  bool lowPriority = false;
+};
+
+struct RenderJob {
+  std::shared_ptr<const Camera> camera;  // also fixes the image size
+  std::shared_ptr<const Scene> scene;
+  RenderSettings settings;
+};
+
+struct RenderStatistics {
+  std::uint64_t cameraSamples = 0;  // rays asked of the camera
+  std::uint64_t lensPassed = 0;     // of those, rays that left the lens
+  std::uint64_t discardedSamples = 0;  // non-finite radiance, dropped
+};
+
+// One published state of a job's image: the mean radiance per pixel after `samplesPerPixel`.
+struct RenderSnapshot {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgb;  // linear, rows top to bottom
+  int samplesPerPixel = 0;
+  std::uint64_t generation = 0;  // the start() call this belongs to
+  bool complete = false;         // all requested samples are in
+  double renderSeconds = 0.0;
+  RenderStatistics statistics;
+};
+
+class ProgressiveRenderer {
+ public:
+  ProgressiveRenderer();
+  ~ProgressiveRenderer();  // cancels and joins
+  ProgressiveRenderer(const ProgressiveRenderer&) = delete;
+  ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
+
+  // Replaces any running job; returns the new job's generation. Never waits for rendering.
+  std::uint64_t start(RenderJob job);
+  // Stops the running job (the last snapshot stays readable).
+  void cancel();
+  // The latest snapshot (null before the first wave of the first job). Lock-free for readers in
+  // practice: a mutex guards only the pointer copy.
+  std::shared_ptr<const RenderSnapshot> snapshot() const;
+  // Blocks until the job of `generation` is complete or replaced, or the timeout passes
+  // (for the CLI and tests; the viewer polls snapshot() instead). Returns true if complete.
+  bool waitForCompletion(std::uint64_t generation, double timeoutSeconds) const;
+  // True while a job is being rendered (false once it completed or was cancelled and its
+  // workers returned).
+  bool busy() const { return busy_.load(); }
+
+ private:
+  void controllerLoop();
+  void runJob(const RenderJob& job, std::uint64_t generation);
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  std::shared_ptr<const RenderSnapshot> snapshot_;
+  RenderJob pending_;
+  bool hasPending_ = false;
+  bool quit_ = false;
+  std::atomic<std::uint64_t> requestedGeneration_{0};
+  std::uint64_t finishedGeneration_ = 0;
+  std::atomic<bool> busy_{false};
+  std::thread controller_;
+};
+
+// Renders a job to completion on the calling thread's behalf (blocking), reporting progress as
+// the fraction done after each wave. A convenience for the CLI and tests.
+std::shared_ptr<const RenderSnapshot> renderToCompletion(
+    RenderJob job, const std::function<void(double)>& progress = {});
+
+}  // namespace lenslab::render

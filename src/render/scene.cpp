@@ -1,0 +1,111 @@
+#include "render/scene.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+namespace lenslab::render {
+
+Scene::Scene() = default;
+
+Scene::~Scene() {
+  for (RTCScene scene : objectScenes_) rtcReleaseScene(scene);
+  if (top_) rtcReleaseScene(top_);
+  if (device_) rtcReleaseDevice(device_);
+}
+
+namespace {
+
+void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit,
+                           SurfaceHit& hit) {
+  hit.material = record.material;
+  hit.light = record.light;
+  if (record.kind == GeometryRecord::Kind::Mesh) {
+    const unsigned* tri = &record.indices[3 * embreeHit.primID];
+    const glm::vec3& p0 = record.positions[tri[0]];
+    const glm::vec3& p1 = record.positions[tri[1]];
+    const glm::vec3& p2 = record.positions[tri[2]];
+    const float b1 = embreeHit.u, b2 = embreeHit.v, b0 = 1.0f - b1 - b2;
+    glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    if (!record.normals.empty()) {
+      glm::vec3 ns = b0 * record.normals[tri[0]] + b1 * record.normals[tri[1]] +
+                     b2 * record.normals[tri[2]];
+      const float length = glm::length(ns);
+      ns = length > 0.0f ? ns / length : n;
+      // pbrt orients the geometric normal by the shading normal when a mesh has normals.
+      if (glm::dot(n, ns) < 0.0f) n = -n;
+      hit.shadingNormal = ns;
+    } else {
+      if (record.flipNormal) n = -n;
+      hit.shadingNormal = n;
+    }
+    hit.geometricNormal = n;
+    if (!record.uvs.empty()) {
+      hit.uv = b0 * record.uvs[tri[0]] + b1 * record.uvs[tri[1]] + b2 * record.uvs[tri[2]];
+    } else {
+      // pbrt's default parametrisation: (0,0), (1,0), (1,1) at the three vertices.
+      hit.uv = glm::vec2(b1 + b2, b2);
+    }
+  } else {
+    // The quadric's intersect callback left the parent-space normal in Ng and (u, v).
+    glm::vec3 n = glm::normalize(glm::vec3(embreeHit.Ng_x, embreeHit.Ng_y, embreeHit.Ng_z));
+    if (record.quadric.flipNormal) n = -n;
+    hit.geometricNormal = n;
+    hit.shadingNormal = n;
+    hit.uv = glm::vec2(embreeHit.u, embreeHit.v);
+  }
+}
+
+RTCRayHit makeRayHit(glm::vec3 origin, glm::vec3 direction, float tMax) {
+  RTCRayHit rayHit;
+  rayHit.ray.org_x = origin.x;
+  rayHit.ray.org_y = origin.y;
+  rayHit.ray.org_z = origin.z;
+  rayHit.ray.dir_x = direction.x;
+  rayHit.ray.dir_y = direction.y;
+  rayHit.ray.dir_z = direction.z;
+  rayHit.ray.tnear = 0.0f;
+  rayHit.ray.tfar = tMax;
+  rayHit.ray.time = 0.0f;
+  rayHit.ray.mask = 0xFFFFFFFFu;
+  rayHit.ray.id = 0;
+  rayHit.ray.flags = 0;
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rayHit;
+}
+
+}  // namespace
+
+bool Scene::intersect(glm::vec3 origin, glm::vec3 direction, float tMax, SurfaceHit& hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit = makeRayHit(origin, direction, tMax);
+  rtcIntersect1(top_, &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+  hit.t = rayHit.ray.tfar;
+  hit.point = origin + hit.t * direction;
+  const unsigned instance = rayHit.hit.instID[0];
+  if (instance == RTC_INVALID_GEOMETRY_ID) {
+    fillShadingFromRecord(topRecords_[rayHit.hit.geomID], rayHit.hit, hit);
+  } else {
+    const GeometryRecord& instanceRecord = topRecords_[instance];
+    fillShadingFromRecord(
+        objectRecords_[static_cast<std::size_t>(instanceRecord.object)][rayHit.hit.geomID],
+        rayHit.hit, hit);
+    hit.geometricNormal = glm::normalize(instanceRecord.normalToWorld * hit.geometricNormal);
+    hit.shadingNormal = glm::normalize(instanceRecord.normalToWorld * hit.shadingNormal);
+    hit.light = -1;  // emitters inside instances are not lights (a warning said so)
+  }
+  return true;
+}
+
+bool Scene::occluded(glm::vec3 origin, glm::vec3 direction, float tMax) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray = makeRayHit(origin, direction, tMax).ray;
+  rtcOccluded1(top_, &context, &ray);
+  return ray.tfar < 0.0f;
+}
+
+}  // namespace lenslab::render

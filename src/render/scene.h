@@ -1,0 +1,85 @@
+#pragma once
+// A built, immutable scene: Embree BVHs (triangle meshes as Embree triangles, quadrics as user
+// geometry with exact intersection, object instances as Embree instances), materials,
+// textures and lights. Safe to share between threads once built.
+
+#include <embree3/rtcore.h>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <vector>
+
+#include "render/analytic_shape.h"
+#include "render/light.h"
+#include "render/material.h"
+#include "render/texture.h"
+
+namespace lenslab::render {
+
+struct SurfaceHit {
+  float t = 0.0f;
+  glm::vec3 point{0.0f};
+  glm::vec3 geometricNormal{0.0f};  // unit; outward (orientation as pbrt defines it)
+  glm::vec3 shadingNormal{0.0f};    // unit; on the same side as geometricNormal
+  glm::vec2 uv{0.0f};
+  int material = 0;
+  int light = -1;  // index into lights() when the surface emits
+};
+
+// One Embree geometry's own data, indexed by its geomID in its RTCScene.
+struct GeometryRecord {
+  enum class Kind { Mesh, Quadric, Instance } kind = Kind::Mesh;
+  int material = 0;
+  int light = -1;
+  // Mesh
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> uvs;
+  std::vector<unsigned> indices;
+  bool flipNormal = false;
+  // Quadric
+  PlacedQuadric quadric;
+  // Instance
+  int object = -1;
+  glm::mat4 worldFromInstance{1.0f};
+  glm::mat3 normalToWorld{1.0f};
+};
+
+class Scene {
+ public:
+  Scene();
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  // Nearest hit along origin + t * direction for t in (0, tMax).
+  bool intersect(glm::vec3 origin, glm::vec3 direction, float tMax, SurfaceHit& hit) const;
+  // Whether anything blocks the segment (0, tMax).
+  bool occluded(glm::vec3 origin, glm::vec3 direction, float tMax) const;
+
+  const std::vector<Light>& lights() const { return lights_; }
+  const std::vector<int>& infiniteLights() const { return infiniteLights_; }
+  const Material& material(int index) const { return materials_[static_cast<std::size_t>(index)]; }
+  const TextureSet& textures() const { return textures_; }
+  float radius() const { return radius_; }
+  glm::vec3 center() const { return center_; }
+
+ private:
+  friend class SceneBuilder;
+
+  RTCDevice device_ = nullptr;
+  RTCScene top_ = nullptr;
+  std::vector<GeometryRecord> topRecords_;
+  std::vector<RTCScene> objectScenes_;
+  std::vector<std::vector<GeometryRecord>> objectRecords_;
+  std::vector<Material> materials_;
+  TextureSet textures_;
+  std::vector<Light> lights_;
+  std::vector<int> infiniteLights_;
+  glm::vec3 center_{0.0f};
+  float radius_ = 1.0f;
+};
+
+}  // namespace lenslab::render

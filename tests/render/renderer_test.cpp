@@ -1,0 +1,187 @@
+// The renderer as a whole: furnace tests, thread-count independence, progressive jobs.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <thread>
+
+#include "optics/lens_system.h"
+#include "render/realistic_camera.h"
+#include "render_support.h"
+#include "scene_files.h"
+#include "support/run_process.h"
+
+namespace lenslab::render {
+namespace {
+
+using render::testing::loadJob;
+using render::testing::writeFile;
+using Clock = std::chrono::steady_clock;
+
+// A uniform emitter all around the camera: a two-sided emitting sphere with a black surface.
+std::string furnaceWorld(double radiance) {
+  const std::string l = std::to_string(radiance);
+  return "WorldBegin\nAttributeBegin\nMaterial \"matte\" \"rgb Kd\" [0 0 0]\n"
+         "AreaLightSource \"diffuse\" \"rgb L\" [" + l + " " + l + " " + l +
+         "] \"bool twosided\" \"true\"\nShape \"sphere\" \"float radius\" [50]\nAttributeEnd\n"
+         "WorldEnd\n";
+}
+
+TEST(Renderer, PinholeFurnaceSeesTheEmittedRadianceEverywhere) {
+  const auto directory = lenslab::testing::makeTestDirectory("furnace-pinhole");
+  const double radiance = 0.7;
+  for (const char* integrator : {"path", "directlighting"}) {
+    const auto path = writeFile(
+        directory / "furnace.pbrt",
+        std::string("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" [60]\n"
+                    "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [12]\n"
+                    "Integrator \"") + integrator + "\"\n" + furnaceWorld(radiance));
+    RenderJob job = loadJob(path, 4);
+    ASSERT_TRUE(job.camera && job.scene);
+    const auto image = renderToCompletion(job);
+    ASSERT_TRUE(image);
+    for (float value : image->rgb) ASSERT_NEAR(value, radiance, 1e-5) << integrator;
+  }
+}
+
+// Relative illumination at a film point by brute force: a fine grid over the plane of the rear
+// vertex, each point traced exactly; E/L = (1/Z^2) * sum over passing points of cos^4(theta) dA.
+// The grid covers 1.5 x the rear semi-aperture, not just the rear element's disk: an off-axis ray
+// heading toward the axis crosses that plane outside the disk and still meets the (curved) rear
+// surface inside its clear aperture (about 25% of the light at 25 mm off axis for this lens).
+double relativeIllumination(const optics::LensSystem& lens, glm::dvec2 film) {
+  const double radius = 1.5 * lens.rearApertureRadiusMm();
+  const double z = lens.rearVertexZ();
+  constexpr int kSteps = 300;
+  const double step = 2.0 * radius / kSteps;
+  double sum = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    for (int j = 0; j < kSteps; ++j) {
+      const glm::dvec2 p(-radius + (i + 0.5) * step, -radius + (j + 0.5) * step);
+      const glm::dvec3 toPoint = glm::dvec3(p, z) - glm::dvec3(film, 0.0);
+      const glm::dvec3 direction = glm::normalize(toPoint);
+      if (!lens.traceFromFilm({glm::dvec3(film, 0.0), direction})) continue;
+      sum += std::pow(direction.z, 4.0) * step * step;
+    }
+  }
+  return sum / (z * z);
+}
+
+TEST(Renderer, RealisticFurnaceSeesRadianceTimesRelativeIllumination) {
+  const auto directory = lenslab::testing::makeTestDirectory("furnace-lens");
+  writeFile(directory / "dgauss.dat", render::testing::kDoubleGauss50);
+  const double radiance = 2.0;
+  const int size = 16;
+  const auto path = writeFile(
+      directory / "furnace.pbrt",
+      "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" \"string lensfile\" \"dgauss.dat\" "
+      "\"float aperturediameter\" [12] \"float focusdistance\" [3]\n"
+      "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
+      "\"float diagonal\" [60]\nIntegrator \"path\"\n" + furnaceWorld(radiance));
+  RenderJob job = loadJob(path, 1024);
+  ASSERT_TRUE(job.camera && job.scene);
+  const auto* camera = dynamic_cast<const RealisticCamera*>(job.camera.get());
+  ASSERT_NE(camera, nullptr);
+  // Render only a few pixels' worth: a 16x16 image at 1024 spp is quick.
+  const auto image = renderToCompletion(job);
+  ASSERT_TRUE(image);
+  const double filmSideMm = 60.0 / std::sqrt(2.0);
+  for (const auto& [px, py] : {std::pair{8, 8}, std::pair{4, 8}, std::pair{12, 3}, std::pair{1, 1}}) {
+    // The pixel centre on the film, with pbrt's flip (see RealisticCamera).
+    const glm::dvec2 film(0.5 * filmSideMm - (px + 0.5) / size * filmSideMm,
+                          -0.5 * filmSideMm + (py + 0.5) / size * filmSideMm);
+    const double expected = radiance * relativeIllumination(camera->lens(), film);
+    const double measured = image->rgb[3 * static_cast<std::size_t>(py * size + px)];
+    EXPECT_NEAR(measured, expected, 0.03 * radiance * relativeIllumination(camera->lens(), {0, 0}))
+        << "pixel " << px << "," << py;
+  }
+}
+
+std::filesystem::path writeSmallScene(const std::filesystem::path& directory) {
+  writeFile(directory / "dgauss.dat", render::testing::kDoubleGauss50);
+  return writeFile(
+      directory / "scene.pbrt",
+      "LookAt 0 0.4 2  0 0.15 0  0 1 0\nCamera \"realistic\" \"string lensfile\" \"dgauss.dat\" "
+      "\"float aperturediameter\" [8] \"float focusdistance\" [1.9]\n"
+      "Film \"image\" \"integer xresolution\" [40] \"integer yresolution\" [30] "
+      "\"float diagonal\" [35]\nIntegrator \"path\" \"integer maxdepth\" [4]\nWorldBegin\n"
+      "LightSource \"infinite\" \"rgb L\" [0.4 0.5 0.6]\n"
+      "LightSource \"distant\" \"point from\" [2 5 4] \"rgb L\" [2 2 2]\n"
+      "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" [20] \"float vscale\" [20]\n"
+      "Material \"matte\" \"texture Kd\" \"c\"\n"
+      "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3] "
+      "\"point P\" [-5 0 -5 5 0 -5 5 0 5 -5 0 5] \"float uv\" [0 0 1 0 1 1 0 1]\n"
+      "AttributeBegin\nMaterial \"glass\"\nTranslate 0 0.15 0\nShape \"sphere\" \"float radius\" "
+      "[0.15]\nAttributeEnd\nAttributeBegin\nMaterial \"metal\" \"float roughness\" [0.1]\n"
+      "Translate 0.4 0.1 -0.5\nShape \"cylinder\" \"float radius\" [0.1] \"float zmin\" [0] "
+      "\"float zmax\" [0.3]\nAttributeEnd\nWorldEnd\n");
+}
+
+TEST(Renderer, ImageIsIdenticalForOneAndTwoThreads) {
+  const auto directory = lenslab::testing::makeTestDirectory("threads");
+  RenderJob job = loadJob(writeSmallScene(directory), 8);
+  ASSERT_TRUE(job.camera && job.scene);
+  job.settings.threads = 1;
+  const auto one = renderToCompletion(job);
+  job.settings.threads = 2;
+  job.settings.tileSize = 7;  // a different tiling too
+  const auto two = renderToCompletion(job);
+  ASSERT_TRUE(one && two);
+  EXPECT_EQ(one->rgb, two->rgb);  // bit for bit
+  double sum = 0.0;
+  for (float v : one->rgb) sum += v;
+  EXPECT_GT(sum, 0.0);  // not black
+  job.settings.seed = 5;
+  const auto reseeded = renderToCompletion(job);
+  EXPECT_NE(one->rgb, reseeded->rgb);
+}
+
+TEST(Renderer, ProgressiveJobsPublishWavesAndCancelQuickly) {
+  const auto directory = lenslab::testing::makeTestDirectory("progressive");
+  RenderJob job = loadJob(writeSmallScene(directory), 0);  // 0: refine until replaced
+  ASSERT_TRUE(job.camera && job.scene);
+  ProgressiveRenderer renderer;
+  EXPECT_EQ(renderer.snapshot(), nullptr);
+  auto started = Clock::now();
+  const std::uint64_t first = renderer.start(job);
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - started).count(), 0.005);  // no wait
+  // Waves of 1, 1, 2, 4, ...: the published sample counts are 1, 2, 4, 8, ...
+  int lastSpp = 0;
+  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  while (lastSpp < 8 && Clock::now() < deadline) {
+    const auto snapshot = renderer.snapshot();
+    if (snapshot && snapshot->samplesPerPixel != lastSpp) {
+      EXPECT_EQ(snapshot->generation, first);
+      EXPECT_EQ(snapshot->samplesPerPixel & (snapshot->samplesPerPixel - 1), 0);
+      EXPECT_GT(snapshot->samplesPerPixel, lastSpp);
+      lastSpp = snapshot->samplesPerPixel;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ASSERT_GE(lastSpp, 8);
+  EXPECT_TRUE(renderer.busy());
+
+  // A new job replaces the running one; cancelling stops the workers within 10 ms.
+  RenderJob second = job;
+  second.settings.samplesPerPixel = 2;
+  const std::uint64_t secondGeneration = renderer.start(second);
+  EXPECT_GT(secondGeneration, first);
+  EXPECT_TRUE(renderer.waitForCompletion(secondGeneration, 20.0));
+  EXPECT_EQ(renderer.snapshot()->generation, secondGeneration);
+  EXPECT_EQ(renderer.snapshot()->samplesPerPixel, 2);
+
+  renderer.start(job);
+  while (!renderer.snapshot() || renderer.snapshot()->generation == secondGeneration ||
+         renderer.snapshot()->samplesPerPixel < 16) {
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  started = Clock::now();
+  renderer.cancel();
+  while (renderer.busy()) std::this_thread::sleep_for(std::chrono::microseconds(50));
+  const double cancelSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+  EXPECT_LT(cancelSeconds, 0.010);
+}
+
+}  // namespace
+}  // namespace lenslab::render
