@@ -9,7 +9,7 @@
 
 #include "optics/field.h"
 #include "optics/focus.h"
-#include "optics/outline.h"
+#include "optics/lens_outline.h"
 #include "test_lenses.h"
 
 namespace lenslab::optics {
@@ -77,8 +77,8 @@ TEST(Robustness, RandomPrescriptionsNeverProduceNaN) {
     if (const auto fov = realFieldOfViewDeg(lens, 20.0)) {
       EXPECT_TRUE(std::isfinite(*fov));
     }
-    for (const auto& e : computeOutline(lens).elements)
-      for (const auto& q : e.polygon) ASSERT_TRUE(std::isfinite(q.x) && std::isfinite(q.y));
+    for (const auto& e : computeLensOutline(lens.prescription()).elements)
+      for (const auto& q : e.polygon()) ASSERT_TRUE(std::isfinite(q.zMm) && std::isfinite(q.yMm));
   }
   std::printf("  %d of 300 random prescriptions were valid\n", built);
   EXPECT_GT(built, 20);
