@@ -84,6 +84,13 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
   return arguments;
 }
 
+void addRenderCommand(CLI::App& app, SubcommandRunner& run) {
+  const std::shared_ptr<RenderArguments> arguments = registerRenderCommand(app);
+  arguments->command->callback([arguments, &run] {
+    run = [arguments] { return runRenderCommand(*arguments); };
+  });
+}
+
 int runRenderCommand(const RenderArguments& arguments) {
   const Clock::time_point started = Clock::now();
   render::CameraOverrides overrides;

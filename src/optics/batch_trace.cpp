@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 #include "optics/lens_system.h"
 
@@ -17,9 +18,40 @@ namespace lenslab::optics {
 namespace {
 
 struct SurfaceF {
-  float vertexZ, curvature, semiApertureSq, eta;
-  bool refracts;
+  float vertexZ, curvature, radius, semiApertureSq, eta;
+  bool refracts, flat;
 };
+
+// A plane z = vertexZ (the stop, flat refracting surfaces): one division, no square root.
+template <bool kRefracts>
+__attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* __restrict ox,
+                                                     float* __restrict oy, float* __restrict oz,
+                                                     float* __restrict dx, float* __restrict dy,
+                                                     float* __restrict dz,
+                                                     std::uint8_t* __restrict alive,
+                                                     std::size_t n) {
+  const float zv = s.vertexZ, semiSq = s.semiApertureSq, eta = s.eta;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float uz = dz[i];
+    const float t = (zv - oz[i]) / uz;
+    const float hx = ox[i] + t * dx[i], hy = oy[i] + t * dy[i];
+    int ok = (t > 0.0f) & (hx * hx + hy * hy <= semiSq);
+    ox[i] = hx;
+    oy[i] = hy;
+    oz[i] = zv;
+    if constexpr (kRefracts) {
+      // Normal (0, 0, +-1): the tangential components scale by eta, the axial one renormalizes.
+      const float ux = eta * dx[i], uy = eta * dy[i];
+      const float k = 1.0f - ux * ux - uy * uy;
+      ok &= k >= 0.0f;
+      const float nz = std::sqrt(k > 0.0f ? k : 0.0f);
+      dx[i] = ux;
+      dy[i] = uy;
+      dz[i] = uz >= 0.0f ? nz : -nz;
+    }
+    alive[i] = alive[i] & static_cast<std::uint8_t>(ok);
+  }
+}
 
 template <bool kRefracts>
 __attribute__((always_inline)) inline void traceSurface(const SurfaceF& s, float* __restrict ox,
@@ -28,7 +60,8 @@ __attribute__((always_inline)) inline void traceSurface(const SurfaceF& s, float
                                                         float* __restrict dz,
                                                         std::uint8_t* __restrict alive,
                                                         std::size_t n) {
-  const float c = s.curvature, zv = s.vertexZ, semiSq = s.semiApertureSq, eta = s.eta;
+  const float c = s.curvature, radius = s.radius, zv = s.vertexZ, semiSq = s.semiApertureSq,
+              eta = s.eta;
   for (std::size_t i = 0; i < n; ++i) {
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
@@ -37,9 +70,9 @@ __attribute__((always_inline)) inline void traceSurface(const SurfaceF& s, float
     const float disc = b * b - c * cc;
     const float root = std::sqrt(disc > 0.0f ? disc : 0.0f);
     const float q = b >= 0.0f ? -b - root : -b + root;
-    // Both roots (q / c is +-inf or NaN for a flat surface and then never chosen); keep the nearest
+    // Both roots (q / c = q R; flat surfaces take traceFlat); keep the nearest
     // one in front of the origin on the vertex-side cap (1 + c z > 0).
-    const float t1 = cc / q, t2 = q / c;
+    const float t1 = cc / q, t2 = q * radius;
     const bool ok1 = (t1 > 0.0f) & (1.0f + c * (pz + t1 * uz) > 0.0f);
     const bool ok2 = (t2 > 0.0f) & (1.0f + c * (pz + t2 * uz) > 0.0f);
     const float t = ok1 & ok2 ? (t1 < t2 ? t1 : t2) : (ok1 ? t1 : t2);
@@ -87,10 +120,17 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
     float* dz = rays.dz.data() + start;
     std::uint8_t* alive = rays.alive.data() + start;
     for (int k = 0; k < count; ++k) {
-      if (surfaces[k].refracts)
-        traceSurface<true>(surfaces[k], ox, oy, oz, dx, dy, dz, alive, m);
-      else
-        traceSurface<false>(surfaces[k], ox, oy, oz, dx, dy, dz, alive, m);
+      const SurfaceF& s = surfaces[k];
+      if (s.flat) {
+        if (s.refracts)
+          traceFlat<true>(s, ox, oy, oz, dx, dy, dz, alive, m);
+        else
+          traceFlat<false>(s, ox, oy, oz, dx, dy, dz, alive, m);
+      } else if (s.refracts) {
+        traceSurface<true>(s, ox, oy, oz, dx, dy, dz, alive, m);
+      } else {
+        traceSurface<false>(s, ox, oy, oz, dx, dy, dz, alive, m);
+      }
     }
   }
 }
@@ -100,8 +140,20 @@ __attribute__((target("avx2,fma"))) void traceAvx2(const SurfaceF* surfaces, int
   traceAll(surfaces, count, rays);
 }
 
+// 16 lanes. GCC keeps 256-bit vectors for AVX-512 targets unless told otherwise.
+__attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma,prefer-vector-width=512"))) void
+traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays) {
+  traceAll(surfaces, count, rays);
+}
+
 void tracePortable(const SurfaceF* surfaces, int count, LensRayBatch& rays) {
   traceAll(surfaces, count, rays);
+}
+
+bool cpuHasAvx512() {
+  static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                          __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq");
+  return has;
 }
 
 bool cpuHasAvx2() {
@@ -125,11 +177,19 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays) const {
   for (int step = 0; step < count; ++step) {
     const SurfaceGeometry& s = surfaces_[count - 1 - step];
     const double eta = s.indexRear / s.indexFront;
-    list[step] = {static_cast<float>(s.vertexZMm), static_cast<float>(s.curvaturePerMm),
-                  static_cast<float>(s.semiApertureMm * s.semiApertureMm), static_cast<float>(eta),
-                  eta != 1.0};
+    const bool flat = s.curvaturePerMm == 0.0;
+    list[step] = {static_cast<float>(s.vertexZMm),
+                  static_cast<float>(s.curvaturePerMm),
+                  flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
+                  static_cast<float>(s.semiApertureMm * s.semiApertureMm),
+                  static_cast<float>(eta),
+                  eta != 1.0,
+                  flat};
   }
-  if (cpuHasAvx2())
+  static const bool useAvx512 = cpuHasAvx512() && !std::getenv("LENSLAB_NO_AVX512");
+  if (useAvx512)
+    traceAvx512(list, count, rays);
+  else if (cpuHasAvx2())
     traceAvx2(list, count, rays);
   else
     tracePortable(list, count, rays);

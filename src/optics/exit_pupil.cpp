@@ -12,20 +12,80 @@ namespace lenslab::optics {
 namespace {
 
 constexpr int kHalfDirections = ExitPupilTable::kSectors + 1;  // angles m * pi / 32, m = 0..32
-constexpr int kGrid = 16;  // coarse search grid over the plane (x), half of it in y
-constexpr int kBisections = 16;
-constexpr double kBracket = 0.002;  // relative precision of a boundary radius
+constexpr int kGrid = 16;        // coarse search grid over the plane (x), half of it in y
+constexpr int kBisections = 10;  // after a 25% bracket: 0.025% precision
 constexpr double kRelativeMargin = 0.01;
 
+// Traces rays from the film point (filmR, 0, 0) through points of the plane z = planeZ. Many at
+// once through the vectorized batch trace: the table build is thousands of such rays per bin.
+// (Single precision; the 1% margin is far larger than its rounding.)
 struct Probe {
   const LensSystem& lens;
   double planeZ;
-  bool passes(double filmR, double px, double py) const {
-    const glm::dvec3 origin{filmR, 0.0, 0.0};
-    const glm::dvec3 direction = glm::normalize(glm::dvec3{px - filmR, py, planeZ});
-    return lens.traceFromFilm({origin, direction}).has_value();
+  LensRayBatch batch{};
+
+  bool passes(double filmR, double px, double py) {
+    const glm::dvec2 point{px, py};
+    std::vector<std::uint8_t> result;
+    passesAll(filmR, &point, 1, result);
+    return result[0] != 0;
+  }
+  void passesAll(double filmR, const glm::dvec2* points, std::size_t n,
+                 std::vector<std::uint8_t>& result) {
+    batch.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec3 d = glm::normalize(glm::dvec3{points[i].x - filmR, points[i].y, planeZ});
+      batch.ox[i] = static_cast<float>(filmR);
+      batch.oy[i] = 0.0f;
+      batch.oz[i] = 0.0f;
+      batch.dx[i] = static_cast<float>(d.x);
+      batch.dy[i] = static_cast<float>(d.y);
+      batch.dz[i] = static_cast<float>(d.z);
+      batch.alive[i] = 1;
+    }
+    lens.traceFromFilmBatch(batch);
+    result.assign(batch.alive.begin(), batch.alive.begin() + static_cast<std::ptrdiff_t>(n));
   }
 };
+
+// Distance from (centre, 0) to the region's boundary along each angle, all directions in
+// lock-step: first radii growing by 25% from minStep until a ray fails (the first failure
+// brackets the boundary, as the region is an interval along each ray), then bisection. Returns
+// the failing end of each bracket (conservative).
+std::vector<double> boundaries(Probe& probe, double filmR, double centre,
+                               const std::vector<double>& angles, double minStep, double maxR) {
+  const std::size_t m = angles.size();
+  std::vector<double> radii;
+  for (double r = minStep; r < maxR * 1.25; r *= 1.25) radii.push_back(r);
+  const std::size_t steps = radii.size();
+  std::vector<glm::dvec2> points(m * steps), dirs(m);
+  for (std::size_t a = 0; a < m; ++a) dirs[a] = {std::cos(angles[a]), std::sin(angles[a])};
+  for (std::size_t a = 0; a < m; ++a)
+    for (std::size_t j = 0; j < steps; ++j)
+      points[a * steps + j] = {centre + radii[j] * dirs[a].x, radii[j] * dirs[a].y};
+  std::vector<std::uint8_t> pass;
+  probe.passesAll(filmR, points.data(), points.size(), pass);
+  std::vector<double> lo(m, 0.0), hi(m, radii.back());
+  for (std::size_t a = 0; a < m; ++a) {
+    for (std::size_t j = 0; j < steps; ++j) {
+      if (!pass[a * steps + j]) {
+        hi[a] = radii[j];
+        lo[a] = j > 0 ? radii[j - 1] : 0.0;
+        break;
+      }
+    }
+  }
+  points.resize(m);
+  for (int i = 0; i < kBisections; ++i) {
+    for (std::size_t a = 0; a < m; ++a) {
+      const double mid = 0.5 * (lo[a] + hi[a]);
+      points[a] = {centre + mid * dirs[a].x, mid * dirs[a].y};
+    }
+    probe.passesAll(filmR, points.data(), m, pass);
+    for (std::size_t a = 0; a < m; ++a) (pass[a] ? lo[a] : hi[a]) = 0.5 * (lo[a] + hi[a]);
+  }
+  return hi;
+}
 
 // Raw bound of the pass region for the film point (filmR, 0): centre and the bound radius per
 // half-plane sector (before the margin and the neighbour union). Returns false when no ray passes.
@@ -36,24 +96,37 @@ struct RawBin {
       vertexRadius{};  // angles k * 2 pi / kSectors
 };
 
-RawBin measure(const Probe& probe, double filmR, double domainR,
-               const std::vector<glm::dvec2>& extraSeeds = {}) {
-  RawBin out;
+std::vector<glm::dvec2> gridPoints(double domainR) {
   const double spacing = 2.0 * domainR / kGrid;
-  std::vector<glm::dvec2> passing;
+  std::vector<glm::dvec2> points;
   for (int iy = 0; iy < kGrid / 2; ++iy) {
     for (int ix = 0; ix < kGrid; ++ix) {
       const double x = -domainR + (ix + 0.5) * spacing;
       const double y = (iy + 0.5) * spacing;
-      if (x * x + y * y > domainR * domainR * 1.1) continue;
-      if (probe.passes(filmR, x, y)) passing.push_back({x, y});
+      if (x * x + y * y <= domainR * domainR * 1.1) points.push_back({x, y});
     }
   }
+  return points;
+}
+
+RawBin measure(Probe& probe, double filmR, double domainR,
+               const std::vector<glm::dvec2>& extraSeeds = {}) {
+  RawBin out;
+  std::vector<glm::dvec2> passing;
+  std::vector<std::uint8_t> pass;
+  const std::vector<glm::dvec2> grid = gridPoints(domainR);
+  probe.passesAll(filmR, grid.data(), grid.size(), pass);
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (pass[i]) passing.push_back(grid[i]);
   // Near the rim of the image circle the region is a sliver the grid can miss: the caller passes
   // seeds from the neighbouring bin.
-  if (passing.empty())
-    for (const auto& p : extraSeeds)
-      if (probe.passes(filmR, p.x, std::abs(p.y))) passing.push_back({p.x, std::abs(p.y)});
+  if (passing.empty() && !extraSeeds.empty()) {
+    std::vector<glm::dvec2> seeds;
+    for (const auto& p : extraSeeds) seeds.push_back({p.x, std::abs(p.y)});
+    probe.passesAll(filmR, seeds.data(), seeds.size(), pass);
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+      if (pass[i]) passing.push_back(seeds[i]);
+  }
   // The region may be too small for the grid (tiny stop): try the aim at the paraxial exit
   // pupil centre as well.
   const FirstOrderData& fo = probe.lens.firstOrder();
@@ -81,40 +154,12 @@ RawBin measure(const Probe& probe, double filmR, double domainR,
 
   // Boundary distance along a direction from the centre: expand until a ray fails, then bisect;
   // keep the failing end of the bracket (conservative).
-  // `guess` (the previous direction's answer) starts the bracket; the bracket is refined to 0.2%.
-  const double minStep = 1e-3 * domainR;
-  auto boundary = [&](double angle, double guess) {
-    const double cx = std::cos(angle), cy = std::sin(angle);
-    double lo = 0.0, hi = std::max(guess, minStep);
-    if (probe.passes(filmR, centre + hi * cx, hi * cy)) {
-      lo = hi;
-      hi *= 1.25;
-      while (hi < 4.0 * domainR && probe.passes(filmR, centre + hi * cx, hi * cy)) {
-        lo = hi;
-        hi *= 1.25;
-      }
-    } else if (hi > minStep) {
-      lo = hi * 0.8;
-      while (lo > minStep && !probe.passes(filmR, centre + lo * cx, lo * cy)) {
-        hi = lo;
-        lo *= 0.8;
-      }
-      if (lo <= minStep) lo = 0.0;
-    }
-    for (int i = 0; i < kBisections && hi - lo > kBracket * hi; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      if (probe.passes(filmR, centre + mid * cx, mid * cy))
-        lo = mid;
-      else
-        hi = mid;
-    }
-    return hi;
-  };
+  const double minStep = 1e-3 * domainR, maxR = 4.0 * domainR;
   // Re-centre on the middle of the region's extent along the x axis, so that centres vary smoothly
   // from bin to bin (the grid centroid jitters with the grid).
   {
-    const double right = boundary(0.0, spacing), left = boundary(std::numbers::pi, spacing);
-    const double shifted = centre + 0.5 * (right - left);
+    const auto ends = boundaries(probe, filmR, centre, {0.0, std::numbers::pi}, minStep, maxR);
+    const double shifted = centre + 0.5 * (ends[0] - ends[1]);
     if (probe.passes(filmR, shifted, 0.0)) centre = shifted;
   }
   out.centreX = centre;
@@ -122,9 +167,10 @@ RawBin measure(const Probe& probe, double filmR, double domainR,
   // Polygon vertices on the sector edges, at the boundary; each edge is then pushed out until it
   // also contains the boundary point measured half-way between its vertices. For chord ends at
   // radii a, b and half-angle h, the chord crosses the bisector at 2 a b cos(h) / (a + b).
-  std::array<double, kHalfDirections> rho{};
+  std::vector<double> angles(kHalfDirections);
   for (int m = 0; m < kHalfDirections; ++m)
-    rho[m] = boundary(m * std::numbers::pi / (kHalfDirections - 1), m == 0 ? spacing : rho[m - 1]);
+    angles[m] = m * std::numbers::pi / (kHalfDirections - 1);
+  const std::vector<double> rho = boundaries(probe, filmR, centre, angles, minStep, maxR);
   constexpr int kHalfVertices = ExitPupilTable::kSectors / 2 + 1;
   const double cosHalf = std::cos(std::numbers::pi / ExitPupilTable::kSectors);
   for (int k = 0; k < kHalfVertices; ++k) out.vertexRadius[k] = rho[2 * k];
@@ -161,15 +207,48 @@ RawBin measure(const Probe& probe, double filmR, double domainR,
   return out;
 }
 
-bool anyPasses(const Probe& probe, double filmR, double domainR) {
-  const double spacing = 2.0 * domainR / kGrid;
-  for (int iy = 0; iy < kGrid / 2; ++iy)
-    for (int ix = 0; ix < kGrid; ++ix)
-      if (probe.passes(filmR, -domainR + (ix + 0.5) * spacing, (iy + 0.5) * spacing)) return true;
-  return false;
+bool anyPasses(Probe& probe, double filmR, double domainR) {
+  const std::vector<glm::dvec2> grid = gridPoints(domainR);
+  std::vector<std::uint8_t> pass;
+  probe.passesAll(filmR, grid.data(), grid.size(), pass);
+  return std::any_of(pass.begin(), pass.end(), [](std::uint8_t p) { return p != 0; });
 }
 
 }  // namespace
+
+// Walker's alias method (Vose's construction, "A linear algorithm for generating random numbers
+// with a given distribution", IEEE TSE 17(9), 1991): sector k is drawn in O(1) from one uniform.
+static void buildAliasTable(ExitPupilTable::Bin& b) {
+  constexpr int n = ExitPupilTable::kSectors;
+  std::array<double, n> scaled{};
+  std::array<int, n> small{}, large{};
+  int smallCount = 0, largeCount = 0;
+  for (int k = 0; k < n; ++k) {
+    scaled[k] = (b.cdf[k] - (k == 0 ? 0.0 : b.cdf[k - 1])) * n;
+    if (scaled[k] < 1.0)
+      small[smallCount++] = k;
+    else
+      large[largeCount++] = k;
+  }
+  while (smallCount > 0 && largeCount > 0) {
+    const int s = small[--smallCount], l = large[--largeCount];
+    b.aliasProbability[s] = scaled[s];
+    b.alias[s] = l;
+    scaled[l] -= 1.0 - scaled[s];
+    if (scaled[l] < 1.0)
+      small[smallCount++] = l;
+    else
+      large[largeCount++] = l;
+  }
+  for (int i = 0; i < largeCount; ++i) {
+    b.aliasProbability[large[i]] = 1.0;
+    b.alias[large[i]] = large[i];
+  }
+  for (int i = 0; i < smallCount; ++i) {  // rounding leftovers
+    b.aliasProbability[small[i]] = 1.0;
+    b.alias[small[i]] = small[i];
+  }
+}
 
 ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threads) {
   planeZMm_ = lens.rearVertexZ();
@@ -179,7 +258,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     cosAt_[k] = std::cos(k * sectorAngle);
     sinAt_[k] = std::sin(k * sectorAngle);
   }
-  const Probe probe{lens, planeZMm_};
+  Probe probe{lens, planeZMm_};
   if (!(planeZMm_ > 0.0)) return;  // film at the rear vertex: nothing to tabulate
 
   // Image circle: the largest of 24 coarse radii where some ray passes, plus one step.
@@ -194,8 +273,9 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
 
   std::vector<RawBin> raw(radialBins);
   auto work = [&](int first, int stride) {
+    Probe own{lens, planeZMm_};  // each thread its own ray batch
     for (int j = first; j < radialBins; j += stride)
-      raw[j] = measure(probe, binRadiusMm(j), fallbackRadiusMm_);
+      raw[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_);
   };
   threads = std::max(1, threads);
   std::vector<std::thread> pool;
@@ -250,7 +330,26 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     }
     for (auto& c : b.cdf) c /= total;
     b.cdf[kSectors - 1] = 1.0;
+    buildAliasTable(b);
+    for (int k = 0; k < kSectors; ++k) {
+      const double keep = b.aliasProbability[k];
+      b.invAliasProbability[k] = keep > 0.0 ? 1.0 / keep : 0.0;
+      b.invAliasComplement[k] = keep < 1.0 ? 1.0 / (1.0 - keep) : 0.0;
+    }
     b.areaMm2 = total;
+    b.invAreaPerMm2 = 1.0 / total;
+  }
+  // Empty bins take the centre of the nearest non-empty bin (used by the centre interpolation).
+  for (int pass = 0; pass < 2; ++pass) {
+    int last = -1;
+    for (int step = 0; step < radialBins; ++step) {
+      const int j = pass == 0 ? step : radialBins - 1 - step;
+      if (!bins_[j].empty) {
+        last = j;
+      } else if (last >= 0 && (pass == 0 || bins_[j].centreXMm == 0.0)) {
+        bins_[j].centreXMm = bins_[last].centreXMm;
+      }
+    }
   }
 }
 
@@ -269,9 +368,7 @@ ExitPupilTable::Lookup ExitPupilTable::lookup(double r) const {
   out.f = std::clamp(t - out.j, 0.0, 1.0);
   const Bin& b0 = bins_[out.j];
   const Bin& b1 = bins_[out.j + 1];
-  out.centreX = b0.empty   ? b1.centreXMm
-                : b1.empty ? b0.centreXMm
-                           : (1.0 - out.f) * b0.centreXMm + out.f * b1.centreXMm;
+  out.centreX = (1.0 - out.f) * b0.centreXMm + out.f * b1.centreXMm;  // as in sample()
   return out;
 }
 
@@ -298,8 +395,8 @@ bool ExitPupilTable::inside(const Bin& b, double centreX, double x, double y) co
 double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
   const double r = std::sqrt(film.x * film.x + film.y * film.y);
   if (bins_.empty() || r > filmRadiusMaxMm_) {
-    if (point.x * point.x + point.y * point.y > fallbackRadiusMm_ * fallbackRadiusMm_) return 0.0;
-    return 1.0 / (std::numbers::pi * fallbackRadiusMm_ * fallbackRadiusMm_);
+    if (std::abs(point.x) > fallbackRadiusMm_ || std::abs(point.y) > fallbackRadiusMm_) return 0.0;
+    return 1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_);
   }
   double c = 1.0, sn = 0.0;
   if (r > 0.0) {
@@ -314,53 +411,86 @@ double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
   return density;
 }
 
-std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u) const {
-  const double r = std::sqrt(film.x * film.x + film.y * film.y);
+// The sampling routine shared by sample() and sampleRays(); false when there is no sample.
+inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, double u1,
+                                         double& pointX, double& pointY, double& pdf) const {
+  const double r = std::sqrt(filmX * filmX + filmY * filmY);
   if (bins_.empty() || r > filmRadiusMaxMm_) {
-    if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return std::nullopt;
-    // Outside the table: uniform over the disk the table search covered (concentric mapping
-    // would do as well; polar is enough here).
-    const double radius = fallbackRadiusMm_ * std::sqrt(u.x);
-    const double angle = 2.0 * std::numbers::pi * u.y;
-    return PupilSample{{radius * std::cos(angle), radius * std::sin(angle), planeZMm_},
-                       1.0 / (std::numbers::pi * fallbackRadiusMm_ * fallbackRadiusMm_)};
+    if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return false;
+    // Outside the table: uniform over the square around the disk the table search covered
+    // (no trigonometry; rays through the corners are simply blocked).
+    const double half = fallbackRadiusMm_;
+    pointX = half * (2.0 * u0 - 1.0);
+    pointY = half * (2.0 * u1 - 1.0);
+    pdf = 1.0 / (4.0 * half * half);
+    return true;
   }
-  const auto [j, f, centreX] = lookup(r);
+  // Written without unpredictable branches: the renderer calls this for every camera ray.
+  const double x = r / filmRadiusMaxMm_;
+  const double t = 0.5 * (x + x * x) * binScale_;
+  const int j = std::min(static_cast<int>(t), static_cast<int>(bins_.size()) - 2);
+  const double f = std::clamp(t - j, 0.0, 1.0);
   const Bin& b0 = bins_[j];
   const Bin& b1 = bins_[j + 1];
-  double ux = u.x;
-  const Bin* chosen;
-  if (ux < 1.0 - f) {
-    chosen = &b0;
-    ux /= (1.0 - f);
-  } else {
-    chosen = &b1;
-    ux = (ux - (1.0 - f)) / f;
-  }
-  if (chosen->empty) return std::nullopt;
-  ux = std::min(ux, 0.99999999999);
-  const int k = static_cast<int>(std::upper_bound(chosen->cdf.begin(), chosen->cdf.end(), ux) -
-                                 chosen->cdf.begin());
-  const double lo = k == 0 ? 0.0 : chosen->cdf[k - 1];
-  const double width = chosen->cdf[k] - lo;
-  const double w = width > 0.0 ? (ux - lo) / width : 0.5;
+  // Empty bins carry their non-empty neighbour's centre (see the constructor), so the lerp is
+  // always meaningful.
+  const double centreX = (1.0 - f) * b0.centreXMm + f * b1.centreXMm;
+  const bool second = u0 >= 1.0 - f;
+  const Bin& chosen = second ? b1 : b0;
+  if (chosen.empty) return false;
+  const double ux =
+      std::min((second ? u0 - (1.0 - f) : u0) / (second ? f : 1.0 - f), 0.99999999999);
+  // Alias method: slot = floor(32 ux); its fractional part decides between the slot's sector and
+  // its alias and is then stretched back to [0, 1) for the position inside the triangle.
+  const double scaled = ux * kSectors;
+  const int slot = std::min(static_cast<int>(scaled), kSectors - 1);
+  const double fraction = scaled - slot;
+  const double keep = chosen.aliasProbability[slot];
+  const bool stay = fraction < keep;
+  const int k = stay ? slot : chosen.alias[slot];
+  const double w = stay ? fraction * chosen.invAliasProbability[slot]
+                        : (fraction - keep) * chosen.invAliasComplement[slot];
   // Uniform in the triangle (centre, A, B): p = centre + sqrt(w) ((1 - v) A + v B).
   const double s = std::sqrt(w);
-  const double v = u.y;
-  const double a = (1.0 - v) * chosen->vertexRadiusMm[k];
-  const double bb = v * chosen->vertexRadiusMm[(k + 1) % kSectors];
+  const double a = (1.0 - u1) * chosen.vertexRadiusMm[k];
+  const double bb = u1 * chosen.vertexRadiusMm[(k + 1) & (kSectors - 1)];
   const double lx = centreX + s * (a * cosAt_[k] + bb * cosAt_[k + 1]);
   const double ly = s * (a * sinAt_[k] + bb * sinAt_[k + 1]);
   // Rotate from the bin frame (film point on +x) to the film point's azimuth.
-  double c = 1.0, sn = 0.0;
-  if (r > 0.0) {
-    c = film.x / r;
-    sn = film.y / r;
+  const double invR = r > 0.0 ? 1.0 / r : 0.0;
+  const double c = r > 0.0 ? filmX * invR : 1.0;
+  const double sn = filmY * invR;
+  pointX = c * lx - sn * ly;
+  pointY = sn * lx + c * ly;
+  pdf = (1.0 - f) * b0.invAreaPerMm2 + f * b1.invAreaPerMm2;
+  return true;
+}
+
+std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u) const {
+  double x = 0.0, y = 0.0, pdf = 0.0;
+  if (!sampleInline(film.x, film.y, u.x, u.y, x, y, pdf)) return std::nullopt;
+  return PupilSample{{x, y, planeZMm_}, pdf};
+}
+
+void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const float* u0,
+                                const float* u1, std::size_t n, LensRayBatch& rays,
+                                float* pdfPerMm2) const {
+  rays.resize(n);
+  const float planeZ = static_cast<float>(planeZMm_);
+  for (std::size_t i = 0; i < n; ++i) {
+    double x = 0.0, y = 0.0, pdf = 0.0;
+    const bool ok = sampleInline(filmX[i], filmY[i], u0[i], u1[i], x, y, pdf);
+    const float dx = static_cast<float>(x) - filmX[i], dy = static_cast<float>(y) - filmY[i];
+    const float invLength = 1.0f / std::sqrt(dx * dx + dy * dy + planeZ * planeZ);
+    rays.ox[i] = filmX[i];
+    rays.oy[i] = filmY[i];
+    rays.oz[i] = 0.0f;
+    rays.dx[i] = dx * invLength;
+    rays.dy[i] = dy * invLength;
+    rays.dz[i] = planeZ * invLength;
+    rays.alive[i] = ok ? 1 : 0;
+    pdfPerMm2[i] = ok ? static_cast<float>(pdf) : 0.0f;
   }
-  double pdf = 0.0;
-  if (!b0.empty) pdf += (1.0 - f) / b0.areaMm2;
-  if (!b1.empty) pdf += f / b1.areaMm2;
-  return PupilSample{{c * lx - sn * ly, sn * lx + c * ly, planeZMm_}, pdf};
 }
 
 }  // namespace lenslab::optics

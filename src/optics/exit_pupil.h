@@ -31,6 +31,7 @@
 namespace lenslab::optics {
 
 class LensSystem;
+struct LensRayBatch;
 struct PupilSample;
 
 class ExitPupilTable {
@@ -43,12 +44,15 @@ class ExitPupilTable {
                           int threads = 2);
 
   std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
+  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays).
+  void sampleRays(const float* filmX, const float* filmY, const float* u0, const float* u1,
+                  std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
   // The density sample() has at a point of the plane (0 outside the sampled region), for tests
   // and for multiple importance sampling.
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
 
   // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
-  // falls back to the disk of radius fallbackRadiusMm() (1.5 x the rear semi-aperture).
+  // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture).
   double filmRadiusMaxMm() const { return filmRadiusMaxMm_; }
   double fallbackRadiusMm() const { return fallbackRadiusMm_; }
   double planeZMm() const { return planeZMm_; }
@@ -61,13 +65,19 @@ class ExitPupilTable {
   struct Bin {
     bool empty = true;
     double centreXMm = 0.0;
-    std::array<double, kSectors> vertexRadiusMm{};  // polygon vertex k at angle k 2 pi / kSectors
-    std::array<double, kSectors> cdf{};             // cumulative area fraction of the triangles
+    std::array<double, kSectors> vertexRadiusMm{};    // polygon vertex k at angle k 2 pi / kSectors
+    std::array<double, kSectors> cdf{};               // cumulative area fraction of the triangles
+    std::array<double, kSectors> aliasProbability{};  // alias table over the triangles
+    std::array<int, kSectors> alias{};
+    std::array<double, kSectors> invAliasProbability{}, invAliasComplement{};  // reciprocals
     double areaMm2 = 0.0;
+    double invAreaPerMm2 = 0.0;  // 0 for an empty bin
   };
   const Bin& bin(int j) const { return bins_[j]; }
 
  private:
+  bool sampleInline(double filmX, double filmY, double u0, double u1, double& pointX,
+                    double& pointY, double& pdf) const;
   bool inside(const Bin& b, double centreX, double x, double y) const;
   struct Lookup {
     int j = 0;

@@ -88,7 +88,7 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
     std::string_view data = line.substr(0, hash);
     for (std::size_t i = 0; i < line.size(); ++i) {
       const unsigned char ch = static_cast<unsigned char>(line[i]);
-      if (ch == 0 || (ch < 32 && !isBlank(line[i]) && i < data.size()))
+      if (ch == 0 || ((ch < 32 || ch == 127) && !isBlank(line[i]) && i < data.size()))
         return fail(lineNumber, static_cast<int>(i) + 1,
                     "unexpected control character (is this a binary file?)");
     }
@@ -97,7 +97,11 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
       while (!comment.empty() && (comment.back() == '\r' || comment.back() == '\n'))
         comment.remove_suffix(1);
       if (!comment.empty() && comment.front() == ' ') comment.remove_prefix(1);
-      lens.headerComments.emplace_back(comment);
+      // Column headings ("radius thickness ...", as the writer and pbrt's files have them) are
+      // not kept: the writer adds its own, so a read-write cycle does not repeat them.
+      std::string_view trimmed = comment;
+      while (!trimmed.empty() && isBlank(trimmed.front())) trimmed.remove_prefix(1);
+      if (trimmed.substr(0, 6) != "radius") lens.headerComments.emplace_back(comment);
     }
 
     std::vector<Token> tokens;

@@ -157,6 +157,12 @@ const ExitPupilTable& LensSystem::exitPupilTable() const {
 
 double LensSystem::exitPupilTableRadiusMm() const { return exitPupilTable().filmRadiusMaxMm(); }
 
+void LensSystem::sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
+                                  const float* u1, std::size_t n, LensRayBatch& rays,
+                                  float* pdfPerMm2) const {
+  exitPupilTable().sampleRays(filmXMm, filmYMm, u0, u1, n, rays, pdfPerMm2);
+}
+
 std::optional<PupilSample> LensSystem::sampleExitPupil(glm::dvec2 filmPointMm, glm::dvec2 u) const {
   return exitPupilTable().sample(filmPointMm, u);
 }

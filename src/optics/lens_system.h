@@ -129,6 +129,13 @@ class LensSystem {
   // stochastic blend between two table radii picked an empty one; then the sample is simply
   // black). The table is built on first use (thread-safe), in a few milliseconds.
   std::optional<PupilSample> sampleExitPupil(glm::dvec2 filmPointMm, glm::dvec2 u) const;
+  // Batch form for the renderer: resizes `rays` to n and sets ray i to start at the film point
+  // (filmXMm[i], filmYMm[i], 0) and point at its exit-pupil sample for (u0[i], u1[i]);
+  // alive[i] = 0 (and pdfPerMm2[i] = 0) when there is no sample. Follow with
+  // traceFromFilmBatch(rays) to get the rays leaving the lens. The Kolb weight of ray i is then
+  // cos^4(theta) / (rearVertexZ()^2 pdfPerMm2[i]) with cos(theta) = dz.
+  void sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
+                        const float* u1, std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
   // Forces the table build now (e.g. on a worker thread); returns its film-radius range.
   double exitPupilTableRadiusMm() const;
   const ExitPupilTable& exitPupilTable() const;

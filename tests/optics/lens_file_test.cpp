@@ -91,7 +91,12 @@ TEST(LensFile, WritesWhatItReadsIdentically) {
     EXPECT_EQ(s[i].apertureDiameterMm, p.surfaces[i].apertureDiameterMm) << i;
   }
   EXPECT_EQ(again.lens->headerComments.front(), "round trip");
-  // And the text itself is a fixed point.
+  // And the text itself is a fixed point of read-then-write, header comments included.
+  const std::string once = formatLensText(p, {"round trip", "two"});
+  const auto reread = parse(once);
+  ASSERT_TRUE(reread.ok());
+  EXPECT_EQ(reread.lens->headerComments, (std::vector<std::string>{"round trip", "two"}));
+  EXPECT_EQ(formatLensText(reread.lens->prescription, reread.lens->headerComments), once);
   EXPECT_EQ(formatLensText(again.lens->prescription, {"round trip"}),
             formatLensText(p, {"round trip"}));
 }

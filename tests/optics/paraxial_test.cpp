@@ -83,3 +83,45 @@ TEST(Dispersion, BlueFocalLengthIsShorterForAPositiveSinglet) {
 
 }  // namespace
 }  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+// Independent published first-order data (Smith, Modern Lens Design, pp. 304-305).
+TEST(Paraxial, FastDoubleGaussesMatchTheirPublishedFirstOrderData) {
+  struct Published {
+    const char* file;
+    double efl, bfl;
+  };
+  for (const Published& p : {Published{"dgauss-werfel-100mm-f1.25.dat", 100.1, 56.42},
+                             Published{"dgauss-lowenthal-100mm-f1.35.dat", 100.4, 55.07}}) {
+    const auto lens = testing::loadLens(testing::bundledLensDir() / p.file);
+    ASSERT_TRUE(lens) << p.file;
+    // The book rounds indices to 3 decimals and lengths to 0.01.
+    EXPECT_NEAR(lens->firstOrder().eflMm, p.efl, 0.001 * p.efl) << p.file;
+    EXPECT_NEAR(lens->firstOrder().bflMm, p.bfl, 0.002 * p.bfl) << p.file;
+  }
+}
+
+TEST(BundledLenses, AllBuildAndNameTheirSource) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::bundledLensDir())) {
+    if (entry.path().extension() != ".dat") continue;
+    ++count;
+    const auto file = readLensFile(entry.path());
+    ASSERT_TRUE(file.ok()) << file.errors.front().toString();
+    bool sourced = false;
+    for (const auto& line : file.lens->headerComments)
+      if (line.find("Source") != std::string::npos || line.find("patent") != std::string::npos)
+        sourced = true;
+    EXPECT_TRUE(sourced) << entry.path();
+    const auto built = LensSystem::build(file.lens->prescription);
+    ASSERT_TRUE(built.ok()) << entry.path();
+    EXPECT_GT(built.system->filmDistanceMm(), 0.0) << entry.path();
+    EXPECT_GT(built.system->firstOrder().eflMm, 0.0) << entry.path();
+  }
+  EXPECT_GE(count, 8);
+}
+
+}  // namespace
+}  // namespace lenslab::optics

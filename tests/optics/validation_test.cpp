@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "test_lenses.h"
 
 namespace lenslab::optics {
@@ -88,6 +91,30 @@ TEST(Validation, CheapVariantsRefuseNonsense) {
   EXPECT_EQ(moved->filmDistanceMm(), 42.0);
   EXPECT_EQ(moved->rearVertexZ(), 42.0);
   EXPECT_EQ(lens->filmDistanceMm(), 50.0);  // the original is untouched
+}
+
+}  // namespace
+}  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+// DESIGN.md: src/optics builds and tests without a display; no GL, GLFW or ImGui header in it.
+TEST(Layering, OpticsIncludesNoGuiHeaders) {
+  const std::filesystem::path dir =
+      std::filesystem::path(LENSLAB_BUNDLED_LENS_DIR) / ".." / "src" / "optics";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    std::ifstream in(entry.path());
+    std::string line;
+    ++files;
+    while (std::getline(in, line)) {
+      if (line.rfind("#include", 0) != 0) continue;
+      for (const char* banned : {"GL/", "GLFW", "glad", "imgui", "app/", "render/"})
+        EXPECT_EQ(line.find(banned), std::string::npos) << entry.path() << ": " << line;
+    }
+  }
+  EXPECT_GT(files, 10);
 }
 
 }  // namespace

@@ -1,0 +1,122 @@
+#include "cli/focus_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli/lens_loading.h"
+#include "optics/focus.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+struct FocusArguments {
+  std::string lensPath;
+  std::string objectDistance;  // text, so that "inf" works
+  double filmDistanceMm = 0.0;
+  bool json = false;
+};
+
+std::optional<double> parseDistance(const std::string& text) {
+  if (text == "inf" || text == "infinity") return std::numeric_limits<double>::infinity();
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used != text.size() || !std::isfinite(value) || value <= 0.0) return std::nullopt;
+    return value;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+nlohmann::json number(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+int runFocus(const FocusArguments& arguments, bool objectGiven) {
+  std::optional<double> objectDistance;
+  if (objectGiven) {
+    objectDistance = parseDistance(arguments.objectDistance);
+    if (!objectDistance) {
+      std::cerr << "lenslab focus: --object-distance: '" << arguments.objectDistance
+                << "' is not a positive distance in mm (or 'inf')\n";
+      return 2;
+    }
+  }
+  const auto lens = loadLensOrReport(arguments.lensPath, "focus");
+  if (!lens) return 1;
+  if (objectGiven) {
+    const optics::FocusResult film = optics::filmDistanceForObjectDistance(*lens, *objectDistance);
+    if (!film.ok()) {
+      std::cerr << "lenslab focus: no solution: " << film.whyNot << "\n";
+      return 1;
+    }
+    if (arguments.json) {
+      std::cout << nlohmann::json{{"lens", arguments.lensPath},
+                                  {"object_distance_mm", number(*objectDistance)},
+                                  {"object_distance_from", "film"},
+                                  {"film_distance_mm", *film.valueMm},
+                                  {"efl_mm", lens->firstOrder().eflMm}}
+                       .dump(2)
+                << "\n";
+    } else {
+      std::printf(
+          "film distance %.6f mm (rear vertex to film) focuses an object at %s mm from "
+          "the film\n",
+          *film.valueMm,
+          std::isinf(*objectDistance) ? "infinity" : std::to_string(*objectDistance).c_str());
+    }
+    return 0;
+  }
+  const optics::FocusResult object =
+      optics::objectDistanceForFilmDistance(*lens, arguments.filmDistanceMm);
+  if (!object.ok()) {
+    std::cerr << "lenslab focus: no solution: " << object.whyNot << "\n";
+    return 1;
+  }
+  if (arguments.json) {
+    std::cout << nlohmann::json{{"lens", arguments.lensPath},
+                                {"film_distance_mm", arguments.filmDistanceMm},
+                                {"object_distance_mm", number(*object.valueMm)},
+                                {"object_distance_from", "film"},
+                                {"object_at_infinity", std::isinf(*object.valueMm)}}
+                     .dump(2)
+              << "\n";
+  } else if (std::isinf(*object.valueMm)) {
+    std::printf("film distance %.6f mm focuses at infinity\n", arguments.filmDistanceMm);
+  } else {
+    std::printf("film distance %.6f mm focuses an object at %.6f mm from the film\n",
+                arguments.filmDistanceMm, *object.valueMm);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void addFocusCommand(CLI::App& app, SubcommandRunner& run) {
+  auto arguments = std::make_shared<FocusArguments>();
+  CLI::App* focus = app.add_subcommand(
+      "focus", "Real-ray focus: the film distance for an object distance, or the reverse");
+  focus->add_option("LENS", arguments->lensPath, "Lens file (.dat, pbrt format)")->required();
+  auto* object = focus->add_option("--object-distance", arguments->objectDistance,
+                                   "Object distance in mm from the film plane, or 'inf'");
+  auto* film = focus
+                   ->add_option("--film-distance", arguments->filmDistanceMm,
+                                "Film distance in mm (rear vertex to film): print the object "
+                                "distance in focus instead")
+                   ->check(CLI::PositiveNumber);
+  object->excludes(film);
+  focus->add_flag("--json", arguments->json, "Print JSON instead of text");
+  focus->callback([arguments, object, film, &run] {
+    if (object->count() == 0 && film->count() == 0)
+      throw CLI::RequiredError("--object-distance or --film-distance");
+    const bool objectGiven = object->count() > 0;
+    run = [arguments, objectGiven] { return runFocus(*arguments, objectGiven); };
+  });
+}
+
+}  // namespace lenslab::cli

@@ -1,0 +1,15 @@
+#pragma once
+// Loading a lens file for a subcommand: prints file:line:column errors and returns null on failure.
+
+#include <memory>
+#include <string>
+
+#include "optics/lens_system.h"
+
+namespace lenslab::cli {
+
+std::shared_ptr<const optics::LensSystem> loadLensOrReport(
+    const std::string& path, const char* command,
+    double wavelengthNm = optics::LensSystem::kDefaultWavelengthNm);
+
+}  // namespace lenslab::cli

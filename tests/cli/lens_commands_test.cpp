@@ -1,0 +1,156 @@
+// `lenslab info` and `lenslab focus`, run as real processes.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support/run_process.h"
+
+namespace lenslab {
+namespace {
+
+std::string lenslab(const std::string& arguments) {
+  return std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + LENSLAB_BINARY + "' " + arguments;
+}
+
+std::string lensPath(const std::string& name) {
+  return std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name;
+}
+
+class LensCommands : public ::testing::Test {
+ protected:
+  std::filesystem::path scratch = testing::makeTestDirectory("lens-commands");
+
+  std::string writeFile(const std::string& name, const std::string& text) {
+    const auto path = scratch / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+  }
+};
+
+TEST_F(LensCommands, InfoJsonHasTheFirstOrderKeys) {
+  const auto result =
+      testing::runProcess(lenslab("info --json " + lensPath("dgauss-50mm.dat")), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_NEAR(json.at("efl_mm").get<double>(), 50.36, 50.36 * 0.0005);
+  EXPECT_GT(json.at("bfl_mm").get<double>(), 30.0);
+  EXPECT_NEAR(json.at("f_number").get<double>(), 2.03, 0.01);
+  EXPECT_NEAR(json.at("total_track_mm").get<double>(), 32.04 + 36.77, 1e-9);
+  EXPECT_GT(json.at("entrance_pupil").at("diameter_mm").get<double>(), 20.0);
+  EXPECT_TRUE(json.at("entrance_pupil").at("position_mm").is_number());
+  EXPECT_GT(json.at("exit_pupil").at("diameter_mm").get<double>(), 20.0);
+  EXPECT_TRUE(json.at("exit_pupil").at("position_mm").is_number());
+  EXPECT_EQ(json.at("stop_surface").get<int>(), 5);
+  EXPECT_NEAR(json.at("field_of_view_real_deg").get<double>(), 46.7, 0.5);
+  EXPECT_EQ(json.at("surfaces").size(), 11u);
+  EXPECT_TRUE(json.at("surfaces").at(5).at("stop").get<bool>());
+}
+
+TEST_F(LensCommands, InfoTextAndWavelengthAndFilmDiagonal) {
+  const auto text = testing::runProcess(lenslab("info " + lensPath("dgauss-50mm.dat")), scratch);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("effective focal length"), std::string::npos);
+  // The course lenses have no Abbe numbers: the same EFL at any wavelength...
+  auto efl = [&](const std::string& lens, const std::string& extra) {
+    const auto r =
+        testing::runProcess(lenslab("info --json " + extra + " " + lensPath(lens)), scratch);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  EXPECT_EQ(efl("dgauss-50mm.dat", "--wavelength 450").at("efl_mm"),
+            efl("dgauss-50mm.dat", "").at("efl_mm"));
+  // ...but the 100 mm double-Gauss with V_d focuses blue shorter.
+  EXPECT_LT(efl("dgauss-100mm.dat", "--wavelength 486.13").at("efl_mm").get<double>(),
+            efl("dgauss-100mm.dat", "--wavelength 656.27").at("efl_mm").get<double>());
+  const auto wide = efl("dgauss-50mm.dat", "--film-diagonal 70");
+  EXPECT_EQ(wide.at("film_diagonal_mm").get<double>(), 70.0);
+  EXPECT_GT(wide.at("field_of_view_deg").get<double>(),
+            efl("dgauss-50mm.dat", "").at("field_of_view_deg").get<double>());
+}
+
+TEST_F(LensCommands, FocusPrintsTheFilmDistance) {
+  const auto result = testing::runProcess(
+      lenslab("focus --json --object-distance 2000 " + lensPath("dgauss-50mm.dat")), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  const double film = json.at("film_distance_mm").get<double>();
+  // Newton: x' = f^2 / x with x ~ 2000 - 70 - 23 mm from the front focal point: ~1.3 mm.
+  EXPECT_GT(film, 36.1 + 1.0);
+  EXPECT_LT(film, 36.1 + 1.8);
+  const auto back =
+      testing::runProcess(lenslab("focus --json --film-distance " + std::to_string(film) + " " +
+                                  lensPath("dgauss-50mm.dat")),
+                          scratch);
+  ASSERT_EQ(back.exitCode, 0) << back.err;
+  EXPECT_NEAR(nlohmann::json::parse(back.out).at("object_distance_mm").get<double>(), 2000.0, 0.1);
+  const auto infinity = testing::runProcess(
+      lenslab("focus --object-distance inf " + lensPath("dgauss-50mm.dat")), scratch);
+  EXPECT_EQ(infinity.exitCode, 0) << infinity.err;
+  EXPECT_NE(infinity.out.find("infinity"), std::string::npos);
+}
+
+TEST_F(LensCommands, FocusWithNoSolutionSaysSoAndFails) {
+  const auto result = testing::runProcess(
+      lenslab("focus --object-distance 100 " + lensPath("dgauss-50mm.dat")), scratch);
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.err.find("no solution"), std::string::npos) << result.err;
+}
+
+TEST_F(LensCommands, UsageErrorsExit2) {
+  for (const char* arguments : {"info", "focus", "info --wavelength -3 x.dat",
+                                "focus --object-distance 5 --film-distance 5 x.dat"}) {
+    const auto result = testing::runProcess(lenslab(arguments), scratch);
+    EXPECT_EQ(result.exitCode, 2) << arguments << ": " << result.err;
+  }
+  const auto notANumber = testing::runProcess(
+      lenslab("focus --object-distance far " + lensPath("dgauss-50mm.dat")), scratch);
+  EXPECT_EQ(notANumber.exitCode, 2) << notANumber.err;
+}
+
+TEST_F(LensCommands, BadLensFilesGiveFileLineColumnAndExit1) {
+  struct Case {
+    std::string name, text, expected;
+  };
+  const Case cases[] = {
+      {"garbage.dat", "50 5 1.5 20\n0 5 zz 10\n-50 40 1 20\n", ":2:5: "},
+      {"short.dat", "50 5 1.5 20\n0 5 0\n", ":2:6: "},
+      {"empty.dat", "", ":1:1: "},
+      {"binary.dat",
+       std::string("\x7f"
+                   "ELF\x02\x01\x01\0\0\0",
+                   10),
+       ":1:"},
+      {"nan.dat", "50 5 1.5 nan\n0 5 0 10\n-50 40 1 20\n", ":1:10: "},
+      {"nostop.dat", "50 5 1.5 20\n-50 40 1 20\n", ":1:1: "},
+  };
+  for (const auto& c : cases) {
+    const std::string path = writeFile(c.name, c.text);
+    for (const char* command : {"info", "focus --object-distance 1000"}) {
+      const auto result = testing::runProcess(lenslab(std::string(command) + " " + path), scratch);
+      EXPECT_EQ(result.exitCode, 1) << c.name << ": " << result.err;
+      EXPECT_NE(result.err.find(path + c.expected), std::string::npos)
+          << c.name << ": " << result.err;
+      EXPECT_TRUE(result.out.empty()) << c.name;
+    }
+  }
+  const auto missing =
+      testing::runProcess(lenslab("info " + (scratch / "missing.dat").string()), scratch);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("missing.dat:1:1: no such file"), std::string::npos) << missing.err;
+}
+
+TEST_F(LensCommands, ReadsTheCourseReferenceFiles) {
+  for (const char* name :
+       {"dgauss.50mm.dat", "fisheye.10mm.dat", "telephoto.250mm.dat", "wide.22mm.dat"}) {
+    const auto result =
+        testing::runProcess(lenslab(std::string("info --json ") + LENSLAB_SOURCE_DIR +
+                                    "/../shared/reference/lenses/" + name),
+                            scratch);
+    EXPECT_EQ(result.exitCode, 0) << name << ": " << result.err;
+  }
+}
+
+}  // namespace
+}  // namespace lenslab
