@@ -40,6 +40,7 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
   double filmDiagonalMm = scene.film.diagonalMm;
   double sceneUnitsPerMm = 0.001;  // pbrt-v3: camera space in metres
   double cameraOriginZMm = 0.0;    // pbrt-v3: the film sits at the camera-space origin
+  LensSampling sampling = LensSampling::ExitPupil;
   const char* stopParameter = camera.courseParameters ? "aperture_diameter" : "aperturediameter";
   const double stopDiameterMm = params.getFloat(stopParameter, camera.courseParameters ? 0.0 : 1.0);
   if (stopDiameterMm > 0.0) {
@@ -65,6 +66,8 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
     // The course's reference renders put the front lens vertex at the camera-space origin
     // (the seed report noticed its own images framed slightly closer with the film there).
     cameraOriginZMm = system->frontVertexZ();
+    // ... and aimed its rays at the rear element's disk (see LensSampling).
+    sampling = LensSampling::RearElementDisk;
   } else {
     const double focusDistance = params.getFloat("focusdistance", 10.0);
     const optics::FocusResult focus =
@@ -78,10 +81,10 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
   }
   params.warnUnused(diagnostics, "Camera \"realistic\"");
   // Build the exit-pupil table now, on the loading thread, not inside the first render wave.
-  system->exitPupilTableRadiusMm();
+  if (sampling == LensSampling::ExitPupil) system->exitPupilTableRadiusMm();
   return std::make_shared<RealisticCamera>(std::move(system),
                                            camera.cameraFromWorld, width, height, filmDiagonalMm,
-                                           sceneUnitsPerMm, cameraOriginZMm);
+                                           sceneUnitsPerMm, cameraOriginZMm, sampling);
 }
 
 }  // namespace
