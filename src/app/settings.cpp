@@ -1,11 +1,19 @@
 #include "app/settings.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
 namespace lenslab::app {
+
+void addRecentFile(Settings& settings, const std::string& path) {
+  auto& files = settings.recentFiles;
+  files.erase(std::remove(files.begin(), files.end(), path), files.end());
+  files.insert(files.begin(), path);
+  if (files.size() > kMaxRecentFiles) files.resize(kMaxRecentFiles);
+}
 
 std::filesystem::path configDirectory() {
   if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg != nullptr && *xdg != '\0') {

@@ -18,6 +18,11 @@ struct Settings {
   std::vector<std::string> recentFiles;  // most recent first
 };
 
+// Puts `path` first in the recent-files list (removing an earlier mention), keeping at most
+// kMaxRecentFiles.
+inline constexpr std::size_t kMaxRecentFiles = 12;
+void addRecentFile(Settings& settings, const std::string& path);
+
 // $XDG_CONFIG_HOME/lenslab, else $HOME/.config/lenslab; empty when neither is set.
 std::filesystem::path configDirectory();
 

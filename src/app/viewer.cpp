@@ -1,20 +1,26 @@
 #include "app/viewer.h"
 
 #include <glad/gl.h>
-// glad must come before GLFW so GLFW does not pull in the system GL header.
+// glad before GLFW, which is here only for its key codes.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "app/panels/panels.h"
+#include "app/resources.h"
 #include "app/screenshot.h"
+#include "app/script.h"
+#include "app/svg_export.h"
+#include "app/ui_dump.h"
 #include "app/viewer_state.h"
+#include "app/window.h"
+#include "optics/lens_file.h"
 #include "render/image_io.h"
 
 namespace lenslab::app {
@@ -23,77 +29,291 @@ namespace {
 
 constexpr const char* kHeadlessHint = "lenslab render SCENE --out image.png";
 
-std::string lastGlfwError;
-
-void recordGlfwError(int /*code*/, const char* description) {
-  lastGlfwError = description != nullptr ? description : "unknown GLFW error";
+// The double-Gauss 50 mm: the lens the course and the default scene use.
+std::string defaultLensPath() {
+  const std::filesystem::path lenses = findResourceDirectory("lenses");
+  return lenses.empty() ? std::string("lenses/dgauss-50mm.dat")
+                        : (lenses / "dgauss-50mm.dat").string();
 }
 
-// The first TTF font of the list that exists; ImGui's built-in bitmap font otherwise.
-void loadFonts(float contentScale) {
-  ImGuiIO& io = ImGui::GetIO();
-  const float pixels = 15.0f * contentScale;
-  for (const char* candidate : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-                                "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
-    if (std::filesystem::exists(candidate) &&
-        io.Fonts->AddFontFromFileTTF(candidate, pixels) != nullptr) {
-      return;
+// Reads part of the back buffer: a window-coordinate rectangle scaled to framebuffer pixels.
+FramebufferImage cropToRect(const FramebufferImage& image, const Rect& rect, float scale) {
+  FramebufferImage crop;
+  const int x0 = std::clamp(static_cast<int>(rect.x * scale), 0, image.width);
+  const int y0 = std::clamp(static_cast<int>(rect.y * scale), 0, image.height);
+  const int x1 = std::clamp(static_cast<int>(rect.right() * scale), x0, image.width);
+  const int y1 = std::clamp(static_cast<int>(rect.bottom() * scale), y0, image.height);
+  crop.width = x1 - x0;
+  crop.height = y1 - y0;
+  crop.rgba.reserve(static_cast<std::size_t>(crop.width) * crop.height * 4);
+  for (int y = y0; y < y1; ++y) {
+    const auto row = image.rgba.begin() + (static_cast<std::size_t>(y) * image.width + x0) * 4;
+    crop.rgba.insert(crop.rgba.end(), row, row + static_cast<std::ptrdiff_t>(crop.width) * 4);
+  }
+  return crop;
+}
+
+std::optional<std::string> asError(const std::string& error) {
+  return error.empty() ? std::nullopt : std::optional(error);
+}
+
+// The viewer: owns the window and the state, runs the frame loop, and is what scripts drive.
+class Viewer final : public ScriptHost {
+ public:
+  Viewer(Window& window, ViewerState& state) : window_(window), state_(state) {}
+
+  int run(const ViewerOptions& options, std::optional<ScriptRunner> script);
+
+  // ScriptHost
+  std::optional<std::string> loadLens(const std::string& path) override;
+  std::optional<std::string> loadScene(const std::string& path) override;
+  std::optional<std::string> saveLens(const std::string& path) override;
+  std::optional<std::string> edit(const EditCommand& command) override {
+    return state_.lens.apply(command);
+  }
+  bool undo() override { return state_.lens.undo(); }
+  bool redo() override { return state_.lens.redo(); }
+  void setExposure(double stops) override { state_.exposureStops = stops; }
+  void setPinholeCamera(bool pinhole) override { state_.pinholeCamera = pinhole; }
+  std::optional<std::string> saveWindowScreenshot(const std::string& path) override;
+  std::optional<std::string> saveRender(const std::string& path) override;
+  std::optional<std::string> saveCrossSection(const std::string& path) override;
+  std::optional<std::string> dumpUi(const std::string& path) override {
+    return asError(writeUiDump(path, state_, window_.width(), window_.height()));
+  }
+  std::optional<int> previewSpp() const override { return std::nullopt; }
+  void quit(int exitCode) override {
+    state_.quitRequested = true;
+    exitCode_ = exitCode;
+  }
+  void reportError(const std::string& message) override { state_.log.error(message); }
+
+ private:
+  void drawFrame();
+  void handleShortcuts();
+  void openDroppedFiles();
+  void carryOutRequests();
+  void askForPath(FileRequest::Kind kind);
+  std::optional<std::string> perform(const FileRequest& request);
+  std::string saveWindowScreenshotToDefault();
+
+  Window& window_;
+  ViewerState& state_;
+  int exitCode_ = 0;
+};
+
+void Viewer::handleShortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  // ImGui 1.86 indexes keys by the backend's key codes (GLFW's here).
+  constexpr int kKeyF12 = GLFW_KEY_F12, kKeyQ = GLFW_KEY_Q, kKeyZ = GLFW_KEY_Z, kKeyY = GLFW_KEY_Y;
+  if (ImGui::IsKeyPressed(kKeyF12, false)) state_.windowScreenshotRequested = true;
+  if (io.KeyCtrl && ImGui::IsKeyPressed(kKeyQ, false)) state_.quitRequested = true;
+  // Inside a text field, Ctrl+Z belongs to the field.
+  if (io.KeyCtrl && !io.WantTextInput) {
+    if (ImGui::IsKeyPressed(kKeyZ, false)) {
+      const bool done = io.KeyShift ? state_.lens.redo() : state_.lens.undo();
+      if (!done) state_.log.info(io.KeyShift ? "nothing to redo" : "nothing to undo");
+    }
+    if (ImGui::IsKeyPressed(kKeyY, false) && !state_.lens.redo()) {
+      state_.log.info("nothing to redo");
     }
   }
-  ImFontConfig config;
-  config.SizePixels = 13.0f * contentScale;
-  io.Fonts->AddFontDefault(&config);
 }
 
-void applyStyle(float contentScale) {
-  ImGui::StyleColorsDark();
-  ImGuiStyle& style = ImGui::GetStyle();
-  style.WindowRounding = 0.0f;
-  style.WindowBorderSize = 1.0f;
-  style.FrameRounding = 3.0f;
-  style.ScaleAllSizes(contentScale);
+void Viewer::drawFrame() {
+  const float width = static_cast<float>(window_.width());
+  const float height = static_cast<float>(window_.height());
+  state_.uiRects.clear();
+  state_.dragging = false;
+  refreshLens(state_);
+  handleShortcuts();
+  const float menuHeight = drawMainMenu(state_);
+  applyPendingEdits(state_);
+  state_.settings.layout =
+      clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight));
+  state_.layout =
+      computeLayout(width, height, menuHeight, state_.settings.layout, state_.showLog);
+  drawSplitters(state_, width, height);
+  drawLensTablePanel(state_, state_.layout.lensTable);
+  // Apply the table's edits now, so the cross-section drawn next shows them in this frame.
+  applyPendingEdits(state_);
+  drawCrossSectionPanel(state_, state_.layout.crossSection);
+  drawRenderPreviewPanel(state_, state_.layout.renderPreview);
+  if (state_.showLog) drawLogPanel(state_, state_.layout.log);
+  drawAboutWindow(state_);
+  if (const auto chosen = state_.fileBrowser.draw(); chosen && state_.browserPurpose) {
+    state_.fileRequests.push_back({*state_.browserPurpose, chosen->string()});
+  }
+  applyPendingEdits(state_);
 }
 
-// ImGui 1.86 indexes keys by the backend's key codes (GLFW's here).
-void handleShortcuts(ViewerState& state) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.windowScreenshotRequested = true;
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q, false)) state.quitRequested = true;
+void Viewer::openDroppedFiles() {
+  for (std::string& path : window_.takeDroppedFiles()) {
+    state_.fileRequests.push_back({FileRequest::Kind::Open, std::move(path)});
+  }
 }
 
-void drawFrame(ViewerState& state, float windowWidth, float windowHeight) {
-  handleShortcuts(state);
-  const float menuHeight = drawMainMenu(state);
-  state.settings.layout = clampFractions(state.settings.layout, windowWidth,
-                                         std::max(0.0f, windowHeight - menuHeight));
-  state.layout = computeLayout(windowWidth, windowHeight, menuHeight, state.settings.layout,
-                               state.showLog);
-  drawSplitters(state, windowWidth, windowHeight);
-  drawLensTablePanel(state, state.layout.lensTable);
-  drawCrossSectionPanel(state, state.layout.crossSection);
-  drawRenderPreviewPanel(state, state.layout.renderPreview);
-  if (state.showLog) drawLogPanel(state, state.layout.log);
-  drawAboutWindow(state);
+void Viewer::askForPath(FileRequest::Kind kind) {
+  using Kind = FileRequest::Kind;
+  const std::filesystem::path lenses = findResourceDirectory("lenses");
+  const std::filesystem::path scenes = findResourceDirectory("scenes");
+  const std::filesystem::path here = std::filesystem::current_path();
+  state_.browserPurpose = kind;
+  switch (kind) {
+    case Kind::Open:
+    case Kind::OpenLens:
+      state_.fileBrowser.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
+      break;
+    case Kind::OpenScene:
+      state_.fileBrowser.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
+      break;
+    case Kind::SaveLens:
+      state_.fileBrowser.show("Save lens as", FileBrowser::Mode::Save, {".dat"}, here,
+                              render::nonClobberingPath(here, "lens", ".dat").filename());
+      break;
+    case Kind::SaveRender:
+      state_.fileBrowser.show("Save render as (.png or .exr)", FileBrowser::Mode::Save,
+                              {".png", ".exr"}, here,
+                              render::nonClobberingPath(here, "lenslab-render", ".png").filename());
+      break;
+    case Kind::SaveCrossSection:
+      state_.fileBrowser.show(
+          "Save cross-section as (.png or .svg)", FileBrowser::Mode::Save, {".png", ".svg"}, here,
+          render::nonClobberingPath(here, "lenslab-cross-section", ".svg").filename());
+      break;
+  }
 }
 
-void saveWindowScreenshot(ViewerState& state, int framebufferWidth, int framebufferHeight) {
+std::optional<std::string> Viewer::perform(const FileRequest& request) {
+  using Kind = FileRequest::Kind;
+  const std::string& path = request.path;
+  switch (request.kind) {
+    case Kind::Open:
+      return std::filesystem::path(path).extension() == ".pbrt" ? loadScene(path) : loadLens(path);
+    case Kind::OpenLens: return loadLens(path);
+    case Kind::OpenScene: return loadScene(path);
+    case Kind::SaveLens: return saveLens(path);
+    case Kind::SaveRender: return saveRender(path);
+    case Kind::SaveCrossSection: return saveCrossSection(path);
+  }
+  return std::nullopt;
+}
+
+std::string Viewer::saveWindowScreenshotToDefault() {
   const std::filesystem::path path =
       render::nonClobberingPath(std::filesystem::current_path(), "lenslab-window", ".png");
-  const render::WriteResult result = saveFramebufferPng(path, framebufferWidth, framebufferHeight);
-  if (result.ok) {
-    state.log.info("Saved window screenshot to " + path.string());
-  } else {
-    state.log.error(result.error);
+  if (const auto error = saveWindowScreenshot(path.string())) return *error;
+  return {};
+}
+
+void Viewer::carryOutRequests() {
+  for (const FileRequest& request : std::exchange(state_.fileRequests, {})) {
+    if (request.path.empty()) {
+      askForPath(request.kind);
+    } else if (const auto error = perform(request)) {
+      state_.log.error(*error);
+    }
   }
+  if (state_.windowScreenshotRequested) {
+    state_.windowScreenshotRequested = false;
+    if (const std::string error = saveWindowScreenshotToDefault(); !error.empty()) {
+      state_.log.error(error);
+    }
+  }
+}
+
+std::optional<std::string> Viewer::loadLens(const std::string& path) {
+  optics::LensFileResult file = optics::readLensFile(path);
+  if (!file.ok()) {
+    // The current lens stays; every problem goes to the log with its file:line:column.
+    std::string message = "cannot open lens " + path + ":";
+    for (const optics::LensFileError& error : file.errors) message += "\n  " + error.toString();
+    return message;
+  }
+  state_.lens.apply(ReplaceLens{std::move(file.lens->prescription), path});
+  state_.lensHeaderComments = std::move(file.lens->headerComments);
+  addRecentFile(state_.settings, path);
+  state_.crossSectionNeedsFit = true;
+  refreshLens(state_);
+  state_.log.info("Opened lens " + path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::loadScene(const std::string& path) {
+  return "cannot open " + path + ": scenes are not supported yet";
+}
+
+std::optional<std::string> Viewer::saveLens(const std::string& path) {
+  std::string error;
+  if (!optics::writeLensFile(path, state_.lens.prescription(), state_.lensHeaderComments, &error)) {
+    return error;
+  }
+  state_.lens.markSaved(path);
+  addRecentFile(state_.settings, path);
+  state_.log.info("Saved lens to " + path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::saveWindowScreenshot(const std::string& path) {
+  const render::WriteResult result =
+      saveFramebufferPng(path, window_.framebufferWidth(), window_.framebufferHeight());
+  if (!result.ok) return result.error;
+  state_.log.info("Saved window screenshot to " + path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::saveRender(const std::string& path) {
+  return "cannot save " + path + ": there is no render yet";
+}
+
+std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {
+  const auto canvas = state_.uiRects.find("cross-section/canvas");
+  if (canvas == state_.uiRects.end()) return std::string("the cross-section is not visible");
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension == ".svg") {
+    const CrossSectionDrawing drawing = drawLens(
+        optics::computeLensOutline(state_.lens.prescription()), 0.5 * state_.filmDiagonalMm);
+    if (const std::string error = writeCrossSectionSvg(path, drawing); !error.empty()) {
+      return error;
+    }
+  } else {
+    const float scale = static_cast<float>(window_.framebufferWidth()) /
+                        static_cast<float>(std::max(1, window_.width()));
+    const FramebufferImage crop = cropToRect(
+        readFramebuffer(window_.framebufferWidth(), window_.framebufferHeight()), canvas->second,
+        scale);
+    const render::WriteResult result = render::writePngRgba8(path, crop.width, crop.height, crop.rgba);
+    if (!result.ok) return result.error;
+  }
+  state_.log.info("Saved cross-section to " + path);
+  return std::nullopt;
+}
+
+int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script) {
+  const bool testMode = options.screenshotPath.has_value();
+  for (int frame = 0; !window_.shouldClose() && !state_.quitRequested; ++frame) {
+    // Idle when nothing happens: wake for input, or a few times a second. Tests and scripts
+    // poll, so they run at full speed.
+    window_.waitEvents(testMode || script ? 0.0 : 0.25);
+    openDroppedFiles();
+    window_.beginFrame();
+    drawFrame();
+    window_.renderFrame();
+    carryOutRequests();
+    if (script) script->step(*this);
+    if (testMode && frame + 1 >= options.frames) {
+      if (const auto error = saveWindowScreenshot(*options.screenshotPath)) {
+        std::fprintf(stderr, "lenslab: %s\n", error->c_str());
+        return 1;
+      }
+      break;
+    }
+    window_.swapBuffers();
+  }
+  return exitCode_;
 }
 
 }  // namespace
-
-bool displayAvailable() {
-  const char* x11 = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
-}
 
 int runViewer(const ViewerOptions& options) {
   if (!displayAvailable()) {
@@ -103,17 +323,20 @@ int runViewer(const ViewerOptions& options) {
                  kHeadlessHint);
     return 2;
   }
-  glfwSetErrorCallback(recordGlfwError);
-  if (!glfwInit()) {
-    std::fprintf(stderr, "lenslab: cannot open the display (%s); without one, render headless: %s\n",
-                 lastGlfwError.c_str(), kHeadlessHint);
-    return 2;
+  std::optional<ScriptRunner> script;
+  if (!options.scriptPath.empty()) {
+    ParsedScript parsed = readScriptFile(options.scriptPath);
+    if (!parsed.errors.empty()) {
+      for (const std::string& error : parsed.errors) std::fprintf(stderr, "%s\n", error.c_str());
+      return 2;
+    }
+    script.emplace(std::move(parsed.commands));
   }
 
   ViewerState state;
-  const bool testMode = options.screenshotPath.has_value();
-  // Tests must neither read nor change the user's settings.
-  if (!testMode) {
+  // Tests and scripts must neither read nor change the user's settings.
+  const bool automated = options.screenshotPath.has_value() || script.has_value();
+  if (!automated) {
     if (const std::filesystem::path directory = configDirectory(); !directory.empty()) {
       state.settingsFile = directory / "settings.json";
       std::string warning;
@@ -121,98 +344,40 @@ int runViewer(const ViewerOptions& options) {
       if (!warning.empty()) state.log.warning(warning);
     }
   }
-  const int width = options.width.value_or(state.settings.windowWidth);
-  const int height = options.height.value_or(state.settings.windowHeight);
-
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  // In test mode the framebuffer must be exactly the requested size.
-  glfwWindowHint(GLFW_SCALE_TO_MONITOR, testMode ? GLFW_FALSE : GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(width, height, "lenslab", nullptr, nullptr);
-  if (window == nullptr) {
-    std::fprintf(stderr, "lenslab: cannot create a GL 3.3 core window (%s)\n",
-                 lastGlfwError.c_str());
-    glfwTerminate();
-    return 1;
+  Window::Options windowOptions;
+  windowOptions.width = options.width.value_or(state.settings.windowWidth);
+  windowOptions.height = options.height.value_or(state.settings.windowHeight);
+  windowOptions.testMode = automated;
+  std::string error;
+  std::unique_ptr<Window> window = Window::open(windowOptions, &error);
+  if (!window) {
+    std::fprintf(stderr, "lenslab: %s; without a display, render headless: %s\n", error.c_str(),
+                 kHeadlessHint);
+    return 2;
   }
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(testMode ? 0 : 1);
-  if (gladLoadGL(glfwGetProcAddress) == 0) {
-    std::fprintf(stderr, "lenslab: cannot load the OpenGL 3.3 functions\n");
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return 1;
-  }
-
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // the layout persists in settings.json, in the config directory
-  float contentScaleX = 1.0f, contentScaleY = 1.0f;
-  glfwGetWindowContentScale(window, &contentScaleX, &contentScaleY);
-  const float contentScale = testMode ? 1.0f : std::max(1.0f, contentScaleX);
-  applyStyle(contentScale);
-  loadFonts(contentScale);
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
-
-  state.log.info(std::string("lenslab ") + LENSLAB_VERSION + ", OpenGL " +
-                 reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+  state.log.info(std::string("lenslab ") + LENSLAB_VERSION + ", OpenGL " + window->glVersion());
   if (!state.settingsFile.empty()) state.log.info("Settings: " + state.settingsFile.string());
 
-  int exitCode = 0;
-  for (int frame = 0; !glfwWindowShouldClose(window) && !state.quitRequested; ++frame) {
-    // Idle when nothing happens: wake for input, or at least a few times a second.
-    if (testMode) {
-      glfwPollEvents();
-    } else {
-      glfwWaitEventsTimeout(0.25);
-    }
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    int windowWidth = 0, windowHeight = 0;
-    glfwGetWindowSize(window, &windowWidth, &windowHeight);
-    drawFrame(state, static_cast<float>(windowWidth), static_cast<float>(windowHeight));
-    ImGui::Render();
-
-    int framebufferWidth = 0, framebufferHeight = 0;
-    glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
-    glViewport(0, 0, framebufferWidth, framebufferHeight);
-    glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
-    if (state.windowScreenshotRequested) {
-      state.windowScreenshotRequested = false;
-      saveWindowScreenshot(state, framebufferWidth, framebufferHeight);
-    }
-    if (testMode && frame + 1 >= options.frames) {
-      const render::WriteResult result =
-          saveFramebufferPng(*options.screenshotPath, framebufferWidth, framebufferHeight);
-      if (!result.ok) {
-        std::fprintf(stderr, "lenslab: %s\n", result.error.c_str());
-        exitCode = 1;
-      }
-      break;
-    }
-    glfwSwapBuffers(window);
-  }
-
-  if (!testMode && !state.settingsFile.empty()) {
-    glfwGetWindowSize(window, &state.settings.windowWidth, &state.settings.windowHeight);
-    if (const std::string error = saveSettings(state.settingsFile, state.settings);
-        !error.empty()) {
-      std::fprintf(stderr, "lenslab: %s\n", error.c_str());
+  Viewer viewer(*window, state);
+  if (const auto lensError = viewer.loadLens(options.lensPath.empty() ? defaultLensPath()
+                                                                      : options.lensPath)) {
+    state.log.error(*lensError);
+    if (!options.lensPath.empty()) {
+      std::fprintf(stderr, "lenslab: %s\n", lensError->c_str());
+      return 1;
     }
   }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
+  state.lens = LensDocument(state.lens.prescription(), state.lens.path());  // nothing to undo yet
+  const int exitCode = viewer.run(options, std::move(script));
+
+  if (!state.settingsFile.empty()) {
+    state.settings.windowWidth = window->width();
+    state.settings.windowHeight = window->height();
+    if (const std::string saveError = saveSettings(state.settingsFile, state.settings);
+        !saveError.empty()) {
+      std::fprintf(stderr, "lenslab: %s\n", saveError.c_str());
+    }
+  }
   return exitCode;
 }
 

@@ -7,8 +7,9 @@
 namespace lenslab::app {
 
 struct ViewerOptions {
-  std::string lensPath;   // empty: the default lens
-  std::string scenePath;  // empty: the default scene
+  std::string lensPath;    // empty: the default lens
+  std::string scenePath;   // empty: the default scene
+  std::string scriptPath;  // commands to run (see app/script.h)
   // Test mode: draw `frames` frames, write the framebuffer to this PNG, and exit.
   std::optional<std::string> screenshotPath;
   int frames = 10;
@@ -16,11 +17,8 @@ struct ViewerOptions {
   std::optional<int> width, height;
 };
 
-// Returns the process exit code: 0 on a normal quit, 2 when there is no display, 1 on other
-// failures (which are reported on stderr in one line).
+// Returns the process exit code: 0 on a normal quit, 2 when there is no display or the script
+// does not parse, 1 on other failures (reported on stderr in one line).
 int runViewer(const ViewerOptions& options);
-
-// True when a display server is named in the environment (DISPLAY or WAYLAND_DISPLAY).
-bool displayAvailable();
 
 }  // namespace lenslab::app

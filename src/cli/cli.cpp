@@ -19,6 +19,7 @@ struct ViewerArguments {
   std::string lensPath;
   std::string scenePath;
   std::string screenshotPath;
+  std::string scriptPath;
   int frames = 10;
   std::string size;
 };
@@ -29,6 +30,9 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", arguments.screenshotPath,
                  "Draw --frames frames, save the window as this PNG, and exit");
+  app.add_option("--script", arguments.scriptPath,
+                 "Run viewer commands from this file (see src/app/script.h)")
+      ->check(CLI::ExistingFile);
   app.add_option("--frames", arguments.frames, "Frames to draw before --screenshot (default 10)")
       ->check(CLI::Range(1, 100000));
   app.add_option("--size", arguments.size, "Window size WIDTHxHEIGHT, e.g. 1280x800");
@@ -39,6 +43,7 @@ int runViewer(const ViewerArguments& arguments) {
   options.lensPath = arguments.lensPath;
   options.scenePath = arguments.scenePath;
   options.frames = arguments.frames;
+  options.scriptPath = arguments.scriptPath;
   if (!arguments.screenshotPath.empty()) options.screenshotPath = arguments.screenshotPath;
   if (!arguments.size.empty()) {
     std::string error;

@@ -1,5 +1,9 @@
 #include "render/camera_factory.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "render/realistic_camera.h"
 #include "optics/focus.h"
 #include "optics/lens_file.h"
@@ -37,10 +41,7 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
     params.find(ignored);
   }
   std::shared_ptr<const optics::LensSystem> system = built.system;
-  double filmDiagonalMm = scene.film.diagonalMm;
-  double sceneUnitsPerMm = 0.001;  // pbrt-v3: camera space in metres
-  double cameraOriginZMm = 0.0;    // pbrt-v3: the film sits at the camera-space origin
-  LensSampling sampling = LensSampling::ExitPupil;
+  const CameraFraming framing = framingOf(scene);
   const char* stopParameter = camera.courseParameters ? "aperture_diameter" : "aperturediameter";
   const double stopDiameterMm = params.getFloat(stopParameter, camera.courseParameters ? 0.0 : 1.0);
   if (stopDiameterMm > 0.0) {
@@ -54,24 +55,17 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
     }
   }
   if (camera.courseParameters) {
-    // The course's pbrt-v2 camera: camera space in millimetres, film distance given directly.
-    sceneUnitsPerMm = 1.0;
-    filmDiagonalMm = params.getFloat("filmdiag", filmDiagonalMm);
+    // The course's pbrt-v2 camera: film distance given directly.
     const double filmDistanceMm = params.getFloat("filmdistance", 0.0);
     system = filmDistanceMm > 0.0 ? system->withFilmDistance(filmDistanceMm) : nullptr;
     if (!system) {
       diagnostics.error(camera.location, "realistic camera needs \"float filmdistance\" > 0");
       return nullptr;
     }
-    // The course's reference renders put the front lens vertex at the camera-space origin
-    // (the seed report noticed its own images framed slightly closer with the film there).
-    cameraOriginZMm = system->frontVertexZ();
-    // ... and aimed its rays at the rear element's disk (see LensSampling).
-    sampling = LensSampling::RearElementDisk;
   } else {
     const double focusDistance = params.getFloat("focusdistance", 10.0);
     const optics::FocusResult focus =
-        optics::filmDistanceForObjectDistance(*system, focusDistance / sceneUnitsPerMm);
+        optics::filmDistanceForObjectDistance(*system, focusDistance / framing.sceneUnitsPerMm);
     if (!focus.ok()) {
       diagnostics.error(camera.location, "the lens cannot focus at " +
                                              std::to_string(focusDistance) + ": " + focus.whyNot);
@@ -80,14 +74,50 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
     system = system->withFilmDistance(*focus.valueMm);
   }
   params.warnUnused(diagnostics, "Camera \"realistic\"");
-  // Build the exit-pupil table now, on the loading thread, not inside the first render wave.
-  if (sampling == LensSampling::ExitPupil) system->exitPupilTableRadiusMm();
-  return std::make_shared<RealisticCamera>(std::move(system),
-                                           camera.cameraFromWorld, width, height, filmDiagonalMm,
-                                           sceneUnitsPerMm, cameraOriginZMm, sampling);
+  return makeLensCamera(scene, std::move(system), width, height);
 }
 
 }  // namespace
+
+CameraFraming framingOf(const SceneDescription& scene) {
+  CameraFraming framing;
+  framing.cameraFromWorld = scene.camera.cameraFromWorld;
+  framing.filmDiagonalMm = scene.film.diagonalMm;
+  if (scene.camera.type == "realistic" && scene.camera.courseParameters) {
+    framing.sceneUnitsPerMm = 1.0;
+    framing.filmDiagonalMm = scene.camera.params.getFloat("filmdiag", framing.filmDiagonalMm);
+    // The seed report noticed its own images framed slightly closer with the film there.
+    framing.frontVertexAtOrigin = true;
+    framing.lensSampling = LensSampling::RearElementDisk;
+  }
+  return framing;
+}
+
+std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
+                                             std::shared_ptr<const optics::LensSystem> lens,
+                                             int width, int height) {
+  const CameraFraming framing = framingOf(scene);
+  // Build the exit-pupil table now, on the calling thread, not inside the first render wave.
+  if (framing.lensSampling == LensSampling::ExitPupil) lens->exitPupilTableRadiusMm();
+  const double originZMm = framing.frontVertexAtOrigin ? lens->frontVertexZ() : 0.0;
+  return std::make_shared<RealisticCamera>(std::move(lens), framing.cameraFromWorld, width, height,
+                                           framing.filmDiagonalMm, framing.sceneUnitsPerMm,
+                                           originZMm, framing.lensSampling);
+}
+
+std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& scene,
+                                                        const optics::LensSystem& lens, int width,
+                                                        int height) {
+  const CameraFraming framing = framingOf(scene);
+  const double aspect = static_cast<double>(width) / std::max(1, height);
+  const double diagonal = framing.filmDiagonalMm;
+  const double shortSideMm = diagonal / std::sqrt(1.0 + std::pow(std::max(aspect, 1.0 / aspect), 2));
+  // The image distance of an ideal lens of the same focal length focused at infinity.
+  const double imageDistanceMm =
+      lens.firstOrder().eflMm > 0 ? lens.firstOrder().eflMm : lens.filmDistanceMm();
+  const double fovDegrees = 2.0 * std::atan(0.5 * shortSideMm / imageDistanceMm) * 180.0 / std::numbers::pi;
+  return std::make_shared<PerspectiveCamera>(framing.cameraFromWorld, fovDegrees, width, height);
+}
 
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
                                          const CameraOverrides& overrides,

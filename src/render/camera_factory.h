@@ -7,7 +7,12 @@
 
 #include "render/camera.h"
 #include "render/diagnostics.h"
+#include "render/realistic_camera.h"
 #include "render/scene_description.h"
+
+namespace lenslab::optics {
+class LensSystem;
+}
 
 namespace lenslab::render {
 
@@ -15,6 +20,32 @@ struct CameraOverrides {
   std::optional<std::filesystem::path> lensPath;  // replaces the scene's lens file
   std::optional<int> width, height;               // replaces the film resolution
 };
+
+// How a scene's camera is placed, whatever lens it looks through.
+struct CameraFraming {
+  glm::dmat4 cameraFromWorld{1.0};
+  double filmDiagonalMm = 35.0;
+  // Camera-space units per lens millimetre: 0.001 for pbrt-v3 scenes in metres, 1 for the
+  // course's pbrt-v2 camera, whose camera space is in millimetres.
+  double sceneUnitsPerMm = 0.001;
+  // The course's reference renders put the front lens vertex at the camera-space origin; pbrt-v3
+  // puts the film there.
+  bool frontVertexAtOrigin = false;
+  // ... and aimed film rays at the rear element's disk (see LensSampling).
+  LensSampling lensSampling = LensSampling::ExitPupil;
+};
+CameraFraming framingOf(const SceneDescription& scene);
+
+// The scene's framing through an already-built lens, used as it is (its own film distance and
+// stop): the viewer's edited lens.
+std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
+                                             std::shared_ptr<const optics::LensSystem> lens,
+                                             int width, int height);
+// A pinhole with the same framing and about the same field of view as `lens` (its focal length
+// over the film's shorter side), for comparing the lens against an ideal one.
+std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& scene,
+                                                        const optics::LensSystem& lens, int width,
+                                                        int height);
 
 // Null after reporting an error.
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,

@@ -30,6 +30,9 @@ struct FloatImage {
 WriteResult writeExr(const std::filesystem::path& path, const FloatImage& image);
 // Portable float map ("PF", little endian, rows bottom to top as the format requires).
 WriteResult writePfm(const std::filesystem::path& path, const FloatImage& image);
+// 8-bit sRGB RGBA (alpha 255) of image * 2^exposureStops, clamped: what PNGs and the viewer's
+// preview show.
+std::vector<std::uint8_t> encodeSrgbRgba8(const FloatImage& image, double exposureStops);
 // sRGB-encoded 8-bit PNG of image * 2^exposureStops, clamped.
 WriteResult writePngSrgb(const std::filesystem::path& path, const FloatImage& image,
                          double exposureStops);

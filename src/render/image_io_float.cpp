@@ -110,18 +110,38 @@ WriteResult writePfm(const std::filesystem::path& path, const FloatImage& image)
   return finishAtomic(temporary, path);
 }
 
+std::vector<std::uint8_t> encodeSrgbRgba8(const FloatImage& image, double exposureStops) {
+  // A table over [0, 1] in linear light: the viewer re-encodes its preview whenever the
+  // exposure slider moves, and pow() per channel would cost tens of milliseconds a frame.
+  // 16384 steps keep every output code exact except a handful in the darkest shadows (+-1).
+  constexpr int kSteps = 16384;
+  static const std::vector<std::uint8_t> table = [] {
+    std::vector<std::uint8_t> codes(kSteps + 1);
+    for (int i = 0; i <= kSteps; ++i) {
+      const float encoded = std::clamp(linearToSrgb(static_cast<float>(i) / kSteps), 0.0f, 1.0f);
+      codes[i] = static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
+    }
+    return codes;
+  }();
+  const float scale = static_cast<float>(std::exp2(exposureStops)) * kSteps;
+  const std::size_t pixels = static_cast<std::size_t>(std::max(0, image.width)) *
+                             static_cast<std::size_t>(std::max(0, image.height));
+  std::vector<std::uint8_t> rgba(pixels * 4, 255);
+  for (std::size_t i = 0; i < pixels && 3 * i + 2 < image.rgb.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      // NaN and negatives map to black, overexposure to white.
+      const float position = image.rgb[3 * i + c] * scale + 0.5f;
+      const int index = position > 0.0f ? static_cast<int>(std::min(position, float(kSteps))) : 0;
+      rgba[4 * i + c] = table[index];
+    }
+  }
+  return rgba;
+}
+
 WriteResult writePngSrgb(const std::filesystem::path& path, const FloatImage& image,
                          double exposureStops) {
   if (!sizeMatches(image)) return {false, "cannot write " + path.string() + ": bad image size"};
-  const float gain = static_cast<float>(std::exp2(exposureStops));
-  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(image.width) * image.height * 4, 255);
-  for (std::size_t i = 0, n = static_cast<std::size_t>(image.width) * image.height; i < n; ++i) {
-    for (int c = 0; c < 3; ++c) {
-      const float encoded = std::clamp(linearToSrgb(image.rgb[3 * i + c] * gain), 0.0f, 1.0f);
-      rgba[4 * i + c] = static_cast<std::uint8_t>(std::lround(encoded * 255.0f));
-    }
-  }
-  return writePngRgba8(path, image.width, image.height, rgba);
+  return writePngRgba8(path, image.width, image.height, encodeSrgbRgba8(image, exposureStops));
 }
 
 WriteResult writeImage(const std::filesystem::path& path, const FloatImage& image,

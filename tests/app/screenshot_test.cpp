@@ -18,6 +18,8 @@ constexpr Rgb kTitleBar{10, 10, 10};
 constexpr Rgb kTitleBarActive{41, 74, 122};
 constexpr Rgb kCrossSectionCanvas{18, 20, 26};
 constexpr Rgb kPreviewCanvas{0, 0, 0};
+constexpr Rgb kGlassEdge{170, 200, 240};
+constexpr Rgb kFilm{240, 240, 240};
 
 class ViewerScreenshot : public ::testing::Test {
  protected:
@@ -86,7 +88,10 @@ TEST_F(ViewerScreenshot, DrawsEachPanelWhereTheLayoutPutsIt) {
                               static_cast<int>(panel.right() - 20),
                               static_cast<int>(panel.bottom() - 20), colour, 3);
   };
-  EXPECT_GT(interiorFraction(layout.crossSection, kCrossSectionCanvas), 0.9);
+  // The cross-section: mostly canvas, with the default lens's glass edges and the film drawn.
+  EXPECT_GT(interiorFraction(layout.crossSection, kCrossSectionCanvas), 0.5);
+  EXPECT_GT(interiorFraction(layout.crossSection, kGlassEdge), 0.002);
+  EXPECT_GT(interiorFraction(layout.crossSection, kFilm), 0.0005);
   EXPECT_GT(interiorFraction(layout.renderPreview, kPreviewCanvas), 0.9);
   // Neither canvas leaks into the lens table.
   EXPECT_LT(interiorFraction(layout.lensTable, kCrossSectionCanvas), 0.05);

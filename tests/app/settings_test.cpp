@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 
@@ -34,6 +35,16 @@ TEST(Settings, CorruptFileGivesDefaultsAndAWarning) {
   const Settings loaded = loadSettings(file, &warning);
   EXPECT_EQ(loaded.windowWidth, Settings{}.windowWidth);
   EXPECT_NE(warning.find(file.string()), std::string::npos);
+}
+
+TEST(Settings, RecentFilesAreMostRecentFirstWithoutDuplicates) {
+  Settings settings;
+  for (int i = 0; i < 20; ++i) addRecentFile(settings, "/f" + std::to_string(i));
+  addRecentFile(settings, "/f15");
+  ASSERT_EQ(settings.recentFiles.size(), kMaxRecentFiles);
+  EXPECT_EQ(settings.recentFiles[0], "/f15");
+  EXPECT_EQ(settings.recentFiles[1], "/f19");
+  EXPECT_EQ(std::count(settings.recentFiles.begin(), settings.recentFiles.end(), "/f15"), 1);
 }
 
 TEST(Settings, LiveInTheXdgConfigDirectory) {

@@ -60,3 +60,20 @@ struct PngImage {
 };
 
 }  // namespace lenslab::testing
+
+namespace lenslab::testing {
+
+// Pixels that differ by more than `tolerance` in any channel; images of different sizes differ
+// everywhere.
+inline std::size_t countDifferentPixels(const PngImage& a, const PngImage& b, int tolerance = 24) {
+  if (a.width != b.width || a.height != b.height) {
+    return static_cast<std::size_t>(std::max(a.width * a.height, b.width * b.height));
+  }
+  std::size_t different = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) different += a.at(x, y).maxDifference(b.at(x, y)) > tolerance;
+  }
+  return different;
+}
+
+}  // namespace lenslab::testing

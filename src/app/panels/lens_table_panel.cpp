@@ -1,12 +1,192 @@
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
+#include "app/value_text.h"
 
 namespace lenslab::app {
 
-void drawLensTablePanel(ViewerState& /*state*/, const Rect& rect) {
-  if (beginPanel("Lens", rect)) {
-    ImGui::TextDisabled("No lens loaded.");
+namespace {
+
+constexpr ImU32 kProblemRow = IM_COL32(140, 40, 40, 110);
+constexpr ImU32 kSelectedRow = IM_COL32(60, 90, 140, 90);
+
+double fieldValue(const optics::Surface& surface, SurfaceField field) {
+  switch (field) {
+    case SurfaceField::RadiusMm: return surface.radiusMm;
+    case SurfaceField::ThicknessMm: return surface.thicknessMm;
+    case SurfaceField::IndexD: return surface.indexD;
+    case SurfaceField::AbbeD: return surface.abbeD.value_or(std::nan(""));
+    case SurfaceField::ApertureDiameterMm: return surface.apertureDiameterMm;
   }
+  return 0;
+}
+
+// One editable text cell. The typed text is committed when the field loses focus or on Enter;
+// unparsable text is logged and leaves the lens unchanged.
+void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double value) {
+  LensTableState& table = state.lensTable;
+  const std::string cell = std::to_string(row) + "/" + surfaceFieldName(field);
+  const std::string label = "##" + cell;
+  char display[64];
+  const std::string formatted = formatFieldValue(field, value);
+  std::strncpy(display, formatted.c_str(), sizeof display - 1);
+  display[sizeof display - 1] = '\0';
+  const bool editing = table.editingCell == cell;
+  char* buffer = editing ? table.editText : display;
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  ImGui::InputText(label.c_str(), buffer, sizeof table.editText,
+                   ImGuiInputTextFlags_CharsScientific | ImGuiInputTextFlags_AutoSelectAll);
+  if (ImGui::IsItemActivated()) {
+    table.editingCell = cell;
+    std::memcpy(table.editText, display, sizeof display);
+    table.selectedRow = static_cast<int>(row);
+  }
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  state.uiRects["lens-table/" + std::to_string(row + 1) + "/" + surfaceFieldName(field)] = {
+      min.x, min.y, max.x - min.x, max.y - min.y};
+  if (ImGui::IsItemDeactivated() && table.editingCell == cell) {
+    const ParsedValue parsed = parseFieldValue(field, table.editText);
+    if (parsed.value) {
+      const double old = value;
+      const bool unchanged = (std::isnan(old) && std::isnan(*parsed.value)) || old == *parsed.value;
+      if (!unchanged) state.requestEdit(SetSurfaceField{row, field, *parsed.value});
+    } else {
+      state.log.error("surface " + std::to_string(row + 1) + " " + surfaceFieldName(field) +
+                      ": " + parsed.error);
+    }
+    table.editingCell.clear();
+  }
+}
+
+void problemTooltip(const ViewerState& state, int row) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::BeginTooltip();
+  for (const LensProblem& problem : state.lensProblems) {
+    if (problem.surface == row) ImGui::TextUnformatted(problem.message.c_str());
+  }
+  ImGui::EndTooltip();
+}
+
+void drawToolbar(ViewerState& state) {
+  const auto& surfaces = state.lens.prescription().surfaces;
+  const int selected = state.lensTable.selectedRow;
+  const bool hasSelection = selected >= 0 && selected < static_cast<int>(surfaces.size());
+  const std::size_t row = hasSelection ? static_cast<std::size_t>(selected) : 0;
+  if (ImGui::Button("Insert")) {
+    // A thin air gap after the selected surface, with the selected surface's aperture.
+    optics::Surface added;
+    added.radiusMm = std::numeric_limits<double>::infinity();  // flat
+    added.thicknessMm = 1.0;
+    added.apertureDiameterMm = hasSelection ? surfaces[row].apertureDiameterMm : 10.0;
+    state.requestEdit(InsertSurface{hasSelection ? row + 1 : surfaces.size(), added});
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a flat surface after the selected row");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!hasSelection);
+  if (ImGui::Button("Delete")) state.requestEdit(DeleteSurface{row});
+  ImGui::SameLine();
+  if (ImGui::ArrowButton("##up", ImGuiDir_Up) && row > 0) {
+    state.requestEdit(MoveSurface{row, row - 1});
+    state.lensTable.selectedRow = selected - 1;
+  }
+  ImGui::SameLine();
+  if (ImGui::ArrowButton("##down", ImGuiDir_Down) && row + 1 < surfaces.size()) {
+    state.requestEdit(MoveSurface{row, row + 1});
+    state.lensTable.selectedRow = selected + 1;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Flip")) state.requestEdit(FlipLens{});
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reverse the lens front to back");
+}
+
+}  // namespace
+
+void drawLensTablePanel(ViewerState& state, const Rect& rect) {
+  if (!beginPanel("Lens", rect)) {
+    ImGui::End();
+    return;
+  }
+  const auto& surfaces = state.lens.prescription().surfaces;
+  const std::string name =
+      state.lens.path().empty() ? std::string("(unsaved lens)") : state.lens.path();
+  ImGui::TextDisabled("%s", name.c_str());
+  drawToolbar(state);
+
+  constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
+                                          ImGuiTableFlags_SizingStretchProp |
+                                          ImGuiTableFlags_ScrollY;
+  // The table takes the rows it needs (up to 60% of the panel); first-order data goes below.
+  const float rowHeight = ImGui::GetFrameHeightWithSpacing() + 1.0f;
+  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + 6.0f;
+  const float tableHeight =
+      std::clamp(wanted, 80.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y * 0.6f));
+  if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight))) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 28.0f);
+    ImGui::TableSetupColumn("Radius", ImGuiTableColumnFlags_WidthStretch, 1.2f);
+    ImGui::TableSetupColumn("Thick.", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("n_d", ImGuiTableColumnFlags_WidthStretch, 0.9f);
+    ImGui::TableSetupColumn("V_d", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+    ImGui::TableSetupColumn("Aper.", ImGuiTableColumnFlags_WidthStretch, 0.9f);
+    ImGui::TableSetupColumn("Stop", ImGuiTableColumnFlags_WidthFixed, 34.0f);
+    ImGui::TableHeadersRow();
+    for (std::size_t row = 0; row < surfaces.size(); ++row) {
+      const optics::Surface& surface = surfaces[row];
+      ImGui::PushID(static_cast<int>(row));
+      ImGui::TableNextRow();
+      bool hasProblem = false;
+      for (const LensProblem& problem : state.lensProblems) {
+        hasProblem |= problem.surface == static_cast<int>(row);
+      }
+      if (hasProblem) {
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, kProblemRow);
+      } else if (state.lensTable.selectedRow == static_cast<int>(row)) {
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, kSelectedRow);
+      }
+      ImGui::TableSetColumnIndex(0);
+      const std::string number = (hasProblem ? "! " : "") + std::to_string(row + 1);
+      if (ImGui::Selectable(number.c_str(), state.lensTable.selectedRow == static_cast<int>(row))) {
+        state.lensTable.selectedRow = static_cast<int>(row);
+      }
+      if (hasProblem) problemTooltip(state, static_cast<int>(row));
+      const SurfaceField fields[] = {SurfaceField::RadiusMm, SurfaceField::ThicknessMm,
+                                     SurfaceField::IndexD, SurfaceField::AbbeD,
+                                     SurfaceField::ApertureDiameterMm};
+      for (int column = 0; column < 5; ++column) {
+        ImGui::TableSetColumnIndex(column + 1);
+        valueCell(state, row, fields[column], fieldValue(surface, fields[column]));
+        if (hasProblem) problemTooltip(state, static_cast<int>(row));
+      }
+      ImGui::TableSetColumnIndex(6);
+      bool isStop = surface.isStop();
+      if (ImGui::Checkbox("##stop", &isStop) && isStop) state.requestEdit(MakeStop{row});
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(surface.isStop() ? "The aperture stop (type a radius to make it a surface)"
+                                           : "Make this surface the aperture stop");
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndTable();
+  }
+  // Problems that are not tied to one row, and a summary.
+  for (const LensProblem& problem : state.lensProblems) {
+    const std::string where =
+        problem.surface >= 0 ? "surface " + std::to_string(problem.surface + 1) + ": " : "";
+    ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "%s%s", where.c_str(),
+                       problem.message.c_str());
+  }
+  ImGui::Separator();
+  ImGui::BeginChild("first-order-data");
+  drawFirstOrderSection(state);
+  ImGui::EndChild();
   ImGui::End();
 }
 

@@ -1,25 +1,92 @@
 #include <imgui.h>
 
+#include <filesystem>
+
 #include "app/panels/panels.h"
+#include "app/resources.h"
 
 namespace lenslab::app {
+
+namespace {
+
+void fileMenu(ViewerState& state) {
+  using Kind = FileRequest::Kind;
+  if (ImGui::MenuItem("Open lens...", "Ctrl+O")) state.fileRequests.push_back({Kind::OpenLens, {}});
+  if (ImGui::MenuItem("Open scene...")) state.fileRequests.push_back({Kind::OpenScene, {}});
+  if (ImGui::BeginMenu("Open recent", !state.settings.recentFiles.empty())) {
+    for (const std::string& path : state.settings.recentFiles) {
+      if (ImGui::MenuItem(path.c_str())) state.fileRequests.push_back({Kind::Open, path});
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::Separator();
+  if (ImGui::MenuItem("Save lens as...", "Ctrl+S")) state.fileRequests.push_back({Kind::SaveLens, {}});
+  ImGui::Separator();
+  if (ImGui::MenuItem("Save window screenshot", "F12")) state.windowScreenshotRequested = true;
+  if (ImGui::MenuItem("Save render as PNG or EXR...")) {
+    state.fileRequests.push_back({Kind::SaveRender, {}});
+  }
+  if (ImGui::MenuItem("Save cross-section as PNG or SVG...")) {
+    state.fileRequests.push_back({Kind::SaveCrossSection, {}});
+  }
+  ImGui::Separator();
+  if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.quitRequested = true;
+}
+
+void editMenu(ViewerState& state) {
+  if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.lens.canUndo())) state.lens.undo();
+  if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, state.lens.canRedo())) state.lens.redo();
+}
+
+void lensMenu(ViewerState& state) {
+  const std::filesystem::path library = findResourceDirectory("lenses");
+  if (ImGui::BeginMenu("Library", !library.empty())) {
+    for (const auto& file : listFiles(library, ".dat")) {
+      if (ImGui::MenuItem(file.stem().string().c_str())) {
+        state.fileRequests.push_back({FileRequest::Kind::OpenLens, file.string()});
+      }
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::Separator();
+  if (ImGui::MenuItem("Flip front to back")) state.requestEdit(FlipLens{});
+  if (ImGui::BeginMenu("Scale to focal length")) {
+    ImGui::SetNextItemWidth(120);
+    ImGui::InputDouble("mm##efl", &state.lensTable.scaleTargetEflMm, 0, 0, "%.2f");
+    if (ImGui::Button("Scale") && state.lensEflMm > 0 && state.lensTable.scaleTargetEflMm > 0) {
+      state.requestEdit(ScaleLens{state.lensTable.scaleTargetEflMm / state.lensEflMm});
+      ImGui::CloseCurrentPopup();
+    }
+    if (!(state.lensEflMm > 0)) ImGui::TextDisabled("needs a valid lens with a positive EFL");
+    ImGui::EndMenu();
+  }
+}
+
+void viewMenu(ViewerState& state) {
+  ImGui::MenuItem("Log", nullptr, &state.showLog);
+  if (ImGui::MenuItem("Fit cross-section")) state.crossSectionNeedsFit = true;
+  if (ImGui::MenuItem("Reset layout")) state.settings.layout = LayoutFractions{};
+}
+
+}  // namespace
 
 float drawMainMenu(ViewerState& state) {
   float height = 0;
   if (!ImGui::BeginMainMenuBar()) return height;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Save window screenshot", "F12")) state.windowScreenshotRequested = true;
-    ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.quitRequested = true;
+    fileMenu(state);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    editMenu(state);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Lens")) {
-    ImGui::MenuItem("Lens library", nullptr, false, false);
+    lensMenu(state);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    ImGui::MenuItem("Log", nullptr, &state.showLog);
-    if (ImGui::MenuItem("Reset layout")) state.settings.layout = LayoutFractions{};
+    viewMenu(state);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -8,6 +8,8 @@ namespace lenslab::app {
 // Draws the main menu bar and returns its height in pixels.
 float drawMainMenu(ViewerState& state);
 void drawLensTablePanel(ViewerState& state, const Rect& rect);
+// The lens's first-order data, focus and aperture controls (inside the lens panel).
+void drawFirstOrderSection(ViewerState& state);
 void drawCrossSectionPanel(ViewerState& state, const Rect& rect);
 void drawRenderPreviewPanel(ViewerState& state, const Rect& rect);
 void drawLogPanel(ViewerState& state, const Rect& rect);

@@ -6,44 +6,47 @@ namespace lenslab::app {
 
 namespace {
 
-// An invisible, draggable strip; returns the mouse drag in pixels since the last frame.
+// A draggable strip in the gap between two panels; returns the mouse drag in pixels since the
+// last frame. Each strip is its own small window that covers only the gap: a window over the
+// whole screen would sit above the panels and take their clicks.
 ImVec2 splitter(const char* id, const Rect& rect, ImGuiMouseCursor cursor) {
   if (rect.width <= 0 || rect.height <= 0) return ImVec2(0, 0);
-  ImGui::SetCursorScreenPos(ImVec2(rect.x, rect.y));
-  ImGui::InvisibleButton(id, ImVec2(rect.width, rect.height));
+  ImGui::SetNextWindowPos(ImVec2(rect.x, rect.y));
+  ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height));
+  constexpr ImGuiWindowFlags kFlags =
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+      ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::Begin(id, nullptr, kFlags);
+  ImGui::PopStyleVar(3);
+  ImGui::InvisibleButton("strip", ImVec2(rect.width, rect.height));
   if (ImGui::IsItemHovered() || ImGui::IsItemActive()) ImGui::SetMouseCursor(cursor);
-  if (!ImGui::IsItemActive()) return ImVec2(0, 0);
-  return ImGui::GetIO().MouseDelta;
+  const ImVec2 drag = ImGui::IsItemActive() ? ImGui::GetIO().MouseDelta : ImVec2(0, 0);
+  ImGui::End();
+  return drag;
 }
 
 }  // namespace
 
-void drawSplitters(ViewerState& state, float windowWidth, float windowHeight) {
-  // A transparent full-window host for the splitter strips, drawn behind the panels.
-  ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(windowWidth, windowHeight));
-  constexpr ImGuiWindowFlags kFlags =
-      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
-      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
-      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  ImGui::Begin("##splitters", nullptr, kFlags);
-  ImGui::PopStyleVar();
+void drawSplitters(ViewerState& state, float windowWidth, float /*windowHeight*/) {
   LayoutFractions& fractions = state.settings.layout;
   const PanelLayout& layout = state.layout;
-  const float upperHeight = layout.lensTable.height;
-  const float usableHeight = upperHeight + layout.bottomSplitter.height + layout.log.height;
+  const float usableHeight =
+      layout.lensTable.height + layout.bottomSplitter.height + layout.log.height;
   if (windowWidth > 0) {
     fractions.lensTableWidth +=
-        splitter("##left", layout.leftSplitter, ImGuiMouseCursor_ResizeEW).x / windowWidth;
+        splitter("##split-left", layout.leftSplitter, ImGuiMouseCursor_ResizeEW).x / windowWidth;
     fractions.previewWidth -=
-        splitter("##right", layout.rightSplitter, ImGuiMouseCursor_ResizeEW).x / windowWidth;
+        splitter("##split-right", layout.rightSplitter, ImGuiMouseCursor_ResizeEW).x / windowWidth;
   }
   if (state.showLog && usableHeight > 0) {
     fractions.logHeight -=
-        splitter("##bottom", layout.bottomSplitter, ImGuiMouseCursor_ResizeNS).y / usableHeight;
+        splitter("##split-bottom", layout.bottomSplitter, ImGuiMouseCursor_ResizeNS).y /
+        usableHeight;
   }
-  ImGui::End();
 }
 
 }  // namespace lenslab::app

@@ -1,0 +1,110 @@
+#include "app/cross_section_drawing.h"
+
+#include <algorithm>
+#include <iterator>
+
+namespace lenslab::app {
+
+void BoundsMm::include(const optics::OutlinePoint& point) {
+  if (!hasPoints) {
+    minZ = maxZ = point.zMm;
+    minY = maxY = point.yMm;
+    hasPoints = true;
+    return;
+  }
+  minZ = std::min(minZ, point.zMm);
+  maxZ = std::max(maxZ, point.zMm);
+  minY = std::min(minY, point.yMm);
+  maxY = std::max(maxY, point.yMm);
+}
+
+CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalfDiagonalMm) {
+  CrossSectionDrawing drawing;
+  BoundsMm& bounds = drawing.bounds;
+  bounds.include({0.0, -filmHalfDiagonalMm});
+  bounds.include({0.0, filmHalfDiagonalMm});
+
+  for (const optics::ElementOutline& element : outline.elements) {
+    FilledQuads fill;
+    fill.colour = palette::kGlassFill;
+    for (std::size_t k = 0; k + 1 < element.front.size(); ++k) {
+      fill.corners.insert(fill.corners.end(), {element.front[k], element.front[k + 1],
+                                               element.rear[k + 1], element.rear[k]});
+    }
+    drawing.fills.push_back(std::move(fill));
+    Polyline edge;
+    edge.points = element.polygon();
+    edge.colour = palette::kGlassEdge;
+    edge.widthPx = 1.5f;
+    edge.closed = true;
+    for (const auto& point : edge.points) bounds.include(point);
+    drawing.lines.push_back(std::move(edge));
+  }
+
+  if (outline.stop) {
+    const optics::StopOutline& stop = *outline.stop;
+    for (double sign : {1.0, -1.0}) {
+      Polyline bar;
+      bar.points = {{stop.zMm, sign * stop.apertureRadiusMm}, {stop.zMm, sign * stop.outerRadiusMm}};
+      bar.colour = palette::kStop;
+      bar.widthPx = 3.0f;
+      bounds.include(bar.points[1]);
+      drawing.lines.push_back(std::move(bar));
+    }
+  }
+
+  // The axis runs a little beyond the lens and the film on both sides.
+  const double margin = 0.08 * std::max(1.0, bounds.maxZ - bounds.minZ);
+  Polyline axis;
+  axis.points = {{bounds.maxZ + margin, 0.0}, {bounds.minZ - margin, 0.0}};
+  axis.colour = palette::kAxis;
+  axis.dashed = true;
+  drawing.lines.push_back(std::move(axis));
+
+  Polyline film;
+  film.points = {{0.0, -filmHalfDiagonalMm}, {0.0, filmHalfDiagonalMm}};
+  film.colour = palette::kFilm;
+  film.widthPx = 2.0f;
+  drawing.lines.push_back(std::move(film));
+  return drawing;
+}
+
+}  // namespace lenslab::app
+
+namespace lenslab::app {
+
+namespace {
+
+Polyline rayLine(const optics::FanRay& ray, Colour colour, float width) {
+  Polyline line;
+  for (const glm::dvec3& point : ray.path.points) line.points.push_back({point.z, point.y});
+  if (ray.filmPoint) line.points.push_back({ray.filmPoint->z, ray.filmPoint->y});
+  line.colour = colour;
+  line.widthPx = width;
+  return line;
+}
+
+}  // namespace
+
+void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked) {
+  constexpr std::size_t kColours = std::size(palette::kFieldColours);
+  for (std::size_t f = 0; f < fans.fans.size(); ++f) {
+    const optics::RayFan& fan = fans.fans[f];
+    const Colour colour = palette::kFieldColours[f % kColours];
+    for (const optics::FanRay& ray : fan.rays) {
+      const bool passed = ray.filmPoint.has_value();
+      if (!passed && !showBlocked) continue;
+      Colour shade = colour;
+      if (!passed) shade.a = 110;
+      drawing.lines.push_back(rayLine(ray, shade, 1.0f));
+    }
+    if (fan.chief) {
+      Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f);
+      chief.dashed = true;
+      drawing.lines.push_back(std::move(chief));
+    }
+  }
+  if (fans.marginal) drawing.lines.push_back(rayLine(*fans.marginal, palette::kMarginalRay, 1.6f));
+}
+
+}  // namespace lenslab::app

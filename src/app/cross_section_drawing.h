@@ -1,0 +1,65 @@
+#pragma once
+// What the cross-section shows, as plain primitives in lens millimetres: the panel maps them to
+// pixels with ImGui, and the SVG export writes the same primitives, so the slide and the screen
+// never disagree. No ImGui here, so it is unit-tested.
+
+#include <cstdint>
+#include <vector>
+
+#include "optics/lens_outline.h"
+#include "optics/ray_fan.h"
+
+namespace lenslab::app {
+
+struct Colour {
+  std::uint8_t r = 0, g = 0, b = 0, a = 255;
+};
+
+// Points are (z, y) in the lens frame: z along the axis (film at 0, object side positive).
+struct Polyline {
+  std::vector<optics::OutlinePoint> points;
+  Colour colour;
+  float widthPx = 1.0f;
+  bool closed = false;
+  bool dashed = false;
+};
+
+struct FilledQuads {
+  std::vector<optics::OutlinePoint> corners;  // four per quad
+  Colour colour;
+};
+
+struct BoundsMm {
+  double minZ = 0, maxZ = 0, minY = 0, maxY = 0;
+  bool hasPoints = false;
+  void include(const optics::OutlinePoint& point);
+};
+
+struct CrossSectionDrawing {
+  std::vector<FilledQuads> fills;  // drawn first
+  std::vector<Polyline> lines;     // then outlines, stop, axis, film and rays
+  BoundsMm bounds;                 // of the lens, the stop and the film
+};
+
+namespace palette {
+inline constexpr Colour kBackground{18, 20, 26, 255};
+inline constexpr Colour kGlassFill{92, 140, 200, 90};
+inline constexpr Colour kGlassEdge{170, 200, 240, 255};
+inline constexpr Colour kStop{235, 200, 80, 255};
+inline constexpr Colour kAxis{110, 110, 120, 255};
+inline constexpr Colour kFilm{240, 240, 240, 255};
+// One colour per field position: on axis, 0.7 field, full field (and more if asked).
+inline constexpr Colour kFieldColours[] = {
+    {80, 220, 120, 255}, {250, 180, 60, 255}, {235, 90, 200, 255}, {90, 170, 255, 255}};
+inline constexpr Colour kChiefRay{255, 255, 255, 255};
+inline constexpr Colour kMarginalRay{90, 230, 240, 255};
+}  // namespace palette
+
+// filmHalfDiagonalMm: half the film diagonal, drawn as the film plane's extent.
+CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalfDiagonalMm);
+
+// Adds the fans' rays: each ends at the film, or at the surface that blocked it (blocked rays are
+// fainter, and left out when showBlocked is false). Chief rays dashed, the marginal ray cyan.
+void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked);
+
+}  // namespace lenslab::app

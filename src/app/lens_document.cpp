@@ -1,0 +1,224 @@
+#include "app/lens_document.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace lenslab::app {
+
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+double& fieldOf(optics::Surface& surface, SurfaceField field, double& scratch) {
+  switch (field) {
+    case SurfaceField::RadiusMm: return surface.radiusMm;
+    case SurfaceField::ThicknessMm: return surface.thicknessMm;
+    case SurfaceField::IndexD: return surface.indexD;
+    case SurfaceField::ApertureDiameterMm: return surface.apertureDiameterMm;
+    case SurfaceField::AbbeD: break;
+  }
+  return scratch;
+}
+
+std::string surfaceOutOfRange(std::size_t surface, std::size_t count) {
+  std::ostringstream message;
+  message << "surface " << surface + 1 << " does not exist (the lens has " << count
+          << " surfaces)";
+  return message.str();
+}
+
+}  // namespace
+
+std::optional<SurfaceField> surfaceFieldFromName(const std::string& name) {
+  if (name == "radius") return SurfaceField::RadiusMm;
+  if (name == "thickness") return SurfaceField::ThicknessMm;
+  if (name == "n" || name == "nd") return SurfaceField::IndexD;
+  if (name == "abbe" || name == "vd") return SurfaceField::AbbeD;
+  if (name == "aperture") return SurfaceField::ApertureDiameterMm;
+  return std::nullopt;
+}
+
+const char* surfaceFieldName(SurfaceField field) {
+  switch (field) {
+    case SurfaceField::RadiusMm: return "radius";
+    case SurfaceField::ThicknessMm: return "thickness";
+    case SurfaceField::IndexD: return "n_d";
+    case SurfaceField::AbbeD: return "V_d";
+    case SurfaceField::ApertureDiameterMm: return "aperture";
+  }
+  return "?";
+}
+
+std::string describe(const EditCommand& command) {
+  std::ostringstream text;
+  std::visit(Overloaded{
+                 [&](const SetSurfaceField& c) {
+                   text << "set " << surfaceFieldName(c.field) << " of surface " << c.surface + 1
+                        << " to " << c.value;
+                 },
+                 [&](const MakeStop& c) { text << "make surface " << c.surface + 1 << " the stop"; },
+                 [&](const InsertSurface& c) { text << "insert a surface at " << c.before + 1; },
+                 [&](const DeleteSurface& c) { text << "delete surface " << c.surface + 1; },
+                 [&](const MoveSurface& c) {
+                   text << "move surface " << c.from + 1 << " to " << c.to + 1;
+                 },
+                 [&](const FlipLens&) { text << "flip the lens"; },
+                 [&](const ScaleLens& c) { text << "scale the lens by " << c.factor; },
+                 [&](const SetFilmDistance& c) { text << "set film distance to " << c.mm << " mm"; },
+                 [&](const SetStopDiameter& c) { text << "set stop diameter to " << c.mm << " mm"; },
+                 [&](const ReplaceLens& c) {
+                   text << "open " << (c.path.empty() ? std::string("a new lens") : c.path);
+                 },
+             },
+             command);
+  return text.str();
+}
+
+LensDocument::LensDocument(optics::Prescription prescription, std::string path)
+    : current_(std::move(prescription)), path_(std::move(path)) {}
+
+std::optional<std::string> LensDocument::apply(const EditCommand& command,
+                                               const std::string& mergeKey) {
+  optics::Prescription next = current_;
+  std::string nextPath = path_;
+  std::vector<optics::Surface>& surfaces = next.surfaces;
+  const std::size_t count = surfaces.size();
+  std::optional<std::string> refusal;
+  std::visit(
+      Overloaded{
+          [&](const SetSurfaceField& c) {
+            if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
+            optics::Surface& surface = surfaces[c.surface];
+            if (c.field == SurfaceField::AbbeD) {
+              surface.abbeD = std::isnan(c.value) ? std::nullopt : std::optional(c.value);
+              return;
+            }
+            double scratch = 0;
+            fieldOf(surface, c.field, scratch) = c.value;
+          },
+          [&](const MakeStop& c) {
+            if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
+            surfaces[c.surface].radiusMm = 0.0;
+            surfaces[c.surface].indexD = 1.0;
+            surfaces[c.surface].abbeD.reset();
+          },
+          [&](const InsertSurface& c) {
+            if (c.before > count) return void(refusal = surfaceOutOfRange(c.before, count));
+            surfaces.insert(surfaces.begin() + static_cast<std::ptrdiff_t>(c.before), c.surface);
+          },
+          [&](const DeleteSurface& c) {
+            if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
+            if (count == 1) return void(refusal = std::string("cannot delete the only surface"));
+            surfaces.erase(surfaces.begin() + static_cast<std::ptrdiff_t>(c.surface));
+          },
+          [&](const MoveSurface& c) {
+            if (c.from >= count) return void(refusal = surfaceOutOfRange(c.from, count));
+            if (c.to >= count) return void(refusal = surfaceOutOfRange(c.to, count));
+            const optics::Surface moving = surfaces[c.from];
+            surfaces.erase(surfaces.begin() + static_cast<std::ptrdiff_t>(c.from));
+            surfaces.insert(surfaces.begin() + static_cast<std::ptrdiff_t>(c.to), moving);
+          },
+          [&](const FlipLens&) { next = flipped(next); },
+          [&](const ScaleLens& c) {
+            if (!(c.factor > 0) || !std::isfinite(c.factor)) {
+              return void(refusal = std::string("the scale factor must be positive"));
+            }
+            next = scaled(next, c.factor);
+          },
+          [&](const SetFilmDistance& c) {
+            if (count == 0) return void(refusal = std::string("the lens has no surfaces"));
+            surfaces.back().thicknessMm = c.mm;
+          },
+          [&](const SetStopDiameter& c) {
+            const auto stop = std::find_if(surfaces.begin(), surfaces.end(),
+                                           [](const optics::Surface& s) { return s.isStop(); });
+            if (stop == surfaces.end()) return void(refusal = std::string("the lens has no stop"));
+            stop->apertureDiameterMm = c.mm;
+          },
+          [&](const ReplaceLens& c) {
+            next = c.prescription;
+            nextPath = c.path;
+          },
+      },
+      command);
+  if (refusal) return refusal;
+
+  const bool merges = !mergeKey.empty() && mergeKey == lastMergeKey_ && !undo_.empty();
+  if (!merges) {
+    undo_.push_back({current_, path_});
+    if (undo_.size() > kMaxUndoSteps) undo_.erase(undo_.begin());
+  }
+  lastMergeKey_ = mergeKey;
+  redo_.clear();
+  current_ = std::move(next);
+  path_ = std::move(nextPath);
+  ++generation_;
+  return std::nullopt;
+}
+
+bool LensDocument::undo() {
+  if (undo_.empty()) return false;
+  redo_.push_back({current_, path_});
+  current_ = std::move(undo_.back().prescription);
+  path_ = std::move(undo_.back().path);
+  undo_.pop_back();
+  lastMergeKey_.clear();
+  ++generation_;
+  return true;
+}
+
+bool LensDocument::redo() {
+  if (redo_.empty()) return false;
+  undo_.push_back({current_, path_});
+  current_ = std::move(redo_.back().prescription);
+  path_ = std::move(redo_.back().path);
+  redo_.pop_back();
+  lastMergeKey_.clear();
+  ++generation_;
+  return true;
+}
+
+optics::Prescription flipped(const optics::Prescription& lens) {
+  // Reversing the order swaps which medium follows each surface and the sign of every radius
+  // (a centre of curvature toward the film is now toward the object). The gap after new surface
+  // j is the gap before old surface n-1-j. The object side is taken to be air; the film distance
+  // stays where it was, so the user refocuses after flipping.
+  const std::vector<optics::Surface>& old = lens.surfaces;
+  const std::size_t n = old.size();
+  optics::Prescription result;
+  result.surfaces.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t i = n - 1 - j;
+    optics::Surface& surface = result.surfaces[j];
+    surface = old[i];
+    surface.radiusMm = -old[i].radiusMm;
+    if (i > 0) {
+      surface.thicknessMm = old[i - 1].thicknessMm;
+      surface.indexD = old[i - 1].indexD;
+      surface.abbeD = old[i - 1].abbeD;
+    } else {
+      surface.thicknessMm = n > 0 ? old[n - 1].thicknessMm : 0.0;
+      surface.indexD = 1.0;
+      surface.abbeD.reset();
+    }
+  }
+  return result;
+}
+
+optics::Prescription scaled(const optics::Prescription& lens, double factor) {
+  optics::Prescription result = lens;
+  for (optics::Surface& surface : result.surfaces) {
+    surface.radiusMm *= factor;
+    surface.thicknessMm *= factor;
+    surface.apertureDiameterMm *= factor;
+  }
+  return result;
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,106 @@
+#pragma once
+// The lens being edited. Every change is an explicit command (set the radius of surface 3 to
+// 40 mm, flip the lens, ...) applied to the prescription, recorded for undo and counted by a
+// generation number that the viewer watches to rebuild the optics and restart the render.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "optics/prescription.h"
+
+namespace lenslab::app {
+
+enum class SurfaceField { RadiusMm, ThicknessMm, IndexD, AbbeD, ApertureDiameterMm };
+
+// Parses "radius", "thickness", "n", "nd", "abbe", "vd", "aperture"; nullopt otherwise.
+std::optional<SurfaceField> surfaceFieldFromName(const std::string& name);
+const char* surfaceFieldName(SurfaceField field);
+
+struct SetSurfaceField {
+  std::size_t surface;
+  SurfaceField field;
+  double value;  // for AbbeD, NaN clears it (non-dispersive)
+};
+struct MakeStop {
+  std::size_t surface;  // becomes the aperture stop (radius 0, air after it)
+};
+struct InsertSurface {
+  std::size_t before;  // == size() appends
+  optics::Surface surface;
+};
+struct DeleteSurface {
+  std::size_t surface;
+};
+struct MoveSurface {
+  std::size_t from, to;
+};
+struct FlipLens {};
+struct ScaleLens {
+  double factor;  // every length (radii, thicknesses, apertures, film distance)
+};
+struct SetFilmDistance {
+  double mm;
+};
+struct SetStopDiameter {
+  double mm;
+};
+struct ReplaceLens {
+  optics::Prescription prescription;
+  std::string path;  // where it came from; empty for an unsaved lens
+};
+
+using EditCommand = std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface,
+                                 MoveSurface, FlipLens, ScaleLens, SetFilmDistance,
+                                 SetStopDiameter, ReplaceLens>;
+
+// What a command does, in words, for the log and the Edit menu ("set radius of surface 3").
+std::string describe(const EditCommand& command);
+
+class LensDocument {
+ public:
+  LensDocument() = default;
+  explicit LensDocument(optics::Prescription prescription, std::string path = {});
+
+  const optics::Prescription& prescription() const { return current_; }
+  const std::string& path() const { return path_; }
+  // Bumped by every change, undo and redo included.
+  std::uint64_t generation() const { return generation_; }
+
+  // Applies a command. Commands that name a surface that does not exist (or would leave no
+  // surface) are refused with a message and change nothing. Values are not range-checked here:
+  // an invalid lens is allowed while editing and flagged by validation.
+  //
+  // `mergeKey`: consecutive commands with the same non-empty key (a slider being dragged)
+  // become one undo step.
+  std::optional<std::string> apply(const EditCommand& command, const std::string& mergeKey = {});
+
+  bool canUndo() const { return !undo_.empty(); }
+  bool canRedo() const { return !redo_.empty(); }
+  bool undo();
+  bool redo();
+  // Ends the current merge group, so the next command starts a new undo step.
+  void endMerge() { lastMergeKey_.clear(); }
+  void markSaved(std::string path) { path_ = std::move(path); }
+
+ private:
+  struct Snapshot {
+    optics::Prescription prescription;
+    std::string path;
+  };
+  static constexpr std::size_t kMaxUndoSteps = 500;
+
+  optics::Prescription current_;
+  std::string path_;
+  std::vector<Snapshot> undo_, redo_;
+  std::string lastMergeKey_;
+  std::uint64_t generation_ = 0;
+};
+
+// Pure transformations, also used by the commands.
+optics::Prescription flipped(const optics::Prescription& lens);
+optics::Prescription scaled(const optics::Prescription& lens, double factor);
+
+}  // namespace lenslab::app

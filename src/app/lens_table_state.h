@@ -1,0 +1,24 @@
+#pragma once
+// The lens table's own UI state: which row is selected, which cell is being typed into.
+
+#include <string>
+#include <vector>
+
+namespace lenslab::app {
+
+// A validation problem as the table shows it: the row (0-based surface, -1 for the whole lens).
+struct LensProblem {
+  int surface = -1;
+  std::string message;
+};
+
+struct LensTableState {
+  int selectedRow = -1;
+  // The cell being edited ("3/radius") and its text. ImGui keeps the text of the active field
+  // itself; this copy is what is committed when the field loses focus or Enter is pressed.
+  std::string editingCell;
+  char editText[64] = {};
+  double scaleTargetEflMm = 50.0;
+};
+
+}  // namespace lenslab::app

@@ -1,0 +1,44 @@
+#pragma once
+// A small in-app file browser (Dear ImGui has no native dialog): a non-modal window listing a
+// directory, filtered by extension, for opening and saving lenses, scenes and pictures.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lenslab::app {
+
+class FileBrowser {
+ public:
+  enum class Mode { Open, Save };
+
+  // Shows the browser. `extensions` like {".dat"}; empty shows every file.
+  void show(std::string purpose, Mode mode, std::vector<std::string> extensions,
+            const std::filesystem::path& startDirectory, std::string suggestedName = {});
+  bool visible() const { return visible_; }
+  const std::string& purpose() const { return purpose_; }
+
+  // Draws the window when visible; returns the chosen path once, when the user confirms.
+  std::optional<std::filesystem::path> draw();
+
+ private:
+  struct Entry {
+    std::string name;
+    bool isDirectory = false;
+  };
+  void readDirectory();
+  bool matchesFilter(const std::filesystem::path& path) const;
+
+  bool visible_ = false;
+  std::string purpose_;
+  Mode mode_ = Mode::Open;
+  std::vector<std::string> extensions_;
+  std::filesystem::path directory_;
+  std::vector<Entry> entries_;
+  std::string listingError_;
+  char nameBuffer_[512] = {};
+  char directoryBuffer_[1024] = {};
+};
+
+}  // namespace lenslab::app

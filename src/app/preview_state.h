@@ -1,0 +1,25 @@
+#pragma once
+// What the render preview panel shows and what the user asked of it. The viewer fills the
+// figures from the renderer's snapshots; the panel turns clicks and sliders into requests.
+
+#include <optional>
+#include <string>
+
+#include "app/preview_texture.h"
+
+namespace lenslab::app {
+
+struct PreviewState {
+  PreviewTexture texture;
+  int imageWidth = 0, imageHeight = 0;  // of the full-resolution render
+  int samplesPerPixel = 0;
+  double raysPerSecond = 0;
+  double seconds = 0;
+  bool rendering = false;
+  bool reducedResolution = false;  // a value is being dragged
+  std::string status;              // why there is no picture, or which lens it shows
+  // A click on the image, in image pixels (x right, y down), to focus on. Consumed by the viewer.
+  std::optional<std::pair<double, double>> focusClick;
+};
+
+}  // namespace lenslab::app

@@ -1,0 +1,267 @@
+#include "app/script.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace lenslab::app {
+
+namespace {
+
+struct VerbShape {
+  std::size_t minArguments, maxArguments;
+};
+
+// Argument counts per verb; "set" is checked further by its own rules below.
+const std::map<std::string, VerbShape>& verbs() {
+  static const std::map<std::string, VerbShape> table = {
+      {"load-lens", {1, 1}},      {"load-scene", {1, 1}},
+      {"save-lens", {1, 1}},      {"set", {2, 4}},
+      {"make-stop", {1, 1}},      {"flip", {0, 0}},
+      {"undo", {0, 0}},           {"redo", {0, 0}},
+      {"wait-frames", {1, 1}},    {"wait-spp", {1, 1}},
+      {"wait-until-file", {1, 1}}, {"screenshot", {1, 1}},
+      {"screenshot-render", {1, 1}}, {"screenshot-cross-section", {1, 1}},
+      {"dump-ui", {1, 1}},        {"quit", {0, 1}},
+  };
+  return table;
+}
+
+std::optional<double> parseNumber(const std::string& text) {
+  if (text == "none") return std::nan("");
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || text.empty() || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<long> parseInteger(const std::string& text) {
+  long value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || text.empty()) return std::nullopt;
+  return value;
+}
+
+// Checks a "set" command's shape; returns an error naming the offending argument.
+std::optional<std::string> checkSet(const ScriptCommand& command) {
+  const auto& a = command.arguments;
+  const auto numberAt = [&](std::size_t i) -> std::optional<std::string> {
+    if (i >= a.size()) return command.where(a.size() - 1) + ": expected a value after it";
+    if (!parseNumber(a[i])) return command.where(i) + ": '" + a[i] + "' is not a number";
+    return std::nullopt;
+  };
+  if (a[0] == "surface") {
+    if (a.size() != 4) {
+      return command.where(0) + ": expected: set surface N FIELD VALUE";
+    }
+    const auto index = parseInteger(a[1]);
+    if (!index || *index < 1) return command.where(1) + ": '" + a[1] + "' is not a surface number (1, 2, ...)";
+    if (!surfaceFieldFromName(a[2])) {
+      return command.where(2) + ": unknown field '" + a[2] +
+             "' (expected radius, thickness, n, abbe or aperture)";
+    }
+    return numberAt(3);
+  }
+  if (a[0] == "film-distance" || a[0] == "stop-diameter" || a[0] == "exposure") {
+    if (a.size() != 2) return command.where(0) + ": expected: set " + a[0] + " VALUE";
+    return numberAt(1);
+  }
+  if (a[0] == "camera") {
+    if (a.size() != 2 || (a[1] != "lens" && a[1] != "pinhole")) {
+      return command.where(0) + ": expected: set camera lens|pinhole";
+    }
+    return std::nullopt;
+  }
+  return command.where(0) + ": unknown setting '" + a[0] +
+         "' (expected surface, film-distance, stop-diameter, exposure or camera)";
+}
+
+std::optional<std::string> checkShape(const ScriptCommand& command) {
+  const auto shape = verbs().find(command.verb);
+  if (shape == verbs().end()) {
+    return command.file + ":" + std::to_string(command.line) + ":1: unknown command '" +
+           command.verb + "'";
+  }
+  const std::size_t count = command.arguments.size();
+  if (count < shape->second.minArguments || count > shape->second.maxArguments) {
+    std::ostringstream message;
+    message << command.file << ":" << command.line << ":1: '" << command.verb << "' takes ";
+    if (shape->second.minArguments == shape->second.maxArguments) {
+      message << shape->second.minArguments;
+    } else {
+      message << shape->second.minArguments << " to " << shape->second.maxArguments;
+    }
+    message << " argument(s), got " << count;
+    return message.str();
+  }
+  if (command.verb == "set") return checkSet(command);
+  const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
+                             command.verb == "make-stop" || command.verb == "quit";
+  if (countArgument && count == 1) {
+    const auto value = parseInteger(command.arguments[0]);
+    if (!value || *value < 0) {
+      return command.where(0) + ": '" + command.arguments[0] + "' is not a non-negative integer";
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string ScriptCommand::where(std::size_t argument) const {
+  const int column = argument < argumentColumns.size() ? argumentColumns[argument] : 1;
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+
+ParsedScript parseScript(const std::string& text, const std::string& fileName) {
+  ParsedScript script;
+  std::istringstream lines(text);
+  std::string line;
+  for (int lineNumber = 1; std::getline(lines, line); ++lineNumber) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    ScriptCommand command;
+    command.file = fileName;
+    command.line = lineNumber;
+    std::size_t position = 0;
+    while (true) {
+      position = line.find_first_not_of(" \t", position);
+      if (position == std::string::npos) break;
+      const std::size_t end = line.find_first_of(" \t", position);
+      std::string word = line.substr(position, end - position);
+      if (command.verb.empty()) {
+        command.verb = std::move(word);
+      } else {
+        command.arguments.push_back(std::move(word));
+        command.argumentColumns.push_back(static_cast<int>(position) + 1);
+      }
+      if (end == std::string::npos) break;
+      position = end;
+    }
+    if (command.verb.empty()) continue;
+    if (const auto error = checkShape(command)) {
+      script.errors.push_back(*error);
+    } else {
+      script.commands.push_back(std::move(command));
+    }
+  }
+  return script;
+}
+
+ParsedScript readScriptFile(const std::filesystem::path& path) {
+  std::ifstream input(path, std::ios::binary);
+  if (!input) {
+    ParsedScript script;
+    script.errors.push_back(path.string() + ":1:1: cannot open the script");
+    return script;
+  }
+  std::ostringstream text;
+  text << input.rdbuf();
+  return parseScript(text.str(), path.string());
+}
+
+void ScriptRunner::fail(ScriptHost& host, const std::string& message) {
+  failed_ = true;
+  next_ = commands_.size();
+  host.reportError(message);
+  host.quit(1);
+}
+
+bool ScriptRunner::step(ScriptHost& host) {
+  changedThisStep_ = false;
+  while (next_ < commands_.size()) {
+    const ScriptCommand& command = commands_[next_];
+    if (!execute(command, host)) {
+      // Waiting: try again next frame, unless it has waited too long.
+      const auto now = std::chrono::steady_clock::now();
+      if (!waitStarted_) waitStarted_ = now;
+      if (now - *waitStarted_ > kWaitLimit) {
+        fail(host, command.where(0) + ": " + command.verb + ": timed out after " +
+                       std::to_string(kWaitLimit.count()) + " s");
+        return false;
+      }
+      return true;
+    }
+    if (failed_) return false;
+    ++next_;
+    framesWaited_ = 0;
+    waitStarted_.reset();
+  }
+  return false;
+}
+
+bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
+  const auto& a = command.arguments;
+  const auto check = [&](std::optional<std::string> error) {
+    if (error) fail(host, command.where(0) + ": " + command.verb + ": " + *error);
+    return true;
+  };
+  const std::string& verb = command.verb;
+  const bool isCapture = verb == "screenshot" || verb == "screenshot-render" ||
+                         verb == "screenshot-cross-section" || verb == "dump-ui";
+  if (isCapture && changedThisStep_) return false;  // let a frame show the change first
+  const bool isWait = verb.rfind("wait-", 0) == 0;
+  if (!isCapture && !isWait) changedThisStep_ = true;
+  if (verb == "load-lens") return check(host.loadLens(a[0]));
+  if (verb == "load-scene") return check(host.loadScene(a[0]));
+  if (verb == "save-lens") return check(host.saveLens(a[0]));
+  if (verb == "make-stop") {
+    return check(host.edit(MakeStop{static_cast<std::size_t>(*parseInteger(a[0]) - 1)}));
+  }
+  if (verb == "flip") return check(host.edit(FlipLens{}));
+  if (verb == "undo") {
+    if (!host.undo()) fail(host, command.where(0) + ": undo: nothing to undo");
+    return true;
+  }
+  if (verb == "redo") {
+    if (!host.redo()) fail(host, command.where(0) + ": redo: nothing to redo");
+    return true;
+  }
+  if (verb == "set") {
+    if (a[0] == "surface") {
+      const auto field = *surfaceFieldFromName(a[2]);
+      const std::size_t surface = static_cast<std::size_t>(*parseInteger(a[1]) - 1);
+      return check(host.edit(SetSurfaceField{surface, field, *parseNumber(a[3])}));
+    }
+    if (a[0] == "film-distance") return check(host.edit(SetFilmDistance{*parseNumber(a[1])}));
+    if (a[0] == "stop-diameter") return check(host.edit(SetStopDiameter{*parseNumber(a[1])}));
+    if (a[0] == "exposure") {
+      host.setExposure(*parseNumber(a[1]));
+      return true;
+    }
+    host.setPinholeCamera(a[1] == "pinhole");
+    return true;
+  }
+  if (verb == "wait-frames") {
+    // Counted from this command's first frame: "wait-frames 3" lets three frames be drawn.
+    return framesWaited_++ >= *parseInteger(a[0]);
+  }
+  if (verb == "wait-spp") {
+    const auto spp = host.previewSpp();
+    if (!spp) {
+      fail(host, command.where(0) + ": wait-spp: the preview cannot render (no valid lens or scene)");
+      return true;
+    }
+    return *spp >= *parseInteger(a[0]);
+  }
+  if (verb == "wait-until-file") return std::filesystem::exists(a[0]);
+  if (verb == "screenshot") return check(host.saveWindowScreenshot(a[0]));
+  if (verb == "screenshot-render") return check(host.saveRender(a[0]));
+  if (verb == "screenshot-cross-section") return check(host.saveCrossSection(a[0]));
+  if (verb == "dump-ui") return check(host.dumpUi(a[0]));
+  if (verb == "quit") {
+    host.quit(a.empty() ? 0 : static_cast<int>(*parseInteger(a[0])));
+    next_ = commands_.size();
+    return true;
+  }
+  fail(host, command.where(0) + ": unknown command '" + verb + "'");
+  return true;
+}
+
+}  // namespace lenslab::app

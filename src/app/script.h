@@ -1,0 +1,99 @@
+#pragma once
+// Scripted control of the real viewer (lenslab --script FILE), used by the GUI tests and for
+// reproducible screenshots. One command per line; '#' starts a comment; surfaces count from 1
+// as in the lens table.
+//
+//   load-lens FILE              load-scene FILE             save-lens FILE
+//   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
+//   set film-distance MM        set stop-diameter MM        set exposure STOPS
+//   set camera lens|pinhole     make-stop N                 flip
+//   undo                        redo
+//   wait-frames N               wait-spp N                  wait-until-file PATH
+//   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
+//   dump-ui FILE.json           quit [CODE]
+//
+// A wait that lasts longer than two minutes fails the script.
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "app/lens_document.h"
+
+namespace lenslab::app {
+
+struct ScriptCommand {
+  std::string file;
+  int line = 0;
+  std::string verb;
+  std::vector<std::string> arguments;
+  std::vector<int> argumentColumns;  // 1-based column of each argument, for error messages
+
+  std::string where(std::size_t argument) const;  // "file:line:column"
+};
+
+struct ParsedScript {
+  std::vector<ScriptCommand> commands;
+  std::vector<std::string> errors;  // "file:line:column: message"; empty when the script is good
+};
+
+ParsedScript parseScript(const std::string& text, const std::string& fileName);
+ParsedScript readScriptFile(const std::filesystem::path& path);
+
+// What a script may ask of the viewer. The viewer implements it; tests use a fake.
+class ScriptHost {
+ public:
+  virtual ~ScriptHost() = default;
+  // Each returns an error message, or nullopt on success.
+  virtual std::optional<std::string> loadLens(const std::string& path) = 0;
+  virtual std::optional<std::string> loadScene(const std::string& path) = 0;
+  virtual std::optional<std::string> saveLens(const std::string& path) = 0;
+  virtual std::optional<std::string> edit(const EditCommand& command) = 0;
+  virtual bool undo() = 0;
+  virtual bool redo() = 0;
+  virtual void setExposure(double stops) = 0;
+  virtual void setPinholeCamera(bool pinhole) = 0;
+  virtual std::optional<std::string> saveWindowScreenshot(const std::string& path) = 0;
+  virtual std::optional<std::string> saveRender(const std::string& path) = 0;
+  virtual std::optional<std::string> saveCrossSection(const std::string& path) = 0;
+  virtual std::optional<std::string> dumpUi(const std::string& path) = 0;
+  // Samples per pixel of the current preview, or nullopt when the renderer cannot get there
+  // (no valid lens, or no scene).
+  virtual std::optional<int> previewSpp() const = 0;
+  virtual void quit(int exitCode) = 0;
+  virtual void reportError(const std::string& message) = 0;
+};
+
+// Runs a parsed script a step per frame: it executes commands until one has to wait (for
+// frames, samples or a file) and then returns, so the UI keeps drawing.
+class ScriptRunner {
+ public:
+  explicit ScriptRunner(std::vector<ScriptCommand> commands) : commands_(std::move(commands)) {}
+  // Call once per frame after drawing. Returns false when the script has finished.
+  bool step(ScriptHost& host);
+  bool finished() const { return next_ >= commands_.size(); }
+  // Scripts fail on the first error: it is reported, and the viewer quits with exit code 1.
+  bool failed() const { return failed_; }
+
+ private:
+  // Returns true when the command is complete, false when it must be retried next frame.
+  bool execute(const ScriptCommand& command, ScriptHost& host);
+  void fail(ScriptHost& host, const std::string& message);
+
+  // A waiting command that has not finished after this long fails the script, so a test never
+  // hangs on a condition that will not come.
+  static constexpr std::chrono::seconds kWaitLimit{120};
+
+  std::vector<ScriptCommand> commands_;
+  std::size_t next_ = 0;
+  std::optional<std::chrono::steady_clock::time_point> waitStarted_;
+  // A screenshot after a change in the same step waits a frame, so it shows the change.
+  bool changedThisStep_ = false;
+  int framesWaited_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace lenslab::app

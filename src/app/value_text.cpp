@@ -1,0 +1,37 @@
+#include "app/value_text.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace lenslab::app {
+
+std::string formatFieldValue(SurfaceField field, double value) {
+  if (field == SurfaceField::AbbeD && std::isnan(value)) return "";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+ParsedValue parseFieldValue(SurfaceField field, const std::string& raw) {
+  const auto first = raw.find_first_not_of(" \t");
+  const auto last = raw.find_last_not_of(" \t");
+  const std::string text = first == std::string::npos ? "" : raw.substr(first, last - first + 1);
+  if (field == SurfaceField::AbbeD && (text.empty() || text == "-")) {
+    return {std::nan(""), {}};
+  }
+  if (field == SurfaceField::RadiusMm && (text == "inf" || text == "flat" || text == "-inf")) {
+    return {std::numeric_limits<double>::infinity(), {}};
+  }
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end || !std::isfinite(value)) {
+    return {std::nullopt, "'" + text + "' is not a number"};
+  }
+  return {value, {}};
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,79 @@
+#include "app/viewer_stats.h"
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+namespace lenslab::app {
+
+namespace {
+
+double percentile(std::vector<double> values, double fraction) {
+  if (values.empty()) return 0;
+  const std::size_t index = std::min(values.size() - 1,
+                                     static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
+  return values[index];
+}
+
+double milliseconds(ViewerStats::Clock::duration duration) {
+  return std::chrono::duration<double, std::milli>(duration).count();
+}
+
+}  // namespace
+
+void ViewerStats::frameDrawn(Clock::time_point now, bool rendering) {
+  if (lastFrame_ && rendering) renderingFrameMs_.push_back(milliseconds(now - *lastFrame_));
+  lastFrame_ = now;
+}
+
+void ViewerStats::editSubmitted(std::uint64_t generation, Clock::time_point now) {
+  // A burst of edits (a drag) counts from its last one: that is the picture the user waits for.
+  pendingEdit_ = {generation, now};
+}
+
+void ViewerStats::firstPassShown(std::uint64_t generation, Clock::time_point now) {
+  if (!pendingEdit_ || pendingEdit_->first != generation) return;
+  firstPassMs_.push_back(milliseconds(now - pendingEdit_->second));
+  pendingEdit_.reset();
+}
+
+ViewerStats::Summary ViewerStats::summary() const {
+  Summary summary;
+  summary.frames = renderingFrameMs_.size();
+  summary.frameMsMedian = percentile(renderingFrameMs_, 0.5);
+  summary.frameMsP95 = percentile(renderingFrameMs_, 0.95);
+  summary.framesPerSecondMedian = summary.frameMsMedian > 0 ? 1000.0 / summary.frameMsMedian : 0;
+  summary.edits = firstPassMs_.size();
+  summary.firstPassMsMedian = percentile(firstPassMs_, 0.5);
+  summary.firstPassMsMax =
+      firstPassMs_.empty() ? 0 : *std::max_element(firstPassMs_.begin(), firstPassMs_.end());
+  return summary;
+}
+
+std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
+  const Summary s = summary();
+  const nlohmann::json json = {
+      {"frames_while_rendering", s.frames},
+      {"frame_ms_median", s.frameMsMedian},
+      {"frame_ms_p95", s.frameMsP95},
+      {"fps_median", s.framesPerSecondMedian},
+      {"edits_measured", s.edits},
+      {"edit_to_first_pass_ms_median", s.firstPassMsMedian},
+      {"edit_to_first_pass_ms_max", s.firstPassMsMax},
+      {"edit_to_first_pass_ms", firstPassMs_},
+  };
+  std::filesystem::path temporary = path;
+  temporary += ".tmp-lenslab";
+  {
+    std::ofstream output(temporary, std::ios::trunc);
+    output << json.dump(2) << '\n';
+    if (!output) return "cannot write " + path.string();
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  return error ? "cannot write " + path.string() + ": " + error.message() : std::string();
+}
+
+}  // namespace lenslab::app

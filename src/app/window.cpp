@@ -1,0 +1,213 @@
+#include "app/window.h"
+
+#include <glad/gl.h>
+// glad must come before GLFW so GLFW does not pull in the system GL header.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <utility>
+
+namespace lenslab::app {
+
+namespace {
+
+// GLFW reports errors through a callback; the last one explains a failed call in one line.
+std::string& lastGlfwError() {
+  static std::string error;
+  return error;
+}
+
+void recordGlfwError(int /*code*/, const char* description) {
+  lastGlfwError() = description != nullptr ? description : "unknown GLFW error";
+}
+
+// The first TTF font of the list that exists; ImGui's built-in bitmap font otherwise.
+void loadFonts(float contentScale) {
+  ImGuiIO& io = ImGui::GetIO();
+  const float pixels = 15.0f * contentScale;
+  for (const char* candidate : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+                                "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
+    if (std::filesystem::exists(candidate) &&
+        io.Fonts->AddFontFromFileTTF(candidate, pixels) != nullptr) {
+      return;
+    }
+  }
+  ImFontConfig config;
+  config.SizePixels = 13.0f * contentScale;
+  io.Fonts->AddFontDefault(&config);
+}
+
+void applyStyle(float contentScale) {
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0.0f;
+  style.WindowBorderSize = 1.0f;
+  style.FrameRounding = 3.0f;
+  style.ScaleAllSizes(contentScale);
+}
+
+}  // namespace
+
+bool displayAvailable() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
+}
+
+std::unique_ptr<Window> Window::open(const Options& options, std::string* error) {
+  glfwSetErrorCallback(recordGlfwError);
+  if (!glfwInit()) {
+    *error = "cannot open the display (" + lastGlfwError() + ")";
+    return nullptr;
+  }
+  std::unique_ptr<Window> window(new Window);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  // In test mode the framebuffer must be exactly the requested size.
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, options.testMode ? GLFW_FALSE : GLFW_TRUE);
+  window->window_ = glfwCreateWindow(options.width, options.height, "lenslab", nullptr, nullptr);
+  if (window->window_ == nullptr) {
+    *error = "cannot create a GL 3.3 core window (" + lastGlfwError() + ")";
+    return nullptr;
+  }
+  glfwSetWindowUserPointer(window->window_, window.get());
+  glfwSetDropCallback(window->window_, onDrop);
+  // Installed before ImGui's backend, which chains to it.
+  glfwSetKeyCallback(window->window_, onKey);
+  glfwMakeContextCurrent(window->window_);
+  glfwSwapInterval(options.testMode ? 0 : 1);
+  if (gladLoadGL(glfwGetProcAddress) == 0) {
+    *error = "cannot load the OpenGL 3.3 functions";
+    return nullptr;
+  }
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the layout persists in settings.json, in the config directory
+  float scaleX = 1.0f, scaleY = 1.0f;
+  glfwGetWindowContentScale(window->window_, &scaleX, &scaleY);
+  window->contentScale_ = options.testMode ? 1.0f : std::max(1.0f, scaleX);
+  applyStyle(window->contentScale_);
+  loadFonts(window->contentScale_);
+  ImGui_ImplGlfw_InitForOpenGL(window->window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  window->imguiReady_ = true;
+  return window;
+}
+
+Window::~Window() {
+  if (imguiReady_) {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  if (window_ != nullptr) glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+void Window::onDrop(GLFWwindow* handle, int count, const char** paths) {
+  auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
+  for (int i = 0; i < count; ++i) window->dropped_.emplace_back(paths[i]);
+}
+
+void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, int mods) {
+  auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
+  if (action == GLFW_PRESS && key >= 0) window->pressedKeys_.push_back({key, mods});
+}
+
+// Dear ImGui 1.86 samples key state once per frame, so a key pressed and released between two
+// frames (a quick tap, or xdotool's "key Return") is never seen as pressed. Keep such a key down
+// for one frame, as ImGui 1.87's input queue would.
+void Window::holdTappedKeys() {
+  ImGuiIO& io = ImGui::GetIO();
+  constexpr int kKeyCount = static_cast<int>(IM_ARRAYSIZE(io.KeysDown));
+  if (!heldKeys_.empty()) {
+    for (int key : heldKeys_) {
+      if (key < kKeyCount && glfwGetKey(window_, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+    }
+    heldKeys_.clear();
+    // Back to the modifiers' real state.
+    const auto down = [&](int a, int b) {
+      return glfwGetKey(window_, a) == GLFW_PRESS || glfwGetKey(window_, b) == GLFW_PRESS;
+    };
+    io.KeyCtrl = down(GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL);
+    io.KeyShift = down(GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT);
+    io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
+  }
+  for (const KeyPress& press : pressedKeys_) {
+    if (press.key < kKeyCount && !io.KeysDown[press.key]) {
+      io.KeysDown[press.key] = true;
+      // The modifiers that were down with it (Ctrl+Z tapped quickly is still Ctrl+Z).
+      io.KeyCtrl |= (press.mods & GLFW_MOD_CONTROL) != 0;
+      io.KeyShift |= (press.mods & GLFW_MOD_SHIFT) != 0;
+      io.KeyAlt |= (press.mods & GLFW_MOD_ALT) != 0;
+      heldKeys_.push_back(press.key);
+    }
+  }
+  pressedKeys_.clear();
+}
+
+std::vector<std::string> Window::takeDroppedFiles() { return std::exchange(dropped_, {}); }
+
+bool Window::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
+
+void Window::waitEvents(double seconds) const {
+  if (seconds <= 0) {
+    glfwPollEvents();
+  } else {
+    glfwWaitEventsTimeout(seconds);
+  }
+}
+
+void Window::beginFrame() {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  holdTappedKeys();
+  ImGui::NewFrame();
+}
+
+void Window::renderFrame() {
+  ImGui::Render();
+  glViewport(0, 0, framebufferWidth(), framebufferHeight());
+  glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Window::swapBuffers() { glfwSwapBuffers(window_); }
+
+int Window::width() const {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  return w;
+}
+int Window::height() const {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  return h;
+}
+int Window::framebufferWidth() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return w;
+}
+int Window::framebufferHeight() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return h;
+}
+
+std::string Window::glVersion() const {
+  const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return version != nullptr ? version : "unknown";
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,108 @@
+#include "app/lens_document.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lenslab::app {
+namespace {
+
+optics::Prescription triplet() {
+  optics::Prescription lens;
+  lens.surfaces = {{40.0, 5.0, 1.6, 58.0, 30.0},
+                   {-200.0, 6.0, 1.0, std::nullopt, 30.0},
+                   {0.0, 4.0, 1.0, std::nullopt, 20.0},
+                   {-35.0, 2.0, 1.62, 36.0, 24.0},
+                   {35.0, 45.0, 1.0, std::nullopt, 24.0}};
+  return lens;
+}
+
+TEST(LensDocument, EditUndoRedo) {
+  LensDocument document(triplet());
+  const auto start = document.generation();
+  ASSERT_FALSE(document.apply(SetSurfaceField{0, SurfaceField::RadiusMm, 42.0}));
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[0].radiusMm, 42.0);
+  EXPECT_GT(document.generation(), start);
+  ASSERT_TRUE(document.undo());
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[0].radiusMm, 40.0);
+  ASSERT_TRUE(document.redo());
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[0].radiusMm, 42.0);
+  EXPECT_FALSE(document.redo());
+}
+
+TEST(LensDocument, DragStepsWithOneMergeKeyAreOneUndoStep) {
+  LensDocument document(triplet());
+  for (double film : {44.0, 43.0, 42.0}) document.apply(SetFilmDistance{film}, "film-drag");
+  document.endMerge();
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces.back().thicknessMm, 42.0);
+  ASSERT_TRUE(document.undo());
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces.back().thicknessMm, 45.0);
+  EXPECT_FALSE(document.canUndo());
+}
+
+TEST(LensDocument, RefusesMissingSurfacesWithoutChangingAnything) {
+  LensDocument document(triplet());
+  const auto generation = document.generation();
+  const auto refusal = document.apply(SetSurfaceField{9, SurfaceField::RadiusMm, 1.0});
+  ASSERT_TRUE(refusal.has_value());
+  EXPECT_NE(refusal->find("surface 10"), std::string::npos);
+  EXPECT_EQ(document.generation(), generation);
+  EXPECT_FALSE(document.canUndo());
+}
+
+TEST(LensDocument, InvalidValuesAreHeldForValidationToFlag) {
+  LensDocument document(triplet());
+  EXPECT_FALSE(document.apply(SetSurfaceField{1, SurfaceField::ThicknessMm, -3.0}));
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[1].thicknessMm, -3.0);
+}
+
+TEST(LensDocument, InsertDeleteMove) {
+  LensDocument document(triplet());
+  document.apply(InsertSurface{1, {100.0, 1.0, 1.5, std::nullopt, 10.0}});
+  EXPECT_EQ(document.prescription().surfaces.size(), 6u);
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[1].radiusMm, 100.0);
+  document.apply(MoveSurface{1, 4});
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[4].radiusMm, 100.0);
+  document.apply(DeleteSurface{4});
+  EXPECT_EQ(document.prescription().surfaces.size(), 5u);
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[4].radiusMm, 35.0);
+}
+
+TEST(LensDocument, AbbeNumberCanBeCleared) {
+  LensDocument document(triplet());
+  document.apply(SetSurfaceField{0, SurfaceField::AbbeD, std::nan("")});
+  EXPECT_FALSE(document.prescription().surfaces[0].abbeD.has_value());
+}
+
+TEST(Flip, ReversesSurfacesNegatesRadiiAndMovesMedia) {
+  const optics::Prescription lens = triplet();
+  const optics::Prescription flippedLens = flipped(lens);
+  ASSERT_EQ(flippedLens.surfaces.size(), 5u);
+  // New first surface is old last, radius negated, followed by the glass that preceded it.
+  EXPECT_DOUBLE_EQ(flippedLens.surfaces[0].radiusMm, -35.0);
+  EXPECT_DOUBLE_EQ(flippedLens.surfaces[0].indexD, 1.62);
+  EXPECT_DOUBLE_EQ(flippedLens.surfaces[0].thicknessMm, 2.0);
+  EXPECT_TRUE(flippedLens.surfaces[2].isStop());
+  // The new last surface (old first) faces the film through air at the old film distance.
+  EXPECT_DOUBLE_EQ(flippedLens.surfaces[4].radiusMm, -40.0);
+  EXPECT_DOUBLE_EQ(flippedLens.surfaces[4].indexD, 1.0);
+  EXPECT_DOUBLE_EQ(flippedLens.surfaces[4].thicknessMm, 45.0);
+  // Flipping twice restores the glass layout (film distance aside, which is kept).
+  const optics::Prescription twice = flipped(flippedLens);
+  for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+    EXPECT_DOUBLE_EQ(twice.surfaces[i].radiusMm, lens.surfaces[i].radiusMm);
+    EXPECT_DOUBLE_EQ(twice.surfaces[i].indexD, lens.surfaces[i].indexD);
+    EXPECT_DOUBLE_EQ(twice.surfaces[i].thicknessMm, lens.surfaces[i].thicknessMm);
+  }
+}
+
+TEST(Scale, ScalesEveryLength) {
+  const optics::Prescription doubled = scaled(triplet(), 2.0);
+  EXPECT_DOUBLE_EQ(doubled.surfaces[0].radiusMm, 80.0);
+  EXPECT_DOUBLE_EQ(doubled.surfaces[4].thicknessMm, 90.0);
+  EXPECT_DOUBLE_EQ(doubled.surfaces[2].apertureDiameterMm, 40.0);
+  EXPECT_DOUBLE_EQ(doubled.surfaces[0].indexD, 1.6);
+}
+
+}  // namespace
+}  // namespace lenslab::app

@@ -1,0 +1,148 @@
+#include "app/script.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lenslab::app {
+namespace {
+
+class FakeHost : public ScriptHost {
+ public:
+  std::optional<std::string> loadLens(const std::string& path) override {
+    calls.push_back("load-lens " + path);
+    if (path == "broken.dat") return std::string("broken.dat:3:7: not a number");
+    return std::nullopt;
+  }
+  std::optional<std::string> loadScene(const std::string& path) override {
+    calls.push_back("load-scene " + path);
+    return std::nullopt;
+  }
+  std::optional<std::string> saveLens(const std::string& path) override {
+    calls.push_back("save-lens " + path);
+    return std::nullopt;
+  }
+  std::optional<std::string> edit(const EditCommand& command) override {
+    calls.push_back(describe(command));
+    return document.apply(command);
+  }
+  bool undo() override { calls.push_back("undo"); return document.undo(); }
+  bool redo() override { calls.push_back("redo"); return document.redo(); }
+  void setExposure(double stops) override { exposure = stops; }
+  void setPinholeCamera(bool usePinhole) override { pinhole = usePinhole; }
+  std::optional<std::string> saveWindowScreenshot(const std::string& path) override {
+    calls.push_back("screenshot " + path);
+    return std::nullopt;
+  }
+  std::optional<std::string> saveRender(const std::string& path) override {
+    calls.push_back("render " + path);
+    return std::nullopt;
+  }
+  std::optional<std::string> saveCrossSection(const std::string& path) override {
+    calls.push_back("cross-section " + path);
+    return std::nullopt;
+  }
+  std::optional<std::string> dumpUi(const std::string&) override { return std::nullopt; }
+  std::optional<int> previewSpp() const override { return spp; }
+  void quit(int code) override { exitCode = code; }
+  void reportError(const std::string& message) override { errors.push_back(message); }
+
+  LensDocument document{optics::Prescription{{{40.0, 5.0, 1.5, std::nullopt, 20.0},
+                                              {0.0, 5.0, 1.0, std::nullopt, 10.0},
+                                              {-40.0, 40.0, 1.0, std::nullopt, 20.0}}}};
+  std::vector<std::string> calls, errors;
+  std::optional<int> exitCode;
+  std::optional<int> spp = 0;
+  double exposure = 0;
+  bool pinhole = false;
+};
+
+TEST(ScriptParse, ReportsFileLineColumnForEachBadLine) {
+  const ParsedScript script = parseScript(
+      "load-lens a.dat\n"
+      "set surface x radius 40\n"
+      "set surface 2 colour 3\n"
+      "frobnicate\n"
+      "set film-distance abc\n"
+      "wait-spp\n",
+      "t.script");
+  ASSERT_EQ(script.errors.size(), 5u);
+  EXPECT_EQ(script.errors[0].rfind("t.script:2:13:", 0), 0u) << script.errors[0];
+  EXPECT_EQ(script.errors[1].rfind("t.script:3:15:", 0), 0u) << script.errors[1];
+  EXPECT_EQ(script.errors[2].rfind("t.script:4:1:", 0), 0u) << script.errors[2];
+  EXPECT_EQ(script.errors[3].rfind("t.script:5:19:", 0), 0u) << script.errors[3];
+  EXPECT_EQ(script.errors[4].rfind("t.script:6:1:", 0), 0u) << script.errors[4];
+}
+
+TEST(ScriptRun, AppliesEditsUndoAndQuits) {
+  const ParsedScript script = parseScript(
+      "# comment line\r\n"
+      "set surface 1 radius 35   # trailing comment\n"
+      "set film-distance 37\n"
+      "undo\n"
+      "set exposure -1.5\n"
+      "set camera pinhole\n"
+      "screenshot out.png\n"
+      "quit 3\n",
+      "t");
+  ASSERT_TRUE(script.errors.empty()) << script.errors[0];
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  EXPECT_TRUE(runner.step(host));  // the screenshot waits for a frame that shows the edits
+  EXPECT_FALSE(runner.step(host));
+  EXPECT_DOUBLE_EQ(host.document.prescription().surfaces[0].radiusMm, 35.0);
+  EXPECT_DOUBLE_EQ(host.document.prescription().surfaces[2].thicknessMm, 40.0);  // undone
+  EXPECT_DOUBLE_EQ(host.exposure, -1.5);
+  EXPECT_TRUE(host.pinhole);
+  EXPECT_EQ(host.exitCode, 3);
+  EXPECT_FALSE(runner.failed());
+}
+
+TEST(ScriptRun, WaitsForFramesAndSamplesWithoutBlocking) {
+  const ParsedScript script = parseScript("wait-frames 2\nwait-spp 4\nquit\n", "t");
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  EXPECT_TRUE(runner.step(host));  // frame 1
+  EXPECT_TRUE(runner.step(host));  // frame 2
+  EXPECT_TRUE(runner.step(host));  // frames done; now waiting for samples
+  host.spp = 2;
+  EXPECT_TRUE(runner.step(host));
+  EXPECT_FALSE(host.exitCode.has_value());
+  host.spp = 4;
+  EXPECT_FALSE(runner.step(host));
+  EXPECT_EQ(host.exitCode, 0);
+}
+
+TEST(ScriptRun, FailsOnTheFirstErrorWithItsLocation) {
+  const ParsedScript script =
+      parseScript("load-lens broken.dat\nscreenshot never.png\n", "s.script");
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  EXPECT_FALSE(runner.step(host));
+  EXPECT_TRUE(runner.failed());
+  EXPECT_EQ(host.exitCode, 1);
+  ASSERT_EQ(host.errors.size(), 1u);
+  EXPECT_NE(host.errors[0].find("s.script:1:"), std::string::npos);
+  EXPECT_NE(host.errors[0].find("broken.dat:3:7"), std::string::npos);
+  for (const auto& call : host.calls) EXPECT_EQ(call.find("screenshot"), std::string::npos);
+}
+
+TEST(ScriptRun, EditOfAMissingSurfaceFails) {
+  const ParsedScript script = parseScript("set surface 9 radius 1\n", "t");
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  runner.step(host);
+  EXPECT_TRUE(runner.failed());
+}
+
+TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
+  const ParsedScript script = parseScript("set surface 1 abbe 60\nset surface 1 abbe none\n", "t");
+  ASSERT_TRUE(script.errors.empty());
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  runner.step(host);
+  EXPECT_FALSE(host.document.prescription().surfaces[0].abbeD.has_value());
+}
+
+}  // namespace
+}  // namespace lenslab::app
