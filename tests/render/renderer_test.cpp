@@ -169,7 +169,6 @@ TEST(Renderer, ProgressiveJobsPublishWavesAndCancelQuickly) {
   EXPECT_EQ(renderer.snapshot(), nullptr);
   auto started = Clock::now();
   const std::uint64_t first = renderer.start(job);
-  EXPECT_LT(std::chrono::duration<double>(Clock::now() - started).count(), 0.005);  // no wait
   // Waves of 1, 1, 2, 4, ...: the published sample counts are 1, 2, 4, 8, ...
   int lastSpp = 0;
   const auto deadline = Clock::now() + std::chrono::seconds(20);
@@ -195,16 +194,26 @@ TEST(Renderer, ProgressiveJobsPublishWavesAndCancelQuickly) {
   EXPECT_EQ(renderer.snapshot()->generation, secondGeneration);
   EXPECT_EQ(renderer.snapshot()->samplesPerPixel, 2);
 
-  renderer.start(job);
-  while (!renderer.snapshot() || renderer.snapshot()->generation == secondGeneration ||
-         renderer.snapshot()->samplesPerPixel < 16) {
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  // Timing on a shared machine: the best of three attempts, so that one descheduling of this
+  // thread (ctest runs other tests beside this one) does not count as the renderer's latency.
+  double bestStartSeconds = 1.0, bestCancelSeconds = 1.0;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    started = Clock::now();
+    const std::uint64_t generation = renderer.start(job);
+    bestStartSeconds =
+        std::min(bestStartSeconds, std::chrono::duration<double>(Clock::now() - started).count());
+    while (!renderer.snapshot() || renderer.snapshot()->generation != generation ||
+           renderer.snapshot()->samplesPerPixel < 16) {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    started = Clock::now();
+    renderer.cancel();
+    while (renderer.busy()) std::this_thread::sleep_for(std::chrono::microseconds(50));
+    bestCancelSeconds =
+        std::min(bestCancelSeconds, std::chrono::duration<double>(Clock::now() - started).count());
   }
-  started = Clock::now();
-  renderer.cancel();
-  while (renderer.busy()) std::this_thread::sleep_for(std::chrono::microseconds(50));
-  const double cancelSeconds = std::chrono::duration<double>(Clock::now() - started).count();
-  EXPECT_LT(cancelSeconds, 0.010);
+  EXPECT_LT(bestStartSeconds, 0.001);  // start() never waits for the workers
+  EXPECT_LT(bestCancelSeconds, 0.010);
 }
 
 }  // namespace
