@@ -289,11 +289,11 @@ std::optional<std::string> Viewer::loadScene(const std::string& path) {
     const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
     const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
     if (realistic != nullptr) {
-      state_.lens.apply(ReplaceLens{realistic->lens().prescription(),
-                                    loaded.description->camera.lensPath.string()});
+      const std::string lensPath = loaded.description->camera.lensPath.lexically_normal().string();
+      state_.lens.apply(ReplaceLens{realistic->lens().prescription(), lensPath});
       state_.lensHeaderComments.clear();
       refreshLens(state_);
-      state_.log.info("Using the scene's lens " + loaded.description->camera.lensPath.string());
+      state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
     } else {
       for (const render::Diagnostic& diagnostic : diagnostics.all()) {
         state_.log.warning(diagnostic.format());
