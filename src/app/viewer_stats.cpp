@@ -13,9 +13,10 @@ namespace {
 
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0;
-  const std::size_t index = std::min(values.size() - 1,
-                                     static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
+  const std::size_t index =
+      std::min(values.size() - 1, static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index),
+                   values.end());
   return values[index];
 }
 
