@@ -1,5 +1,7 @@
 #include "app/settings.h"
 
+#include "common/atomic_file.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
@@ -65,16 +67,7 @@ std::string saveSettings(const std::filesystem::path& file, const Settings& sett
   std::error_code error;
   std::filesystem::create_directories(file.parent_path(), error);
   if (error) return "cannot create " + file.parent_path().string() + ": " + error.message();
-  std::filesystem::path temporary = file;
-  temporary += ".tmp";
-  {
-    std::ofstream output(temporary, std::ios::trunc);
-    output << json.dump(2) << '\n';
-    if (!output) return "cannot write " + temporary.string();
-  }
-  std::filesystem::rename(temporary, file, error);
-  if (error) return "cannot write " + file.string() + ": " + error.message();
-  return {};
+  return writeFileAtomically(file, json.dump(2) + '\n');
 }
 
 }  // namespace lenslab::app

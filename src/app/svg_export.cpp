@@ -1,5 +1,7 @@
 #include "app/svg_export.h"
 
+#include "common/atomic_file.h"
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -64,25 +66,7 @@ std::string crossSectionSvg(const CrossSectionDrawing& drawing) {
 
 std::string writeCrossSectionSvg(const std::filesystem::path& path,
                                  const CrossSectionDrawing& drawing) {
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-lenslab";
-  {
-    std::ofstream output(temporary, std::ios::binary | std::ios::trunc);
-    if (!output) return "cannot write " + path.string() + ": cannot create the file";
-    output << crossSectionSvg(drawing);
-    if (!output) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      return "cannot write " + path.string();
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    return "cannot write " + path.string() + ": " + error.message();
-  }
-  return {};
+  return writeFileAtomically(path, crossSectionSvg(drawing));
 }
 
 }  // namespace lenslab::app

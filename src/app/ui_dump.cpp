@@ -1,5 +1,7 @@
 #include "app/ui_dump.h"
 
+#include "common/atomic_file.h"
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <system_error>
@@ -14,16 +16,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
   }
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
                                {"widgets", widgets}};
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-lenslab";
-  {
-    std::ofstream output(temporary, std::ios::trunc);
-    output << json.dump(2) << '\n';
-    if (!output) return "cannot write " + path.string();
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  return error ? "cannot write " + path.string() + ": " + error.message() : std::string();
+  return writeFileAtomically(path, json.dump(2) + '\n');
 }
 
 }  // namespace lenslab::app

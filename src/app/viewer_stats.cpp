@@ -1,5 +1,7 @@
 #include "app/viewer_stats.h"
 
+#include "common/atomic_file.h"
+
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -11,9 +13,10 @@ namespace {
 
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 0;
-  const std::size_t index = std::min(values.size() - 1,
-                                     static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
+  const std::size_t index =
+      std::min(values.size() - 1, static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index),
+                   values.end());
   return values[index];
 }
 
@@ -64,16 +67,7 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       {"edit_to_first_pass_ms_max", s.firstPassMsMax},
       {"edit_to_first_pass_ms", firstPassMs_},
   };
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-lenslab";
-  {
-    std::ofstream output(temporary, std::ios::trunc);
-    output << json.dump(2) << '\n';
-    if (!output) return "cannot write " + path.string();
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  return error ? "cannot write " + path.string() + ": " + error.message() : std::string();
+  return writeFileAtomically(path, json.dump(2) + '\n');
 }
 
 }  // namespace lenslab::app

@@ -81,6 +81,8 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   glfwSetDropCallback(window->window_, onDrop);
   // Installed before ImGui's backend, which chains to it.
   glfwSetKeyCallback(window->window_, onKey);
+  glfwSetWindowContentScaleCallback(window->window_, onContentScale);
+  window->testMode_ = options.testMode;
   glfwMakeContextCurrent(window->window_);
   glfwSwapInterval(options.testMode ? 0 : 1);
   if (gladLoadGL(glfwGetProcAddress) == 0) {
@@ -116,6 +118,23 @@ Window::~Window() {
 void Window::onDrop(GLFWwindow* handle, int count, const char** paths) {
   auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
   for (int i = 0; i < count; ++i) window->dropped_.emplace_back(paths[i]);
+}
+
+void Window::onContentScale(GLFWwindow* handle, float scaleX, float /*scaleY*/) {
+  auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
+  if (!window->testMode_) window->pendingContentScale_ = std::max(1.0f, scaleX);
+}
+
+void Window::applyContentScale() {
+  const float scale = std::exchange(pendingContentScale_, 0.0f);
+  if (scale <= 0.0f || scale == contentScale_) return;
+  contentScale_ = scale;
+  applyStyle(contentScale_);
+  ImGui::GetIO().Fonts->Clear();
+  loadFonts(contentScale_);
+  // The GL backend rebuilds its font texture from the new atlas.
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
 }
 
 void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, int mods) {
@@ -168,6 +187,7 @@ void Window::waitEvents(double seconds) const {
 }
 
 void Window::beginFrame() {
+  applyContentScale();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   holdTappedKeys();

@@ -46,11 +46,16 @@ class Window {
   Window() = default;
   static void onDrop(GLFWwindow* window, int count, const char** paths);
   static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void onContentScale(GLFWwindow* window, float scaleX, float scaleY);
+  // Rebuilds fonts and style sizes after the window moved to a monitor with another scale.
+  void applyContentScale();
   void holdTappedKeys();
 
   GLFWwindow* window_ = nullptr;
   bool imguiReady_ = false;
   float contentScale_ = 1.0f;
+  float pendingContentScale_ = 0.0f;  // set by the callback, applied before the next frame
+  bool testMode_ = false;
   std::vector<std::string> dropped_;
   // Keys pressed since the last frame, and keys held down artificially for one frame (see
   // holdTappedKeys).

@@ -75,10 +75,10 @@ int run(int argc, char** argv) {
       "Headless: lenslab SUBCOMMAND --help for each subcommand.");
   ViewerArguments viewerArguments;
   addViewerOptions(app, viewerArguments);
-  const auto renderArguments = registerRenderCommand(app);
   SubcommandRunner subcommand;  // set when a headless subcommand was named
   addInfoCommand(app, subcommand);
   addFocusCommand(app, subcommand);
+  addRenderCommand(app, subcommand);
 
   try {
     app.parse(argc, argv);
@@ -92,7 +92,6 @@ int run(int argc, char** argv) {
     std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
     return kUsageError;
   }
-  if (renderArguments->command->parsed()) return runRenderCommand(*renderArguments);
   if (subcommand) return subcommand();
   return runViewer(viewerArguments);
 }

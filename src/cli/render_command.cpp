@@ -1,5 +1,7 @@
 #include "cli/render_command.h"
 
+#include "common/atomic_file.h"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -41,22 +43,8 @@ void drawProgress(double fraction) {
 }
 
 bool writeStats(const std::string& path, const nlohmann::json& stats, std::string& error) {
-  const std::string temporary = path + ".tmp-lenslab";
-  {
-    std::ofstream out(temporary);
-    out << stats.dump(2) << "\n";
-    if (!out.flush()) {
-      error = "cannot write " + path;
-      std::remove(temporary.c_str());
-      return false;
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    error = "cannot write " + path;
-    std::remove(temporary.c_str());
-    return false;
-  }
-  return true;
+  error = writeFileAtomically(path, stats.dump(2) + "\n");
+  return error.empty();
 }
 
 }  // namespace
@@ -82,6 +70,13 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
   command->add_option("--exposure", arguments->exposureStops, "PNG exposure in stops");
   command->add_flag("--quiet", arguments->quiet, "No progress bar");
   return arguments;
+}
+
+void addRenderCommand(CLI::App& app, SubcommandRunner& run) {
+  const std::shared_ptr<RenderArguments> arguments = registerRenderCommand(app);
+  arguments->command->callback([arguments, &run] {
+    run = [arguments] { return runRenderCommand(*arguments); };
+  });
 }
 
 int runRenderCommand(const RenderArguments& arguments) {

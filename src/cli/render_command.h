@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "cli/subcommand.h"
+
 namespace lenslab::cli {
 
 struct RenderArguments {
@@ -22,6 +24,8 @@ struct RenderArguments {
   bool quiet = false;
 };
 
+// Adds the subcommand to `app`; when the user names it, `run` is set to run it (subcommand.h).
+void addRenderCommand(CLI::App& app, SubcommandRunner& run);
 // Adds the subcommand to `app`; the returned arguments fill in when it is parsed.
 std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app);
 // Runs it; returns the process exit code.

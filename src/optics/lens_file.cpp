@@ -1,5 +1,7 @@
 #include "optics/lens_file.h"
 
+#include "common/atomic_file.h"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -199,13 +201,10 @@ std::string formatLensText(const Prescription& prescription,
 
 bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
                    const std::vector<std::string>& headerComments, std::string* error) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (out) out << formatLensText(prescription, headerComments);
-  if (!out) {
-    if (error) *error = path.string() + ": cannot write the file";
-    return false;
-  }
-  return true;
+  const std::string failure =
+      writeFileAtomically(path, formatLensText(prescription, headerComments));
+  if (!failure.empty() && error) *error = failure;
+  return failure.empty();
 }
 
 }  // namespace lenslab::optics

@@ -17,7 +17,6 @@ PerspectiveCamera::PerspectiveCamera(const glm::dmat4& cameraFromWorld, double f
       tanHalfFov_(static_cast<float>(std::tan(glm::radians(fovDegrees) * 0.5))),
       lensRadius_(static_cast<float>(lensRadius)),
       focalDistance_(static_cast<float>(focalDistance)) {
-  origin_ = glm::vec3(worldFromCamera_ * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
   // pbrt's default screen window: [-1, 1] on the shorter axis.
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const float halfX = aspect > 1.0f ? aspect : 1.0f;

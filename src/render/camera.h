@@ -31,6 +31,8 @@ class Camera {
       passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
     }
   }
+  // The angle one pixel subtends from the lens (for texture filtering footprints).
+  virtual float pixelSpreadRadians() const = 0;
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -47,10 +49,12 @@ class PerspectiveCamera final : public Camera {
   PerspectiveCamera(const glm::dmat4& cameraFromWorld, double fovDegrees, int width, int height,
                     double lensRadius = 0.0, double focalDistance = 1e6);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
+  float pixelSpreadRadians() const override {
+    return screenHeight_ * tanHalfFov_ / static_cast<float>(height_);
+  }
 
  private:
   glm::mat4 worldFromCamera_;
-  glm::vec3 origin_;
   float screenMinX_, screenMaxY_, screenWidth_, screenHeight_;
   float tanHalfFov_;
   float lensRadius_, focalDistance_;

@@ -88,6 +88,7 @@ CameraFraming framingOf(const SceneDescription& scene) {
     framing.filmDiagonalMm = scene.camera.params.getFloat("filmdiag", framing.filmDiagonalMm);
     // The seed report noticed its own images framed slightly closer with the film there.
     framing.frontVertexAtOrigin = true;
+    framing.lensSampling = LensSampling::RearElementDisk;
   }
   return framing;
 }
@@ -97,11 +98,11 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              int width, int height) {
   const CameraFraming framing = framingOf(scene);
   // Build the exit-pupil table now, on the calling thread, not inside the first render wave.
-  lens->exitPupilTableRadiusMm();
+  if (framing.lensSampling == LensSampling::ExitPupil) lens->exitPupilTableRadiusMm();
   const double originZMm = framing.frontVertexAtOrigin ? lens->frontVertexZ() : 0.0;
   return std::make_shared<RealisticCamera>(std::move(lens), framing.cameraFromWorld, width, height,
                                            framing.filmDiagonalMm, framing.sceneUnitsPerMm,
-                                           originZMm);
+                                           originZMm, framing.lensSampling);
 }
 
 std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& scene,

@@ -7,6 +7,7 @@
 
 #include "render/camera.h"
 #include "render/diagnostics.h"
+#include "render/realistic_camera.h"
 #include "render/scene_description.h"
 
 namespace lenslab::optics {
@@ -30,6 +31,8 @@ struct CameraFraming {
   // The course's reference renders put the front lens vertex at the camera-space origin; pbrt-v3
   // puts the film there.
   bool frontVertexAtOrigin = false;
+  // ... and aimed film rays at the rear element's disk (see LensSampling).
+  LensSampling lensSampling = LensSampling::ExitPupil;
 };
 CameraFraming framingOf(const SceneDescription& scene);
 

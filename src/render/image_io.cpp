@@ -6,29 +6,9 @@
 #include <cstring>
 #include <system_error>
 
+#include "common/atomic_file.h"
+
 namespace lenslab::render {
-
-namespace {
-
-// A temporary name in the target's directory, so the final rename stays on one filesystem.
-std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-lenslab";
-  return temporary;
-}
-
-WriteResult renameIntoPlace(const std::filesystem::path& temporary,
-                            const std::filesystem::path& path) {
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    return {false, "cannot write " + path.string() + ": " + error.message()};
-  }
-  return {true, {}};
-}
-
-}  // namespace
 
 WriteResult writePngRgba8(const std::filesystem::path& path, int width, int height,
                           std::span<const std::uint8_t> rgba) {
@@ -36,16 +16,15 @@ WriteResult writePngRgba8(const std::filesystem::path& path, int width, int heig
       rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
     return {false, "cannot write " + path.string() + ": image size does not match its pixels"};
   }
-  const std::filesystem::path temporary = temporaryPathFor(path);
-  errno = 0;
-  if (stbi_write_png(temporary.c_str(), width, height, 4, rgba.data(), width * 4) == 0) {
-    const int savedErrno = errno;
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    return {false, "cannot write " + path.string() + ": " +
-                       (savedErrno != 0 ? std::strerror(savedErrno) : "PNG encoder failed")};
-  }
-  return renameIntoPlace(temporary, path);
+  const std::string error =
+      writeThroughTemporary(path, [&](const std::filesystem::path& temporary) -> std::string {
+        errno = 0;
+        if (stbi_write_png(temporary.c_str(), width, height, 4, rgba.data(), width * 4) != 0) {
+          return {};
+        }
+        return errno != 0 ? std::strerror(errno) : "PNG encoder failed";
+      });
+  return {error.empty(), error};
 }
 
 std::filesystem::path nonClobberingPath(const std::filesystem::path& directory,

@@ -14,28 +14,17 @@
 #include <cstring>
 #include <fstream>
 
+#include "common/atomic_file.h"
 #include "render/image_io.h"
 
 namespace lenslab::render {
 
 namespace {
 
-std::filesystem::path temporaryFor(const std::filesystem::path& path) {
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-lenslab";
-  return temporary;
-}
+WriteResult resultOf(const std::string& error) { return {error.empty(), error}; }
 
-WriteResult finishAtomic(const std::filesystem::path& temporary,
-                         const std::filesystem::path& path) {
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    return {false, "cannot write " + path.string() + ": " + error.message()};
-  }
-  return {true, {}};
-}
+// Writes an OpenEXR file at `path` (a temporary one); returns "" or the library's error.
+std::string writeExrFile(const std::filesystem::path& path, const FloatImage& image);
 
 bool sizeMatches(const FloatImage& image) {
   return image.width > 0 && image.height > 0 &&
@@ -64,14 +53,21 @@ float srgbToLinear(float encoded) {
 
 WriteResult writeExr(const std::filesystem::path& path, const FloatImage& image) {
   if (!sizeMatches(image)) return {false, "cannot write " + path.string() + ": bad image size"};
-  const auto temporary = temporaryFor(path);
+  return resultOf(writeThroughTemporary(path, [&](const std::filesystem::path& temporary) {
+    return writeExrFile(temporary, image);
+  }));
+}
+
+namespace {
+
+std::string writeExrFile(const std::filesystem::path& path, const FloatImage& image) {
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const char* channel : {"R", "G", "B"}) {
       header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
     }
-    Imf::OutputFile file(temporary.c_str(), header);
+    Imf::OutputFile file(path.c_str(), header);
     Imf::FrameBuffer frame;
     const std::size_t xStride = 3 * sizeof(float);
     const std::size_t yStride = xStride * static_cast<std::size_t>(image.width);
@@ -82,32 +78,25 @@ WriteResult writeExr(const std::filesystem::path& path, const FloatImage& image)
     file.setFrameBuffer(frame);
     file.writePixels(image.height);
   } catch (const std::exception& error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    return {false, "cannot write " + path.string() + ": " + error.what()};
+    return error.what();
   }
-  return finishAtomic(temporary, path);
+  return {};
 }
+
+}  // namespace
 
 WriteResult writePfm(const std::filesystem::path& path, const FloatImage& image) {
   if (!sizeMatches(image)) return {false, "cannot write " + path.string() + ": bad image size"};
-  const auto temporary = temporaryFor(path);
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    // A negative scale marks little-endian data; rows run bottom to top.
-    out << "PF\n" << image.width << " " << image.height << "\n-1.0\n";
-    for (int y = image.height - 1; y >= 0; --y) {
-      out.write(reinterpret_cast<const char*>(image.rgb.data() +
-                                              static_cast<std::size_t>(y) * image.width * 3),
-                static_cast<std::streamsize>(image.width * 3 * sizeof(float)));
-    }
-    if (!out.flush()) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      return {false, "cannot write " + path.string() + ": " + std::strerror(errno)};
-    }
+  // A negative scale marks little-endian data; rows run bottom to top.
+  std::string contents = "PF\n" + std::to_string(image.width) + " " +
+                         std::to_string(image.height) + "\n-1.0\n";
+  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3 * sizeof(float);
+  for (int y = image.height - 1; y >= 0; --y) {
+    contents.append(reinterpret_cast<const char*>(image.rgb.data() +
+                                                  static_cast<std::size_t>(y) * image.width * 3),
+                    rowBytes);
   }
-  return finishAtomic(temporary, path);
+  return resultOf(writeFileAtomically(path, contents));
 }
 
 std::vector<std::uint8_t> encodeSrgbRgba8(const FloatImage& image, double exposureStops) {

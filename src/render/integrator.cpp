@@ -25,6 +25,14 @@ glm::vec3 offsetOrigin(const SurfaceHit& hit, glm::vec3 direction) {
   return hit.point + side * epsilon * hit.geometricNormal;
 }
 
+// The texture-space width a camera sample covers at `hit`: the spread times the distance,
+// stretched by the incidence angle (the geometric mean of the footprint ellipse's axes).
+float cameraFootprint(const SurfaceHit& hit, glm::vec3 direction, float spreadRadians) {
+  if (spreadRadians <= 0.0f || hit.uvPerWorldUnit <= 0.0f) return 0.0f;
+  const float cosine = std::max(0.02f, std::abs(glm::dot(direction, hit.geometricNormal)));
+  return hit.t * spreadRadians / std::sqrt(cosine) * hit.uvPerWorldUnit;
+}
+
 bool isBlack(glm::vec3 v) { return v.x <= 0.0f && v.y <= 0.0f && v.z <= 0.0f; }
 
 // Radiance from the lights escaping rays see (infinite lights).
@@ -82,7 +90,7 @@ glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& 
 }
 
 glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
-                         PixelSampler& sampler, int maxDepth) {
+                         PixelSampler& sampler, int maxDepth, float spread) {
   glm::vec3 radiance(0.0f), throughput(1.0f);
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
@@ -95,7 +103,9 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
       radiance += throughput * areaRadiance(scene.lights()[static_cast<std::size_t>(hit.light)],
                                             hit.geometricNormal, wo);
     }
-    const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal);
+    const float footprint = depth == 0 ? cameraFootprint(hit, direction, spread) : 0.0f;
+    const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal,
+                    footprint);
     if (!bsdf.isSpecular()) {
       // pbrt-v2's default strategy: every light, with its own number of samples.
       const auto& lights = scene.lights();
@@ -126,7 +136,7 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
 }
 
 glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
-                    PixelSampler& sampler, int maxDepth) {
+                    PixelSampler& sampler, int maxDepth, float spread) {
   glm::vec3 radiance(0.0f), throughput(1.0f);
   bool specularBounce = true;
   float previousPdf = 0.0f;
@@ -159,7 +169,9 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
       radiance += throughput * le * weight;
     }
     if (depth >= maxDepth) break;
-    const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal);
+    const float footprint = depth == 0 ? cameraFootprint(hit, direction, spread) : 0.0f;
+    const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal,
+                    footprint);
     const glm::vec2 uChoose = sampler.next2D();
     const glm::vec2 uLight = sampler.next2D();
     const glm::vec2 uBsdf = sampler.next2D();
@@ -194,9 +206,11 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
 glm::vec3 incomingRadiance(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
                            PixelSampler& sampler, const IntegratorSettings& settings) {
   if (settings.kind == IntegratorKind::DirectLighting) {
-    return directLighting(scene, origin, direction, sampler, settings.maxDepth);
+    return directLighting(scene, origin, direction, sampler, settings.maxDepth,
+                          settings.cameraSpreadRadians);
   }
-  return pathTrace(scene, origin, direction, sampler, settings.maxDepth);
+  return pathTrace(scene, origin, direction, sampler, settings.maxDepth,
+                   settings.cameraSpreadRadians);
 }
 
 }  // namespace lenslab::render

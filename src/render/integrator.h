@@ -13,6 +13,9 @@ namespace lenslab::render {
 struct IntegratorSettings {
   IntegratorKind kind = IntegratorKind::Path;
   int maxDepth = 5;
+  // Angular width of one camera sample's footprint, for filtering textures at the first hit
+  // (pbrt: a pixel's ray differentials scaled by 1/sqrt(samples per pixel)). 0: point lookups.
+  float cameraSpreadRadians = 0.0f;
 };
 
 glm::vec3 incomingRadiance(const Scene& scene, glm::vec3 origin, glm::vec3 direction,

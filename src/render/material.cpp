@@ -93,9 +93,12 @@ float roughnessToAlpha(float roughness) {
          0.000640711f * x * x * x * x;
 }
 
-Bsdf::Bsdf(const Material& material, const TextureSet& textures, glm::vec2 uv, glm::vec3 normal)
+Bsdf::Bsdf(const Material& material, const TextureSet& textures, glm::vec2 uv, glm::vec3 normal,
+           float footprint)
     : kind_(material.kind), frame_(normal) {
-  auto tex = [&](int index) { return index >= 0 ? textures.evaluate(index, uv) : glm::vec3(0); };
+  auto tex = [&](int index) {
+    return index >= 0 ? textures.evaluate(index, uv, footprint) : glm::vec3(0);
+  };
   kd_ = tex(material.kd);
   ks_ = tex(material.ks);
   kr_ = tex(material.kr);

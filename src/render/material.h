@@ -33,7 +33,9 @@ struct BsdfSample {
 // A material evaluated at one surface point, in the shading frame around the shading normal.
 class Bsdf {
  public:
-  Bsdf(const Material& material, const TextureSet& textures, glm::vec2 uv, glm::vec3 normal);
+  // `footprint`: the texture-space width the shading point stands for (0: point lookups).
+  Bsdf(const Material& material, const TextureSet& textures, glm::vec2 uv, glm::vec3 normal,
+       float footprint = 0.0f);
 
   // f(wo, wi) and the density sample() would have for wi (solid angle), world directions.
   glm::vec3 evaluate(glm::vec3 wo, glm::vec3 wi, float& pdf) const;

@@ -89,10 +89,17 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
 
 // The driver shared by the threaded renderer and renderToCompletion: waves until done or
 // cancelled, publishing after each wave.
-void renderWaves(const RenderJob& job, std::uint64_t generation,
+void renderWaves(const RenderJob& jobIn, std::uint64_t generation,
                  const std::function<bool()>& cancelled,
                  const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
   const Clock::time_point started = Clock::now();
+  RenderJob job = jobIn;
+  if (job.settings.integrator.cameraSpreadRadians == 0.0f) {
+    // pbrt shrinks a pixel's footprint by 1/sqrt(spp): more samples, sharper texture lookups.
+    const int spp = job.settings.samplesPerPixel > 0 ? job.settings.samplesPerPixel : 64;
+    job.settings.integrator.cameraSpreadRadians =
+        job.camera->pixelSpreadRadians() / std::sqrt(static_cast<float>(spp));
+  }
   const int width = job.camera->width();
   const int height = job.camera->height();
   const std::vector<Tile> tiles = makeTiles(width, height, std::max(4, job.settings.tileSize));

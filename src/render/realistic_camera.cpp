@@ -5,6 +5,8 @@
 #include <glm/matrix.hpp>
 #include <vector>
 
+#include "render/sampling.h"
+
 namespace lenslab::render {
 
 namespace {
@@ -22,15 +24,32 @@ float exposureWeight(glm::dvec3 toPupil, const optics::PupilSample& pupil) {
 RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
                                  const glm::dmat4& cameraFromWorld, int width, int height,
                                  double filmDiagonalMm, double sceneUnitsPerMm,
-                                 double cameraOriginZMm)
+                                 double cameraOriginZMm, LensSampling sampling)
     : Camera(width, height),
       lens_(std::move(lens)),
       worldFromCamera_(glm::inverse(cameraFromWorld)),
       sceneUnitsPerMm_(sceneUnitsPerMm),
-      cameraOriginZMm_(cameraOriginZMm) {
+      cameraOriginZMm_(cameraOriginZMm),
+      sampling_(sampling) {
   const double diagonalPixels = std::hypot(static_cast<double>(width), static_cast<double>(height));
   filmWidthMm_ = filmDiagonalMm * width / diagonalPixels;
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
+}
+
+float RealisticCamera::pixelSpreadRadians() const {
+  const double efl = lens_->firstOrder().eflMm;
+  const double focal = efl > 0.0 ? efl : lens_->filmDistanceMm();
+  return static_cast<float>(filmHeightMm_ / height_ / focal);
+}
+
+std::optional<optics::PupilSample> RealisticCamera::samplePupil(glm::dvec2 filmMm,
+                                                               glm::vec2 u) const {
+  if (sampling_ == LensSampling::ExitPupil) return lens_->sampleExitPupil(filmMm, glm::dvec2(u));
+  // Uniform on the rear aperture's disk (concentric map keeps the stratification).
+  const double radius = lens_->rearApertureRadiusMm();
+  const glm::vec2 disk = concentricDisk(u);
+  return optics::PupilSample{{radius * disk.x, radius * disk.y, lens_->rearVertexZ()},
+                             1.0 / (3.14159265358979323846 * radius * radius)};
 }
 
 glm::dvec2 RealisticCamera::filmPointMm(glm::vec2 raster) const {
@@ -51,7 +70,7 @@ void RealisticCamera::finishRay(glm::dvec3 exitOriginMm, glm::dvec3 exitDirectio
 
 bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, CameraRay& ray) const {
   const glm::dvec2 film = filmPointMm(raster);
-  const auto pupil = lens_->sampleExitPupil(film, glm::dvec2(lensSample));
+  const auto pupil = samplePupil(film, lensSample);
   if (!pupil || pupil->pdfPerMm2 <= 0.0) return false;
   const glm::dvec3 start(film, 0.0);
   const glm::dvec3 toPupil = pupil->pointMm - start;
@@ -69,7 +88,7 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
   batch.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     const glm::dvec2 film = filmPointMm(rasterPoints[i]);
-    const auto pupil = lens_->sampleExitPupil(film, glm::dvec2(lensSamples[i]));
+    const auto pupil = samplePupil(film, lensSamples[i]);
     batch.alive[i] = pupil && pupil->pdfPerMm2 > 0.0;
     if (!batch.alive[i]) continue;
     const glm::dvec3 toPupil = pupil->pointMm - glm::dvec3(film, 0.0);

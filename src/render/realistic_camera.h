@@ -13,6 +13,17 @@
 
 namespace lenslab::render {
 
+// Where film rays are aimed.
+enum class LensSampling {
+  // The optics library's exit pupil: every ray that can pass is sampled (the physical answer).
+  ExitPupil,
+  // The disk of the rear element's aperture on the plane of its vertex, as the course's pbrt-v2
+  // camera did: it misses off-axis rays that cross that plane outside the disk but still meet
+  // the curved rear surface inside its aperture, so the image corners come out darker. Used
+  // for the course's scenes, to reproduce their references.
+  RearElementDisk,
+};
+
 class RealisticCamera final : public Camera {
  public:
   // `sceneUnitsPerMm`: camera-space units per lens millimetre (1 for the course's pbrt-v2 camera,
@@ -21,16 +32,19 @@ class RealisticCamera final : public Camera {
   // film there (0); the course's pbrt-v2 reference camera put the front lens vertex there.
   RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
                   const glm::dmat4& cameraFromWorld, int width, int height,
-                  double filmDiagonalMm, double sceneUnitsPerMm, double cameraOriginZMm = 0.0);
+                  double filmDiagonalMm, double sceneUnitsPerMm, double cameraOriginZMm = 0.0,
+                  LensSampling sampling = LensSampling::ExitPupil);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
   // Traces the whole batch with the optics library's vectorised trace.
   void generateRays(std::size_t count, const glm::vec2* rasterPoints, const glm::vec2* lensSamples,
                     CameraRay* rays, std::uint8_t* passed) const override;
 
+  float pixelSpreadRadians() const override;
   const optics::LensSystem& lens() const { return *lens_; }
 
  private:
   glm::dvec2 filmPointMm(glm::vec2 raster) const;
+  std::optional<optics::PupilSample> samplePupil(glm::dvec2 filmMm, glm::vec2 u) const;
   void finishRay(glm::dvec3 exitOriginMm, glm::dvec3 exitDirection, CameraRay& ray) const;
 
   std::shared_ptr<const optics::LensSystem> lens_;
@@ -38,6 +52,7 @@ class RealisticCamera final : public Camera {
   double filmWidthMm_, filmHeightMm_;
   double sceneUnitsPerMm_;
   double cameraOriginZMm_;
+  LensSampling sampling_;
 };
 
 }  // namespace lenslab::render

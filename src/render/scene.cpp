@@ -42,6 +42,12 @@ void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit
     hit.geometricNormal = n;
     if (!record.uvs.empty()) {
       hit.uv = b0 * record.uvs[tri[0]] + b1 * record.uvs[tri[1]] + b2 * record.uvs[tri[2]];
+      // sqrt(uv area / world area) of the triangle: the mean (u, v) rate per unit length.
+      const glm::vec2 e1 = record.uvs[tri[1]] - record.uvs[tri[0]];
+      const glm::vec2 e2 = record.uvs[tri[2]] - record.uvs[tri[0]];
+      const float uvArea = std::abs(e1.x * e2.y - e1.y * e2.x);
+      const float worldArea = glm::length(glm::cross(p1 - p0, p2 - p0));
+      hit.uvPerWorldUnit = worldArea > 0.0f ? std::sqrt(uvArea / worldArea) : 0.0f;
     } else {
       // pbrt's default parametrisation: (0,0), (1,0), (1,1) at the three vertices.
       hit.uv = glm::vec2(b1 + b2, b2);

@@ -26,6 +26,7 @@ struct SurfaceHit {
   glm::vec2 uv{0.0f};
   int material = 0;
   int light = -1;  // index into lights() when the surface emits
+  float uvPerWorldUnit = 0.0f;  // how fast (u, v) changes along the surface (meshes with uv)
 };
 
 // One Embree geometry's own data, indexed by its geomID in its RTCScene.

@@ -208,6 +208,7 @@ class SceneBuilder {
         if (!texture.image) continue;
         texture.imageScale = static_cast<float>(params.getFloat("scale", 1.0));
         texture.flipT = !description_.pbrtV2;
+        texture.mipLevels = buildMipLevels(*texture.image);
         if (params.getBool("invert", false)) {
           diagnostics_.warning(description.location, "imagemap \"invert\" is not supported");
         }

@@ -16,23 +16,37 @@ int TextureSet::constant(glm::vec3 value) {
   return add(texture);
 }
 
-glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv) const {
+glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv, float footprint) const {
   const Texture& texture = textures_[static_cast<std::size_t>(index)];
   switch (texture.kind) {
     case TextureKind::Constant:
       return texture.value;
     case TextureKind::Scale:
-      return evaluate(texture.first, uv) * evaluate(texture.second, uv);
+      return evaluate(texture.first, uv, footprint) * evaluate(texture.second, uv, footprint);
     case TextureKind::Checkerboard: {
       const float s = texture.uScale * uv.x + texture.uDelta;
       const float t = texture.vScale * uv.y + texture.vDelta;
       const long cell = static_cast<long>(std::floor(s)) + static_cast<long>(std::floor(t));
-      return evaluate((cell & 1) == 0 ? texture.first : texture.second, uv);
+      return evaluate((cell & 1) == 0 ? texture.first : texture.second, uv, footprint);
     }
     case TextureKind::Image: {
       const glm::vec2 st(texture.uScale * uv.x + texture.uDelta,
                          texture.vScale * uv.y + texture.vDelta);
-      return lookupImage(texture, st) * texture.imageScale;
+      const auto& levels = texture.mipLevels;
+      if (!levels || footprint <= 0.0f) {
+        return lookupImage(texture, *texture.image, st) * texture.imageScale;
+      }
+      // Trilinear: the level whose texel matches the footprint, blended with the next one.
+      const float texels = footprint * std::max(std::abs(texture.uScale), std::abs(texture.vScale)) *
+                           static_cast<float>(texture.image->width);
+      const float level = std::clamp(std::log2(std::max(texels, 1.0f)), 0.0f,
+                                     static_cast<float>(levels->size() - 1));
+      const auto lower = static_cast<std::size_t>(level);
+      const std::size_t upper = std::min(lower + 1, levels->size() - 1);
+      const float blend = level - static_cast<float>(lower);
+      const glm::vec3 a = lookupImage(texture, (*levels)[lower], st);
+      const glm::vec3 b = blend > 0.0f ? lookupImage(texture, (*levels)[upper], st) : a;
+      return ((1.0f - blend) * a + blend * b) * texture.imageScale;
     }
   }
   return glm::vec3(0.0f);
@@ -40,8 +54,8 @@ glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv) const {
 
 // Bilinear lookup. t = 0 is the bottom row of the image (pbrt-v3 flips images on load so that
 // texture space has its origin at the lower left).
-glm::vec3 TextureSet::lookupImage(const Texture& texture, glm::vec2 st) const {
-  const FloatImage& image = *texture.image;
+glm::vec3 TextureSet::lookupImage(const Texture& texture, const FloatImage& image,
+                                  glm::vec2 st) const {
   const float x = st.x * static_cast<float>(image.width) - 0.5f;
   const float y = (texture.flipT ? 1.0f - st.y : st.y) * static_cast<float>(image.height) - 0.5f;
   const int x0 = static_cast<int>(std::floor(x));
@@ -65,6 +79,37 @@ glm::vec3 TextureSet::lookupImage(const Texture& texture, glm::vec2 st) const {
   };
   return (1 - fx) * (1 - fy) * texel(x0, y0) + fx * (1 - fy) * texel(x0 + 1, y0) +
          (1 - fx) * fy * texel(x0, y0 + 1) + fx * fy * texel(x0 + 1, y0 + 1);
+}
+
+}  // namespace lenslab::render
+
+namespace lenslab::render {
+
+std::shared_ptr<const std::vector<FloatImage>> buildMipLevels(const FloatImage& image) {
+  const int size = image.width;
+  if (size != image.height || size <= 0 || (size & (size - 1)) != 0) return nullptr;
+  auto levels = std::make_shared<std::vector<FloatImage>>();
+  levels->push_back(image);
+  while (levels->back().width > 1) {
+    const FloatImage& fine = levels->back();
+    FloatImage coarse;
+    coarse.width = coarse.height = fine.width / 2;
+    coarse.rgb.resize(static_cast<std::size_t>(coarse.width) * coarse.height * 3);
+    for (int y = 0; y < coarse.height; ++y) {
+      for (int x = 0; x < coarse.width; ++x) {
+        for (int c = 0; c < 3; ++c) {
+          auto at = [&](int fx, int fy) {
+            return fine.rgb[(static_cast<std::size_t>(fy) * fine.width + fx) * 3 + c];
+          };
+          coarse.rgb[(static_cast<std::size_t>(y) * coarse.width + x) * 3 + c] =
+              0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) +
+                       at(2 * x + 1, 2 * y + 1));
+        }
+      }
+    }
+    levels->push_back(std::move(coarse));
+  }
+  return levels;
 }
 
 }  // namespace lenslab::render

@@ -21,6 +21,9 @@ struct Texture {
   // The (u, v) mapping: s = uScale * u + uDelta, t = vScale * v + vDelta.
   float uScale = 1.0f, vScale = 1.0f, uDelta = 0.0f, vDelta = 0.0f;
   std::shared_ptr<const FloatImage> image;
+  // Box-filtered mip levels of `image` (level 0 is the image itself), for footprint-sized
+  // lookups; only built for power-of-two square images.
+  std::shared_ptr<const std::vector<FloatImage>> mipLevels;
   float imageScale = 1.0f;
   bool clampWrap = false;
   bool blackWrap = false;
@@ -28,15 +31,19 @@ struct Texture {
   bool flipT = true;
 };
 
+// Halves a power-of-two square image repeatedly (2x2 box filter) down to 1x1.
+std::shared_ptr<const std::vector<FloatImage>> buildMipLevels(const FloatImage& image);
+
 class TextureSet {
  public:
   int add(Texture texture);
   int constant(glm::vec3 value);
-  glm::vec3 evaluate(int index, glm::vec2 uv) const;
+  // `footprint`: the width in (u, v) units of the area the lookup stands for (0: a point).
+  glm::vec3 evaluate(int index, glm::vec2 uv, float footprint = 0.0f) const;
   std::size_t size() const { return textures_.size(); }
 
  private:
-  glm::vec3 lookupImage(const Texture& texture, glm::vec2 st) const;
+  glm::vec3 lookupImage(const Texture& texture, const FloatImage& image, glm::vec2 st) const;
   std::vector<Texture> textures_;
 };
 

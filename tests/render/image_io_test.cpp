@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <cstring>
 #include <cmath>
 #include <vector>
 
@@ -50,6 +51,65 @@ TEST(ImageIo, NonClobberingPathSkipsExistingFiles) {
   std::ofstream(directory / "shot.png") << "x";
   std::ofstream(directory / "shot-2.png") << "x";
   EXPECT_EQ(nonClobberingPath(directory, "shot", ".png"), directory / "shot-3.png");
+}
+
+FloatImage gradient(int width, int height) {
+  FloatImage image{width, height, {}};
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      image.rgb.insert(image.rgb.end(), {0.25f * x, 2.5f * y, 1e-3f * (x + y) + 100.0f});
+    }
+  }
+  return image;
+}
+
+TEST(ImageIo, ExrRoundTripsFloatPixels) {
+  const auto directory = testing::makeTestDirectory("exr");
+  const FloatImage image = gradient(5, 3);
+  const WriteResult written = writeImage(directory / "out.exr", image, 0.0);
+  ASSERT_TRUE(written.ok) << written.error;
+  const ReadResult read = readImage(directory / "out.exr");
+  ASSERT_TRUE(read.ok) << read.error;
+  EXPECT_EQ(read.image.width, 5);
+  EXPECT_EQ(read.image.height, 3);
+  EXPECT_EQ(read.image.rgb, image.rgb);  // 32-bit float, lossless
+  EXPECT_FALSE(std::filesystem::exists(directory / "out.exr.tmp-lenslab"));
+}
+
+TEST(ImageIo, PfmHasItsHeaderAndBottomUpRows) {
+  const auto directory = testing::makeTestDirectory("pfm");
+  const FloatImage image = gradient(4, 2);
+  ASSERT_TRUE(writeImage(directory / "out.pfm", image, 0.0).ok);
+  const std::string bytes = testing::readWholeFile(directory / "out.pfm");
+  const std::string header = "PF\n4 2\n-1.0\n";
+  ASSERT_EQ(bytes.substr(0, header.size()), header);
+  ASSERT_EQ(bytes.size(), header.size() + 4 * 2 * 3 * sizeof(float));
+  float firstStored[3];
+  std::memcpy(firstStored, bytes.data() + header.size(), sizeof(firstStored));
+  // The first row stored is the image's bottom row (y = 1).
+  EXPECT_EQ(firstStored[1], 2.5f);
+}
+
+TEST(ImageIo, PngIsSrgbEncodedWithExposure) {
+  const auto directory = testing::makeTestDirectory("srgb");
+  FloatImage image{2, 1, {0.0f, 0.214f, 1.0f, 0.25f, 0.25f, 0.25f}};
+  ASSERT_TRUE(writeImage(directory / "out.png", image, 1.0).ok);  // +1 stop doubles
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* loaded = stbi_load((directory / "out.png").c_str(), &width, &height, &channels, 4);
+  ASSERT_NE(loaded, nullptr);
+  EXPECT_EQ(loaded[0], 0);
+  EXPECT_NEAR(loaded[1], 175, 1);  // 0.428 linear is 0.686 in sRGB
+  EXPECT_EQ(loaded[2], 255);       // clamped
+  EXPECT_NEAR(loaded[4], 188, 1);  // 0.5 linear -> 0.735
+  stbi_image_free(loaded);
+}
+
+TEST(ImageIo, UnknownExtensionIsAnErrorAndWritesNothing) {
+  const auto directory = testing::makeTestDirectory("ext");
+  const WriteResult result = writeImage(directory / "out.tiff", gradient(2, 2), 0.0);
+  EXPECT_FALSE(result.ok);
+  EXPECT_NE(result.error.find(".tiff"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::is_empty(directory));
 }
 
 }  // namespace

@@ -45,22 +45,19 @@ TEST(Renderer, PinholeFurnaceSeesTheEmittedRadianceEverywhere) {
   }
 }
 
-// Relative illumination at a film point by brute force: a fine grid over the plane of the rear
-// vertex, each point traced exactly; E/L = (1/Z^2) * sum over passing points of cos^4(theta) dA.
-// The grid covers 1.5 x the rear semi-aperture, not just the rear element's disk: an off-axis ray
-// heading toward the axis crosses that plane outside the disk and still meets the (curved) rear
-// surface inside its clear aperture (about 25% of the light at 25 mm off axis for this lens).
-double relativeIllumination(const optics::LensSystem& lens, glm::dvec2 film) {
-  const double radius = 1.5 * lens.rearApertureRadiusMm();
+// Relative illumination at a film point by brute force: a fine grid over a disk of radius
+// `radiusMm` on the rear vertex plane, each point traced exactly;
+// E/L = (1/Z^2) * sum over passing points of cos^4(theta) dA.
+double relativeIllumination(const optics::LensSystem& lens, glm::dvec2 film, double radiusMm) {
   const double z = lens.rearVertexZ();
-  constexpr int kSteps = 300;
-  const double step = 2.0 * radius / kSteps;
+  constexpr int kSteps = 240;
+  const double step = 2.0 * radiusMm / kSteps;
   double sum = 0.0;
   for (int i = 0; i < kSteps; ++i) {
     for (int j = 0; j < kSteps; ++j) {
-      const glm::dvec2 p(-radius + (i + 0.5) * step, -radius + (j + 0.5) * step);
-      const glm::dvec3 toPoint = glm::dvec3(p, z) - glm::dvec3(film, 0.0);
-      const glm::dvec3 direction = glm::normalize(toPoint);
+      const glm::dvec2 p(-radiusMm + (i + 0.5) * step, -radiusMm + (j + 0.5) * step);
+      if (glm::dot(p, p) > radiusMm * radiusMm) continue;
+      const glm::dvec3 direction = glm::normalize(glm::dvec3(p, z) - glm::dvec3(film, 0.0));
       if (!lens.traceFromFilm({glm::dvec3(film, 0.0), direction})) continue;
       sum += std::pow(direction.z, 4.0) * step * step;
     }
@@ -68,35 +65,62 @@ double relativeIllumination(const optics::LensSystem& lens, glm::dvec2 film) {
   return sum / (z * z);
 }
 
-TEST(Renderer, RealisticFurnaceSeesRadianceTimesRelativeIllumination) {
-  const auto directory = lenslab::testing::makeTestDirectory("furnace-lens");
+struct FurnaceCase {
+  const char* name;
+  const char* camera;  // the Camera directive's parameters
+  bool rearDiskOnly;   // the course camera samples only the rear aperture's disk
+};
+
+class LensFurnace : public ::testing::TestWithParam<FurnaceCase> {};
+
+TEST_P(LensFurnace, SeesRadianceTimesTheLensRelativeIllumination) {
+  const FurnaceCase& furnace = GetParam();
+  const auto directory = lenslab::testing::makeTestDirectory(std::string("furnace-") + furnace.name);
   writeFile(directory / "dgauss.dat", render::testing::kDoubleGauss50);
   const double radiance = 2.0;
   const int size = 16;
+  const double diagonalMm = 60.0;
   const auto path = writeFile(
       directory / "furnace.pbrt",
-      "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" \"string lensfile\" \"dgauss.dat\" "
-      "\"float aperturediameter\" [12] \"float focusdistance\" [3]\n"
-      "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
-      "\"float diagonal\" [60]\nIntegrator \"path\"\n" + furnaceWorld(radiance));
+      std::string("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" ") + furnace.camera +
+          "\nFilm \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
+          "\"float diagonal\" [60]\nIntegrator \"path\"\n" + furnaceWorld(radiance));
   RenderJob job = loadJob(path, 1024);
   ASSERT_TRUE(job.camera && job.scene);
   const auto* camera = dynamic_cast<const RealisticCamera*>(job.camera.get());
   ASSERT_NE(camera, nullptr);
-  // Render only a few pixels' worth: a 16x16 image at 1024 spp is quick.
   const auto image = renderToCompletion(job);
   ASSERT_TRUE(image);
-  const double filmSideMm = 60.0 / std::sqrt(2.0);
-  for (const auto& [px, py] : {std::pair{8, 8}, std::pair{4, 8}, std::pair{12, 3}, std::pair{1, 1}}) {
-    // The pixel centre on the film, with pbrt's flip (see RealisticCamera).
-    const glm::dvec2 film(0.5 * filmSideMm - (px + 0.5) / size * filmSideMm,
-                          -0.5 * filmSideMm + (py + 0.5) / size * filmSideMm);
-    const double expected = radiance * relativeIllumination(camera->lens(), film);
-    const double measured = image->rgb[3 * static_cast<std::size_t>(py * size + px)];
-    EXPECT_NEAR(measured, expected, 0.03 * radiance * relativeIllumination(camera->lens(), {0, 0}))
-        << "pixel " << px << "," << py;
+  const optics::LensSystem& lens = camera->lens();
+  // The exit pupil may pass rays that cross the rear vertex plane outside the rear aperture
+  // (the rear surface is curved), so integrate over a wider disk for it.
+  const double radius = lens.rearApertureRadiusMm() * (furnace.rearDiskOnly ? 1.0 : 2.0);
+  const double filmSideMm = diagonalMm / std::sqrt(2.0);
+  const double center = radiance * relativeIllumination(lens, {0.0, 0.0}, radius);
+  ASSERT_GT(center, 0.0);
+  for (int k = 0; k < size; k += 3) {
+    for (const auto& [px, py] : {std::pair{k, k}, std::pair{k, size / 2}}) {
+      // The pixel centre on the film, with pbrt's flip (see RealisticCamera).
+      const glm::dvec2 film(0.5 * filmSideMm - (px + 0.5) / size * filmSideMm,
+                            -0.5 * filmSideMm + (py + 0.5) / size * filmSideMm);
+      const double expected = radiance * relativeIllumination(lens, film, radius);
+      const double measured = image->rgb[3 * static_cast<std::size_t>(py * size + px)];
+      EXPECT_NEAR(measured, expected, 0.01 * center + 0.03 * expected)
+          << furnace.name << " pixel " << px << "," << py;
+    }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Cameras, LensFurnace,
+    ::testing::Values(
+        FurnaceCase{"pbrt_v3", "\"string lensfile\" \"dgauss.dat\" \"float aperturediameter\" "
+                               "[12] \"float focusdistance\" [3]",
+                    false},
+        FurnaceCase{"course", "\"string specfile\" \"dgauss.dat\" \"float filmdistance\" 36.77 "
+                              "\"float aperture_diameter\" 17.1 \"float filmdiag\" 60",
+                    true}),
+    [](const ::testing::TestParamInfo<FurnaceCase>& caseInfo) { return caseInfo.param.name; });
 
 std::filesystem::path writeSmallScene(const std::filesystem::path& directory) {
   writeFile(directory / "dgauss.dat", render::testing::kDoubleGauss50);
@@ -145,7 +169,6 @@ TEST(Renderer, ProgressiveJobsPublishWavesAndCancelQuickly) {
   EXPECT_EQ(renderer.snapshot(), nullptr);
   auto started = Clock::now();
   const std::uint64_t first = renderer.start(job);
-  EXPECT_LT(std::chrono::duration<double>(Clock::now() - started).count(), 0.005);  // no wait
   // Waves of 1, 1, 2, 4, ...: the published sample counts are 1, 2, 4, 8, ...
   int lastSpp = 0;
   const auto deadline = Clock::now() + std::chrono::seconds(20);
@@ -171,16 +194,26 @@ TEST(Renderer, ProgressiveJobsPublishWavesAndCancelQuickly) {
   EXPECT_EQ(renderer.snapshot()->generation, secondGeneration);
   EXPECT_EQ(renderer.snapshot()->samplesPerPixel, 2);
 
-  renderer.start(job);
-  while (!renderer.snapshot() || renderer.snapshot()->generation == secondGeneration ||
-         renderer.snapshot()->samplesPerPixel < 16) {
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  // Timing on a shared machine: the best of three attempts, so that one descheduling of this
+  // thread (ctest runs other tests beside this one) does not count as the renderer's latency.
+  double bestStartSeconds = 1.0, bestCancelSeconds = 1.0;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    started = Clock::now();
+    const std::uint64_t generation = renderer.start(job);
+    bestStartSeconds =
+        std::min(bestStartSeconds, std::chrono::duration<double>(Clock::now() - started).count());
+    while (!renderer.snapshot() || renderer.snapshot()->generation != generation ||
+           renderer.snapshot()->samplesPerPixel < 16) {
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    started = Clock::now();
+    renderer.cancel();
+    while (renderer.busy()) std::this_thread::sleep_for(std::chrono::microseconds(50));
+    bestCancelSeconds =
+        std::min(bestCancelSeconds, std::chrono::duration<double>(Clock::now() - started).count());
   }
-  started = Clock::now();
-  renderer.cancel();
-  while (renderer.busy()) std::this_thread::sleep_for(std::chrono::microseconds(50));
-  const double cancelSeconds = std::chrono::duration<double>(Clock::now() - started).count();
-  EXPECT_LT(cancelSeconds, 0.010);
+  EXPECT_LT(bestStartSeconds, 0.001);  // start() never waits for the workers
+  EXPECT_LT(bestCancelSeconds, 0.010);
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+#!/bin/sh
+# Times the renderer on the issue's benchmark scenes, whole process, and prints wall time and
+# peak memory of each run (GNU time) plus the renderer's own stats JSON.
+#
+#   bench/render-bench.sh [BUILD_DIR] [SHARED_DIR] [RUNS]
+#
+# BUILD_DIR defaults to ./build, SHARED_DIR to ../shared (beside the project), RUNS to 3.
+# Targets (issue 4): course dgauss 300x300 at 32 spp <= 1.0 s, at 512 spp <= 12 s;
+# bench-dgauss <= 4 s and <= 1.5x bench-perspective; peak memory <= 300 MB.
+set -eu
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+shared=${2:-$here/../shared}
+runs=${3:-3}
+lenslab=$build/lenslab
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+[ -x "$lenslab" ] || { echo "no $lenslab: build first" >&2; exit 1; }
+[ -d "$shared" ] || { echo "no $shared" >&2; exit 1; }
+
+run() {  # name, then lenslab render arguments
+  name=$1; shift
+  i=1
+  while [ "$i" -le "$runs" ]; do
+    /usr/bin/time -f "%e %M" -o "$out/time" "$lenslab" render "$@" --quiet \
+      --out "$out/$name.exr" --stats-json "$out/$name.json" >/dev/null
+    read -r wall kb < "$out/time"
+    printf '%-22s run %d  wall %6.2f s  peak %5d MB  %s\n' "$name" "$i" "$wall" $((kb / 1024)) \
+      "$(tr -d '\n ' < "$out/$name.json" | sed 's/"output":"[^"]*",\{0,1\}//')"
+    i=$((i + 1))
+  done
+}
+
+scenes=$shared/reference/scenes
+run course-dgauss-32 "$scenes/dof-dragons.dgauss.pbrt" --spp 32
+run course-dgauss-512 "$scenes/dof-dragons.dgauss.pbrt" --spp 512
+run course-fisheye-32 "$scenes/dof-dragons.fisheye.pbrt" --spp 32
+run bench-dgauss "$shared/bench/bench-dgauss.pbrt"
+run bench-perspective "$shared/bench/bench-perspective.pbrt"

@@ -1,0 +1,199 @@
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "app/resources.h"
+#include "app/screenshot.h"
+#include "app/svg_export.h"
+#include "app/viewer_session.h"
+#include "optics/lens_file.h"
+#include "render/camera_factory.h"
+#include "render/image_io.h"
+#include "render/realistic_camera.h"
+
+namespace lenslab::app {
+
+namespace {
+
+// Reads part of the back buffer: a window-coordinate rectangle scaled to framebuffer pixels.
+FramebufferImage cropToRect(const FramebufferImage& image, const Rect& rect, float scale) {
+  FramebufferImage crop;
+  const int x0 = std::clamp(static_cast<int>(rect.x * scale), 0, image.width);
+  const int y0 = std::clamp(static_cast<int>(rect.y * scale), 0, image.height);
+  const int x1 = std::clamp(static_cast<int>(rect.right() * scale), x0, image.width);
+  const int y1 = std::clamp(static_cast<int>(rect.bottom() * scale), y0, image.height);
+  crop.width = x1 - x0;
+  crop.height = y1 - y0;
+  crop.rgba.reserve(static_cast<std::size_t>(crop.width) * crop.height * 4);
+  for (int y = y0; y < y1; ++y) {
+    const auto row = image.rgba.begin() + (static_cast<std::size_t>(y) * image.width + x0) * 4;
+    crop.rgba.insert(crop.rgba.end(), row, row + static_cast<std::ptrdiff_t>(crop.width) * 4);
+  }
+  return crop;
+}
+
+}  // namespace
+
+void Viewer::askForPath(FileRequest::Kind kind) {
+  using Kind = FileRequest::Kind;
+  const std::filesystem::path lenses = findResourceDirectory("lenses");
+  const std::filesystem::path scenes = findResourceDirectory("scenes");
+  const std::filesystem::path here = std::filesystem::current_path();
+  state_.browserPurpose = kind;
+  switch (kind) {
+    case Kind::Open:
+    case Kind::OpenLens:
+      state_.fileBrowser.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
+      break;
+    case Kind::OpenScene:
+      state_.fileBrowser.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
+      break;
+    case Kind::SaveLens:
+      state_.fileBrowser.show("Save lens as", FileBrowser::Mode::Save, {".dat"}, here,
+                              render::nonClobberingPath(here, "lens", ".dat").filename());
+      break;
+    case Kind::SaveRender:
+      state_.fileBrowser.show("Save render as (.png or .exr)", FileBrowser::Mode::Save,
+                              {".png", ".exr"}, here,
+                              render::nonClobberingPath(here, "lenslab-render", ".png").filename());
+      break;
+    case Kind::SaveCrossSection:
+      state_.fileBrowser.show(
+          "Save cross-section as (.png or .svg)", FileBrowser::Mode::Save, {".png", ".svg"}, here,
+          render::nonClobberingPath(here, "lenslab-cross-section", ".svg").filename());
+      break;
+  }
+}
+
+std::optional<std::string> Viewer::perform(const FileRequest& request) {
+  using Kind = FileRequest::Kind;
+  const std::string& path = request.path;
+  switch (request.kind) {
+    case Kind::Open:
+      return std::filesystem::path(path).extension() == ".pbrt" ? loadScene(path) : loadLens(path);
+    case Kind::OpenLens:
+      return loadLens(path);
+    case Kind::OpenScene:
+      return loadScene(path);
+    case Kind::SaveLens:
+      return saveLens(path);
+    case Kind::SaveRender:
+      return saveRender(path);
+    case Kind::SaveCrossSection:
+      return saveCrossSection(path);
+  }
+  return std::nullopt;
+}
+
+std::string Viewer::saveWindowScreenshotToDefault() {
+  const std::filesystem::path path =
+      render::nonClobberingPath(std::filesystem::current_path(), "lenslab-window", ".png");
+  if (const auto error = saveWindowScreenshot(path.string())) return *error;
+  return {};
+}
+
+std::optional<std::string> Viewer::loadLens(const std::string& path) {
+  optics::LensFileResult file = optics::readLensFile(path);
+  if (!file.ok()) {
+    // The current lens stays; every problem goes to the log with its file:line:column.
+    std::string message = "cannot open lens " + path + ":";
+    for (const optics::LensFileError& error : file.errors) message += "\n  " + error.toString();
+    return message;
+  }
+  state_.lens.apply(ReplaceLens{std::move(file.lens->prescription), path});
+  state_.lensHeaderComments = std::move(file.lens->headerComments);
+  addRecentFile(state_.settings, path);
+  state_.crossSectionNeedsFit = true;
+  refreshLens(state_);
+  state_.log.info("Opened lens " + path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::loadScene(const std::string& path) {
+  const LoadedScene loaded = loadSceneFile(path);
+  if (!loaded.error.empty()) return "cannot open scene " + path + ":\n" + loaded.error;
+  for (const std::string& warning : loaded.warnings) state_.log.warning(warning);
+  preview_.setScene(loaded);
+  state_.scenePath = path;
+  state_.filmDiagonalMm = render::framingOf(*loaded.description).filmDiagonalMm;
+  state_.crossSectionNeedsFit = true;
+  addRecentFile(state_.settings, path);
+  state_.log.info("Opened scene " + path);
+  // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
+  // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
+  if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
+    render::Diagnostics diagnostics;
+    const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
+    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
+    if (realistic != nullptr) {
+      const std::string lensPath = loaded.description->camera.lensPath.lexically_normal().string();
+      state_.lens.apply(ReplaceLens{realistic->lens().prescription(), lensPath});
+      state_.lensHeaderComments.clear();
+      refreshLens(state_);
+      state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
+    } else {
+      for (const render::Diagnostic& diagnostic : diagnostics.all()) {
+        state_.log.warning(diagnostic.format());
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::saveLens(const std::string& path) {
+  std::string error;
+  if (!optics::writeLensFile(path, state_.lens.prescription(), state_.lensHeaderComments, &error)) {
+    return error;
+  }
+  state_.lens.markSaved(path);
+  addRecentFile(state_.settings, path);
+  state_.log.info("Saved lens to " + path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::saveWindowScreenshot(const std::string& path) {
+  const render::WriteResult result =
+      saveFramebufferPng(path, window_.framebufferWidth(), window_.framebufferHeight());
+  if (!result.ok) return result.error;
+  state_.log.info("Saved window screenshot to " + path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::saveRender(const std::string& path) {
+  const auto snapshot = preview_.latest();
+  if (!snapshot || snapshot->samplesPerPixel == 0) {
+    return "cannot save " + path + ": there is no render yet";
+  }
+  const render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
+  const render::WriteResult result = render::writeImage(path, image, state_.exposureStops);
+  if (!result.ok) return result.error;
+  state_.log.info("Saved render (" + std::to_string(snapshot->samplesPerPixel) + " spp) to " +
+                  path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {
+  const auto canvas = state_.uiRects.find("cross-section/canvas");
+  if (canvas == state_.uiRects.end()) return std::string("the cross-section is not visible");
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension == ".svg") {
+    const CrossSectionDrawing drawing = drawLens(
+        optics::computeLensOutline(state_.lens.prescription()), 0.5 * state_.filmDiagonalMm);
+    if (const std::string error = writeCrossSectionSvg(path, drawing); !error.empty()) {
+      return error;
+    }
+  } else {
+    const float scale = static_cast<float>(window_.framebufferWidth()) /
+                        static_cast<float>(std::max(1, window_.width()));
+    const FramebufferImage crop =
+        cropToRect(readFramebuffer(window_.framebufferWidth(), window_.framebufferHeight()),
+                   canvas->second, scale);
+    const render::WriteResult result =
+        render::writePngRgba8(path, crop.width, crop.height, crop.rgba);
+    if (!result.ok) return result.error;
+  }
+  state_.log.info("Saved cross-section to " + path);
+  return std::nullopt;
+}
+
+}  // namespace lenslab::app

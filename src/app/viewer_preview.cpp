@@ -1,0 +1,61 @@
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "app/focus_pick.h"
+#include "app/viewer_session.h"
+#include "optics/focus.h"
+
+namespace lenslab::app {
+
+std::optional<int> Viewer::previewSpp() const {
+  if (!preview_.hasScene() || !state_.lensSystem) return std::nullopt;
+  return preview_.currentSpp(state_.lensSystem, state_.pinholeCamera);
+}
+
+void Viewer::updatePreview() {
+  if (const auto generation =
+          preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
+    stats_.editSubmitted(*generation, ViewerStats::Clock::now());
+  }
+  preview_.poll(state_.preview, state_.exposureStops, stats_);
+  if (!preview_.hasScene()) {
+    state_.preview.status = "No scene: File > Open scene.";
+  } else if (!state_.lensSystem) {
+    state_.preview.status = "No valid lens to render through.";
+  } else if (!state_.lensSystemIsCurrent) {
+    state_.preview.status = "Showing the last valid lens: fix the lens table to update.";
+  } else {
+    state_.preview.status.clear();
+  }
+}
+
+void Viewer::focusOnClick() {
+  const auto click = std::exchange(state_.preview.focusClick, std::nullopt);
+  if (!click || !state_.lensSystem || !preview_.hasScene()) return;
+  const auto [width, height] = preview_.previewSize(false);
+  const double x = click->first * width / std::max(1, state_.preview.imageWidth);
+  const double y = click->second * height / std::max(1, state_.preview.imageHeight);
+  const auto distance = objectDistanceUnderPixelMm(*preview_.description(), *preview_.scene(),
+                                                   state_.lensSystem, width, height, x, y);
+  if (!distance) {
+    state_.log.info("Nothing to focus on there (no surface under that pixel).");
+    return;
+  }
+  const optics::FocusResult focus =
+      optics::filmDistanceForObjectDistance(*state_.lensSystem, *distance);
+  if (!focus.ok()) {
+    state_.log.error("cannot focus at " + std::to_string(*distance / 1000.0) +
+                     " m: " + focus.whyNot);
+    return;
+  }
+  state_.lens.apply(SetFilmDistance{*focus.valueMm});
+  state_.focusDistanceInputMm = *distance;
+  char message[128];
+  std::snprintf(message, sizeof message, "Focused at %.3f m (film distance %.3f mm)",
+                *distance / 1000.0, *focus.valueMm);
+  state_.log.info(message);
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,53 @@
+#include "common/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <system_error>
+
+namespace lenslab {
+
+namespace {
+
+// Beside the target, so the rename stays on one filesystem; the process id keeps two writers of
+// the same path from sharing a temporary.
+std::filesystem::path temporaryFor(const std::filesystem::path& path) {
+  std::filesystem::path temporary = path;
+  temporary += ".tmp-lenslab-" + std::to_string(::getpid());
+  return temporary;
+}
+
+}  // namespace
+
+std::string writeThroughTemporary(
+    const std::filesystem::path& path,
+    const std::function<std::string(const std::filesystem::path& temporary)>& write) {
+  const std::filesystem::path temporary = temporaryFor(path);
+  std::error_code ignored;
+  if (const std::string error = write(temporary); !error.empty()) {
+    std::filesystem::remove(temporary, ignored);
+    return "cannot write " + path.string() + ": " + error;
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, ignored);
+    return "cannot write " + path.string() + ": " + error.message();
+  }
+  return {};
+}
+
+std::string writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
+  return writeThroughTemporary(path, [&](const std::filesystem::path& temporary) -> std::string {
+    std::ofstream output(temporary, std::ios::binary | std::ios::trunc);
+    if (!output) return std::strerror(errno != 0 ? errno : EACCES);
+    output.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+    output.flush();
+    if (!output) return "write failed";
+    return {};
+  });
+}
+
+}  // namespace lenslab
