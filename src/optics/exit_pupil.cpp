@@ -109,6 +109,14 @@ std::vector<glm::dvec2> gridPoints(double domainR) {
   return points;
 }
 
+// Where the paraxial chief ray from (filmR, 0, 0) crosses the plane: aimed at the centre of the
+// exit pupil. It passes even when the stop is far too small for the coarse grid to find.
+double chiefAimX(const Probe& probe, double filmR) {
+  const PupilData& exitPupil = probe.lens.firstOrder().exitPupil;
+  if (exitPupil.atInfinity || exitPupil.zMm <= 0.0) return 0.0;
+  return filmR * (1.0 - probe.planeZ / exitPupil.zMm);
+}
+
 RawBin measure(Probe& probe, double filmR, double domainR,
                const std::vector<glm::dvec2>& extraSeeds = {}) {
   RawBin out;
@@ -129,7 +137,6 @@ RawBin measure(Probe& probe, double filmR, double domainR,
   }
   // The region may be too small for the grid (tiny stop): try the aim at the paraxial exit
   // pupil centre as well.
-  const FirstOrderData& fo = probe.lens.firstOrder();
   double centre = 0.0;
   bool found = false;
   if (!passing.empty()) {
@@ -145,8 +152,8 @@ RawBin measure(Probe& probe, double filmR, double domainR,
       found = probe.passes(filmR, centre, 0.0);
     }
   }
-  if (!found && !fo.exitPupil.atInfinity && fo.exitPupil.zMm > 0.0) {
-    centre = filmR * (1.0 - probe.planeZ / fo.exitPupil.zMm);
+  if (!found) {
+    centre = chiefAimX(probe, filmR);
     found = probe.passes(filmR, centre, 0.0);
   }
   if (!found) return out;
@@ -208,6 +215,7 @@ RawBin measure(Probe& probe, double filmR, double domainR,
 }
 
 bool anyPasses(Probe& probe, double filmR, double domainR) {
+  if (probe.passes(filmR, chiefAimX(probe, filmR), 0.0)) return true;
   const std::vector<glm::dvec2> grid = gridPoints(domainR);
   std::vector<std::uint8_t> pass;
   probe.passesAll(filmR, grid.data(), grid.size(), pass);

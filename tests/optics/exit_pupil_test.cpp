@@ -189,3 +189,34 @@ TEST(ExitPupil, BatchCameraRaysMatchTheScalarSamples) {
 
 }  // namespace
 }  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+// A pinhole-like stop is smaller than the table's search grid; the table must still find it (via
+// the chief ray) rather than fall back to sampling the whole rear element.
+TEST(ExitPupil, TinyStopsAreFoundAndSampledEfficiently) {
+  const auto base = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  ASSERT_TRUE(base);
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (double stop : {1.0, 0.3}) {
+    const auto lens = base->withStopDiameter(stop);
+    const ExitPupilTable& table = lens->exitPupilTable();
+    ASSERT_GT(table.imageCircleRadiusMm(), 5.0) << stop;
+    int generated = 0, passed = 0;
+    for (int i = 0; i < 5000; ++i) {
+      const double r = table.imageCircleRadiusMm() * std::sqrt(uniform(rng));
+      const glm::dvec2 film{r, 0.0};
+      const auto s = lens->sampleExitPupil(film, {uniform(rng), uniform(rng)});
+      if (!s) continue;
+      ++generated;
+      passed += passes(*lens, film, s->pointMm);
+    }
+    ASSERT_GT(generated, 2500);
+    EXPECT_GE(static_cast<double>(passed) / generated, 0.9) << stop;
+  }
+}
+
+}  // namespace
+}  // namespace lenslab::optics
