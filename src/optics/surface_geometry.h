@@ -3,6 +3,7 @@
 // operations on it, shared by the scalar traces, the focus search and the exit-pupil table.
 
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -40,13 +41,13 @@ inline bool intersectSurface(const SurfaceGeometry& s, const glm::dvec3& origin,
   const double disc = b * b - c * cc;
   if (disc < 0.0) return false;
   const double q = -(b + std::copysign(std::sqrt(disc), b));
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   auto consider = [&](double t) {
     if (t > 0.0 && t < best && 1.0 + c * (o.z + t * direction.z) > 0.0) best = t;
   };
   if (q != 0.0) consider(cc / q);
   if (c != 0.0) consider(q / c);
-  if (best == INFINITY) return false;
+  if (std::isinf(best)) return false;
   tOut = best;
   return true;
 }
