@@ -37,7 +37,10 @@ double phiOf(const glm::dvec3& p) {
 }  // namespace
 
 std::optional<QuadricHit> Quadric::intersect(glm::dvec3 o, glm::dvec3 d, double tMin,
-                                             double tMax) const {
+                                             double tMax, bool withUv) const {
+  // A partial quadric (phimax below 360 degrees) needs phi to test the hit; a full one only for
+  // its uv.
+  const bool partial = phiMax < kTwoPi;
   if (kind == QuadricKind::Disk) {
     if (d.z == 0.0) return std::nullopt;
     const double t = (height - o.z) / d.z;
@@ -45,11 +48,14 @@ std::optional<QuadricHit> Quadric::intersect(glm::dvec3 o, glm::dvec3 d, double 
     const glm::dvec3 p = o + t * d;
     const double r2 = p.x * p.x + p.y * p.y;
     if (r2 > radius * radius || r2 < innerRadius * innerRadius) return std::nullopt;
-    const double phi = phiOf(p);
+    const double phi = partial || withUv ? phiOf(p) : 0.0;
     if (phi > phiMax) return std::nullopt;
-    const double r = std::sqrt(r2);
-    return QuadricHit{t, {0.0, 0.0, 1.0},
-                      {phi / phiMax, (radius - r) / std::max(1e-300, radius - innerRadius)}};
+    QuadricHit hit{t, {0.0, 0.0, 1.0}, {0.0, 0.0}};
+    if (withUv) {
+      const double r = std::sqrt(r2);
+      hit.uv = {phi / phiMax, (radius - r) / std::max(1e-300, radius - innerRadius)};
+    }
+    return hit;
   }
   double a, b, c;
   if (kind == QuadricKind::Sphere) {
@@ -72,23 +78,30 @@ std::optional<QuadricHit> Quadric::intersect(glm::dvec3 o, glm::dvec3 d, double 
   for (double t : roots) {
     if (!(t > tMin && t < tMax)) continue;
     const glm::dvec3 p = o + t * d;
-    const double phi = phiOf(p);
+    const double phi = partial || withUv ? phiOf(p) : 0.0;
     if (phi > phiMax) continue;
+    QuadricHit hit{t, p, {0.0, 0.0}};
     if (kind == QuadricKind::Sphere) {
       if (p.z < zMin || p.z > zMax) continue;
-      const double cosTheta = std::clamp(p.z / radius, -1.0, 1.0);
-      const double thetaMin = std::acos(std::clamp(zMin / radius, -1.0, 1.0));
-      const double thetaMax = std::acos(std::clamp(zMax / radius, -1.0, 1.0));
-      const double v = (std::acos(cosTheta) - thetaMin) / (thetaMax - thetaMin);
-      return QuadricHit{t, p, {phi / phiMax, v}};
+      if (withUv) {
+        const double cosTheta = std::clamp(p.z / radius, -1.0, 1.0);
+        const double thetaMin = std::acos(std::clamp(zMin / radius, -1.0, 1.0));
+        const double thetaMax = std::acos(std::clamp(zMax / radius, -1.0, 1.0));
+        hit.uv = {phi / phiMax, (std::acos(cosTheta) - thetaMin) / (thetaMax - thetaMin)};
+      }
+      return hit;
     }
     if (kind == QuadricKind::Cylinder) {
       if (p.z < zMin || p.z > zMax) continue;
-      return QuadricHit{t, {p.x, p.y, 0.0}, {phi / phiMax, (p.z - zMin) / (zMax - zMin)}};
+      hit.normal = {p.x, p.y, 0.0};
+      if (withUv) hit.uv = {phi / phiMax, (p.z - zMin) / (zMax - zMin)};
+      return hit;
     }
     if (p.z < 0.0 || p.z > height) continue;
     const double k = (radius / height) * (radius / height);
-    return QuadricHit{t, {p.x, p.y, -k * (p.z - height)}, {phi / phiMax, p.z / height}};
+    hit.normal = {p.x, p.y, -k * (p.z - height)};
+    if (withUv) hit.uv = {phi / phiMax, p.z / height};
+    return hit;
   }
   return std::nullopt;
 }

@@ -26,9 +26,11 @@ struct Quadric {
   double height = 0.0;             // disk: z of the plane; cone: apex height
   double phiMax = 2.0 * 3.14159265358979323846;
 
-  // Nearest hit with t in (tMin, tMax), object space.
+  // Nearest hit with t in (tMin, tMax), object space. Without `withUv` the hit's uv is left at
+  // zero (shadow rays need only whether there is a hit; uv costs an atan2 and for spheres two
+  // acos).
   std::optional<QuadricHit> intersect(glm::dvec3 origin, glm::dvec3 direction, double tMin,
-                                      double tMax) const;
+                                      double tMax, bool withUv = true) const;
   // Object-space bounding box.
   void bounds(glm::dvec3& lower, glm::dvec3& upper) const;
   double area() const;

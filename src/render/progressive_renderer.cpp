@@ -31,6 +31,11 @@ std::vector<Tile> makeTiles(int width, int height, int size) {
   return tiles;
 }
 
+// Camera rays go to the camera in batches of about this many, so that a lens camera traces them
+// with its vectorized kernel at full width (a wave of 1 sample per pixel would otherwise hand it
+// single rays).
+constexpr std::size_t kCameraBatchRays = 1024;
+
 // Renders samples [firstSample, firstSample + count) of every pixel in the tile and adds their
 // sum to `sums`. Returns false when cancelled part-way.
 bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int count,
@@ -38,32 +43,43 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
                 RenderStatistics& statistics) {
   const Camera& camera = *job.camera;
   const int width = camera.width();
-  // Per-thread scratch for one pixel's samples: camera rays go to the camera as one batch.
+  const int tileWidth = tile.x1 - tile.x0;
+  const int tilePixels = tileWidth * (tile.y1 - tile.y0);
+  const auto samplesPerPixel = static_cast<std::size_t>(count);
+  const int pixelsPerBatch =
+      static_cast<int>(std::max<std::size_t>(1, kCameraBatchRays / samplesPerPixel));
+  // Per-thread scratch for one batch: samplers[p * count + s] is sample s of the batch's pixel p.
   thread_local std::vector<PixelSampler> samplers;
   thread_local std::vector<glm::vec2> rasterPoints, lensSamples;
   thread_local std::vector<CameraRay> rays;
   thread_local std::vector<std::uint8_t> passed;
-  const auto n = static_cast<std::size_t>(count);
-  rasterPoints.resize(n);
-  lensSamples.resize(n);
-  rays.resize(n);
-  passed.resize(n);
-  for (int y = tile.y0; y < tile.y1; ++y) {
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      if (cancelled()) return false;
+  for (int first = 0; first < tilePixels; first += pixelsPerBatch) {
+    if (cancelled()) return false;
+    const int pixels = std::min(pixelsPerBatch, tilePixels - first);
+    const std::size_t n = static_cast<std::size_t>(pixels) * samplesPerPixel;
+    samplers.clear();
+    rasterPoints.resize(n);
+    lensSamples.resize(n);
+    rays.resize(n);
+    passed.resize(n);
+    for (int p = 0; p < pixels; ++p) {
+      const int x = tile.x0 + (first + p) % tileWidth;
+      const int y = tile.y0 + (first + p) / tileWidth;
       const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
-      samplers.clear();
-      for (std::size_t i = 0; i < n; ++i) {
-        samplers.emplace_back(pixelIndex, static_cast<std::uint32_t>(firstSample + static_cast<int>(i)),
+      for (int s = 0; s < count; ++s) {
+        const std::size_t i = samplers.size();
+        samplers.emplace_back(pixelIndex, static_cast<std::uint32_t>(firstSample + s),
                               job.settings.seed);
         rasterPoints[i] = glm::vec2(x, y) + samplers[i].next2D();
         lensSamples[i] = samplers[i].next2D();
       }
-      camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());
-      statistics.cameraSamples += n;
+    }
+    camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());
+    statistics.cameraSamples += n;
+    for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
-      for (std::size_t i = 0; i < n; ++i) {
-        // Large waves: look for a newer job every few samples too, not only between pixels.
+      for (std::size_t i = p * samplesPerPixel; i < (p + 1) * samplesPerPixel; ++i) {
+        // Look for a newer job every few samples too, not only between batches.
         if ((i & 63u) == 63u && cancelled()) return false;
         if (!passed[i]) continue;
         ++statistics.lensPassed;
@@ -78,7 +94,9 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
         }
         sum += radiance;
       }
-      double* pixel = &sums[3 * static_cast<std::size_t>(pixelIndex)];
+      const int x = tile.x0 + (first + p) % tileWidth;
+      const int y = tile.y0 + (first + p) / tileWidth;
+      double* pixel = &sums[3 * static_cast<std::size_t>(y * width + x)];
       pixel[0] += sum.x;
       pixel[1] += sum.y;
       pixel[2] += sum.z;

@@ -85,21 +85,46 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
                                    const glm::vec2* lensSamples, CameraRay* rays,
                                    std::uint8_t* passed) const {
   thread_local optics::LensRayBatch batch;
-  batch.resize(count);
+  thread_local std::vector<float> filmX, filmY, u0, u1, pdfPerMm2;
+  filmX.resize(count);
+  filmY.resize(count);
+  u0.resize(count);
+  u1.resize(count);
+  pdfPerMm2.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     const glm::dvec2 film = filmPointMm(rasterPoints[i]);
-    const auto pupil = samplePupil(film, lensSamples[i]);
-    batch.alive[i] = pupil && pupil->pdfPerMm2 > 0.0;
-    if (!batch.alive[i]) continue;
-    const glm::dvec3 toPupil = pupil->pointMm - glm::dvec3(film, 0.0);
-    const glm::dvec3 direction = glm::normalize(toPupil);
-    batch.ox[i] = static_cast<float>(film.x);
-    batch.oy[i] = static_cast<float>(film.y);
-    batch.oz[i] = 0.0f;
-    batch.dx[i] = static_cast<float>(direction.x);
-    batch.dy[i] = static_cast<float>(direction.y);
-    batch.dz[i] = static_cast<float>(direction.z);
-    rays[i].weight = exposureWeight(toPupil, *pupil);
+    filmX[i] = static_cast<float>(film.x);
+    filmY[i] = static_cast<float>(film.y);
+    u0[i] = lensSamples[i].x;
+    u1[i] = lensSamples[i].y;
+  }
+  const double planeZ = lens_->rearVertexZ();
+  if (sampling_ == LensSampling::ExitPupil) {
+    lens_->sampleCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), count, batch,
+                            pdfPerMm2.data());
+  } else {
+    batch.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto pupil = samplePupil({filmX[i], filmY[i]}, {u0[i], u1[i]});
+      const glm::dvec3 direction =
+          glm::normalize(pupil->pointMm - glm::dvec3(filmX[i], filmY[i], 0.0));
+      batch.ox[i] = filmX[i];
+      batch.oy[i] = filmY[i];
+      batch.oz[i] = 0.0f;
+      batch.dx[i] = static_cast<float>(direction.x);
+      batch.dy[i] = static_cast<float>(direction.y);
+      batch.dz[i] = static_cast<float>(direction.z);
+      batch.alive[i] = 1;
+      pdfPerMm2[i] = static_cast<float>(pupil->pdfPerMm2);
+    }
+  }
+  // Kolb's weight needs the direction toward the pupil, before the trace overwrites it.
+  const float invPlaneZSquared = static_cast<float>(1.0 / (planeZ * planeZ));
+  for (std::size_t i = 0; i < count; ++i) {
+    const float cos2 = batch.dz[i] * batch.dz[i];
+    rays[i].weight =
+        pdfPerMm2[i] > 0.0f ? cos2 * cos2 * invPlaneZSquared / pdfPerMm2[i] : 0.0f;
+    batch.alive[i] &= static_cast<std::uint8_t>(pdfPerMm2[i] > 0.0f);
   }
   lens_->traceFromFilmBatch(batch);
   for (std::size_t i = 0; i < count; ++i) {

@@ -41,7 +41,7 @@ void quadricBounds(const RTCBoundsFunctionArguments* args) {
 }
 
 template <typename Args>
-std::optional<QuadricHit> quadricHitFor(const Args* args, unsigned i, RTCRayN* ray) {
+std::optional<QuadricHit> quadricHitFor(const Args* args, unsigned i, RTCRayN* ray, bool withUv) {
   const auto* record = static_cast<const GeometryRecord*>(args->geometryUserPtr);
   const unsigned n = args->N;
   const glm::dvec3 origin(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i),
@@ -52,7 +52,8 @@ std::optional<QuadricHit> quadricHitFor(const Args* args, unsigned i, RTCRayN* r
   // An affine map keeps the ray parameter t: no renormalisation of the direction.
   const glm::dvec3 o = glm::dvec3(placed.objectFromParent * glm::dvec4(origin, 1.0));
   const glm::dvec3 d = glm::dvec3(placed.objectFromParent * glm::dvec4(direction, 0.0));
-  return placed.quadric.intersect(o, d, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i));
+  return placed.quadric.intersect(o, d, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i),
+                                  withUv);
 }
 
 void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -61,7 +62,7 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
   const auto* record = static_cast<const GeometryRecord*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
-    const auto found = quadricHitFor(args, i, ray);
+    const auto found = quadricHitFor(args, i, ray, true);
     if (!found) continue;
     const glm::dvec3 normal = record->quadric.normalToParent * found->normal;
     const unsigned n = args->N;
@@ -80,7 +81,7 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
 void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
-    if (quadricHitFor(args, i, args->ray)) {
+    if (quadricHitFor(args, i, args->ray, false)) {
       RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
     }
   }
