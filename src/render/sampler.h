@@ -36,15 +36,25 @@ inline std::uint32_t owenScramble(std::uint32_t x, std::uint32_t seed) {
   return reverseBits(laineKarras(reverseBits(x), seed));
 }
 
-// Second Sobol dimension (direction numbers v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1)), as
-// 32-bit fixed point. The map is linear over GF(2), so four byte-indexed tables give it with
-// four lookups.
-struct SobolSecondTables {
+constexpr std::uint32_t reverseBitsConstexpr(std::uint32_t x) {
+  std::uint32_t result = 0;
+  for (int bit = 0; bit < 32; ++bit) result |= ((x >> bit) & 1u) << (31 - bit);
+  return result;
+}
+
+// The second Sobol dimension (direction numbers v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1)), as
+// 32-bit fixed point, bit-reversed: Owen scrambling works on the reversed value, so the table
+// hands it over directly. The map is linear over GF(2), so four byte-indexed tables give it
+// with four lookups.
+struct SobolSecondReversedTables {
   std::uint32_t byByte[4][256];
-  constexpr SobolSecondTables() : byByte{} {
+  constexpr SobolSecondReversedTables() : byByte{} {
     std::uint32_t direction[32] = {};
-    direction[0] = 1u << 31;
-    for (int k = 1; k < 32; ++k) direction[k] = direction[k - 1] ^ (direction[k - 1] >> 1);
+    std::uint32_t v = 1u << 31;
+    for (int k = 0; k < 32; ++k) {
+      direction[k] = reverseBitsConstexpr(v);
+      v ^= v >> 1;
+    }
     for (int table = 0; table < 4; ++table) {
       for (int value = 0; value < 256; ++value) {
         std::uint32_t result = 0;
@@ -56,10 +66,11 @@ struct SobolSecondTables {
     }
   }
 };
-inline constexpr SobolSecondTables kSobolSecond{};
+inline constexpr SobolSecondReversedTables kSobolSecondReversed{};
 
-inline std::uint32_t sobolSecond(std::uint32_t index) {
-  const auto& t = kSobolSecond.byByte;
+// reverseBits(the second Sobol dimension of `index`).
+inline std::uint32_t sobolSecondReversed(std::uint32_t index) {
+  const auto& t = kSobolSecondReversed.byByte;
   return t[0][index & 0xFFu] ^ t[1][(index >> 8) & 0xFFu] ^ t[2][(index >> 16) & 0xFFu] ^
          t[3][index >> 24];
 }
@@ -85,22 +96,29 @@ inline float toUnitFloat(std::uint32_t bits) {
 class PixelSampler {
  public:
   PixelSampler(std::uint32_t pixelIndex, std::uint32_t sampleIndex, std::uint32_t seed)
-      : pixelSeed_(sampler_detail::hashCombine(pixelIndex, seed)), sampleIndex_(sampleIndex) {}
+      : pixelSeed_(sampler_detail::hashCombine(pixelIndex, seed)),
+        reversedSampleIndex_(sampler_detail::reverseBits(sampleIndex)) {}
 
+  // Bit reversals are the sampler's main cost (x86 has no instruction for them), so each
+  // owenScramble(v) = reverseBits(laineKarras(reverseBits(v))) below is written with the inner
+  // reversal folded into a value that is already reversed: three reversals per pair, not five.
   glm::vec2 next2D() {
     using namespace sampler_detail;
     const std::uint32_t pairSeed = hashCombine(pixelSeed_, dimensionPair_++);
-    const std::uint32_t index = owenScramble(sampleIndex_, pairSeed);
-    // owenScramble(reverseBits(i)) simplifies to reverseBits(laineKarras(i)).
+    // The sample index, Owen-shuffled per pixel and dimension pair.
+    const std::uint32_t index = reverseBits(laineKarras(reversedSampleIndex_, pairSeed));
+    // First Sobol dimension: reverseBits(index), so its scramble is
+    // reverseBits(laineKarras(index)).
     const std::uint32_t x = reverseBits(laineKarras(index, hashCombine(pairSeed, 1u)));
-    const std::uint32_t y = owenScramble(sobolSecond(index), hashCombine(pairSeed, 2u));
+    const std::uint32_t y =
+        reverseBits(laineKarras(sobolSecondReversed(index), hashCombine(pairSeed, 2u)));
     return {toUnitFloat(x), toUnitFloat(y)};
   }
   float next1D() { return next2D().x; }
 
  private:
   std::uint32_t pixelSeed_;
-  std::uint32_t sampleIndex_;
+  std::uint32_t reversedSampleIndex_;
   std::uint32_t dimensionPair_ = 0;
 };
 
