@@ -25,15 +25,15 @@ RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
                                  const glm::dmat4& cameraFromWorld, int width, int height,
                                  double filmDiagonalMm, double sceneUnitsPerMm,
                                  double cameraOriginZMm, LensSampling sampling)
-    : Camera(width, height),
-      lens_(std::move(lens)),
-      worldFromCamera_(glm::inverse(cameraFromWorld)),
-      sceneUnitsPerMm_(sceneUnitsPerMm),
-      cameraOriginZMm_(cameraOriginZMm),
-      sampling_(sampling) {
+    : Camera(width, height), lens_(std::move(lens)), sampling_(sampling) {
   const double diagonalPixels = std::hypot(static_cast<double>(width), static_cast<double>(height));
   filmWidthMm_ = filmDiagonalMm * width / diagonalPixels;
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
+  // Lens frame (mm, film at z = 0) to camera space (scene units, origin at cameraOriginZMm) to
+  // world, as one matrix: the only lens-millimetre to scene-unit conversion.
+  glm::dmat4 cameraFromLens(sceneUnitsPerMm);
+  cameraFromLens[3] = glm::dvec4(0.0, 0.0, -cameraOriginZMm * sceneUnitsPerMm, 1.0);
+  worldFromLensMm_ = glm::mat4(glm::inverse(cameraFromWorld) * cameraFromLens);
 }
 
 float RealisticCamera::pixelSpreadRadians() const {
@@ -43,13 +43,20 @@ float RealisticCamera::pixelSpreadRadians() const {
 }
 
 std::optional<optics::PupilSample> RealisticCamera::samplePupil(glm::dvec2 filmMm,
-                                                               glm::vec2 u) const {
+                                                                glm::vec2 u) const {
   if (sampling_ == LensSampling::ExitPupil) return lens_->sampleExitPupil(filmMm, glm::dvec2(u));
-  // Uniform on the rear aperture's disk (concentric map keeps the stratification).
+  const glm::vec2 disk = rearDiskPointMm(u);
+  return optics::PupilSample{{disk.x, disk.y, lens_->rearVertexZ()}, rearDiskPdfPerMm2()};
+}
+
+glm::vec2 RealisticCamera::rearDiskPointMm(glm::vec2 u) const {
+  // Uniform on the rear aperture's disk (the concentric map keeps the stratification).
+  return static_cast<float>(lens_->rearApertureRadiusMm()) * concentricDisk(u);
+}
+
+double RealisticCamera::rearDiskPdfPerMm2() const {
   const double radius = lens_->rearApertureRadiusMm();
-  const glm::vec2 disk = concentricDisk(u);
-  return optics::PupilSample{{radius * disk.x, radius * disk.y, lens_->rearVertexZ()},
-                             1.0 / (3.14159265358979323846 * radius * radius)};
+  return 1.0 / (3.14159265358979323846 * radius * radius);
 }
 
 glm::dvec2 RealisticCamera::filmPointMm(glm::vec2 raster) const {
@@ -59,13 +66,10 @@ glm::dvec2 RealisticCamera::filmPointMm(glm::vec2 raster) const {
           -0.5 * filmHeightMm_ + raster.y / height_ * filmHeightMm_};
 }
 
-void RealisticCamera::finishRay(glm::dvec3 exitOriginMm, glm::dvec3 exitDirection,
+void RealisticCamera::finishRay(glm::vec3 exitOriginMm, glm::vec3 exitDirection,
                                 CameraRay& ray) const {
-  const glm::dvec3 origin =
-      (exitOriginMm - glm::dvec3(0.0, 0.0, cameraOriginZMm_)) * sceneUnitsPerMm_;
-  ray.origin = glm::vec3(worldFromCamera_ * glm::dvec4(origin, 1.0));
-  ray.direction =
-      glm::vec3(glm::normalize(glm::dvec3(worldFromCamera_ * glm::dvec4(exitDirection, 0.0))));
+  ray.origin = glm::vec3(worldFromLensMm_ * glm::vec4(exitOriginMm, 1.0f));
+  ray.direction = glm::normalize(glm::vec3(worldFromLensMm_ * glm::vec4(exitDirection, 0.0f)));
 }
 
 bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, CameraRay& ray) const {
@@ -77,7 +81,7 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
   const auto out = lens_->traceFromFilm({start, glm::normalize(toPupil)});
   if (!out) return false;
   ray.weight = exposureWeight(toPupil, *pupil);
-  finishRay(out->origin, out->direction, ray);
+  finishRay(glm::vec3(out->origin), glm::vec3(out->direction), ray);
   return true;
 }
 
@@ -104,26 +108,26 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
                             pdfPerMm2.data());
   } else {
     batch.resize(count);
+    const auto pdf = static_cast<float>(rearDiskPdfPerMm2());
     for (std::size_t i = 0; i < count; ++i) {
-      const auto pupil = samplePupil({filmX[i], filmY[i]}, {u0[i], u1[i]});
-      const glm::dvec3 direction =
-          glm::normalize(pupil->pointMm - glm::dvec3(filmX[i], filmY[i], 0.0));
+      const glm::vec2 disk = rearDiskPointMm({u0[i], u1[i]});
+      const glm::vec3 direction = glm::normalize(
+          glm::vec3(disk.x - filmX[i], disk.y - filmY[i], static_cast<float>(planeZ)));
       batch.ox[i] = filmX[i];
       batch.oy[i] = filmY[i];
       batch.oz[i] = 0.0f;
-      batch.dx[i] = static_cast<float>(direction.x);
-      batch.dy[i] = static_cast<float>(direction.y);
-      batch.dz[i] = static_cast<float>(direction.z);
+      batch.dx[i] = direction.x;
+      batch.dy[i] = direction.y;
+      batch.dz[i] = direction.z;
       batch.alive[i] = 1;
-      pdfPerMm2[i] = static_cast<float>(pupil->pdfPerMm2);
+      pdfPerMm2[i] = pdf;
     }
   }
   // Kolb's weight needs the direction toward the pupil, before the trace overwrites it.
   const float invPlaneZSquared = static_cast<float>(1.0 / (planeZ * planeZ));
   for (std::size_t i = 0; i < count; ++i) {
     const float cos2 = batch.dz[i] * batch.dz[i];
-    rays[i].weight =
-        pdfPerMm2[i] > 0.0f ? cos2 * cos2 * invPlaneZSquared / pdfPerMm2[i] : 0.0f;
+    rays[i].weight = pdfPerMm2[i] > 0.0f ? cos2 * cos2 * invPlaneZSquared / pdfPerMm2[i] : 0.0f;
     batch.alive[i] &= static_cast<std::uint8_t>(pdfPerMm2[i] > 0.0f);
   }
   lens_->traceFromFilmBatch(batch);

@@ -45,13 +45,13 @@ class RealisticCamera final : public Camera {
  private:
   glm::dvec2 filmPointMm(glm::vec2 raster) const;
   std::optional<optics::PupilSample> samplePupil(glm::dvec2 filmMm, glm::vec2 u) const;
-  void finishRay(glm::dvec3 exitOriginMm, glm::dvec3 exitDirection, CameraRay& ray) const;
+  glm::vec2 rearDiskPointMm(glm::vec2 u) const;  // LensSampling::RearElementDisk
+  double rearDiskPdfPerMm2() const;
+  void finishRay(glm::vec3 exitOriginMm, glm::vec3 exitDirection, CameraRay& ray) const;
 
   std::shared_ptr<const optics::LensSystem> lens_;
-  glm::dmat4 worldFromCamera_;
+  glm::mat4 worldFromLensMm_;
   double filmWidthMm_, filmHeightMm_;
-  double sceneUnitsPerMm_;
-  double cameraOriginZMm_;
   LensSampling sampling_;
 };
 
