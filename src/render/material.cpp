@@ -93,6 +93,13 @@ float roughnessToAlpha(float roughness) {
          0.000640711f * x * x * x * x;
 }
 
+bool materialUsesUv(const Material& material, const TextureSet& textures) {
+  for (int index : {material.kd, material.ks, material.kr, material.kt, material.roughness}) {
+    if (textures.dependsOnUv(index)) return true;
+  }
+  return false;
+}
+
 Bsdf::Bsdf(const Material& material, const TextureSet& textures, glm::vec2 uv, glm::vec3 normal,
            float footprint)
     : kind_(material.kind), frame_(normal) {

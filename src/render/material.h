@@ -21,7 +21,12 @@ struct Material {
   float eta = 1.5f;  // glass
   glm::vec3 metalEta{0.2f, 0.92f, 1.1f};  // copper, roughly, as pbrt's default
   glm::vec3 metalK{3.9f, 2.45f, 2.14f};
+  // Whether any texture above varies over the surface: only then do hits need their (u, v)
+  // (which costs quadrics an atan2 and, for spheres, acos calls).
+  bool usesUv = true;
 };
+
+bool materialUsesUv(const Material& material, const TextureSet& textures);
 
 struct BsdfSample {
   glm::vec3 wi{0.0f};     // world space

@@ -42,6 +42,7 @@ struct GeometryRecord {
   bool flipNormal = false;
   // Quadric
   PlacedQuadric quadric;
+  bool quadricNeedsUv = true;  // false when the material ignores (u, v)
   // Instance
   int object = -1;
   glm::mat4 worldFromInstance{1.0f};

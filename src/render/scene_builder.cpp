@@ -62,7 +62,7 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
   const auto* record = static_cast<const GeometryRecord*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
-    const auto found = quadricHitFor(args, i, ray, true);
+    const auto found = quadricHitFor(args, i, ray, record->quadricNeedsUv);
     if (!found) continue;
     const glm::dvec3 normal = record->quadric.normalToParent * found->normal;
     const unsigned n = args->N;
@@ -268,6 +268,7 @@ class SceneBuilder {
       }
       params.find("type");
       params.find("bumpmap");
+      material.usesUv = materialUsesUv(material, scene_->textures_);
       scene_->materials_.push_back(material);
     }
   }
@@ -340,6 +341,8 @@ class SceneBuilder {
         return;
       }
       record.quadric.place(shape.worldFromObject, shape.reverseOrientation);
+      record.quadricNeedsUv =
+          scene_->materials_[static_cast<std::size_t>(record.material)].usesUv;
       geometry = rtcNewGeometry(scene_->device_, RTC_GEOMETRY_TYPE_USER);
       rtcSetGeometryUserPrimitiveCount(geometry, 1);
     }

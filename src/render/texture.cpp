@@ -16,6 +16,21 @@ int TextureSet::constant(glm::vec3 value) {
   return add(texture);
 }
 
+bool TextureSet::dependsOnUv(int index) const {
+  if (index < 0) return false;
+  const Texture& texture = textures_[static_cast<std::size_t>(index)];
+  switch (texture.kind) {
+    case TextureKind::Constant:
+      return false;
+    case TextureKind::Scale:
+      return dependsOnUv(texture.first) || dependsOnUv(texture.second);
+    case TextureKind::Checkerboard:
+    case TextureKind::Image:
+      return true;
+  }
+  return true;
+}
+
 glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv, float footprint) const {
   const Texture& texture = textures_[static_cast<std::size_t>(index)];
   switch (texture.kind) {
@@ -37,7 +52,8 @@ glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv, float footprint) const {
         return lookupImage(texture, *texture.image, st) * texture.imageScale;
       }
       // Trilinear: the level whose texel matches the footprint, blended with the next one.
-      const float texels = footprint * std::max(std::abs(texture.uScale), std::abs(texture.vScale)) *
+      const float texels = footprint *
+                           std::max(std::abs(texture.uScale), std::abs(texture.vScale)) *
                            static_cast<float>(texture.image->width);
       const float level = std::clamp(std::log2(std::max(texels, 1.0f)), 0.0f,
                                      static_cast<float>(levels->size() - 1));
@@ -63,8 +79,7 @@ glm::vec3 TextureSet::lookupImage(const Texture& texture, const FloatImage& imag
   const float fx = x - static_cast<float>(x0);
   const float fy = y - static_cast<float>(y0);
   auto texel = [&](int px, int py) -> glm::vec3 {
-    if (texture.blackWrap &&
-        (px < 0 || py < 0 || px >= image.width || py >= image.height)) {
+    if (texture.blackWrap && (px < 0 || py < 0 || px >= image.width || py >= image.height)) {
       return glm::vec3(0.0f);
     }
     if (texture.clampWrap) {

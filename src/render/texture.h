@@ -40,6 +40,8 @@ class TextureSet {
   int constant(glm::vec3 value);
   // `footprint`: the width in (u, v) units of the area the lookup stands for (0: a point).
   glm::vec3 evaluate(int index, glm::vec2 uv, float footprint = 0.0f) const;
+  // Whether texture `index` varies with (u, v) (false for constants and products of them).
+  bool dependsOnUv(int index) const;
   std::size_t size() const { return textures_.size(); }
 
  private:
