@@ -18,8 +18,8 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // so that the new ray does not hit the surface it starts on. The offset grows with the
 // coordinates' magnitude because float spacing does.
 glm::vec3 offsetOrigin(const SurfaceHit& hit, glm::vec3 direction) {
-  const float magnitude = std::max({1.0f, std::abs(hit.point.x), std::abs(hit.point.y),
-                                    std::abs(hit.point.z)});
+  const float magnitude =
+      std::max({1.0f, std::abs(hit.point.x), std::abs(hit.point.y), std::abs(hit.point.z)});
   const float epsilon = 2e-5f * magnitude;
   const float side = glm::dot(hit.geometricNormal, direction) >= 0.0f ? 1.0f : -1.0f;
   return hit.point + side * epsilon * hit.geometricNormal;
@@ -46,9 +46,9 @@ glm::vec3 escapedRadiance(const Scene& scene, glm::vec3 direction) {
 
 // One light's direct contribution at a hit, from one light sample and (for non-delta lights)
 // one BSDF sample combined with the power heuristic (pbrt-v2's EstimateDirect).
-glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf,
-                         glm::vec3 wo, int lightIndex, glm::vec2 uLight, float uLobe,
-                         glm::vec2 uBsdf, bool sampleBsdf, float selectionProbability = 1.0f) {
+glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
+                         int lightIndex, glm::vec2 uLight, float uLobe, glm::vec2 uBsdf,
+                         bool sampleBsdf, float selectionProbability = 1.0f) {
   const Light& light = scene.lights()[static_cast<std::size_t>(lightIndex)];
   glm::vec3 result(0.0f);
   LightSample ls;
@@ -57,29 +57,42 @@ glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& 
     const glm::vec3 f = bsdf.evaluate(wo, ls.wi, bsdfPdf);
     if (!isBlack(f)) {
       const glm::vec3 origin = offsetOrigin(hit, ls.wi);
-      const float distance =
-          std::isinf(ls.distance) ? kInfinity : ls.distance * (1.0f - 1e-4f);
+      const float distance = std::isinf(ls.distance) ? kInfinity : ls.distance * (1.0f - 1e-4f);
       if (!scene.occluded(origin, ls.wi, distance)) {
         const float lightPdf = ls.pdf * selectionProbability;
         const float weight = light.isDelta() ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
-        result += f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight /
-                  lightPdf;
+        result +=
+            f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf;
       }
     }
   }
   if (!sampleBsdf || light.isDelta()) return result;
   BsdfSample bs;
   if (!bsdf.sample(wo, uLobe, uBsdf, bs) || bs.specular) return result;
-  SurfaceHit lightHit;
   const glm::vec3 origin = offsetOrigin(hit, bs.wi);
   glm::vec3 radiance(0.0f);
   float lightPdf = 0.0f;
   if (light.kind == LightKind::Area) {
-    if (!scene.intersect(origin, bs.wi, kInfinity, lightHit) || lightHit.light != lightIndex) {
-      return result;
+    // The sample counts only if the first thing it meets is this light. Most BSDF samples miss
+    // a small emitter: for a quadric, testing it alone first skips the scene query for those.
+    glm::vec3 lightPoint, lightNormal;
+    float t = 0.0f;
+    if (light.emitter->isQuadric) {
+      if (!light.emitter->intersectQuadric(origin, bs.wi, t, lightNormal) ||
+          scene.occluded(origin, bs.wi, t * (1.0f - 1e-4f))) {
+        return result;
+      }
+      lightPoint = origin + t * bs.wi;
+    } else {
+      SurfaceHit lightHit;
+      if (!scene.intersect(origin, bs.wi, kInfinity, lightHit) || lightHit.light != lightIndex) {
+        return result;
+      }
+      lightPoint = lightHit.point;
+      lightNormal = lightHit.geometricNormal;
     }
-    radiance = areaRadiance(light, lightHit.geometricNormal, -bs.wi);
-    lightPdf = areaPdf(light, hit.point, lightHit.point, lightHit.geometricNormal);
+    radiance = areaRadiance(light, lightNormal, -bs.wi);
+    lightPdf = areaPdf(light, hit.point, lightPoint, lightNormal);
   } else {  // infinite
     if (scene.occluded(origin, bs.wi, kInfinity)) return result;
     radiance = infiniteRadiance(light, bs.wi);
@@ -150,8 +163,7 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
         const Light& light = lights[static_cast<std::size_t>(index)];
         const glm::vec3 le = infiniteRadiance(light, direction);
         const float weight =
-            specularBounce ? 1.0f
-                           : powerHeuristic(previousPdf, infinitePdf(light) / lightCount);
+            specularBounce ? 1.0f : powerHeuristic(previousPdf, infinitePdf(light) / lightCount);
         radiance += throughput * le * weight;
       }
       break;
@@ -177,8 +189,8 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
     const glm::vec2 uBsdf = sampler.next2D();
     if (!bsdf.isSpecular() && !lights.empty()) {
       // Next-event estimation toward one light chosen uniformly.
-      const int index = std::min(static_cast<int>(uChoose.x * lightCount),
-                                 static_cast<int>(lights.size()) - 1);
+      const int index =
+          std::min(static_cast<int>(uChoose.x * lightCount), static_cast<int>(lights.size()) - 1);
       radiance += throughput * estimateDirect(scene, hit, bsdf, wo, index, uLight, 0.0f,
                                               glm::vec2(0.0f), false, 1.0f / lightCount);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "render/sampling.h"
 
@@ -19,13 +20,12 @@ glm::vec3 Emitter::sample(glm::vec2 u, glm::vec3& normal) const {
     // Pick a triangle by area, then reuse the leftover of u.x inside it.
     const float target = u.x * cumulativeArea.back();
     const auto found = std::upper_bound(cumulativeArea.begin(), cumulativeArea.end(), target);
-    const std::size_t index =
-        std::min<std::size_t>(static_cast<std::size_t>(found - cumulativeArea.begin()),
-                              cumulativeArea.size() - 1);
+    const std::size_t index = std::min<std::size_t>(
+        static_cast<std::size_t>(found - cumulativeArea.begin()), cumulativeArea.size() - 1);
     const float before = index == 0 ? 0.0f : cumulativeArea[index - 1];
     const float width = cumulativeArea[index] - before;
-    const float reused = width > 0.0f ? std::clamp((target - before) / width, 0.0f, 0.99999994f)
-                                      : 0.5f;
+    const float reused =
+        width > 0.0f ? std::clamp((target - before) / width, 0.0f, 0.99999994f) : 0.5f;
     const glm::vec2 b = uniformTriangle({reused, u.y});
     const glm::vec3& a = triangles[3 * index];
     const glm::vec3& bb = triangles[3 * index + 1];
@@ -35,6 +35,20 @@ glm::vec3 Emitter::sample(glm::vec2 u, glm::vec3& normal) const {
   }
   if (flipNormal) normal = -normal;
   return point;
+}
+
+bool Emitter::intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t,
+                               glm::vec3& normal) const {
+  if (!isQuadric) return false;
+  const glm::dvec3 o(quadric.objectFromParent * glm::dvec4(glm::dvec3(origin), 1.0));
+  const glm::dvec3 d(quadric.objectFromParent * glm::dvec4(glm::dvec3(direction), 0.0));
+  const auto hit =
+      quadric.quadric.intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), false);
+  if (!hit) return false;
+  t = static_cast<float>(hit->t);
+  normal = glm::vec3(glm::normalize(quadric.normalToParent * hit->normal));
+  if (flipNormal) normal = -normal;
+  return true;
 }
 
 glm::vec3 areaRadiance(const Light& light, glm::vec3 normal, glm::vec3 wo) {
@@ -82,8 +96,8 @@ bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float /*scene
         if (cosAngle < light.cosTotalWidth) return false;
         if (cosAngle < light.cosFalloffStart) {
           // pbrt's spot falloff: the fourth power of the normalised cosine.
-          const float delta = (cosAngle - light.cosTotalWidth) /
-                              (light.cosFalloffStart - light.cosTotalWidth);
+          const float delta =
+              (cosAngle - light.cosTotalWidth) / (light.cosFalloffStart - light.cosTotalWidth);
           out.radiance *= (delta * delta) * (delta * delta);
         }
       }

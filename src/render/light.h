@@ -29,6 +29,10 @@ struct Emitter {
 
   // A uniform point on the surface with its unit normal (emitting side when one-sided).
   glm::vec3 sample(glm::vec2 u, glm::vec3& normal) const;
+  // The nearest hit of the ray on a quadric emitter alone (no other geometry), with the unit
+  // normal oriented as sample() orients it. False when it misses or the emitter is a mesh.
+  bool intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t,
+                        glm::vec3& normal) const;
 };
 
 struct Light {

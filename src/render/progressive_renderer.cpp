@@ -123,8 +123,8 @@ void renderWaves(const RenderJob& jobIn, std::uint64_t generation,
   const std::vector<Tile> tiles = makeTiles(width, height, std::max(4, job.settings.tileSize));
   std::vector<double> sums(static_cast<std::size_t>(width) * height * 3, 0.0);
   std::vector<RenderStatistics> tileStatistics(tiles.size());
-  const int threads = job.settings.threads > 0 ? job.settings.threads
-                                               : tbb::this_task_arena::max_concurrency();
+  const int threads =
+      job.settings.threads > 0 ? job.settings.threads : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
   std::optional<LowPriorityWorkers> lowPriority;
   if (job.settings.lowPriority) {
