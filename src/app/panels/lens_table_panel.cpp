@@ -179,7 +179,7 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
                                           ImGuiTableFlags_ScrollY;
   // The table takes the rows it needs (up to 55% of the panel); first-order data goes below.
   const float rowHeight = ImGui::GetFrameHeightWithSpacing() + 1.0f;
-  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + 6.0f;
+  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + px(6.0f);
   const float tableHeight =
       std::clamp(wanted, px(80.0f), std::max(px(80.0f), ImGui::GetContentRegionAvail().y * 0.55f));
   if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight))) {
