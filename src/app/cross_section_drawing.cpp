@@ -45,7 +45,8 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
     const optics::StopOutline& stop = *outline.stop;
     for (double sign : {1.0, -1.0}) {
       Polyline bar;
-      bar.points = {{stop.zMm, sign * stop.apertureRadiusMm}, {stop.zMm, sign * stop.outerRadiusMm}};
+      bar.points = {{stop.zMm, sign * stop.apertureRadiusMm},
+                    {stop.zMm, sign * stop.outerRadiusMm}};
       bar.colour = palette::kStop;
       bar.widthPx = 3.0f;
       bounds.include(bar.points[1]);

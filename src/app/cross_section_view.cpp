@@ -11,6 +11,20 @@ PixelPoint CrossSectionView::toPixels(const optics::OutlinePoint& point,
           static_cast<float>(canvasCentre.y - (point.yMm - centreYMm) * pixelsPerMm)};
 }
 
+CanvasPoint CrossSectionView::toCanvas(const optics::OutlinePoint& point,
+                                       PixelPoint canvasCentre) const {
+  return {canvasCentre.x - (point.zMm - centreZMm) * pixelsPerMm,
+          canvasCentre.y - (point.yMm - centreYMm) * pixelsPerMm};
+}
+
+BoundsMm CrossSectionView::visibleBounds(float canvasWidth, float canvasHeight) const {
+  BoundsMm bounds;
+  const double halfZ = 0.5 * canvasWidth / pixelsPerMm, halfY = 0.5 * canvasHeight / pixelsPerMm;
+  bounds.include({centreZMm - halfZ, centreYMm - halfY});
+  bounds.include({centreZMm + halfZ, centreYMm + halfY});
+  return bounds;
+}
+
 optics::OutlinePoint CrossSectionView::toLens(PixelPoint pixel, PixelPoint canvasCentre) const {
   return {centreZMm - (pixel.x - canvasCentre.x) / pixelsPerMm,
           centreYMm - (pixel.y - canvasCentre.y) / pixelsPerMm};
@@ -24,13 +38,14 @@ void CrossSectionView::fit(const BoundsMm& bounds, float canvasWidth, float canv
   centreYMm = 0.5 * (bounds.minY + bounds.maxY);
   const double usableWidth = std::max(1.0, canvasWidth * (1 - 2 * kMarginFraction));
   const double usableHeight = std::max(1.0, canvasHeight * (1 - 2 * kMarginFraction));
-  pixelsPerMm = std::min(usableWidth / width, usableHeight / height);
+  pixelsPerMm = std::clamp(std::min(usableWidth / width, usableHeight / height), kMinPixelsPerMm,
+                           kMaxPixelsPerMm);
 }
 
 void CrossSectionView::zoomAbout(PixelPoint cursor, PixelPoint canvasCentre, double factor) {
   if (!(factor > 0) || !std::isfinite(factor)) return;
   const optics::OutlinePoint anchor = toLens(cursor, canvasCentre);
-  pixelsPerMm = std::clamp(pixelsPerMm * factor, 1e-3, 1e5);
+  pixelsPerMm = std::clamp(pixelsPerMm * factor, kMinPixelsPerMm, kMaxPixelsPerMm);
   // Move the centre so the anchor maps back to the cursor.
   const optics::OutlinePoint after = toLens(cursor, canvasCentre);
   centreZMm += anchor.zMm - after.zMm;

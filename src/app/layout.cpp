@@ -4,10 +4,12 @@
 
 namespace lenslab::app {
 
-LayoutFractions clampFractions(LayoutFractions fractions, float width, float height) {
-  // Columns: the lens table, the cross-section and the preview each keep kMinPanelExtent.
+LayoutFractions clampFractions(LayoutFractions fractions, float width, float height,
+                               float uiScale) {
+  const float minExtent = kMinPanelExtent * uiScale;
+  // Columns: the lens table, the cross-section and the preview each keep the minimum extent.
   if (width > 0) {
-    const float minShare = std::min(kMinPanelExtent / width, 1.0f / 3.0f);
+    const float minShare = std::min(minExtent / width, 1.0f / 3.0f);
     float& left = fractions.lensTableWidth;
     float& right = fractions.previewWidth;
     left = std::clamp(left, minShare, 1.0f - 2 * minShare);
@@ -22,19 +24,19 @@ LayoutFractions clampFractions(LayoutFractions fractions, float width, float hei
   }
   // Rows: the log keeps half the minimum, the upper panels the full minimum.
   if (height > 0) {
-    const float low = std::min(0.5f * kMinPanelExtent / height, 0.5f);
-    const float high = std::max(low, 1.0f - kMinPanelExtent / height);
+    const float low = std::min(0.5f * minExtent / height, 0.5f);
+    const float high = std::max(low, 1.0f - minExtent / height);
     fractions.logHeight = std::clamp(fractions.logHeight, low, high);
   }
   return fractions;
 }
 
 PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,
-                          const LayoutFractions& requested, bool includeLog) {
+                          const LayoutFractions& requested, bool includeLog, float uiScale) {
   const float top = menuBarHeight;
   const float usableHeight = std::max(0.0f, windowHeight - top);
-  const LayoutFractions fractions = clampFractions(requested, windowWidth, usableHeight);
-  const float gap = kSplitterThickness;
+  const LayoutFractions fractions = clampFractions(requested, windowWidth, usableHeight, uiScale);
+  const float gap = kSplitterThickness * uiScale;
 
   const float logHeight = includeLog ? fractions.logHeight * usableHeight : 0.0f;
   const float upperHeight =

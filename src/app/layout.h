@@ -29,14 +29,18 @@ struct PanelLayout {
   Rect bottomSplitter;  // between the upper panels and the log
 };
 
+// In pixels at UI scale 1; both grow with the UI scale.
 inline constexpr float kSplitterThickness = 6.0f;
 inline constexpr float kMinPanelExtent = 80.0f;
 
-// Keeps each fraction within what leaves every panel at least kMinPanelExtent wide/high.
-LayoutFractions clampFractions(LayoutFractions fractions, float width, float height);
+// Keeps each fraction within what leaves every panel at least kMinPanelExtent (times the UI
+// scale) wide/high.
+LayoutFractions clampFractions(LayoutFractions fractions, float width, float height,
+                               float uiScale = 1.0f);
 
 // With includeLog false the upper panels take the whole height and the log rects are empty.
 PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,
-                          const LayoutFractions& fractions, bool includeLog = true);
+                          const LayoutFractions& fractions, bool includeLog = true,
+                          float uiScale = 1.0f);
 
 }  // namespace lenslab::app

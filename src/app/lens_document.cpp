@@ -17,19 +17,23 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 double& fieldOf(optics::Surface& surface, SurfaceField field, double& scratch) {
   switch (field) {
-    case SurfaceField::RadiusMm: return surface.radiusMm;
-    case SurfaceField::ThicknessMm: return surface.thicknessMm;
-    case SurfaceField::IndexD: return surface.indexD;
-    case SurfaceField::ApertureDiameterMm: return surface.apertureDiameterMm;
-    case SurfaceField::AbbeD: break;
+    case SurfaceField::RadiusMm:
+      return surface.radiusMm;
+    case SurfaceField::ThicknessMm:
+      return surface.thicknessMm;
+    case SurfaceField::IndexD:
+      return surface.indexD;
+    case SurfaceField::ApertureDiameterMm:
+      return surface.apertureDiameterMm;
+    case SurfaceField::AbbeD:
+      break;
   }
   return scratch;
 }
 
 std::string surfaceOutOfRange(std::size_t surface, std::size_t count) {
   std::ostringstream message;
-  message << "surface " << surface + 1 << " does not exist (the lens has " << count
-          << " surfaces)";
+  message << "surface " << surface + 1 << " does not exist (the lens has " << count << " surfaces)";
   return message.str();
 }
 
@@ -46,42 +50,71 @@ std::optional<SurfaceField> surfaceFieldFromName(const std::string& name) {
 
 const char* surfaceFieldName(SurfaceField field) {
   switch (field) {
-    case SurfaceField::RadiusMm: return "radius";
-    case SurfaceField::ThicknessMm: return "thickness";
-    case SurfaceField::IndexD: return "n_d";
-    case SurfaceField::AbbeD: return "V_d";
-    case SurfaceField::ApertureDiameterMm: return "aperture";
+    case SurfaceField::RadiusMm:
+      return "radius";
+    case SurfaceField::ThicknessMm:
+      return "thickness";
+    case SurfaceField::IndexD:
+      return "n_d";
+    case SurfaceField::AbbeD:
+      return "V_d";
+    case SurfaceField::ApertureDiameterMm:
+      return "aperture";
   }
   return "?";
 }
 
 std::string describe(const EditCommand& command) {
   std::ostringstream text;
-  std::visit(Overloaded{
-                 [&](const SetSurfaceField& c) {
-                   text << "set " << surfaceFieldName(c.field) << " of surface " << c.surface + 1
-                        << " to " << c.value;
-                 },
-                 [&](const MakeStop& c) { text << "make surface " << c.surface + 1 << " the stop"; },
-                 [&](const InsertSurface& c) { text << "insert a surface at " << c.before + 1; },
-                 [&](const DeleteSurface& c) { text << "delete surface " << c.surface + 1; },
-                 [&](const MoveSurface& c) {
-                   text << "move surface " << c.from + 1 << " to " << c.to + 1;
-                 },
-                 [&](const FlipLens&) { text << "flip the lens"; },
-                 [&](const ScaleLens& c) { text << "scale the lens by " << c.factor; },
-                 [&](const SetFilmDistance& c) { text << "set film distance to " << c.mm << " mm"; },
-                 [&](const SetStopDiameter& c) { text << "set stop diameter to " << c.mm << " mm"; },
-                 [&](const ReplaceLens& c) {
-                   text << "open " << (c.path.empty() ? std::string("a new lens") : c.path);
-                 },
-             },
-             command);
+  std::visit(
+      Overloaded{
+          [&](const SetSurfaceField& c) {
+            text << "set " << surfaceFieldName(c.field) << " of surface " << c.surface + 1 << " to "
+                 << c.value;
+          },
+          [&](const MakeStop& c) { text << "make surface " << c.surface + 1 << " the stop"; },
+          [&](const InsertSurface& c) { text << "insert a surface at " << c.before + 1; },
+          [&](const DeleteSurface& c) { text << "delete surface " << c.surface + 1; },
+          [&](const MoveSurface& c) {
+            text << "move surface " << c.from + 1 << " to " << c.to + 1;
+          },
+          [&](const FlipLens&) { text << "flip the lens"; },
+          [&](const ScaleLens& c) { text << "scale the lens by " << c.factor; },
+          [&](const SetFilmDistance& c) { text << "set film distance to " << c.mm << " mm"; },
+          [&](const SetStopDiameter& c) { text << "set stop diameter to " << c.mm << " mm"; },
+          [&](const ReplaceLens& c) {
+            text << "open " << (c.path.empty() ? std::string("a new lens") : c.path);
+          },
+      },
+      command);
   return text.str();
 }
 
+namespace {
+
+bool sameSurface(const optics::Surface& a, const optics::Surface& b) {
+  // Bitwise-equal numbers, with NaN equal to NaN (an invalid value typed twice is no change).
+  const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+  return same(a.radiusMm, b.radiusMm) && same(a.thicknessMm, b.thicknessMm) &&
+         same(a.indexD, b.indexD) && same(a.apertureDiameterMm, b.apertureDiameterMm) &&
+         a.abbeD.has_value() == b.abbeD.has_value() && (!a.abbeD || same(*a.abbeD, *b.abbeD));
+}
+
+}  // namespace
+
 LensDocument::LensDocument(optics::Prescription prescription, std::string path)
-    : current_(std::move(prescription)), path_(std::move(path)) {}
+    : current_(std::move(prescription)), path_(std::move(path)), saved_(current_) {}
+
+void LensDocument::markSaved(std::string path) {
+  path_ = std::move(path);
+  saved_ = current_;
+}
+
+bool LensDocument::modified() const {
+  const auto& a = current_.surfaces;
+  const auto& b = saved_.surfaces;
+  return !std::equal(a.begin(), a.end(), b.begin(), b.end(), sameSurface);
+}
 
 std::optional<std::string> LensDocument::apply(const EditCommand& command,
                                                const std::string& mergeKey) {
@@ -158,6 +191,8 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
   redo_.clear();
   current_ = std::move(next);
   path_ = std::move(nextPath);
+  // A lens just opened is unmodified.
+  if (std::holds_alternative<ReplaceLens>(command)) saved_ = current_;
   ++generation_;
   return std::nullopt;
 }

@@ -52,9 +52,9 @@ struct ReplaceLens {
   std::string path;  // where it came from; empty for an unsaved lens
 };
 
-using EditCommand = std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface,
-                                 MoveSurface, FlipLens, ScaleLens, SetFilmDistance,
-                                 SetStopDiameter, ReplaceLens>;
+using EditCommand =
+    std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface, MoveSurface, FlipLens,
+                 ScaleLens, SetFilmDistance, SetStopDiameter, ReplaceLens>;
 
 // What a command does, in words, for the log and the Edit menu ("set radius of surface 3").
 std::string describe(const EditCommand& command);
@@ -83,7 +83,10 @@ class LensDocument {
   bool redo();
   // Ends the current merge group, so the next command starts a new undo step.
   void endMerge() { lastMergeKey_.clear(); }
-  void markSaved(std::string path) { path_ = std::move(path); }
+  // The lens was saved to `path`: it becomes the lens's path and its unmodified state.
+  void markSaved(std::string path);
+  // The lens differs from what was last opened or saved (undoing back to it clears this).
+  bool modified() const;
 
  private:
   struct Snapshot {
@@ -94,6 +97,7 @@ class LensDocument {
 
   optics::Prescription current_;
   std::string path_;
+  optics::Prescription saved_;  // as last opened or saved
   std::vector<Snapshot> undo_, redo_;
   std::string lastMergeKey_;
   std::uint64_t generation_ = 0;

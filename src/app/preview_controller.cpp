@@ -49,62 +49,91 @@ std::pair<int, int> PreviewController::previewSize(bool draft) const {
   if (!description_) return {0, 0};
   const int filmWidth = std::max(1, description_->film.xResolution);
   const int filmHeight = std::max(1, description_->film.yResolution);
-  const double scale = std::min(1.0, static_cast<double>(kMaxPreviewExtent) /
-                                         std::max(filmWidth, filmHeight)) *
-                       (draft ? 0.5 : 1.0);
+  const double scale =
+      std::min(1.0, static_cast<double>(kMaxPreviewExtent) / std::max(filmWidth, filmHeight)) *
+      (draft ? 0.5 : 1.0);
   return {std::max(1, static_cast<int>(filmWidth * scale)),
           std::max(1, static_cast<int>(filmHeight * scale))};
+}
+
+render::RenderJob PreviewController::makeJob(int width, int height, int samplesPerPixel) const {
+  render::RenderJob job;
+  job.camera =
+      submitted_->pinhole
+          ? render::makeMatchingPinholeCamera(*description_, *submittedLens_, width, height)
+          : render::makeLensCamera(*description_, submittedLens_, width, height);
+  job.scene = scene_;
+  job.settings.samplesPerPixel = samplesPerPixel;
+  job.settings.integrator.kind = description_->integrator.kind;
+  job.settings.integrator.maxDepth = description_->integrator.maxDepth;
+  // All cores, at a lower scheduling priority than the UI thread (see RenderSettings).
+  job.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  job.settings.lowPriority = true;
+  return job;
 }
 
 std::optional<std::uint64_t> PreviewController::update(
     const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft) {
   if (!description_ || !scene_ || !lens) return std::nullopt;
   const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_};
-  if (submitted_ && *submitted_ == wanted) return std::nullopt;
-  const auto [width, height] = previewSize(draft);
-  render::RenderJob job;
-  job.camera = pinhole ? render::makeMatchingPinholeCamera(*description_, *lens, width, height)
-                       : render::makeLensCamera(*description_, lens, width, height);
-  job.scene = scene_;
-  job.settings.samplesPerPixel = kMaxPreviewSpp;
-  job.settings.integrator.kind = description_->integrator.kind;
-  job.settings.integrator.maxDepth = description_->integrator.maxDepth;
-  // All cores, at a lower scheduling priority than the UI thread (see RenderSettings).
-  job.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  job.settings.lowPriority = true;
-  generation_ = renderer_.start(std::move(job));
-  submitted_ = wanted;
-  submittedLens_ = lens;
-  firstPassReported_ = false;
-  return generation_;
+  if (!submitted_ || !(*submitted_ == wanted)) {
+    // A change: the coarse first look.
+    submitted_ = wanted;
+    submittedLens_ = lens;
+    const auto [width, height] = previewSize(draft);
+    generation_ = renderer_.start(
+        makeJob(std::max(1, width / kCoarseDivisor), std::max(1, height / kCoarseDivisor), 1));
+    coarseGeneration_ = generation_;
+    fullGeneration_ = 0;
+    coarseReported_ = firstPassReported_ = false;
+    return ++changeId_;
+  }
+  if (fullGeneration_ == 0) {
+    // The full job starts when the coarse one is done (checked once a frame: the renderer runs
+    // one job at a time, and a frame is short next to the full job's first pass).
+    const auto snapshot = renderer_.snapshot();
+    if (snapshot && snapshot->generation == coarseGeneration_ && snapshot->complete) {
+      const auto [width, height] = previewSize(draft);
+      generation_ = renderer_.start(makeJob(width, height, kMaxPreviewSpp));
+      fullGeneration_ = generation_;
+    }
+  }
+  return std::nullopt;
 }
 
 int PreviewController::currentSpp(const std::shared_ptr<const optics::LensSystem>& lens,
                                   bool pinhole) const {
   const Submitted wanted{lens.get(), pinhole, false, sceneVersion_};
-  if (!submitted_ || !(*submitted_ == wanted)) return 0;
-  const auto snapshot = renderer_.snapshot();
-  if (!snapshot || snapshot->generation != generation_) return 0;
-  return snapshot->samplesPerPixel;
+  if (!submitted_ || !(*submitted_ == wanted) || fullGeneration_ == 0) return 0;
+  // What the preview shows (poll() ran before the frame was drawn), not what the renderer has
+  // just published: a script that waits for 4 spp and takes a screenshot sees 4 spp.
+  return shownGeneration_ == fullGeneration_ ? shownSpp_ : 0;
 }
 
 bool PreviewController::busy() const {
+  if (!submitted_) return false;
+  if (fullGeneration_ == 0) return true;  // the coarse job, or the wait for the full one
   const auto snapshot = renderer_.snapshot();
-  return submitted_ && (!snapshot || snapshot->generation != generation_ || !snapshot->complete);
+  return !snapshot || snapshot->generation != fullGeneration_ || !snapshot->complete;
 }
 
 void PreviewController::poll(PreviewState& preview, double exposureStops, ViewerStats& stats) {
   const auto snapshot = renderer_.snapshot();
   preview.rendering = busy();
+  // The image on screen belongs to an earlier change until this change's first image arrives.
+  preview.stale = submitted_ && (!snapshot || snapshot->generation < coarseGeneration_);
   if (!snapshot) return;
-  const bool fresh = snapshot->generation != shownGeneration_ ||
-                     snapshot->samplesPerPixel != shownSpp_;
+  const bool fresh =
+      snapshot->generation != shownGeneration_ || snapshot->samplesPerPixel != shownSpp_;
   if (!fresh && exposureStops == shownExposure_) return;
+  // Only here, on a new snapshot or exposure: encoding and the texture upload are not per frame.
   render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
   preview.texture.upload(snapshot->width, snapshot->height,
                          render::encodeSrgbRgba8(image, exposureStops));
+  ++preview.uploads;
   preview.imageWidth = snapshot->width;
   preview.imageHeight = snapshot->height;
+  preview.coarse = snapshot->generation == coarseGeneration_;
   preview.samplesPerPixel = snapshot->samplesPerPixel;
   preview.seconds = snapshot->renderSeconds;
   preview.raysPerSecond = snapshot->renderSeconds > 0
@@ -114,8 +143,12 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   shownGeneration_ = snapshot->generation;
   shownSpp_ = snapshot->samplesPerPixel;
   shownExposure_ = exposureStops;
-  if (snapshot->generation == generation_ && !firstPassReported_) {
-    stats.firstPassShown(generation_, ViewerStats::Clock::now());
+  if (snapshot->generation == coarseGeneration_ && !coarseReported_) {
+    stats.firstPictureShown(changeId_, ViewerStats::Clock::now());
+    coarseReported_ = true;
+  }
+  if (fullGeneration_ != 0 && snapshot->generation == fullGeneration_ && !firstPassReported_) {
+    stats.firstPassShown(changeId_, ViewerStats::Clock::now());
     firstPassReported_ = true;
   }
 }

@@ -29,11 +29,18 @@ struct LoadedScene {
 // Parses and builds a scene file (blocking; the viewer calls it on load).
 LoadedScene loadSceneFile(const std::filesystem::path& path);
 
+// After every change the preview renders in two steps: a coarse first look (a quarter of the
+// resolution per axis, one sample per pixel: a sixteenth of the work, so it appears within a
+// frame or two of the edit), then the real job at the preview resolution, refining
+// progressively. The texture shows the coarse image stretched until the real job's first pass
+// replaces it.
 class PreviewController {
  public:
   // Preview images are at most this many pixels on their longer side; drafts (while dragging)
   // half that.
   static constexpr int kMaxPreviewExtent = 640;
+  // The coarse first look divides each side by this.
+  static constexpr int kCoarseDivisor = 4;
   // The preview keeps refining to this many samples per pixel, then the workers rest.
   static constexpr int kMaxPreviewSpp = 1024;
 
@@ -41,16 +48,18 @@ class PreviewController {
   bool hasScene() const { return description_ != nullptr; }
   const render::SceneDescription* description() const { return description_.get(); }
   const render::Scene* scene() const { return scene_.get(); }
-  // Samples per pixel rendered so far for this lens and camera at full preview resolution: 0
-  // before the first pass, while a draft renders, or when they differ from the running job's
-  // (the new job starts on the next update).
+  // Samples per pixel the preview shows for this lens and camera at full preview resolution: 0
+  // before the first pass is shown, while a draft renders, or when they differ from the running
+  // job's (the new job starts on the next update).
   int currentSpp(const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole) const;
 
-  // Starts a new job when anything it depends on changed. Returns the new generation, if any.
+  // Starts the coarse job when anything the preview depends on changed, and the full job once
+  // the coarse one is done. Returns an id for the change when it starts a new coarse job.
   std::optional<std::uint64_t> update(const std::shared_ptr<const optics::LensSystem>& lens,
                                       bool pinhole, bool draft);
-  // Reads the newest snapshot into `preview` (re-encoding on an exposure change) and tells
-  // `stats` when a job's first pass appears.
+  // Reads the newest snapshot into `preview` when there is a new one (re-encoding on an exposure
+  // change; otherwise no work) and tells `stats` when the change's coarse image and its first
+  // full pass appear.
   void poll(PreviewState& preview, double exposureStops, ViewerStats& stats);
   // The newest snapshot, for saving the render as PNG or EXR.
   std::shared_ptr<const render::RenderSnapshot> latest() const { return renderer_.snapshot(); }
@@ -65,7 +74,7 @@ class PreviewController {
   std::shared_ptr<const render::Scene> scene_;
   std::uint64_t sceneVersion_ = 0;
 
-  // What the running job was made from.
+  // What the preview is being rendered for.
   struct Submitted {
     const optics::LensSystem* lens = nullptr;
     bool pinhole = false;
@@ -73,15 +82,20 @@ class PreviewController {
     std::uint64_t sceneVersion = 0;
     bool operator==(const Submitted&) const = default;
   };
+  // A job for the submitted lens and camera at this size.
+  render::RenderJob makeJob(int width, int height, int samplesPerPixel) const;
   std::optional<Submitted> submitted_;
   std::shared_ptr<const optics::LensSystem> submittedLens_;  // keeps the pointer above alive
-  std::uint64_t generation_ = 0;
+  std::uint64_t changeId_ = 0;          // counts changes (the ids update() returns)
+  std::uint64_t coarseGeneration_ = 0;  // the renderer's generation of the change's coarse job
+  std::uint64_t fullGeneration_ = 0;    // and of its full job; 0 until it starts
+  std::uint64_t generation_ = 0;        // the running job's (one of the two)
 
   // What the texture shows.
   std::uint64_t shownGeneration_ = 0;
   int shownSpp_ = -1;
   double shownExposure_ = 0;
-  bool firstPassReported_ = false;
+  bool coarseReported_ = false, firstPassReported_ = false;
 };
 
 }  // namespace lenslab::app

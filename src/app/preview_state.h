@@ -2,6 +2,7 @@
 // What the render preview panel shows and what the user asked of it. The viewer fills the
 // figures from the renderer's snapshots; the panel turns clicks and sliders into requests.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -17,7 +18,10 @@ struct PreviewState {
   double seconds = 0;
   bool rendering = false;
   bool reducedResolution = false;  // a value is being dragged
-  std::string status;              // why there is no picture, or which lens it shows
+  bool coarse = false;             // the image is the coarse first look of the latest change
+  bool stale = false;         // the image is from before the latest change (its render is starting)
+  std::uint64_t uploads = 0;  // texture uploads so far (one per new snapshot)
+  std::string status;         // why there is no picture, or which lens it shows
   // A click on the image, in image pixels (x right, y down), to focus on. Consumed by the viewer.
   std::optional<std::pair<double, double>> focusClick;
 };

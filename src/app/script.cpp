@@ -1,5 +1,6 @@
 #include "app/script.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -17,14 +18,26 @@ struct VerbShape {
 // Argument counts per verb; "set" is checked further by its own rules below.
 const std::map<std::string, VerbShape>& verbs() {
   static const std::map<std::string, VerbShape> table = {
-      {"load-lens", {1, 1}},      {"load-scene", {1, 1}},
-      {"save-lens", {1, 1}},      {"set", {2, 4}},
-      {"make-stop", {1, 1}},      {"flip", {0, 0}},
-      {"undo", {0, 0}},           {"redo", {0, 0}},
-      {"wait-frames", {1, 1}},    {"wait-spp", {1, 1}},
-      {"wait-until-file", {1, 1}}, {"screenshot", {1, 1}},
-      {"screenshot-render", {1, 1}}, {"screenshot-cross-section", {1, 1}},
-      {"dump-ui", {1, 1}},        {"quit", {0, 1}},
+      {"load-lens", {1, 1}},
+      {"load-scene", {1, 1}},
+      {"save-lens", {1, 1}},
+      {"set", {2, 4}},
+      {"make-stop", {1, 1}},
+      {"flip", {0, 0}},
+      {"undo", {0, 0}},
+      {"redo", {0, 0}},
+      {"wait-frames", {1, 1}},
+      {"wait-spp", {1, 1}},
+      {"wait-until-file", {1, 1}},
+      {"screenshot", {1, 1}},
+      {"screenshot-render", {1, 1}},
+      {"screenshot-cross-section", {1, 1}},
+      {"dump-ui", {1, 1}},
+      {"quit", {0, 1}},
+      {"zoom-cross-section", {1, 1}},
+      {"drop", {1, 1}},
+      {"open-dialog", {1, 1}},
+      {"dialog-choose", {1, 1}},
   };
   return table;
 }
@@ -61,7 +74,8 @@ std::optional<std::string> checkSet(const ScriptCommand& command) {
       return command.where(0) + ": expected: set surface N FIELD VALUE";
     }
     const auto index = parseInteger(a[1]);
-    if (!index || *index < 1) return command.where(1) + ": '" + a[1] + "' is not a surface number (1, 2, ...)";
+    if (!index || *index < 1)
+      return command.where(1) + ": '" + a[1] + "' is not a surface number (1, 2, ...)";
     if (!surfaceFieldFromName(a[2])) {
       return command.where(2) + ": unknown field '" + a[2] +
              "' (expected radius, thickness, n, abbe or aperture)";
@@ -78,8 +92,25 @@ std::optional<std::string> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  if (a[0] == "blocked-rays") {
+    if (a.size() != 2 || (a[1] != "show" && a[1] != "hide")) {
+      return command.where(0) + ": expected: set blocked-rays show|hide";
+    }
+    return std::nullopt;
+  }
+  if (a[0] == "layout") {
+    if (a.size() != 4) return command.where(0) + ": expected: set layout LENS PREVIEW LOG";
+    for (std::size_t i = 1; i < 4; ++i) {
+      const auto value = parseNumber(a[i]);
+      if (!value || !(*value > 0 && *value < 1)) {
+        return command.where(i) + ": '" + a[i] + "' is not a fraction between 0 and 1";
+      }
+    }
+    return std::nullopt;
+  }
   return command.where(0) + ": unknown setting '" + a[0] +
-         "' (expected surface, film-distance, stop-diameter, exposure or camera)";
+         "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays or "
+         "layout)";
 }
 
 std::optional<std::string> checkShape(const ScriptCommand& command) {
@@ -101,6 +132,20 @@ std::optional<std::string> checkShape(const ScriptCommand& command) {
     return message.str();
   }
   if (command.verb == "set") return checkSet(command);
+  if (command.verb == "zoom-cross-section") {
+    const auto factor = parseNumber(command.arguments[0]);
+    if (!factor || !(*factor > 0)) {
+      return command.where(0) + ": '" + command.arguments[0] + "' is not a positive number";
+    }
+  }
+  if (command.verb == "open-dialog") {
+    static const char* const kKinds[] = {"open-lens", "open-scene", "save-lens", "save-render",
+                                         "save-cross-section"};
+    if (std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
+      return command.where(0) + ": unknown dialog '" + command.arguments[0] +
+             "' (expected open-lens, open-scene, save-lens, save-render or save-cross-section)";
+    }
+  }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
                              command.verb == "make-stop" || command.verb == "quit";
   if (countArgument && count == 1) {
@@ -235,9 +280,24 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
       host.setExposure(*parseNumber(a[1]));
       return true;
     }
+    if (a[0] == "blocked-rays") {
+      host.showBlockedRays(a[1] == "show");
+      return true;
+    }
+    if (a[0] == "layout") {
+      host.setLayout(*parseNumber(a[1]), *parseNumber(a[2]), *parseNumber(a[3]));
+      return true;
+    }
     host.setPinholeCamera(a[1] == "pinhole");
     return true;
   }
+  if (verb == "zoom-cross-section") {
+    host.zoomCrossSection(*parseNumber(a[0]));
+    return true;
+  }
+  if (verb == "drop") return check(host.drop(a[0]));
+  if (verb == "open-dialog") return check(host.openDialog(a[0]));
+  if (verb == "dialog-choose") return check(host.chooseInDialog(a[0]));
   if (verb == "wait-frames") {
     // Counted from this command's first frame: "wait-frames 3" lets three frames be drawn.
     return framesWaited_++ >= *parseInteger(a[0]);
@@ -245,7 +305,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "wait-spp") {
     const auto spp = host.previewSpp();
     if (!spp) {
-      fail(host, command.where(0) + ": wait-spp: the preview cannot render (no valid lens or scene)");
+      fail(host,
+           command.where(0) + ": wait-spp: the preview cannot render (no valid lens or scene)");
       return true;
     }
     return *spp >= *parseInteger(a[0]);

@@ -6,11 +6,19 @@
 //   load-lens FILE              load-scene FILE             save-lens FILE
 //   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
-//   set camera lens|pinhole     make-stop N                 flip
-//   undo                        redo
+//   set camera lens|pinhole     set blocked-rays show|hide  set layout LENS PREVIEW LOG
+//   make-stop N                 flip                        undo          redo
+//   zoom-cross-section FACTOR   (about the canvas centre)
+//   drop FILE                   (as if the file were dropped onto the window)
+//   open-dialog KIND            (KIND: open-lens open-scene save-lens save-render
+//                                save-cross-section; shows the file browser as the menu does)
+//   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
 //   dump-ui FILE.json           quit [CODE]
+//
+// "set layout" takes the lens table's and the preview's shares of the width and the log's share
+// of the height, as fractions.
 //
 // A wait that lasts longer than two minutes fails the script.
 
@@ -65,6 +73,19 @@ class ScriptHost {
   virtual std::optional<int> previewSpp() const = 0;
   virtual void quit(int exitCode) = 0;
   virtual void reportError(const std::string& message) = 0;
+  // Viewer-only commands; a host without a window refuses them.
+  virtual std::optional<std::string> openDialog(const std::string& kind) {
+    return "cannot open a " + kind + " dialog here";
+  }
+  virtual std::optional<std::string> chooseInDialog(const std::string& name) {
+    return "there is no dialog to choose " + name + " in";
+  }
+  virtual std::optional<std::string> drop(const std::string& path) {
+    return "cannot drop " + path + " here";
+  }
+  virtual void zoomCrossSection(double /*factor*/) {}
+  virtual void showBlockedRays(bool /*show*/) {}
+  virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
 };
 
 // Runs a parsed script a step per frame: it executes commands until one has to wait (for

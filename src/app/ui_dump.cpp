@@ -14,8 +14,34 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
   for (const auto& [name, rect] : state.uiRects) {
     widgets[name] = {{"x", rect.x}, {"y", rect.y}, {"width", rect.width}, {"height", rect.height}};
   }
+  // What tests check besides positions: the lens, its flags, the dialog, the log.
+  nlohmann::json problems = nlohmann::json::array();
+  for (const LensProblem& problem : state.lensProblems) {
+    problems.push_back({{"surface", problem.surface + 1}, {"message", problem.message}});
+  }
+  nlohmann::json log = nlohmann::json::array();
+  for (const LogEntry& entry : state.log.entries()) {
+    log.push_back({{"level", entry.level == LogLevel::Error     ? "error"
+                             : entry.level == LogLevel::Warning ? "warning"
+                                                                : "info"},
+                   {"text", entry.text}});
+  }
+  const nlohmann::json about = {
+      {"lens_path", state.lens.path()},
+      {"lens_modified", state.lens.modified()},
+      {"lens_valid", state.lensSystemIsCurrent},
+      {"problems", problems},
+      {"file_browser", state.fileBrowser.visible() ? state.fileBrowser.purpose() : ""},
+      {"recent_files", state.settings.recentFiles},
+      {"layout",
+       {{"lens_table_width", state.settings.layout.lensTableWidth},
+        {"preview_width", state.settings.layout.previewWidth},
+        {"log_height", state.settings.layout.logHeight}}},
+      {"log", log},
+  };
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
-                               {"widgets", widgets}};
+                               {"widgets", widgets},
+                               {"state", about}};
   return writeFileAtomically(path, json.dump(2) + '\n');
 }
 

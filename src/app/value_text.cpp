@@ -1,5 +1,6 @@
 #include "app/value_text.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -7,11 +8,22 @@
 
 namespace lenslab::app {
 
-std::string formatFieldValue(SurfaceField field, double value) {
+std::string formatFieldValue(SurfaceField field, double value, int significantDigits) {
   if (field == SurfaceField::AbbeD && std::isnan(value)) return "";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", std::clamp(significantDigits, 1, 17), value);
+  return text;
+}
+
+std::string formatFieldValueExact(SurfaceField field, double value) {
+  if (field == SurfaceField::AbbeD && std::isnan(value)) return "";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char text[40];
+  // The shortest text that reads back as exactly this double.
+  const auto [end, error] = std::to_chars(text, text + sizeof text - 1, value);
+  if (error != std::errc()) return formatFieldValue(field, value, 17);
+  *end = '\0';
   return text;
 }
 

@@ -8,8 +8,12 @@
 
 namespace lenslab::app {
 
-// "inf" for a flat surface, "" for a missing Abbe number, up to 6 significant digits otherwise.
-std::string formatFieldValue(SurfaceField field, double value);
+// "inf" for a flat surface, "" for a missing Abbe number, up to `significantDigits` significant
+// digits otherwise (the table shortens values to fit a narrow column).
+std::string formatFieldValue(SurfaceField field, double value, int significantDigits = 6);
+// The same with every digit needed to read the value back exactly: what a cell shows while it
+// is being edited, so committing an untouched cell changes nothing.
+std::string formatFieldValueExact(SurfaceField field, double value);
 
 struct ParsedValue {
   std::optional<double> value;  // NaN means "none" for the Abbe number

@@ -6,7 +6,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -15,6 +17,7 @@
 #include "app/panels/panels.h"
 #include "app/resources.h"
 #include "app/screenshot.h"
+#include "app/ui_scale.h"
 #include "app/viewer_session.h"
 #include "render/image_io.h"
 
@@ -42,9 +45,18 @@ std::string defaultLensPath() {
 void Viewer::handleShortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   // ImGui 1.86 indexes keys by the backend's key codes (GLFW's here).
-  constexpr int kKeyF12 = GLFW_KEY_F12, kKeyQ = GLFW_KEY_Q, kKeyZ = GLFW_KEY_Z, kKeyY = GLFW_KEY_Y;
+  constexpr int kKeyF12 = GLFW_KEY_F12, kKeyQ = GLFW_KEY_Q, kKeyZ = GLFW_KEY_Z, kKeyY = GLFW_KEY_Y,
+                kKeyO = GLFW_KEY_O, kKeyS = GLFW_KEY_S;
+  using Kind = FileRequest::Kind;
   if (ImGui::IsKeyPressed(kKeyF12, false)) state_.windowScreenshotRequested = true;
   if (io.KeyCtrl && ImGui::IsKeyPressed(kKeyQ, false)) state_.quitRequested = true;
+  // The menu's Ctrl+O and Ctrl+S: the same requests as its items.
+  if (io.KeyCtrl && !io.KeyShift && ImGui::IsKeyPressed(kKeyO, false)) {
+    state_.fileRequests.push_back({Kind::OpenLens, {}});
+  }
+  if (io.KeyCtrl && !io.KeyShift && ImGui::IsKeyPressed(kKeyS, false)) {
+    state_.fileRequests.push_back({Kind::SaveLens, {}});
+  }
   // Inside a text field, Ctrl+Z belongs to the field.
   if (io.KeyCtrl && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(kKeyZ, false)) {
@@ -57,9 +69,22 @@ void Viewer::handleShortcuts() {
   }
 }
 
+namespace {
+
+// A menu, popup or the file browser is on screen: captures wait for a frame without them.
+bool overlayShown(const ViewerState& state) {
+  return ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) ||
+         state.fileBrowser.visible();
+}
+
+}  // namespace
+
 void Viewer::drawFrame() {
   const float width = static_cast<float>(window_.width());
   const float height = static_cast<float>(window_.height());
+  ++state_.frameNumber;
+  // Whatever is open now is drawn in this frame, even if it closes during it.
+  state_.frameHadOverlay = overlayShown(state_);
   state_.uiRects.clear();
   state_.dragging = false;
   refreshLens(state_);
@@ -67,8 +92,9 @@ void Viewer::drawFrame() {
   const float menuHeight = drawMainMenu(state_);
   applyPendingEdits(state_);
   state_.settings.layout =
-      clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight));
-  state_.layout = computeLayout(width, height, menuHeight, state_.settings.layout, state_.showLog);
+      clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight), uiScale());
+  state_.layout =
+      computeLayout(width, height, menuHeight, state_.settings.layout, state_.showLog, uiScale());
   drawSplitters(state_, width, height);
   drawLensTablePanel(state_, state_.layout.lensTable);
   // Apply the table's edits now, so the cross-section drawn next shows them in this frame.
@@ -80,7 +106,9 @@ void Viewer::drawFrame() {
   if (const auto chosen = state_.fileBrowser.draw(); chosen && state_.browserPurpose) {
     state_.fileRequests.push_back({*state_.browserPurpose, chosen->string()});
   }
+  if (state_.fileBrowser.visible()) state_.uiRects["file-browser"] = state_.fileBrowser.rect();
   applyPendingEdits(state_);
+  state_.frameHadOverlay |= overlayShown(state_);
 }
 
 void Viewer::openDroppedFiles() {
@@ -99,35 +127,115 @@ void Viewer::carryOutRequests() {
   }
   if (state_.windowScreenshotRequested) {
     state_.windowScreenshotRequested = false;
-    if (const std::string error = saveWindowScreenshotToDefault(); !error.empty()) {
-      state_.log.error(error);
+    state_.captures.push_back({PendingCapture::Kind::Window, {}, state_.frameNumber});
+  }
+}
+
+void Viewer::takeCaptures() {
+  // The frame in the back buffer must have been drawn after the request, with nothing over it.
+  if (state_.captures.empty() || state_.frameHadOverlay) return;
+  std::vector<PendingCapture> waiting;
+  for (PendingCapture& capture : std::exchange(state_.captures, {})) {
+    if (capture.requestedInFrame >= state_.frameNumber) {
+      waiting.push_back(std::move(capture));
+      continue;
     }
+    std::optional<std::string> error;
+    if (capture.kind == PendingCapture::Kind::Window) {
+      if (capture.path.empty()) {
+        if (std::string failed = saveWindowScreenshotToDefault(); !failed.empty()) error = failed;
+      } else {
+        error = saveWindowScreenshot(capture.path);
+      }
+    } else {
+      error = saveCrossSection(capture.path);
+    }
+    if (error) state_.log.error(*error);
+  }
+  state_.captures = std::move(waiting);
+}
+
+void Viewer::ensureDrawn() {
+  if (drawnThisFrame_) return;
+  window_.drawFrame();
+  drawnThisFrame_ = true;
+  drawnSignature_ = frameSignature_;
+}
+
+void Viewer::updateWindowTitle() {
+  const std::string& path = state_.lens.path();
+  std::string title = "lenslab - ";
+  title +=
+      path.empty() ? std::string("unsaved lens") : std::filesystem::path(path).filename().string();
+  if (state_.lens.modified()) title += "*";
+  if (title != shownTitle_) {
+    window_.setTitle(title);
+    shownTitle_ = title;
   }
 }
 
 int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script) {
   const bool testMode = options.screenshotPath.has_value();
+  const auto started = ViewerStats::Clock::now();
+  using Seconds = std::chrono::duration<double>;
+  const auto framePeriod = std::chrono::duration_cast<ViewerStats::Clock::duration>(
+      Seconds(1.0 / window_.refreshRateHz()));
+  auto nextFrame = started;
   for (int frame = 0; !window_.shouldClose() && !state_.quitRequested; ++frame) {
-    // Idle when nothing happens: wake for input, or a few times a second; while the preview
-    // renders, wake at the display rate to show its progress. Tests and scripts poll.
-    window_.waitEvents(testMode || script ? 0.0 : preview_.busy() ? 1.0 / 60.0 : 0.25);
+    // Idle when nothing happens: wake for input, or a few times a second. While the preview
+    // renders (and while a script runs), frames come at the display rate, as swapping with vsync
+    // would pace them: input wakes the loop at once, and the time between frames is the render
+    // workers'. Only --screenshot runs flat out.
+    const auto now = ViewerStats::Clock::now();
+    if (testMode) {
+      window_.waitEvents(0.0);
+    } else if (script || preview_.busy()) {
+      window_.waitEvents(std::max(0.0, Seconds(nextFrame - now).count()));
+    } else {
+      window_.waitEvents(0.25);
+    }
+    nextFrame = std::max(nextFrame + framePeriod, ViewerStats::Clock::now());
+    const auto workStarted = ViewerStats::Clock::now();
     openDroppedFiles();
+    pollPreview();
     window_.beginFrame();
     drawFrame();
-    window_.renderFrame();
+    window_.endFrame();
     focusOnClick();
+    // Start the render this frame's edits call for before the frame is rasterized, which may
+    // take a while.
     updatePreview();
-    stats_.frameDrawn(ViewerStats::Clock::now(), preview_.busy());
+    // Redraw only when the pixels would change: a software rasterizer (Mesa llvmpipe under
+    // Xvfb, or any machine without a GPU driver) spends tens of milliseconds of CPU on every
+    // redraw, which the render workers need. Captures draw the frame when it was skipped.
+    drawnThisFrame_ = false;
+    frameSignature_ = window_.frameSignature() ^ (state_.preview.uploads * 0x9E3779B97F4A7C15ull);
+    if (frameSignature_ != drawnSignature_ || window_.takeRefreshRequest()) ensureDrawn();
+    updateWindowTitle();
+    const bool rendering = preview_.busy();
+    stats_.frameDrawn(ViewerStats::Clock::now(), rendering);
     carryOutRequests();
+    takeCaptures();
     if (script) script->step(*this);
+    updatePreview();  // files opened and script edits start rendering now, not next frame
     if (testMode && frame + 1 >= options.frames) {
+      // The picture must show the preview's first pass, not the black canvas before it (unless
+      // there is nothing to render, or it takes far too long).
+      const auto spp = previewSpp();
+      const double waited =
+          std::chrono::duration<double>(ViewerStats::Clock::now() - started).count();
+      if (spp && *spp < 1 && waited < kScreenshotPreviewWaitSeconds) {
+        if (drawnThisFrame_) window_.swapBuffers();
+        continue;
+      }
       if (const auto error = saveWindowScreenshot(*options.screenshotPath)) {
         std::fprintf(stderr, "lenslab: %s\n", error->c_str());
         return 1;
       }
       break;
     }
-    window_.swapBuffers();
+    if (drawnThisFrame_) window_.swapBuffers();
+    stats_.frameWork(ViewerStats::Clock::now() - workStarted, rendering, drawnThisFrame_);
   }
   return exitCode_;
 }
@@ -151,9 +259,13 @@ int runViewer(const ViewerOptions& options) {
   }
 
   ViewerState state;
-  // Tests and scripts must neither read nor change the user's settings.
+  // Tests and scripts must neither read nor change the user's settings, unless a test of the
+  // settings themselves asks (LENSLAB_SETTINGS_IN_SCRIPTS=1, with its own XDG_CONFIG_HOME).
   const bool automated = options.screenshotPath.has_value() || script.has_value();
-  if (!automated) {
+  const char* settingsInScripts = std::getenv("LENSLAB_SETTINGS_IN_SCRIPTS");
+  const bool persist =
+      !automated || (settingsInScripts != nullptr && std::string(settingsInScripts) == "1");
+  if (persist) {
     if (const std::filesystem::path directory = configDirectory(); !directory.empty()) {
       state.settingsFile = directory / "settings.json";
       std::string warning;
@@ -194,6 +306,9 @@ int runViewer(const ViewerOptions& options) {
     }
   }
   state.lens = LensDocument(state.lens.prescription(), state.lens.path());  // nothing to undo yet
+  // Files named on the command line were the user's choice; the defaults are not.
+  if (!options.lensPath.empty()) addRecentFile(state.settings, options.lensPath);
+  if (!options.scenePath.empty()) addRecentFile(state.settings, options.scenePath);
   const int exitCode = viewer.run(options, std::move(script));
   if (!options.statsJsonPath.empty()) {
     if (const std::string statsError = viewer.stats().writeJson(options.statsJsonPath);

@@ -7,9 +7,9 @@
 namespace lenslab::app {
 
 struct ViewerOptions {
-  std::string lensPath;    // empty: the default lens
-  std::string scenePath;   // empty: the default scene
-  std::string scriptPath;  // commands to run (see app/script.h)
+  std::string lensPath;       // empty: the default lens
+  std::string scenePath;      // empty: the default scene
+  std::string scriptPath;     // commands to run (see app/script.h)
   std::string statsJsonPath;  // on exit, write frame times and edit-to-preview latency here
   // Test mode: draw `frames` frames, write the framebuffer to this PNG, and exit.
   std::optional<std::string> screenshotPath;

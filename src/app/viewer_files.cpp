@@ -5,6 +5,7 @@
 #include "app/resources.h"
 #include "app/screenshot.h"
 #include "app/svg_export.h"
+#include "app/ui_scale.h"
 #include "app/viewer_session.h"
 #include "optics/lens_file.h"
 #include "render/camera_factory.h"
@@ -65,22 +66,58 @@ void Viewer::askForPath(FileRequest::Kind kind) {
   }
 }
 
+std::optional<std::string> Viewer::openDialog(const std::string& kind) {
+  using Kind = FileRequest::Kind;
+  static const std::pair<const char*, Kind> kKinds[] = {
+      {"open-lens", Kind::OpenLens},
+      {"open-scene", Kind::OpenScene},
+      {"save-lens", Kind::SaveLens},
+      {"save-render", Kind::SaveRender},
+      {"save-cross-section", Kind::SaveCrossSection}};
+  for (const auto& [name, value] : kKinds) {
+    if (kind == name) {
+      askForPath(value);
+      return std::nullopt;
+    }
+  }
+  return "unknown dialog '" + kind + "'";
+}
+
+std::optional<std::string> Viewer::chooseInDialog(const std::string& name) {
+  if (!state_.fileBrowser.visible()) return "there is no file browser open to choose " + name;
+  state_.fileBrowser.submit(name);
+  return std::nullopt;
+}
+
+// Requests from the menus, the browser, drops and the recent-files list: what the user opened
+// goes to the recent files (the defaults loaded at start do not).
 std::optional<std::string> Viewer::perform(const FileRequest& request) {
   using Kind = FileRequest::Kind;
   const std::string& path = request.path;
+  const auto remember = [&](std::optional<std::string> error) {
+    if (!error) {
+      std::error_code ignored;
+      addRecentFile(state_.settings, std::filesystem::absolute(path, ignored).string());
+    }
+    return error;
+  };
   switch (request.kind) {
     case Kind::Open:
-      return std::filesystem::path(path).extension() == ".pbrt" ? loadScene(path) : loadLens(path);
+      return remember(std::filesystem::path(path).extension() == ".pbrt" ? loadScene(path)
+                                                                         : loadLens(path));
     case Kind::OpenLens:
-      return loadLens(path);
+      return remember(loadLens(path));
     case Kind::OpenScene:
-      return loadScene(path);
+      return remember(loadScene(path));
     case Kind::SaveLens:
-      return saveLens(path);
+      return remember(saveLens(path));
     case Kind::SaveRender:
       return saveRender(path);
     case Kind::SaveCrossSection:
-      return saveCrossSection(path);
+      if (std::filesystem::path(path).extension() == ".svg") return saveCrossSection(path);
+      // A PNG is read from the screen: wait for a frame without the browser that asked for it.
+      state_.captures.push_back({PendingCapture::Kind::CrossSection, path, state_.frameNumber});
+      return std::nullopt;
   }
   return std::nullopt;
 }
@@ -102,7 +139,6 @@ std::optional<std::string> Viewer::loadLens(const std::string& path) {
   }
   state_.lens.apply(ReplaceLens{std::move(file.lens->prescription), path});
   state_.lensHeaderComments = std::move(file.lens->headerComments);
-  addRecentFile(state_.settings, path);
   state_.crossSectionNeedsFit = true;
   refreshLens(state_);
   state_.log.info("Opened lens " + path);
@@ -117,7 +153,6 @@ std::optional<std::string> Viewer::loadScene(const std::string& path) {
   state_.scenePath = path;
   state_.filmDiagonalMm = render::framingOf(*loaded.description).filmDiagonalMm;
   state_.crossSectionNeedsFit = true;
-  addRecentFile(state_.settings, path);
   state_.log.info("Opened scene " + path);
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
   // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
@@ -146,12 +181,12 @@ std::optional<std::string> Viewer::saveLens(const std::string& path) {
     return error;
   }
   state_.lens.markSaved(path);
-  addRecentFile(state_.settings, path);
   state_.log.info("Saved lens to " + path);
   return std::nullopt;
 }
 
 std::optional<std::string> Viewer::saveWindowScreenshot(const std::string& path) {
+  ensureDrawn();
   const render::WriteResult result =
       saveFramebufferPng(path, window_.framebufferWidth(), window_.framebufferHeight());
   if (!result.ok) return result.error;
@@ -177,12 +212,21 @@ std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {
   if (canvas == state_.uiRects.end()) return std::string("the cross-section is not visible");
   const std::string extension = std::filesystem::path(path).extension().string();
   if (extension == ".svg") {
-    const CrossSectionDrawing drawing = drawLens(
-        optics::computeLensOutline(state_.lens.prescription()), 0.5 * state_.filmDiagonalMm);
-    if (const std::string error = writeCrossSectionSvg(path, drawing); !error.empty()) {
+    // What the panel shows: its drawing (lens, stop, axis, film and the ray fans), framed as the
+    // panel frames it.
+    const CrossSectionDrawing& drawing = crossSection(state_).drawing;
+    const auto [canvasWidth, canvasHeight] = state_.crossSectionCanvasSize;
+    SvgFrame frame = wholeDrawingFrame(drawing);
+    if (canvasWidth > 1 && canvasHeight > 1) {
+      frame.visibleMm = state_.crossSectionView.visibleBounds(canvasWidth, canvasHeight);
+      // Line widths are in pixels at UI scale 1, like the panel's before px().
+      frame.mmPerPixel = uiScale() / state_.crossSectionView.pixelsPerMm;
+    }
+    if (const std::string error = writeCrossSectionSvg(path, drawing, frame); !error.empty()) {
       return error;
     }
   } else {
+    ensureDrawn();
     const float scale = static_cast<float>(window_.framebufferWidth()) /
                         static_cast<float>(std::max(1, window_.width()));
     const FramebufferImage crop =

@@ -15,10 +15,13 @@ std::optional<int> Viewer::previewSpp() const {
 }
 
 void Viewer::updatePreview() {
-  if (const auto generation =
+  if (const auto change =
           preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
-    stats_.editSubmitted(*generation, ViewerStats::Clock::now());
+    stats_.editSubmitted(*change, ViewerStats::Clock::now());
   }
+}
+
+void Viewer::pollPreview() {
   preview_.poll(state_.preview, state_.exposureStops, stats_);
   if (!preview_.hasScene()) {
     state_.preview.status = "No scene: File > Open scene.";
@@ -51,6 +54,7 @@ void Viewer::focusOnClick() {
     return;
   }
   state_.lens.apply(SetFilmDistance{*focus.valueMm});
+  refreshLens(state_);
   state_.focusDistanceInputMm = *distance;
   char message[128];
   std::snprintf(message, sizeof message, "Focused at %.3f m (film distance %.3f mm)",

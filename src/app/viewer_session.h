@@ -29,18 +29,26 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveLens(const std::string& path) override;
   // Script edits take effect at once (validation, LensSystem, fans), so a following wait-spp
   // waits for the render of the edited lens.
+  // Script edits are logged like the table's, so a scripted session's log reads the same.
   std::optional<std::string> edit(const EditCommand& command) override {
     auto refusal = state_.lens.apply(command);
+    if (refusal) {
+      state_.log.error("script: cannot " + describe(command) + ": " + *refusal);
+    } else {
+      state_.log.info("script: " + describe(command));
+    }
     refreshLens(state_);
     return refusal;
   }
   bool undo() override {
     const bool done = state_.lens.undo();
+    state_.log.info(done ? "script: undo" : "script: nothing to undo");
     refreshLens(state_);
     return done;
   }
   bool redo() override {
     const bool done = state_.lens.redo();
+    state_.log.info(done ? "script: redo" : "script: nothing to redo");
     refreshLens(state_);
     return done;
   }
@@ -49,6 +57,8 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveWindowScreenshot(const std::string& path) override;
   std::optional<std::string> saveRender(const std::string& path) override;
   std::optional<std::string> saveCrossSection(const std::string& path) override;
+  // A window screenshot at the default, non-clobbering path (F12, the menu); "" or an error.
+  std::string saveWindowScreenshotToDefault();
   std::optional<std::string> dumpUi(const std::string& path) override {
     const std::string error = writeUiDump(path, state_, window_.width(), window_.height());
     return error.empty() ? std::nullopt : std::optional(error);
@@ -59,27 +69,52 @@ class Viewer final : public ScriptHost {
     exitCode_ = exitCode;
   }
   void reportError(const std::string& message) override { state_.log.error(message); }
+  std::optional<std::string> openDialog(const std::string& kind) override;
+  std::optional<std::string> chooseInDialog(const std::string& name) override;
+  std::optional<std::string> drop(const std::string& path) override {
+    window_.simulateDrop({path});
+    return std::nullopt;
+  }
+  void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
+  void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
+  void setLayout(double lensTable, double preview, double log) override {
+    state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),
+                              static_cast<float>(log)};
+  }
 
  private:
   void drawFrame();
   void handleShortcuts();
+  // Before drawing: takes the renderer's newest snapshot into the preview state.
+  void pollPreview();
+  // After drawing: starts the render jobs this frame's edits call for.
   void updatePreview();
   void focusOnClick();
   void openDroppedFiles();
   void carryOutRequests();
+  // Takes the pending window and cross-section captures once a frame without overlays is drawn.
+  void takeCaptures();
+  void updateWindowTitle();
+  // Draws this frame into the back buffer unless it already is (frames equal to the last drawn
+  // one are skipped; what reads the back buffer calls this first).
+  void ensureDrawn();
   void askForPath(FileRequest::Kind kind);
   std::optional<std::string> perform(const FileRequest& request);
-  std::string saveWindowScreenshotToDefault();
 
   Window& window_;
   ViewerState& state_;
   PreviewController preview_;
   ViewerStats stats_;
   int exitCode_ = 0;
+  std::string shownTitle_;
+  std::uint64_t frameSignature_ = 0, drawnSignature_ = 0;
+  bool drawnThisFrame_ = false;
 
  public:
   // With a lens given on the command line, opening a scene keeps it instead of the scene's.
   bool keepLensOnSceneLoad = false;
+  // The first preview pass to wait for before --screenshot saves (at most this long).
+  static constexpr double kScreenshotPreviewWaitSeconds = 60.0;
   const ViewerStats& stats() const { return stats_; }
 };
 

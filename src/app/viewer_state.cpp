@@ -1,5 +1,9 @@
 #include "app/viewer_state.h"
 
+#include <algorithm>
+
+#include "app/lens_problems.h"
+
 namespace lenslab::app {
 
 // Out of line on purpose: inlined into every caller, GCC 12 reports false
@@ -8,14 +12,22 @@ void ViewerState::requestEdit(EditCommand command, std::string mergeKey) {
   pendingEdits.emplace_back(std::move(command), std::move(mergeKey));
 }
 
+std::optional<double> fanObjectDistanceFromVertexMm(const ViewerState& state) {
+  if (state.fanSettings.objectAtInfinity || !state.lensSystem) return std::nullopt;
+  // The fans' object plane is given from the film (as "Focus at distance" and "In focus" are);
+  // the optics library measures it from the front vertex. An object inside the lens is put
+  // just in front of it.
+  const double fromVertex = state.fanSettings.objectDistanceMm - state.lensSystem->totalTrackMm();
+  return std::max(fromVertex, 1.0);
+}
+
 void refreshLens(ViewerState& state) {
   const bool lensChanged = state.lens.generation() != state.lensBuiltGeneration;
   if (lensChanged) {
     state.lensBuiltGeneration = state.lens.generation();
-    state.lensProblems.clear();
-    for (const optics::ValidationError& error : optics::validate(state.lens.prescription())) {
-      state.lensProblems.push_back({error.surface, error.message});
-    }
+    std::optional<std::size_t> lastValidStop;
+    if (state.lensSystem) lastValidStop = state.lensSystem->stopIndex();
+    state.lensProblems = findLensProblems(state.lens.prescription(), lastValidStop);
     state.lensSystemIsCurrent = false;
     if (state.lensProblems.empty()) {
       optics::BuildResult built = optics::LensSystem::build(state.lens.prescription());
@@ -31,6 +43,7 @@ void refreshLens(ViewerState& state) {
     if (state.lensSystem) state.lensEflMm = state.lensSystem->firstOrder().eflMm;
   }
   if (!state.lensSystemIsCurrent) {
+    if (!state.rayFans.fans.empty() || state.rayFans.marginal) ++state.fansRevision;
     state.rayFans = {};
     return;
   }
@@ -38,12 +51,43 @@ void refreshLens(ViewerState& state) {
     optics::FanSpec spec;
     spec.raysPerFan = state.fanSettings.raysPerFan;
     spec.filmHalfDiagonalMm = 0.5 * state.filmDiagonalMm;
-    if (!state.fanSettings.objectAtInfinity) {
-      spec.objectDistanceMm = state.fanSettings.objectDistanceMm;
-    }
+    spec.objectDistanceMm = fanObjectDistanceFromVertexMm(state);
     state.rayFans = optics::computeRayFans(*state.lensSystem, spec);
     state.fansComputedWith = state.fanSettings;
+    ++state.fansRevision;
   }
+}
+
+const CrossSectionCache& crossSection(ViewerState& state) {
+  CrossSectionCache& cache = state.crossSection;
+  const bool showBlocked = state.fanSettings.showBlocked;
+  if (cache.lensGeneration == state.lens.generation() && cache.fansRevision == state.fansRevision &&
+      cache.filmDiagonalMm == state.filmDiagonalMm && cache.showBlocked == showBlocked) {
+    return cache;
+  }
+  cache.lensGeneration = state.lens.generation();
+  cache.fansRevision = state.fansRevision;
+  cache.filmDiagonalMm = state.filmDiagonalMm;
+  cache.showBlocked = showBlocked;
+  cache.outline = optics::computeLensOutline(state.lens.prescription());
+  cache.drawing = drawLens(cache.outline, 0.5 * state.filmDiagonalMm);
+  // Fit to the lens and film, with room in front for the incoming bundles (the fans start a
+  // quarter of the lens length in front of it), but not to the rays themselves: a near object
+  // would shrink the lens to a dot.
+  cache.fitBounds = cache.drawing.bounds;
+  if (cache.fitBounds.hasPoints) {
+    const double front = cache.outline.frontVertexZMm;
+    const double length = std::max(1.0, cache.fitBounds.maxZ - cache.fitBounds.minZ);
+    double raysStartZ = front + std::max(5.0, 0.25 * length);
+    for (const optics::RayFan& fan : state.rayFans.fans) {
+      for (const optics::FanRay& ray : fan.rays) {
+        if (!ray.path.points.empty()) raysStartZ = std::max(raysStartZ, ray.path.points[0].z);
+      }
+    }
+    cache.fitBounds.include({std::min(raysStartZ, front + 0.5 * length), 0.0});
+  }
+  drawRayFans(cache.drawing, state.rayFans, showBlocked);
+  return cache;
 }
 
 void applyPendingEdits(ViewerState& state) {

@@ -1,8 +1,8 @@
 #pragma once
 // The state the viewer's panels share, owned by runViewer() and passed by reference.
 
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -14,12 +14,12 @@
 #include "app/layout.h"
 #include "app/lens_document.h"
 #include "app/lens_table_state.h"
+#include "app/log.h"
 #include "app/panels/file_browser.h"
 #include "app/preview_state.h"
+#include "app/settings.h"
 #include "optics/lens_system.h"
 #include "optics/ray_fan.h"
-#include "app/log.h"
-#include "app/settings.h"
 
 namespace lenslab::app {
 
@@ -31,13 +31,35 @@ struct FileRequest {
   std::string path;  // empty: ask with the file browser first
 };
 
+// A picture of the window or of the cross-section that waits for a frame drawn with no menu,
+// popup or file browser over it (the one the request came from would otherwise be in it).
+struct PendingCapture {
+  enum class Kind { Window, CrossSection };
+  Kind kind;
+  std::string path;
+  std::uint64_t requestedInFrame = 0;
+};
+
 // How the cross-section's ray fans are traced.
 struct FanSettings {
   bool objectAtInfinity = true;
-  double objectDistanceMm = 2000.0;  // from the front vertex, when not at infinity
+  // From the film, like the focus distance and "In focus" (not from the front vertex).
+  double objectDistanceMm = 2000.0;
   bool showBlocked = true;
   int raysPerFan = 13;
   bool operator==(const FanSettings&) const = default;
+};
+
+// The cross-section as drawn: rebuilt only when the lens, its fans or the film change, not every
+// frame.
+struct CrossSectionCache {
+  std::uint64_t lensGeneration = ~std::uint64_t{0};
+  std::uint64_t fansRevision = ~std::uint64_t{0};
+  double filmDiagonalMm = 0;
+  bool showBlocked = true;
+  optics::LensOutline outline;
+  CrossSectionDrawing drawing;
+  BoundsMm fitBounds;  // the lens, the film and room for the incoming rays
 };
 
 // What a press in the cross-section grabbed, for the rest of the drag.
@@ -56,7 +78,12 @@ struct ViewerState {
   std::uint64_t lensBuiltGeneration = ~std::uint64_t{0};
   FanSettings fanSettings;
   FanSettings fansComputedWith;
-  optics::RayFans rayFans;  // for lensSystem, when lensSystemIsCurrent
+  optics::RayFans rayFans;         // for lensSystem, when lensSystemIsCurrent
+  std::uint64_t fansRevision = 0;  // bumped whenever rayFans is replaced
+  CrossSectionCache crossSection;
+  // "In focus" for lensSystem (a real-ray search: computed once per lens, not every frame).
+  std::shared_ptr<const optics::LensSystem> inFocusLens;
+  std::string inFocusText;
   double focusDistanceInputMm = 3000.0;
   // A value is being dragged this frame (film, stop, a splitter): the preview renders at reduced
   // resolution until it is released.
@@ -64,6 +91,8 @@ struct ViewerState {
   LensTableState lensTable;
   CrossSectionView crossSectionView;
   bool crossSectionNeedsFit = true;
+  std::pair<float, float> crossSectionCanvasSize{0.0f, 0.0f};  // as last drawn
+  double pendingZoomFactor = 1.0;  // a zoom asked by a script, applied about the canvas centre
   CrossSectionGrab crossSectionGrab = CrossSectionGrab::None;
   // The film's diagonal, drawn as the film plane's extent and used for the field of view. The
   // scene's film sets it; 43.27 mm is the 36 x 24 mm full frame.
@@ -89,6 +118,10 @@ struct ViewerState {
   // Requests made by menus and shortcuts, carried out by the main loop between frames.
   bool quitRequested = false;
   bool windowScreenshotRequested = false;
+  std::vector<PendingCapture> captures;
+  std::uint64_t frameNumber = 0;
+  // Whether the frame just drawn showed a menu, popup or the file browser at any point.
+  bool frameHadOverlay = false;
   bool showAbout = false;
   bool showLog = true;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
@@ -97,6 +130,12 @@ struct ViewerState {
 // Rebuilds what depends on the lens document when its generation changed: validation, the
 // LensSystem (when valid), the first-order figures and the ray fans.
 void refreshLens(ViewerState& state);
+
+// The cross-section's drawing for the current lens, fans and film, from the cache.
+const CrossSectionCache& crossSection(ViewerState& state);
+
+// The fan spec's object distance is from the front vertex; the UI's is from the film.
+std::optional<double> fanObjectDistanceFromVertexMm(const ViewerState& state);
 
 // Applies state.pendingEdits to the lens document in order, logging what each did and why any
 // was refused, and clears the list.

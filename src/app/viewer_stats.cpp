@@ -31,13 +31,26 @@ void ViewerStats::frameDrawn(Clock::time_point now, bool rendering) {
   lastFrame_ = now;
 }
 
-void ViewerStats::editSubmitted(std::uint64_t generation, Clock::time_point now) {
-  // A burst of edits (a drag) counts from its last one: that is the picture the user waits for.
-  pendingEdit_ = {generation, now};
+void ViewerStats::frameWork(Clock::duration work, bool rendering, bool redrawn) {
+  if (!rendering) return;
+  renderingWorkMs_.push_back(milliseconds(work));
+  if (redrawn) redrawWorkMs_.push_back(milliseconds(work));
 }
 
-void ViewerStats::firstPassShown(std::uint64_t generation, Clock::time_point now) {
-  if (!pendingEdit_ || pendingEdit_->first != generation) return;
+void ViewerStats::editSubmitted(std::uint64_t change, Clock::time_point now) {
+  // A burst of edits (a drag) counts from its last one: that is the picture the user waits for.
+  pendingEdit_ = {change, now};
+  pictureMeasured_ = false;
+}
+
+void ViewerStats::firstPictureShown(std::uint64_t change, Clock::time_point now) {
+  if (!pendingEdit_ || pendingEdit_->first != change || pictureMeasured_) return;
+  firstPictureMs_.push_back(milliseconds(now - pendingEdit_->second));
+  pictureMeasured_ = true;
+}
+
+void ViewerStats::firstPassShown(std::uint64_t change, Clock::time_point now) {
+  if (!pendingEdit_ || pendingEdit_->first != change) return;
   firstPassMs_.push_back(milliseconds(now - pendingEdit_->second));
   pendingEdit_.reset();
 }
@@ -48,10 +61,22 @@ ViewerStats::Summary ViewerStats::summary() const {
   summary.frameMsMedian = percentile(renderingFrameMs_, 0.5);
   summary.frameMsP95 = percentile(renderingFrameMs_, 0.95);
   summary.framesPerSecondMedian = summary.frameMsMedian > 0 ? 1000.0 / summary.frameMsMedian : 0;
+  summary.workMsMedian = percentile(renderingWorkMs_, 0.5);
+  summary.workMsP95 = percentile(renderingWorkMs_, 0.95);
+  summary.redrawnFraction = renderingWorkMs_.empty()
+                                ? 0
+                                : static_cast<double>(redrawWorkMs_.size()) /
+                                      static_cast<double>(renderingWorkMs_.size());
+  summary.redrawWorkMsMedian = percentile(redrawWorkMs_, 0.5);
   summary.edits = firstPassMs_.size();
   summary.firstPassMsMedian = percentile(firstPassMs_, 0.5);
   summary.firstPassMsMax =
       firstPassMs_.empty() ? 0 : *std::max_element(firstPassMs_.begin(), firstPassMs_.end());
+  summary.pictures = firstPictureMs_.size();
+  summary.firstPictureMsMedian = percentile(firstPictureMs_, 0.5);
+  summary.firstPictureMsMax =
+      firstPictureMs_.empty() ? 0
+                              : *std::max_element(firstPictureMs_.begin(), firstPictureMs_.end());
   return summary;
 }
 
@@ -62,10 +87,19 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       {"frame_ms_median", s.frameMsMedian},
       {"frame_ms_p95", s.frameMsP95},
       {"fps_median", s.framesPerSecondMedian},
+      {"frame_work_ms_median", s.workMsMedian},
+      {"frame_work_ms_p95", s.workMsP95},
+      // Frames whose pixels changed are rasterized; the others only run the UI.
+      {"frames_redrawn_fraction", s.redrawnFraction},
+      {"redrawn_frame_work_ms_median", s.redrawWorkMsMedian},
       {"edits_measured", s.edits},
       {"edit_to_first_pass_ms_median", s.firstPassMsMedian},
       {"edit_to_first_pass_ms_max", s.firstPassMsMax},
       {"edit_to_first_pass_ms", firstPassMs_},
+      // The coarse first look (a quarter of the preview resolution per axis).
+      {"edit_to_first_picture_ms_median", s.firstPictureMsMedian},
+      {"edit_to_first_picture_ms_max", s.firstPictureMsMax},
+      {"edit_to_first_picture_ms", firstPictureMs_},
   };
   return writeFileAtomically(path, json.dump(2) + '\n');
 }

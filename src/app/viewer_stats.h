@@ -18,16 +18,26 @@ class ViewerStats {
 
   // Call once per drawn frame; `rendering` tells whether render workers were busy.
   void frameDrawn(Clock::time_point now, bool rendering);
-  // An edit made a new render job with this generation.
-  void editSubmitted(std::uint64_t generation, Clock::time_point now);
-  // The renderer published its first complete pass for `generation`.
-  void firstPassShown(std::uint64_t generation, Clock::time_point now);
+  // The UI thread's own work for a frame (input to drawn, not the wait for events): what the
+  // frame rate would be if nothing else competed for the core.
+  // `redrawn`: the frame was rasterized (frames equal to the last one are not).
+  void frameWork(Clock::duration work, bool rendering, bool redrawn);
+  // An edit changed what the preview shows; `change` identifies it.
+  void editSubmitted(std::uint64_t change, Clock::time_point now);
+  // The change's coarse first look (reduced resolution) is on screen.
+  void firstPictureShown(std::uint64_t change, Clock::time_point now);
+  // The change's first complete pass at the preview resolution is on screen.
+  void firstPassShown(std::uint64_t change, Clock::time_point now);
 
   struct Summary {
     std::size_t frames = 0;
     double frameMsMedian = 0, frameMsP95 = 0, framesPerSecondMedian = 0;
+    double workMsMedian = 0, workMsP95 = 0;
+    double redrawnFraction = 0, redrawWorkMsMedian = 0;
     std::size_t edits = 0;
     double firstPassMsMedian = 0, firstPassMsMax = 0;
+    std::size_t pictures = 0;
+    double firstPictureMsMedian = 0, firstPictureMsMax = 0;
   };
   Summary summary() const;
 
@@ -37,8 +47,11 @@ class ViewerStats {
  private:
   std::optional<Clock::time_point> lastFrame_;
   std::vector<double> renderingFrameMs_;  // frame intervals while the renderer worked
+  std::vector<double> renderingWorkMs_;   // the UI thread's work in those frames
+  std::vector<double> redrawWorkMs_;      // ... in those that were rasterized
   std::optional<std::pair<std::uint64_t, Clock::time_point>> pendingEdit_;
-  std::vector<double> firstPassMs_;
+  bool pictureMeasured_ = false;
+  std::vector<double> firstPassMs_, firstPictureMs_;
 };
 
 }  // namespace lenslab::app

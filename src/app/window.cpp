@@ -9,8 +9,11 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <utility>
+
+#include "app/ui_scale.h"
 
 namespace lenslab::app {
 
@@ -30,8 +33,8 @@ void recordGlfwError(int /*code*/, const char* description) {
 void loadFonts(float contentScale) {
   ImGuiIO& io = ImGui::GetIO();
   const float pixels = 15.0f * contentScale;
-  for (const char* candidate : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-                                "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
+  for (const char* candidate :
+       {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
     if (std::filesystem::exists(candidate) &&
         io.Fonts->AddFontFromFileTTF(candidate, pixels) != nullptr) {
       return;
@@ -82,6 +85,7 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   // Installed before ImGui's backend, which chains to it.
   glfwSetKeyCallback(window->window_, onKey);
   glfwSetWindowContentScaleCallback(window->window_, onContentScale);
+  glfwSetWindowRefreshCallback(window->window_, onRefresh);
   window->testMode_ = options.testMode;
   glfwMakeContextCurrent(window->window_);
   glfwSwapInterval(options.testMode ? 0 : 1);
@@ -96,7 +100,10 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   io.IniFilename = nullptr;  // the layout persists in settings.json, in the config directory
   float scaleX = 1.0f, scaleY = 1.0f;
   glfwGetWindowContentScale(window->window_, &scaleX, &scaleY);
-  window->contentScale_ = options.testMode ? 1.0f : std::max(1.0f, scaleX);
+  const std::optional<float> forced = forcedUiScale();
+  window->scaleForced_ = forced.has_value();
+  window->contentScale_ = forced ? *forced : options.testMode ? 1.0f : std::max(1.0f, scaleX);
+  setUiScale(window->contentScale_);
   applyStyle(window->contentScale_);
   loadFonts(window->contentScale_);
   ImGui_ImplGlfw_InitForOpenGL(window->window_, true);
@@ -117,18 +124,33 @@ Window::~Window() {
 
 void Window::onDrop(GLFWwindow* handle, int count, const char** paths) {
   auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
-  for (int i = 0; i < count; ++i) window->dropped_.emplace_back(paths[i]);
+  window->addDropped(std::vector<std::string>(paths, paths + count));
+}
+
+void Window::addDropped(const std::vector<std::string>& paths) {
+  dropped_.insert(dropped_.end(), paths.begin(), paths.end());
+}
+
+void Window::simulateDrop(const std::vector<std::string>& paths) { addDropped(paths); }
+
+void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+void Window::onRefresh(GLFWwindow* handle) {
+  static_cast<Window*>(glfwGetWindowUserPointer(handle))->refreshRequested_ = true;
 }
 
 void Window::onContentScale(GLFWwindow* handle, float scaleX, float /*scaleY*/) {
   auto* window = static_cast<Window*>(glfwGetWindowUserPointer(handle));
-  if (!window->testMode_) window->pendingContentScale_ = std::max(1.0f, scaleX);
+  if (!window->testMode_ && !window->scaleForced_) {
+    window->pendingContentScale_ = std::max(1.0f, scaleX);
+  }
 }
 
 void Window::applyContentScale() {
   const float scale = std::exchange(pendingContentScale_, 0.0f);
   if (scale <= 0.0f || scale == contentScale_) return;
   contentScale_ = scale;
+  setUiScale(contentScale_);
   applyStyle(contentScale_);
   ImGui::GetIO().Fonts->Clear();
   loadFonts(contentScale_);
@@ -194,8 +216,51 @@ void Window::beginFrame() {
   ImGui::NewFrame();
 }
 
-void Window::renderFrame() {
-  ImGui::Render();
+void Window::endFrame() { ImGui::Render(); }
+
+std::uint64_t Window::frameSignature() const {
+  // A word-at-a-time multiplicative hash: about a millisecond for a busy frame's megabyte of
+  // vertices, against tens of milliseconds to rasterize it in software.
+  std::uint64_t hash = 0x9E3779B97F4A7C15ull;
+  const auto mix = [&hash](std::uint64_t word) {
+    hash = (hash ^ word) * 0xBF58476D1CE4E5B9ull;
+    hash ^= hash >> 31;
+  };
+  const auto mixBytes = [&mix](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::size_t i = 0;
+    for (; i + 8 <= size; i += 8) {
+      std::uint64_t word;
+      std::memcpy(&word, bytes + i, 8);
+      mix(word);
+    }
+    std::uint64_t tail = 0;
+    std::memcpy(&tail, bytes + i, size - i);
+    mix(tail ^ (static_cast<std::uint64_t>(size) << 56));
+  };
+  mix(static_cast<std::uint64_t>(framebufferWidth()) << 32 |
+      static_cast<std::uint32_t>(framebufferHeight()));
+  const ImDrawData* data = ImGui::GetDrawData();
+  if (data == nullptr) return hash;
+  mixBytes(&data->DisplayPos, sizeof data->DisplayPos);
+  mixBytes(&data->DisplaySize, sizeof data->DisplaySize);
+  for (int n = 0; n < data->CmdListsCount; ++n) {
+    const ImDrawList* list = data->CmdLists[n];
+    mixBytes(list->VtxBuffer.Data,
+             static_cast<std::size_t>(list->VtxBuffer.Size) * sizeof(ImDrawVert));
+    mixBytes(list->IdxBuffer.Data,
+             static_cast<std::size_t>(list->IdxBuffer.Size) * sizeof(ImDrawIdx));
+    for (const ImDrawCmd& command : list->CmdBuffer) {
+      mixBytes(&command.ClipRect, sizeof command.ClipRect);
+      mix(reinterpret_cast<std::uintptr_t>(command.TextureId));
+      mix(static_cast<std::uint64_t>(command.VtxOffset) << 32 | command.IdxOffset);
+      mix(command.ElemCount);
+    }
+  }
+  return hash;
+}
+
+void Window::drawFrame() {
   glViewport(0, 0, framebufferWidth(), framebufferHeight());
   glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -223,6 +288,12 @@ int Window::framebufferHeight() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   return h;
+}
+
+double Window::refreshRateHz() const {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
+  return mode != nullptr && mode->refreshRate >= 30 ? mode->refreshRate : 60.0;
 }
 
 std::string Window::glVersion() const {

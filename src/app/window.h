@@ -1,9 +1,11 @@
 #pragma once
 // The GLFW window with its GL 3.3 core context and Dear ImGui, created and torn down together.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 struct GLFWwindow;
@@ -14,7 +16,7 @@ class Window {
  public:
   struct Options {
     int width = 1600, height = 900;
-    bool testMode = false;  // exact framebuffer size, no vsync, scale 1
+    bool testMode = false;  // exact framebuffer size, no vsync, scale 1 (unless LENSLAB_UI_SCALE)
   };
 
   // Returns the window, or nullopt with `error` set to a one-line explanation.
@@ -28,16 +30,29 @@ class Window {
   // Waits for input at most `seconds` (0: just polls).
   void waitEvents(double seconds) const;
   void beginFrame();
-  // Renders ImGui's draw data into the back buffer.
-  void renderFrame();
+  // Ends the ImGui frame: its draw data is ready (nothing is drawn yet).
+  void endFrame();
+  // A fingerprint of what the frame would draw: ImGui's vertices, indices, commands and the
+  // framebuffer size. Equal fingerprints (and unchanged textures) mean equal pixels.
+  std::uint64_t frameSignature() const;
+  // Draws the ended frame into the back buffer (GL: a software rasterizer spends tens of
+  // milliseconds of CPU here on a large window).
+  void drawFrame();
   void swapBuffers();
+  // The window system asked for a redraw (exposed, resized) since the last call.
+  bool takeRefreshRequest() { return std::exchange(refreshRequested_, false); }
 
   int width() const;  // screen coordinates
   int height() const;
   int framebufferWidth() const;
   int framebufferHeight() const;
   float contentScale() const { return contentScale_; }
+  void setTitle(const std::string& title);
+  // Hands paths to the viewer exactly as a drop onto the window does (scripts, tests).
+  void simulateDrop(const std::vector<std::string>& paths);
   std::string glVersion() const;
+  // The monitor's refresh rate, 60 when it does not say.
+  double refreshRateHz() const;
 
   // Files dropped onto the window since the last call.
   std::vector<std::string> takeDroppedFiles();
@@ -45,8 +60,10 @@ class Window {
  private:
   Window() = default;
   static void onDrop(GLFWwindow* window, int count, const char** paths);
+  void addDropped(const std::vector<std::string>& paths);
   static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void onContentScale(GLFWwindow* window, float scaleX, float scaleY);
+  static void onRefresh(GLFWwindow* window);
   // Rebuilds fonts and style sizes after the window moved to a monitor with another scale.
   void applyContentScale();
   void holdTappedKeys();
@@ -56,6 +73,8 @@ class Window {
   float contentScale_ = 1.0f;
   float pendingContentScale_ = 0.0f;  // set by the callback, applied before the next frame
   bool testMode_ = false;
+  bool refreshRequested_ = true;
+  bool scaleForced_ = false;  // LENSLAB_UI_SCALE set: the monitor's scale is not followed
   std::vector<std::string> dropped_;
   // Keys pressed since the last frame, and keys held down artificially for one frame (see
   // holdTappedKeys).

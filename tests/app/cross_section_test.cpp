@@ -1,8 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "app/cross_section_drawing.h"
 #include "app/cross_section_view.h"
 #include "app/svg_export.h"
+#include "optics/lens_system.h"
+#include "optics/ray_fan.h"
 #include "support/run_process.h"
 
 namespace lenslab::app {
@@ -64,7 +68,8 @@ TEST(CrossSectionDrawing, HasGlassStopAxisAndFilm) {
   int stopBars = 0, films = 0;
   for (const auto& line : drawing.lines) {
     if (line.colour.r == palette::kStop.r && line.colour.g == palette::kStop.g) ++stopBars;
-    if (line.colour.r == palette::kFilm.r && line.points.size() == 2 && line.points[0].zMm == 0) ++films;
+    if (line.colour.r == palette::kFilm.r && line.points.size() == 2 && line.points[0].zMm == 0)
+      ++films;
   }
   EXPECT_EQ(stopBars, 2);
   EXPECT_EQ(films, 1);
@@ -74,15 +79,69 @@ TEST(CrossSectionDrawing, HasGlassStopAxisAndFilm) {
 TEST(SvgExport, WritesAnSvgWithTheLensInMillimetres) {
   const CrossSectionDrawing drawing = drawLens(optics::computeLensOutline(singletWithStop()), 21.6);
   const auto path = testing::makeTestDirectory("svg") / "lens.svg";
-  ASSERT_EQ(writeCrossSectionSvg(path, drawing), "");
+  ASSERT_EQ(writeCrossSectionSvg(path, drawing, wholeDrawingFrame(drawing)), "");
   const std::string svg = testing::readWholeFile(path);
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   EXPECT_NE(svg.find("<polygon"), std::string::npos);
-  EXPECT_NE(svg.find("mm\""), std::string::npos);
+  EXPECT_NE(svg.find("units: mm"), std::string::npos);
   EXPECT_EQ(svg.find("nan"), std::string::npos);
-  EXPECT_NE(writeCrossSectionSvg("/nonexistent-dir/x.svg", drawing), "");
+  EXPECT_NE(writeCrossSectionSvg("/nonexistent-dir/x.svg", drawing, wholeDrawingFrame(drawing)),
+            "");
+}
+
+std::string rgbText(const Colour& colour) {
+  return "rgb(" + std::to_string(colour.r) + "," + std::to_string(colour.g) + "," +
+         std::to_string(colour.b) + ")";
+}
+
+TEST(SvgExport, HasTheRayFansInThePanelsColours) {
+  const optics::Prescription lens = singletWithStop();
+  const auto built = optics::LensSystem::build(lens);
+  ASSERT_TRUE(built.ok());
+  CrossSectionDrawing drawing = drawLens(optics::computeLensOutline(lens), 21.6);
+  optics::FanSpec spec;
+  spec.filmHalfDiagonalMm = 5.0;
+  drawRayFans(drawing, optics::computeRayFans(*built.system, spec), true);
+  const std::string svg = crossSectionSvg(drawing, wholeDrawingFrame(drawing));
+  for (const Colour& colour : palette::kFieldColours) {
+    if (&colour - palette::kFieldColours >= 3) break;  // three fans: 0, 0.7 and 1.0
+    EXPECT_NE(svg.find("<polyline fill=\"none\" stroke=\"" + rgbText(colour)), std::string::npos)
+        << rgbText(colour);
+  }
+  EXPECT_NE(svg.find("stroke=\"" + rgbText(palette::kMarginalRay)), std::string::npos);
+  EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);  // chief rays and the axis
+  EXPECT_NE(svg.find("stroke=\"" + rgbText(palette::kFilm)), std::string::npos);
+  EXPECT_NE(svg.find("stroke=\"" + rgbText(palette::kAxis)), std::string::npos);
+}
+
+TEST(SvgExport, ShowsOnlyTheFrameItIsGiven) {
+  const CrossSectionDrawing drawing = drawLens(optics::computeLensOutline(singletWithStop()), 21.6);
+  // Zoomed on the film's top end: the lens elements (z >= 40) are out of the frame.
+  SvgFrame frame;
+  frame.visibleMm.include({-2, 15});
+  frame.visibleMm.include({2, 25});
+  frame.mmPerPixel = 0.01;
+  const std::string svg = crossSectionSvg(drawing, frame);
+  EXPECT_NE(svg.find("viewBox=\"-2 -25 4 10\""), std::string::npos) << svg.substr(0, 400);
+  EXPECT_EQ(svg.find("<polygon"), std::string::npos);
+  EXPECT_NE(svg.find("stroke=\"" + rgbText(palette::kFilm)), std::string::npos);
+  // Every point lies within the frame (plus the small allowance for line caps).
+  std::size_t at = 0;
+  while ((at = svg.find("points=\"", at)) != std::string::npos) {
+    at += 8;
+    const std::string points = svg.substr(at, svg.find('"', at) - at);
+    std::istringstream in(points);
+    double x = 0, y = 0;
+    char comma = 0;
+    while (in >> x >> comma >> y) {
+      EXPECT_GE(x, -2.1);
+      EXPECT_LE(x, 2.1);
+      EXPECT_GE(y, -25.1);
+      EXPECT_LE(y, -14.9);
+    }
+  }
 }
 
 }  // namespace

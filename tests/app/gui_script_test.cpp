@@ -2,7 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/image_io.h"
 
 #include "support/png_image.h"
 #include "support/run_process.h"
@@ -12,12 +20,23 @@ namespace {
 
 class ScriptedViewer : public ::testing::Test {
  protected:
-  testing::ProcessResult runScript(const std::string& script) {
+  // `prefix` runs in the same shell first (ulimit, environment).
+  testing::ProcessResult runScript(const std::string& script, const std::string& prefix = "") {
     const auto path = scratch / "commands.script";
     std::ofstream(path) << script;
-    return testing::runProcess("cd '" + scratch.string() + "' && '" + LENSLAB_BINARY +
+    return testing::runProcess(prefix + "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY +
                                    "' --size 1280x800 --script '" + path.string() + "'",
                                scratch);
+  }
+  nlohmann::json json(const std::string& name) {
+    std::ifstream file(scratch / name);
+    return nlohmann::json::parse(file, nullptr, false);
+  }
+  // The rows (1-based) the dump's lens problems are on.
+  static std::vector<int> problemRows(const nlohmann::json& dump) {
+    std::vector<int> rows;
+    for (const auto& problem : dump["state"]["problems"]) rows.push_back(problem["surface"]);
+    return rows;
   }
   testing::PngImage image(const std::string& name) {
     return testing::PngImage::load(scratch / name);
@@ -39,7 +58,8 @@ TEST_F(ScriptedViewer, AnEditChangesTheCrossSectionAndUndoRestoresIt) {
       "screenshot-cross-section undone.png\n"
       "quit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  const auto before = image("before.png"), edited = image("edited.png"), undone = image("undone.png");
+  const auto before = image("before.png"), edited = image("edited.png"),
+             undone = image("undone.png");
   ASSERT_TRUE(before.valid() && edited.valid() && undone.valid());
   // The lens occupies a good part of the canvas, so a changed radius and film move many pixels.
   EXPECT_GT(testing::countDifferentPixels(before, edited), 500u);
@@ -108,12 +128,217 @@ TEST_F(ScriptedViewer, AFailingCommandQuitsWith1AndSaysWhy) {
   EXPECT_FALSE(std::filesystem::exists(scratch / "never.png"));
 }
 
-TEST_F(ScriptedViewer, CrossSectionExportsAsSvg) {
+TEST_F(ScriptedViewer, CrossSectionExportsAsSvgWithTheRayFans) {
   const auto result = runScript("wait-frames 2\nscreenshot-cross-section lens.svg\nquit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const std::string svg = testing::readWholeFile(scratch / "lens.svg");
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("<polygon"), std::string::npos);  // at least one glass element
+  // Rays of the three fans in the panel's colours (cross_section_drawing.h), the marginal ray,
+  // dashed chief rays, the film and the axis.
+  const auto lines = [&](const std::string& colour) {
+    std::size_t count = 0;
+    for (std::size_t at = 0;
+         (at = svg.find("<polyline fill=\"none\" stroke=\"rgb(" + colour + ")\"", at)) !=
+         std::string::npos;
+         ++at) {
+      ++count;
+    }
+    return count;
+  };
+  EXPECT_GE(lines("80,220,120"), 5u);   // on axis
+  EXPECT_GE(lines("250,180,60"), 5u);   // 0.7 field
+  EXPECT_GE(lines("235,90,200"), 5u);   // full field
+  EXPECT_EQ(lines("90,230,240"), 1u);   // marginal
+  EXPECT_GE(lines("255,255,255"), 3u);  // chief rays
+  EXPECT_EQ(lines("240,240,240"), 1u);  // film
+  EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
+}
+
+TEST_F(ScriptedViewer, SvgExportFollowsTheView) {
+  const auto result = runScript(
+      "wait-frames 2\nscreenshot-cross-section fit.svg\n"
+      "zoom-cross-section 8\nwait-frames 2\nscreenshot-cross-section zoomed.svg\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto viewBoxWidth = [&](const std::string& name) {
+    const std::string svg = testing::readWholeFile(scratch / name);
+    const auto at = svg.find("viewBox=\"");
+    if (at == std::string::npos) return 0.0;
+    std::istringstream in(svg.substr(at + 9));
+    double x = 0, y = 0, width = 0;
+    in >> x >> y >> width;
+    return width;
+  };
+  const double fit = viewBoxWidth("fit.svg");
+  ASSERT_GT(fit, 0);
+  EXPECT_NEAR(viewBoxWidth("zoomed.svg"), fit / 8, fit * 1e-3);
+}
+
+TEST_F(ScriptedViewer, HugeLengthsAndExtremeZoomDoNotExhaustMemory) {
+  // Dashes along a 10 km axis once took gigabytes; the viewer now runs in 2 GB of address space.
+  const auto result = runScript(
+      "wait-frames 3\n"
+      "set film-distance 1e7\n"
+      "wait-frames 3\n"
+      "screenshot film.png\n"
+      "zoom-cross-section 1e9\n"  // the zoom limit, 1e5 pixels per mm
+      "wait-frames 3\n"
+      "screenshot zoomed.png\n"
+      "set surface 9 thickness 1e12\n"
+      "wait-frames 3\n"
+      "zoom-cross-section 1e-30\n"
+      "wait-frames 2\n"
+      "zoom-cross-section 1e30\n"
+      "wait-frames 2\n"
+      "screenshot thick.png\n"
+      "screenshot-cross-section thick.svg\n"
+      "quit\n",
+      "ulimit -v 2000000 && ");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  for (const char* name : {"film.png", "zoomed.png", "thick.png"}) {
+    const auto shot = image(name);
+    ASSERT_TRUE(shot.valid()) << name;
+    EXPECT_EQ(shot.width, 1280);
+  }
+  EXPECT_LT(std::filesystem::file_size(scratch / "thick.svg"), 1'000'000u);
+}
+
+TEST_F(ScriptedViewer, BlockedRaysAreDrawnAndCanBeHidden) {
+  // The fans overfill the pupil, so the stop and the rims block some of their rays.
+  const auto result = runScript(
+      "wait-frames 3\nscreenshot-cross-section shown.png\n"
+      "set blocked-rays hide\nwait-frames 2\nscreenshot-cross-section hidden.png\n"
+      "set blocked-rays show\nwait-frames 2\nscreenshot-cross-section again.png\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto shown = image("shown.png"), hidden = image("hidden.png"), again = image("again.png");
+  ASSERT_TRUE(shown.valid() && hidden.valid() && again.valid());
+  EXPECT_EQ(testing::countDifferentPixels(shown, again), 0u);
+  // Hiding them removes fan-coloured pixels and adds none.
+  const auto fanPixels = [](const testing::PngImage& picture) {
+    int count = 0;
+    for (int y = 0; y < picture.height; ++y) {
+      for (int x = 0; x < picture.width; ++x) {
+        const auto c = picture.at(x, y);
+        // Green, orange or magenta, faint or not: far from the grey background and glass.
+        const int spread = std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b});
+        count += spread > 40 && !(c.b > c.r && c.b > c.g);
+      }
+    }
+    return count;
+  };
+  const int withBlocked = fanPixels(shown), withoutBlocked = fanPixels(hidden);
+  EXPECT_GT(withoutBlocked, 500);                // the passing rays are still drawn
+  EXPECT_GT(withBlocked, withoutBlocked + 300);  // and the blocked ones were
+  EXPECT_GT(testing::countDifferentPixels(shown, hidden, 12), 300u);
+}
+
+TEST_F(ScriptedViewer, Radius0OnAGlassSurfaceFlagsThatRow) {
+  // The double-Gauss's stop is surface 6; surface 3 is glass (n_d 1.67 after it).
+  const auto result = runScript(
+      "wait-frames 2\nset surface 3 radius 0\nwait-frames 2\ndump-ui radius0.json\n"
+      "undo\nset surface 6 n 1.5\nwait-frames 2\ndump-ui glass-stop.json\n"
+      "screenshot-cross-section glass-stop.png\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto radius0 = json("radius0.json");
+  // All on the edited row: the second stop, the glass after it, and (the row is now flat) its
+  // crossing the surface before it.
+  const std::vector<int> rows = problemRows(radius0);
+  EXPECT_GE(rows.size(), 2u);
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), 3), static_cast<long>(rows.size()))
+      << radius0["state"]["problems"];
+  EXPECT_NE(radius0["state"]["problems"][0]["message"].get<std::string>().find("second aperture"),
+            std::string::npos);
+  EXPECT_FALSE(radius0["state"]["lens_valid"].get<bool>());
+  const auto glassStop = json("glass-stop.json");
+  EXPECT_EQ(problemRows(glassStop), (std::vector<int>{6})) << glassStop["state"]["problems"];
+  EXPECT_FALSE(glassStop["state"]["lens_valid"].get<bool>());
+}
+
+TEST_F(ScriptedViewer, IndexBelow1AndAHugeApertureAreFlaggedAndThePreviewStaysFinite) {
+  const auto result = runScript(
+      "wait-spp 1\n"
+      "set surface 2 n 0.5\n"
+      "set surface 8 aperture 1e9\n"
+      "wait-frames 2\n"
+      "dump-ui flagged.json\n"
+      "screenshot-render flagged.exr\n"
+      "undo\nundo\n"
+      "set stop-diameter 1e9\n"  // the stop itself: valid, the rims limit the bundle
+      "wait-spp 2\n"
+      "dump-ui huge-stop.json\n"
+      "screenshot-render huge-stop.exr\n"
+      "quit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(problemRows(json("flagged.json")), (std::vector<int>{2, 8}));
+  EXPECT_TRUE(problemRows(json("huge-stop.json")).empty());
+  for (const char* name : {"flagged.exr", "huge-stop.exr"}) {
+    const render::ReadResult read = render::readImage(scratch / name);
+    ASSERT_TRUE(read.ok) << read.error;
+    double sum = 0;
+    for (float value : read.image.rgb) {
+      ASSERT_TRUE(std::isfinite(value)) << name;
+      sum += value;
+    }
+    EXPECT_GT(sum / read.image.rgb.size(), 0.01) << name;  // a picture, not black
+  }
+}
+
+TEST_F(ScriptedViewer, ADroppedBrokenFileKeepsTheCurrentLensAndSaysWhy) {
+  std::ofstream(scratch / "broken.dat") << "# a lens\n29.475 3.76 1.67 25.2\nforty 1 1 20\n";
+  const auto result = runScript(
+      "wait-frames 2\nscreenshot-cross-section before.png\n"
+      "drop " +
+      (scratch / "broken.dat").string() +
+      "\n"
+      "wait-frames 3\nscreenshot-cross-section after.png\ndump-ui after.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto dump = json("after.json");
+  EXPECT_NE(dump["state"]["lens_path"].get<std::string>().find("dgauss-50mm.dat"),
+            std::string::npos);
+  EXPECT_EQ(testing::countDifferentPixels(image("before.png"), image("after.png")), 0u);
+  bool explained = false;
+  for (const auto& entry : dump["state"]["log"]) {
+    const std::string text = entry["text"];
+    explained |= entry["level"] == "error" && text.find("broken.dat:3:") != std::string::npos;
+  }
+  EXPECT_TRUE(explained) << dump["state"]["log"];
+  // A dropped broken file is not a recent file.
+  for (const auto& path : dump["state"]["recent_files"]) {
+    EXPECT_EQ(path.get<std::string>().find("broken.dat"), std::string::npos);
+  }
+}
+
+TEST_F(ScriptedViewer, ACrossSectionSavedThroughTheFileBrowserDoesNotShowIt) {
+  // As from File > Save cross-section: the browser opens, the user types a name and confirms.
+  // The picture must be taken from a later frame, without the browser over the canvas.
+  const auto result = runScript(
+      "wait-frames 3\n"
+      "screenshot-cross-section direct.png\n"
+      "open-dialog save-cross-section\n"
+      "wait-frames 3\n"
+      "dump-ui dialog.json\n"
+      "dialog-choose via-browser.png\n"
+      "wait-until-file via-browser.png\n"
+      "quit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto dialog = json("dialog.json");
+  ASSERT_TRUE(dialog["widgets"].contains("file-browser")) << dialog["widgets"];
+  const auto direct = image("direct.png"), viaBrowser = image("via-browser.png");
+  ASSERT_TRUE(direct.valid() && viaBrowser.valid());
+  // The browser (centred on the window) covers much of the canvas; the saved picture has none
+  // of it.
+  EXPECT_LT(testing::countDifferentPixels(direct, viaBrowser), 50u);
+}
+
+TEST_F(ScriptedViewer, ScriptEditsAreLogged) {
+  const auto result =
+      runScript("set film-distance 40\nundo\nwait-frames 1\ndump-ui log.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const nlohmann::json dump = json("log.json");
+  std::string log;
+  for (const auto& entry : dump["state"]["log"]) log += entry["text"].get<std::string>() + "\n";
+  EXPECT_NE(log.find("script: set film distance to 40 mm"), std::string::npos) << log;
+  EXPECT_NE(log.find("script: undo"), std::string::npos) << log;
 }
 
 TEST_F(ScriptedViewer, UnwritableScreenshotPathIsAnErrorNotACrash) {

@@ -15,6 +15,23 @@
 namespace lenslab {
 namespace {
 
+// The viewer's window: its title is "lenslab - LENS" (with "*" when the lens is modified).
+const std::string kFindWindow =
+    "$(xdotool search --sync --onlyvisible --name '^lenslab - ' | head -n1)";
+
+nlohmann::json readJson(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  return nlohmann::json::parse(file, nullptr, false);
+}
+
+// Centre of a widget from a dump-ui file, as "X Y".
+std::string centreOf(const nlohmann::json& ui, const std::string& widget) {
+  const auto& rect = ui["widgets"][widget];
+  const int x = static_cast<int>(rect["x"].get<double>() + rect["width"].get<double>() / 2);
+  const int y = static_cast<int>(rect["y"].get<double>() + rect["height"].get<double>() / 2);
+  return std::to_string(x) + " " + std::to_string(y);
+}
+
 bool waitForFile(const std::filesystem::path& path, std::chrono::seconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!std::filesystem::exists(path)) {
@@ -46,8 +63,9 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
 
   // Under Xvfb there is no window manager to give the window focus, and GLFW reports the cursor
   // only to a focused window: focus it explicitly, then move relative to it.
-  const std::string window = "$(xdotool search --sync --onlyvisible --name '^lenslab$' | head -n1)";
-  const std::string input = "W=" + window + " && xdotool windowfocus --sync $W && xdotool mousemove --window $W " +
+  const std::string window = kFindWindow;
+  const std::string input = "W=" + window +
+                            " && xdotool windowfocus --sync $W && xdotool mousemove --window $W " +
                             std::to_string(x) + " " + std::to_string(y) +
                             " && sleep 0.2 && xdotool click 1 && sleep 0.3 && "
                             "xdotool type --delay 30 '24.5' && "
@@ -69,6 +87,113 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
   std::size_t row = 0;
   while (row < saved.size() && saved[row] == '#') row = saved.find('\n', row) + 1;
   EXPECT_EQ(saved.compare(row, 4, "24.5"), 0) << saved;
+}
+
+TEST(XdotoolInput, CtrlOAndCtrlSOpenTheFileBrowserAndTheTitleMarksChanges) {
+  const auto scratch = testing::makeTestDirectory("xdotool-keys");
+  std::ofstream(scratch / "commands.script") << "wait-frames 3\n"
+                                                "set film-distance 40\n"
+                                                "wait-frames 3\n"
+                                                "dump-ui ui0.json\n"
+                                                "wait-until-file go1\n"
+                                                "wait-frames 5\n"
+                                                "dump-ui ui1.json\n"
+                                                "wait-until-file go2\n"
+                                                "wait-frames 5\n"
+                                                "dump-ui ui2.json\n"
+                                                "save-lens saved.dat\n"
+                                                "wait-frames 3\n"
+                                                "dump-ui ui3.json\n"
+                                                "wait-until-file go3\n"
+                                                "quit\n";
+  testing::BackgroundProcess viewer("cd '" + scratch.string() + "' && exec '" + LENSLAB_BINARY +
+                                    "' --size 1280x800 --script commands.script 2>stderr.txt");
+  ASSERT_TRUE(waitForFile(scratch / "ui0.json", std::chrono::seconds(30)));
+  EXPECT_TRUE(readJson(scratch / "ui0.json")["state"]["lens_modified"].get<bool>());
+  // The title carries the lens's name and the "modified" mark.
+  const auto modifiedTitle = testing::runProcess(
+      "xdotool search --onlyvisible --name '^lenslab - dgauss-50mm[.]dat[*]$'", scratch);
+  EXPECT_EQ(modifiedTitle.exitCode, 0) << "no window titled 'lenslab - dgauss-50mm.dat*'";
+  EXPECT_EQ(readJson(scratch / "ui0.json")["state"]["file_browser"], "");
+
+  const std::string focus = "W=" + kFindWindow + " && xdotool windowfocus --sync $W && sleep 0.2";
+  auto pressed = testing::runProcess(focus + " && xdotool key ctrl+o", scratch);
+  ASSERT_EQ(pressed.exitCode, 0) << pressed.err;
+  std::ofstream(scratch / "go1") << "go";
+  ASSERT_TRUE(waitForFile(scratch / "ui1.json", std::chrono::seconds(30)));
+  EXPECT_EQ(readJson(scratch / "ui1.json")["state"]["file_browser"], "Open lens");
+
+  pressed = testing::runProcess(focus + " && xdotool key ctrl+s", scratch);
+  ASSERT_EQ(pressed.exitCode, 0) << pressed.err;
+  std::ofstream(scratch / "go2") << "go";
+  ASSERT_TRUE(waitForFile(scratch / "ui3.json", std::chrono::seconds(30)));
+  EXPECT_EQ(readJson(scratch / "ui2.json")["state"]["file_browser"], "Save lens as");
+  // Saved: no longer modified, and the title says so.
+  EXPECT_FALSE(readJson(scratch / "ui3.json")["state"]["lens_modified"].get<bool>());
+  const auto savedTitle =
+      testing::runProcess("xdotool search --onlyvisible --name '^lenslab - saved[.]dat$'", scratch);
+  EXPECT_EQ(savedTitle.exitCode, 0) << "no window titled 'lenslab - saved.dat'";
+  std::ofstream(scratch / "go3") << "go";
+
+  const auto exitCode = viewer.wait(std::chrono::seconds(60));
+  ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
+  EXPECT_EQ(*exitCode, 0) << testing::readWholeFile(scratch / "stderr.txt");
+}
+
+TEST(XdotoolInput, AWindowScreenshotFromTheMenuDoesNotShowTheMenu) {
+  const auto scratch = testing::makeTestDirectory("xdotool-menu");
+  std::ofstream(scratch / "commands.script") << "wait-frames 3\n"
+                                                "dump-ui ui0.json\n"
+                                                "wait-until-file go1\n"
+                                                "wait-frames 5\n"
+                                                "dump-ui ui1.json\n"
+                                                "wait-until-file go2\n"
+                                                "wait-until-file lenslab-window.png\n"
+                                                "wait-frames 3\n"
+                                                "screenshot after.png\n"
+                                                "quit\n";
+  testing::BackgroundProcess viewer("cd '" + scratch.string() + "' && exec '" + LENSLAB_BINARY +
+                                    "' --size 1280x800 --script commands.script 2>stderr.txt");
+  ASSERT_TRUE(waitForFile(scratch / "ui0.json", std::chrono::seconds(30)));
+  const nlohmann::json ui0 = readJson(scratch / "ui0.json");
+  ASSERT_TRUE(ui0["widgets"].contains("menu/File")) << ui0["widgets"];
+  const std::string window = "W=" + kFindWindow + " && xdotool windowfocus --sync $W && ";
+  auto clicked =
+      testing::runProcess(window + "xdotool mousemove --window $W " + centreOf(ui0, "menu/File") +
+                              " && sleep 0.2 && xdotool click 1",
+                          scratch);
+  ASSERT_EQ(clicked.exitCode, 0) << clicked.err;
+  std::ofstream(scratch / "go1") << "go";
+  ASSERT_TRUE(waitForFile(scratch / "ui1.json", std::chrono::seconds(30)));
+  const nlohmann::json ui1 = readJson(scratch / "ui1.json");
+  const std::string item = "menu/File/Save window screenshot";
+  ASSERT_TRUE(ui1["widgets"].contains(item)) << "the File menu did not open";
+  clicked = testing::runProcess(window + "xdotool mousemove --window $W " + centreOf(ui1, item) +
+                                    " && sleep 0.2 && xdotool click 1",
+                                scratch);
+  ASSERT_EQ(clicked.exitCode, 0) << clicked.err;
+  std::ofstream(scratch / "go2") << "go";
+
+  const auto exitCode = viewer.wait(std::chrono::seconds(60));
+  ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
+  ASSERT_EQ(*exitCode, 0) << testing::readWholeFile(scratch / "stderr.txt");
+  const auto fromMenu = testing::PngImage::load(scratch / "lenslab-window.png");
+  const auto after = testing::PngImage::load(scratch / "after.png");
+  ASSERT_TRUE(fromMenu.valid() && after.valid());
+  // Where the open menu was (below "File", down to the item clicked), the screenshot shows what
+  // is there without the menu: the same as a screenshot taken later.
+  const auto& file = ui0["widgets"]["menu/File"];
+  const auto& clickedItem = ui1["widgets"][item];
+  const int x0 = static_cast<int>(file["x"].get<double>());
+  const int y0 = static_cast<int>(file["y"].get<double>() + file["height"].get<double>()) + 2;
+  const int x1 = x0 + static_cast<int>(clickedItem["width"].get<double>());
+  const int y1 =
+      static_cast<int>(clickedItem["y"].get<double>() + clickedItem["height"].get<double>());
+  int different = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) different += fromMenu.at(x, y).maxDifference(after.at(x, y)) > 24;
+  }
+  EXPECT_LT(different, 30) << "the menu is in the screenshot";
 }
 
 }  // namespace

@@ -22,7 +22,8 @@ TEST(Layout, PanelsTileTheWindowBelowTheMenuWithoutOverlap) {
 TEST(Layout, ExtremeFractionsStillLeaveEveryPanelVisible) {
   LayoutFractions fractions{0.95f, 0.95f, 0.99f};
   const PanelLayout layout = computeLayout(1000, 700, 20, fractions);
-  for (const Rect& panel : {layout.lensTable, layout.crossSection, layout.renderPreview, layout.log}) {
+  for (const Rect& panel :
+       {layout.lensTable, layout.crossSection, layout.renderPreview, layout.log}) {
     EXPECT_GE(panel.width, kMinPanelExtent / 2);
     EXPECT_GE(panel.height, kMinPanelExtent / 2 - 1);
   }
@@ -32,6 +33,19 @@ TEST(Layout, WithoutTheLogTheUpperPanelsTakeTheWholeHeight) {
   const PanelLayout layout = computeLayout(1200, 800, 20, LayoutFractions{}, false);
   EXPECT_FLOAT_EQ(layout.crossSection.bottom(), 800);
   EXPECT_FLOAT_EQ(layout.log.height, 0);
+}
+
+TEST(Layout, SplittersAndMinimumsGrowWithTheUiScale) {
+  const PanelLayout one = computeLayout(1600, 1000, 22, LayoutFractions{}, true, 1.0f);
+  const PanelLayout two = computeLayout(1600, 1000, 44, LayoutFractions{}, true, 2.0f);
+  EXPECT_FLOAT_EQ(one.leftSplitter.width, kSplitterThickness);
+  EXPECT_FLOAT_EQ(two.leftSplitter.width, 2 * kSplitterThickness);
+  EXPECT_FLOAT_EQ(two.bottomSplitter.height, 2 * kSplitterThickness);
+  // Squeezed, each panel keeps the scaled minimum.
+  const PanelLayout squeezed =
+      computeLayout(1000, 700, 44, LayoutFractions{0.95f, 0.95f, 0.99f}, true, 2.0f);
+  EXPECT_GE(squeezed.crossSection.width, 2 * kMinPanelExtent - 2 * 2 * kSplitterThickness - 1);
+  EXPECT_GE(squeezed.lensTable.height, 2 * kMinPanelExtent - 2 * kSplitterThickness - 1);
 }
 
 }  // namespace

@@ -104,5 +104,23 @@ TEST(Scale, ScalesEveryLength) {
   EXPECT_DOUBLE_EQ(doubled.surfaces[0].indexD, 1.6);
 }
 
+TEST(LensDocument, IsModifiedUntilSavedOrUndoneBackToTheSavedLens) {
+  LensDocument document(triplet(), "triplet.dat");
+  EXPECT_FALSE(document.modified());
+  ASSERT_FALSE(document.apply(ScaleLens{1.5}));
+  EXPECT_TRUE(document.modified());
+  ASSERT_TRUE(document.undo());
+  EXPECT_FALSE(document.modified());
+  ASSERT_FALSE(document.apply(SetFilmDistance{50.0}));
+  document.markSaved("elsewhere.dat");
+  EXPECT_FALSE(document.modified());
+  EXPECT_EQ(document.path(), "elsewhere.dat");
+  ASSERT_TRUE(document.undo());  // back to before the save: differs from the saved lens
+  EXPECT_TRUE(document.modified());
+  // Opening a lens gives an unmodified document.
+  ASSERT_FALSE(document.apply(ReplaceLens{triplet(), "other.dat"}));
+  EXPECT_FALSE(document.modified());
+}
+
 }  // namespace
 }  // namespace lenslab::app

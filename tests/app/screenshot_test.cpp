@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "app/layout.h"
 #include "support/png_image.h"
 #include "support/run_process.h"
@@ -25,9 +28,8 @@ class ViewerScreenshot : public ::testing::Test {
  protected:
   testing::PngImage shoot(const std::string& size) {
     const auto png = scratch / "window.png";
-    const auto result = testing::runProcess(std::string("'") + LENSLAB_BINARY +
-                                                "' --screenshot '" + png.string() +
-                                                "' --frames 5 --size " + size,
+    const auto result = testing::runProcess(std::string("'") + LENSLAB_BINARY + "' --screenshot '" +
+                                                png.string() + "' --frames 5 --size " + size,
                                             scratch);
     EXPECT_EQ(result.exitCode, 0) << result.err;
     return testing::PngImage::load(png);
@@ -74,8 +76,8 @@ TEST_F(ViewerScreenshot, DrawsEachPanelWhereTheLayoutPutsIt) {
   const app::PanelLayout layout =
       app::computeLayout(1280, 800, static_cast<float>(menu), app::LayoutFractions{});
   const auto isTitleBar = [&](const app::Rect& panel) {
-    const Rgb colour = image.at(static_cast<int>(panel.x + panel.width - 10),
-                                static_cast<int>(panel.y + 6));
+    const Rgb colour =
+        image.at(static_cast<int>(panel.x + panel.width - 10), static_cast<int>(panel.y + 6));
     return colour.maxDifference(kTitleBar) <= 3 || colour.maxDifference(kTitleBarActive) <= 3;
   };
   EXPECT_TRUE(isTitleBar(layout.lensTable));
@@ -90,12 +92,72 @@ TEST_F(ViewerScreenshot, DrawsEachPanelWhereTheLayoutPutsIt) {
   };
   // The cross-section: mostly canvas, with the default lens's glass edges and the film drawn.
   EXPECT_GT(interiorFraction(layout.crossSection, kCrossSectionCanvas), 0.5);
-  EXPECT_GT(interiorFraction(layout.crossSection, kGlassEdge), 0.002);
+  EXPECT_GT(interiorFraction(layout.crossSection, kGlassEdge), 0.001);
   EXPECT_GT(interiorFraction(layout.crossSection, kFilm), 0.0005);
-  EXPECT_GT(interiorFraction(layout.renderPreview, kPreviewCanvas), 0.9);
   // Neither canvas leaks into the lens table.
   EXPECT_LT(interiorFraction(layout.lensTable, kCrossSectionCanvas), 0.05);
   EXPECT_LT(interiorFraction(layout.lensTable, kPreviewCanvas), 0.05);
+}
+
+TEST_F(ViewerScreenshot, ThePreviewShowsTheSceneNotABlackCanvas) {
+  // --screenshot waits for the preview's first pass, so the picture shows the default scene.
+  const testing::PngImage image = shoot("1280x800");
+  ASSERT_TRUE(image.valid());
+  const int menu = menuBarHeight(image);
+  const app::Rect preview =
+      app::computeLayout(1280, 800, static_cast<float>(menu), app::LayoutFractions{}).renderPreview;
+  // The middle of the panel is inside the picture (it is fitted to the panel and centred).
+  const int cx = static_cast<int>(preview.x + preview.width / 2);
+  const int cy = static_cast<int>(preview.y + preview.height / 2);
+  double sum = 0;
+  int black = 0, count = 0;
+  for (int y = cy - 60; y < cy + 60; ++y) {
+    for (int x = cx - 100; x < cx + 100; ++x) {
+      const Rgb c = image.at(x, y);
+      sum += c.brightness();
+      black += c.maxDifference(kPreviewCanvas) <= 3;
+      ++count;
+    }
+  }
+  EXPECT_GT(sum / count, 30.0);  // the chart and the ground, lit
+  EXPECT_LT(black, count / 10);  // not the black canvas
+}
+
+TEST_F(ViewerScreenshot, TheLayoutScalesWithTheUiScale) {
+  // LENSLAB_UI_SCALE stands in for a HiDPI monitor's content scale (Xvfb always reports 1).
+  const auto dump = [&](const std::string& environment, const std::string& name) {
+    std::ofstream(scratch / "dump.script")
+        << "wait-frames 3\ndump-ui " << (scratch / name).string() << "\nquit\n";
+    const auto result = testing::runProcess(environment + " '" + std::string(LENSLAB_BINARY) +
+                                                "' --size 1600x1000 --script '" +
+                                                (scratch / "dump.script").string() + "'",
+                                            scratch);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    std::ifstream file(scratch / name);
+    return nlohmann::json::parse(file, nullptr, false);
+  };
+  const nlohmann::json one = dump("", "one.json");
+  const nlohmann::json two = dump("LENSLAB_UI_SCALE=2", "two.json");
+  ASSERT_TRUE(one["widgets"].contains("lens-table/1/radius") &&
+              two["widgets"].contains("lens-table/1/radius"));
+  const auto height = [](const nlohmann::json& ui, const std::string& widget) {
+    return ui["widgets"][widget]["height"].get<double>();
+  };
+  // Fonts and frames twice as tall.
+  EXPECT_NEAR(height(two, "lens-table/1/radius") / height(one, "lens-table/1/radius"), 2.0, 0.2);
+  // The fixed-width stop column grew with them: its checkbox still fits inside it.
+  for (const nlohmann::json* ui : {&one, &two}) {
+    const auto& box = (*ui)["widgets"]["lens-table/1/stop"];
+    const auto& cell = (*ui)["widgets"]["lens-table/1/stop-cell"];
+    EXPECT_GE(box["x"].get<double>(), cell["x"].get<double>() - 0.5);
+    EXPECT_LE(box["x"].get<double>() + box["width"].get<double>(),
+              cell["x"].get<double>() + cell["width"].get<double>() + 0.5)
+        << "the stop checkbox is cut off at scale " << (ui == &one ? 1 : 2);
+  }
+  // The splitters between the panels are twice as wide.
+  EXPECT_EQ(one["widgets"]["layout/left-splitter"]["width"].get<double>(), app::kSplitterThickness);
+  EXPECT_EQ(two["widgets"]["layout/left-splitter"]["width"].get<double>(),
+            2 * app::kSplitterThickness);
 }
 
 }  // namespace

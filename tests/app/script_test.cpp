@@ -26,8 +26,14 @@ class FakeHost : public ScriptHost {
     calls.push_back(describe(command));
     return document.apply(command);
   }
-  bool undo() override { calls.push_back("undo"); return document.undo(); }
-  bool redo() override { calls.push_back("redo"); return document.redo(); }
+  bool undo() override {
+    calls.push_back("undo");
+    return document.undo();
+  }
+  bool redo() override {
+    calls.push_back("redo");
+    return document.redo();
+  }
   void setExposure(double stops) override { exposure = stops; }
   void setPinholeCamera(bool usePinhole) override { pinhole = usePinhole; }
   std::optional<std::string> saveWindowScreenshot(const std::string& path) override {
@@ -142,6 +148,29 @@ TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
   ScriptRunner runner(script.commands);
   runner.step(host);
   EXPECT_FALSE(host.document.prescription().surfaces[0].abbeD.has_value());
+}
+
+TEST(ScriptParse, ViewerCommandsAreChecked) {
+  const ParsedScript good = parseScript(
+      "set blocked-rays hide\nset layout 0.25 0.4 0.2\nzoom-cross-section 1e4\n"
+      "drop x.dat\nopen-dialog save-cross-section\ndialog-choose a.png\n",
+      "t");
+  EXPECT_TRUE(good.errors.empty()) << good.errors[0];
+  const ParsedScript bad = parseScript(
+      "set blocked-rays maybe\nset layout 0.25 1.5 0.2\nzoom-cross-section -2\n"
+      "open-dialog open-sesame\n",
+      "t");
+  ASSERT_EQ(bad.errors.size(), 4u);
+  EXPECT_EQ(bad.errors[1].rfind("t:2:17:", 0), 0u) << bad.errors[1];
+  EXPECT_EQ(bad.errors[2].rfind("t:3:20:", 0), 0u) << bad.errors[2];
+}
+
+TEST(ScriptRun, AHostWithoutAWindowRefusesDialogs) {
+  const ParsedScript script = parseScript("open-dialog open-lens\n", "t");
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  runner.step(host);
+  EXPECT_TRUE(runner.failed());
 }
 
 }  // namespace

@@ -31,5 +31,18 @@ TEST(ViewerStats, FirstPassLatencyIsMeasuredFromTheLastEditOfItsGeneration) {
   EXPECT_NEAR(summary.firstPassMsMedian, 45.0, 1e-9);
 }
 
+TEST(ViewerStats, TheCoarseFirstLookIsMeasuredSeparately) {
+  ViewerStats stats;
+  ViewerStats::Clock::time_point t{};
+  stats.editSubmitted(7, t);
+  stats.firstPictureShown(7, t += 12ms);
+  stats.firstPictureShown(7, t += 5ms);  // a later coarse image of the same change: not counted
+  stats.firstPassShown(7, t += 80ms);
+  const auto summary = stats.summary();
+  EXPECT_EQ(summary.pictures, 1u);
+  EXPECT_NEAR(summary.firstPictureMsMedian, 12.0, 1e-9);
+  EXPECT_NEAR(summary.firstPassMsMedian, 97.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace lenslab::app

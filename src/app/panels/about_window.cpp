@@ -1,12 +1,13 @@
 #include <imgui.h>
 
 #include "app/panels/panels.h"
+#include "app/ui_scale.h"
 
 namespace lenslab::app {
 
 void drawAboutWindow(ViewerState& state) {
   if (!state.showAbout) return;
-  ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(px(420), 0), ImGuiCond_Appearing);
   const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::Begin("About lenslab", &state.showAbout, ImGuiWindowFlags_NoCollapse)) {
@@ -16,6 +17,9 @@ void drawAboutWindow(ViewerState& state) {
         "rays beside a render of a scene seen through the lens (Kolb, Mitchell and Hanrahan "
         "1995).");
     ImGui::Separator();
+    ImGui::TextUnformatted("Ctrl+O   open a lens");
+    ImGui::TextUnformatted("Ctrl+S   save the lens as");
+    ImGui::TextUnformatted("Ctrl+Z   undo (Ctrl+Shift+Z or Ctrl+Y: redo)");
     ImGui::TextUnformatted("F12      save a window screenshot");
     ImGui::TextUnformatted("Ctrl+Q   quit");
   }

@@ -3,94 +3,118 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/canvas_clip.h"
 #include "app/cross_section_drawing.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
+#include "app/panels/wrap_row.h"
+#include "app/ui_scale.h"
 #include "optics/lens_outline.h"
 
 namespace lenslab::app {
 
 namespace {
 
-constexpr float kGrabDistancePx = 6.0f;
+constexpr float kGrabDistancePx = 6.0f;  // at UI scale 1
+constexpr float kDashPx = 8.0f, kGapPx = 5.0f;
 
 ImU32 toImColour(const Colour& colour) { return IM_COL32(colour.r, colour.g, colour.b, colour.a); }
 
-void drawDashed(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 colour, float width) {
-  const float length = std::hypot(b.x - a.x, b.y - a.y);
-  if (length < 1e-3f) return;
-  constexpr float kDash = 8.0f, kGap = 5.0f;
-  const ImVec2 step((b.x - a.x) / length, (b.y - a.y) / length);
-  for (float t = 0; t < length; t += kDash + kGap) {
-    const float end = std::min(length, t + kDash);
-    draw->AddLine(ImVec2(a.x + step.x * t, a.y + step.y * t),
-                  ImVec2(a.x + step.x * end, a.y + step.y * end), colour, width);
-  }
+ImVec2 toImVec(const CanvasPoint& point) {
+  return ImVec2(static_cast<float>(point.x), static_cast<float>(point.y));
 }
 
+// Maps the drawing to the canvas. Everything is clipped to the visible rectangle in double
+// precision first: a lens or a zoom can put points 1e15 pixels away, and dashing or even
+// converting such lines to floats must not depend on how far away they are.
 void paint(ImDrawList* draw, const CrossSectionDrawing& drawing, const CrossSectionView& view,
-           PixelPoint centre) {
-  const auto toScreen = [&](const optics::OutlinePoint& point) {
-    const PixelPoint pixel = view.toPixels(point, centre);
-    return ImVec2(pixel.x, pixel.y);
+           PixelPoint centre, const CanvasRect& visible) {
+  const auto toCanvas = [&](const optics::OutlinePoint& point) {
+    return view.toCanvas(point, centre);
   };
+  const CanvasRect clip = visible.expanded(px(8.0f));
+  std::vector<CanvasPoint> corners;
   for (const FilledQuads& fill : drawing.fills) {
     const ImU32 colour = toImColour(fill.colour);
     for (std::size_t i = 0; i + 3 < fill.corners.size(); i += 4) {
-      draw->AddQuadFilled(toScreen(fill.corners[i]), toScreen(fill.corners[i + 1]),
-                          toScreen(fill.corners[i + 2]), toScreen(fill.corners[i + 3]), colour);
+      corners.clear();
+      for (std::size_t k = 0; k < 4; ++k) corners.push_back(toCanvas(fill.corners[i + k]));
+      const std::vector<CanvasPoint> shown = clipPolygon(corners, clip);
+      if (shown.size() < 3) continue;
+      std::vector<ImVec2> points;
+      for (const CanvasPoint& p : shown) points.push_back(toImVec(p));
+      draw->AddConvexPolyFilled(points.data(), static_cast<int>(points.size()), colour);
     }
   }
-  std::vector<ImVec2> points;
+  std::vector<CanvasPoint> points;
+  std::vector<ImVec2> run;
   for (const Polyline& line : drawing.lines) {
     const ImU32 colour = toImColour(line.colour);
+    const float width = px(line.widthPx);
+    points.clear();
+    for (const auto& point : line.points) points.push_back(toCanvas(point));
+    if (line.closed && !points.empty()) points.push_back(points.front());
     if (line.dashed) {
-      for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
-        drawDashed(draw, toScreen(line.points[i]), toScreen(line.points[i + 1]), colour,
-                   line.widthPx);
+      for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        for (const CanvasSegment& dash :
+             dashSegment({points[i], points[i + 1]}, clip, px(kDashPx), px(kGapPx))) {
+          draw->AddLine(toImVec(dash.a), toImVec(dash.b), colour, width);
+        }
       }
       continue;
     }
-    points.clear();
-    for (const auto& point : line.points) points.push_back(toScreen(point));
-    draw->AddPolyline(points.data(), static_cast<int>(points.size()), colour,
-                      line.closed ? ImDrawFlags_Closed : ImDrawFlags_None, line.widthPx);
+    for (const std::vector<CanvasPoint>& visiblePart : clipPolyline(points, clip)) {
+      run.clear();
+      for (const CanvasPoint& p : visiblePart) run.push_back(toImVec(p));
+      draw->AddPolyline(run.data(), static_cast<int>(run.size()), colour, ImDrawFlags_None, width);
+    }
   }
 }
 
 void drawFanControls(ViewerState& state) {
   FanSettings& fans = state.fanSettings;
+  WrapRow row;
+  row.next(ImGui::CalcTextSize("Fit").x + ImGui::GetStyle().FramePadding.x * 2);
   if (ImGui::SmallButton("Fit")) state.crossSectionNeedsFit = true;
-  ImGui::SameLine();
+  row.next(WrapRow::checkboxWidth("Object at infinity"));
   ImGui::Checkbox("Object at infinity", &fans.objectAtInfinity);
   if (!fans.objectAtInfinity) {
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(110);
+    row.next(px(90) + ImGui::CalcTextSize("mm from film").x + ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(px(90));
     double distance = fans.objectDistanceMm;
-    if (ImGui::InputDouble("mm##object", &distance, 0, 0, "%.0f",
+    if (ImGui::InputDouble("mm from film##object", &distance, 0, 0, "%.0f",
                            ImGuiInputTextFlags_EnterReturnsTrue) &&
-        distance > 0) {
+        distance > 0 && std::isfinite(distance)) {
       fans.objectDistanceMm = distance;
     }
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Object distance from the film, as for \"Focus at distance\"");
+    }
   }
-  ImGui::SameLine();
+  row.next(WrapRow::checkboxWidth("Blocked rays"));
   ImGui::Checkbox("Blocked rays", &fans.showBlocked);
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(80);
+  row.next(px(80) + ImGui::CalcTextSize("rays").x + ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::SetNextItemWidth(px(80));
   ImGui::SliderInt("rays", &fans.raysPerFan, 3, 41);
   // The legend: one colour per field position.
-  const auto legend = [](Colour colour, const char* text) {
-    ImGui::SameLine();
-    ImGui::TextColored(ImVec4(colour.r / 255.f, colour.g / 255.f, colour.b / 255.f, 1.f), "%s", text);
+  WrapRow legendRow;
+  const auto legend = [&](Colour colour, const char* text) {
+    legendRow.next(ImGui::CalcTextSize(text).x);
+    ImGui::TextColored(ImVec4(colour.r / 255.f, colour.g / 255.f, colour.b / 255.f, 1.f), "%s",
+                       text);
   };
+  legendRow.next(ImGui::CalcTextSize("field:").x);
   ImGui::TextDisabled("field:");
   legend(palette::kFieldColours[0], "0");
   legend(palette::kFieldColours[1], "0.7");
   legend(palette::kFieldColours[2], "1.0");
   legend(palette::kChiefRay, "chief (dashed)");
   legend(palette::kMarginalRay, "marginal");
-  ImGui::SameLine();
-  ImGui::TextDisabled("  wheel: zoom, drag: pan, drag film/stop edge: edit");
+  static constexpr const char* kHint = "wheel: zoom, drag: pan, drag film/stop edge: edit";
+  legendRow.next(ImGui::CalcTextSize(kHint).x);
+  ImGui::PushTextWrapPos(0.0f);  // wrap at the panel's right edge when even a line is too short
+  ImGui::TextDisabled("%s", kHint);
+  ImGui::PopTextWrapPos();
 }
 
 }  // namespace
@@ -109,28 +133,30 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
     return;
   }
   state.uiRects["cross-section/canvas"] = {origin.x, origin.y, size.x, size.y};
+  state.crossSectionCanvasSize = {size.x, size.y};
   const PixelPoint centre{origin.x + size.x * 0.5f, origin.y + size.y * 0.5f};
   CrossSectionView& view = state.crossSectionView;
   // Input first, on the lens as it is; the edits it makes are applied before painting, so the
   // drawing shows them in this same frame.
   const optics::Prescription& lens = state.lens.prescription();
-  const optics::LensOutline outlineBefore = optics::computeLensOutline(lens);
+  const std::optional<optics::StopOutline> stopBefore = crossSection(state).outline.stop;
 
-  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft |
-                                             ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton("canvas", size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
   const ImGuiIO& io = ImGui::GetIO();
   const PixelPoint mouse{io.MousePos.x, io.MousePos.y};
 
   // Handles: the film plane (z = 0) and the stop's inner edges.
+  const float grabDistance = px(kGrabDistancePx);
   const PixelPoint filmPixel = view.toPixels({0.0, 0.0}, centre);
-  const bool nearFilm = std::abs(mouse.x - filmPixel.x) < kGrabDistancePx;
+  const bool nearFilm = std::abs(mouse.x - filmPixel.x) < grabDistance;
   bool nearStop = false;
-  if (outlineBefore.stop) {
+  if (stopBefore) {
     for (double sign : {1.0, -1.0}) {
-      const PixelPoint edge = view.toPixels(
-          {outlineBefore.stop->zMm, sign * outlineBefore.stop->apertureRadiusMm}, centre);
-      nearStop |= std::hypot(mouse.x - edge.x, mouse.y - edge.y) < kGrabDistancePx * 1.5f;
+      const PixelPoint edge =
+          view.toPixels({stopBefore->zMm, sign * stopBefore->apertureRadiusMm}, centre);
+      nearStop |= std::hypot(mouse.x - edge.x, mouse.y - edge.y) < grabDistance * 1.5f;
     }
   }
   CrossSectionGrab& grab = state.crossSectionGrab;
@@ -146,7 +172,9 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
     state.dragging |= grab == Grab::Film || grab == Grab::StopEdge;
     const ImVec2 delta = io.MouseDelta;
     switch (grab) {
-      case Grab::Pan: view.panByPixels(delta.x, delta.y); break;
+      case Grab::Pan:
+        view.panByPixels(delta.x, delta.y);
+        break;
       case Grab::Film: {
         // Dragging the film right (toward the film side) lengthens the back focal distance. The
         // lens frame has the film at z = 0, so keep the lens still on screen by moving the view.
@@ -164,7 +192,8 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
         state.requestEdit(SetStopDiameter{diameter}, "drag-stop");
         break;
       }
-      case Grab::None: break;
+      case Grab::None:
+        break;
     }
   }
   if (ImGui::IsItemDeactivated()) {
@@ -174,28 +203,31 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
   if (hovered && io.MouseWheel != 0.0f) {
     view.zoomAbout(mouse, centre, std::pow(1.15, io.MouseWheel));
   }
+  if (state.pendingZoomFactor != 1.0) {  // asked by a script: about the canvas centre
+    view.zoomAbout(centre, centre, state.pendingZoomFactor);
+    state.pendingZoomFactor = 1.0;
+  }
   if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     state.crossSectionNeedsFit = true;
   }
 
   applyPendingEdits(state);
-  const optics::LensOutline outline = optics::computeLensOutline(state.lens.prescription());
-  CrossSectionDrawing drawing = drawLens(outline, 0.5 * state.filmDiagonalMm);
-  // Fit to the lens alone: rays start in front of it and would shrink it.
-  const BoundsMm lensBounds = drawing.bounds;
-  drawRayFans(drawing, state.rayFans, state.fanSettings.showBlocked);
-  if (state.crossSectionNeedsFit && drawing.bounds.hasPoints) {
-    view.fit(lensBounds, size.x, size.y);
+  const CrossSectionCache& shown = crossSection(state);
+  if (state.crossSectionNeedsFit && shown.fitBounds.hasPoints) {
+    view.fit(shown.fitBounds, size.x, size.y);
     state.crossSectionNeedsFit = false;
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
-  draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
-                      toImColour(palette::kBackground));
-  paint(draw, drawing, view, centre);
+  const ImVec2 end(origin.x + size.x, origin.y + size.y);
+  draw->PushClipRect(origin, end, true);
+  draw->AddRectFilled(origin, end, toImColour(palette::kBackground));
+  paint(draw, shown.drawing, view, centre, {origin.x, origin.y, end.x, end.y});
   if (!state.lensSystemIsCurrent) {
-    draw->AddText(ImVec2(origin.x + 8, origin.y + 6), IM_COL32(255, 140, 120, 255),
-                  "The lens is invalid (see the lens table): rays are hidden until it is fixed.");
+    const float margin = px(8.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                  ImVec2(origin.x + margin, origin.y + px(6.0f)), IM_COL32(255, 140, 120, 255),
+                  "The lens is invalid (see the lens table): rays are hidden until it is fixed.",
+                  nullptr, std::max(1.0f, size.x - 2 * margin));
   }
   draw->PopClipRect();
   ImGui::End();

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstring>
 #include <system_error>
+#include <utility>
+
+#include "app/ui_scale.h"
 
 namespace lenslab::app {
 
@@ -61,14 +64,21 @@ void FileBrowser::readDirectory() {
   });
 }
 
+void FileBrowser::submit(const std::string& name) {
+  copyToBuffer(nameBuffer_, sizeof nameBuffer_, name);
+  submitRequested_ = true;
+}
+
 std::optional<std::filesystem::path> FileBrowser::draw() {
   if (!visible_) return std::nullopt;
   std::optional<std::filesystem::path> chosen;
-  ImGui::SetNextWindowSize(ImVec2(560, 420), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(px(560), px(420)), ImGuiCond_Appearing);
   const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   const std::string title = purpose_ + "###file-browser";
   if (ImGui::Begin(title.c_str(), &visible_, ImGuiWindowFlags_NoCollapse)) {
+    const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    rect_ = {position.x, position.y, size.x, size.y};
     if (ImGui::Button("Up") && directory_.has_parent_path()) {
       directory_ = directory_.parent_path();
       readDirectory();
@@ -103,14 +113,15 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
       directory_ = *enter;
       readDirectory();
     }
-    ImGui::SetNextItemWidth(-160);
+    ImGui::SetNextItemWidth(-px(160));
     const bool submitted = ImGui::InputText("##name", nameBuffer_, sizeof nameBuffer_,
                                             ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
-    const bool confirm = ImGui::Button(mode_ == Mode::Open ? "Open" : "Save", ImVec2(70, 0));
+    const bool confirm = ImGui::Button(mode_ == Mode::Open ? "Open" : "Save", ImVec2(px(70), 0));
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(70, 0))) visible_ = false;
-    if ((submitted || confirm) && nameBuffer_[0] != '\0') {
+    if (ImGui::Button("Cancel", ImVec2(px(70), 0))) visible_ = false;
+    if ((submitted || confirm || std::exchange(submitRequested_, false)) &&
+        nameBuffer_[0] != '\0') {
       const std::filesystem::path typed = nameBuffer_;
       chosen = typed.is_absolute() ? typed : directory_ / typed;
     }

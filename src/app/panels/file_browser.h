@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "app/layout.h"
+
 namespace lenslab::app {
 
 class FileBrowser {
@@ -17,6 +19,10 @@ class FileBrowser {
   void show(std::string purpose, Mode mode, std::vector<std::string> extensions,
             const std::filesystem::path& startDirectory, std::string suggestedName = {});
   bool visible() const { return visible_; }
+  // Where the browser window was last drawn (window coordinates).
+  Rect rect() const { return rect_; }
+  // As if the user typed `name` and pressed Save/Open: the next draw() returns it.
+  void submit(const std::string& name);
   const std::string& purpose() const { return purpose_; }
 
   // Draws the window when visible; returns the chosen path once, when the user confirms.
@@ -39,6 +45,8 @@ class FileBrowser {
   std::string listingError_;
   char nameBuffer_[512] = {};
   char directoryBuffer_[1024] = {};
+  bool submitRequested_ = false;
+  Rect rect_;
 };
 
 }  // namespace lenslab::app

@@ -1,30 +1,25 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
 #include "app/panels/panels.h"
+#include "app/panels/wrap_row.h"
+#include "app/ui_scale.h"
 #include "optics/focus.h"
 
 namespace lenslab::app {
 
 namespace {
 
-void row(const char* name, const char* format, double value) {
-  ImGui::TableNextRow();
-  ImGui::TableSetColumnIndex(0);
-  ImGui::TextUnformatted(name);
-  ImGui::TableSetColumnIndex(1);
-  ImGui::Text(format, value);
-}
-
 void textRow(const char* name, const std::string& value) {
   ImGui::TableNextRow();
   ImGui::TableSetColumnIndex(0);
-  ImGui::TextUnformatted(name);
+  ImGui::TextDisabled("%s", name);
   ImGui::TableSetColumnIndex(1);
-  ImGui::TextUnformatted(value.c_str());
+  ImGui::TextWrapped("%s", value.c_str());
 }
 
 std::string distanceText(double mm) {
@@ -38,43 +33,83 @@ std::string distanceText(double mm) {
   return text;
 }
 
+// A label followed by a value, in one cell of the compact table.
+void pairCell(int column, const char* name, const std::string& value) {
+  ImGui::TableSetColumnIndex(column);
+  ImGui::TextDisabled("%s", name);
+  ImGui::TableSetColumnIndex(column + 1);
+  ImGui::TextUnformatted(value.c_str());
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
 void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   // Film distance and stop diameter as drags: each drag is one undo step.
   const auto& surfaces = state.lens.prescription().surfaces;
   if (surfaces.empty()) return;
+  WrapRow row;
   float film = static_cast<float>(surfaces.back().thicknessMm);
-  ImGui::SetNextItemWidth(160);
-  if (ImGui::DragFloat("Film distance (mm)", &film, 0.02f, 0.01f, 1000.0f, "%.3f")) {
+  row.next(px(110) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Film mm").x);
+  ImGui::SetNextItemWidth(px(110));
+  if (ImGui::DragFloat("Film mm", &film, 0.02f, 0.01f, 1000.0f, "%.3f")) {
     state.requestEdit(SetFilmDistance{film}, "film-distance-drag");
   }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Film distance: last surface to film (drag or type)");
   if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
   state.dragging |= ImGui::IsItemActive();
   if (const auto stop = state.lens.prescription().stopIndex()) {
     float diameter = static_cast<float>(surfaces[*stop].apertureDiameterMm);
-    ImGui::SetNextItemWidth(160);
-    if (ImGui::DragFloat("Stop diameter (mm)", &diameter, 0.02f, 0.05f, 500.0f, "%.2f")) {
+    row.next(px(110) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Stop mm").x);
+    ImGui::SetNextItemWidth(px(110));
+    if (ImGui::DragFloat("Stop mm", &diameter, 0.02f, 0.05f, 500.0f, "%.2f")) {
       state.requestEdit(SetStopDiameter{diameter}, "stop-diameter-drag");
     }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop diameter (drag or type)");
     if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
     state.dragging |= ImGui::IsItemActive();
   }
-  ImGui::SetNextItemWidth(110);
+  WrapRow focusRow;
+  const char* kFocusLabel = "Focus at (mm from film)";
+  focusRow.next(ImGui::CalcTextSize(kFocusLabel).x + ImGui::GetStyle().FramePadding.x * 2);
+  const bool focus = ImGui::Button(kFocusLabel);
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  state.uiRects["first-order/focus"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Moves the film so that an object this far from the film is sharp\n"
+        "(real-ray best focus). Click the render preview to focus on a point.");
+  }
+  focusRow.next(px(110));
+  ImGui::SetNextItemWidth(px(110));
   ImGui::InputDouble("##focus-distance", &state.focusDistanceInputMm, 0, 0, "%.0f");
-  ImGui::SameLine();
-  if (ImGui::Button("Focus at distance (mm)")) {
-    const optics::FocusResult focus =
+  if (focus) {
+    const optics::FocusResult result =
         optics::filmDistanceForObjectDistance(lens, state.focusDistanceInputMm);
-    if (focus.ok()) {
-      state.requestEdit(SetFilmDistance{*focus.valueMm});
+    if (result.ok()) {
+      state.requestEdit(SetFilmDistance{*result.valueMm});
     } else {
       state.log.error("cannot focus at " + distanceText(state.focusDistanceInputMm) + ": " +
-                      focus.whyNot);
+                      result.whyNot);
     }
   }
-  if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Moves the film so that an object this far from the film is sharp\n"
-                      "(real-ray best focus). Click the render preview to focus on a point.");
+}
+
+// "In focus" is a real-ray search: once per lens, not once per frame.
+const std::string& inFocusText(ViewerState& state) {
+  if (state.inFocusLens != state.lensSystem) {
+    state.inFocusLens = state.lensSystem;
+    const optics::LensSystem& lens = *state.lensSystem;
+    const optics::FocusResult inFocus =
+        optics::objectDistanceForFilmDistance(lens, lens.filmDistanceMm());
+    state.inFocusText = inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
+                                     : "nothing (" + inFocus.whyNot + ")";
   }
+  return state.inFocusText;
 }
 
 }  // namespace
@@ -88,17 +123,36 @@ void drawFirstOrderSection(ViewerState& state) {
   if (!state.lensSystemIsCurrent) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "Showing the last valid lens.");
   }
+  // The controls first: they are what is used while editing; the figures can scroll.
+  drawControls(state, lens);
+  if (!ImGui::CollapsingHeader("First-order data", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const optics::FirstOrderData& data = lens.firstOrder();
   constexpr ImGuiTableFlags kFlags = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg;
-  if (ImGui::BeginTable("first-order", 2, kFlags)) {
+  // Short figures two to a row; the long ones take a whole row.
+  if (ImGui::BeginTable("first-order", 4, kFlags)) {
+    ImGui::TableSetupColumn("a", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("b", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("c", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("d", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableNextRow();
     if (data.afocal) {
-      textRow("EFL", "afocal (no power)");
+      pairCell(0, "EFL", "afocal");
+      pairCell(2, "f-number", "-");
     } else {
-      row("EFL", "%.3f mm", data.eflMm);
-      row("BFL", "%.3f mm", data.bflMm);
-      row("FFL", "%.3f mm", data.fflMm);
-      row("f-number", "f/%.2f", data.fNumber);
+      pairCell(0, "EFL", format("%.3f mm", data.eflMm));
+      pairCell(2, "f-number", format("f/%.2f", data.fNumber));
+      ImGui::TableNextRow();
+      pairCell(0, "BFL", format("%.3f mm", data.bflMm));
+      pairCell(2, "FFL", format("%.3f mm", data.fflMm));
     }
+    ImGui::TableNextRow();
+    pairCell(0, "Track", format("%.2f mm", data.totalTrackMm));
+    pairCell(2, "FOV", format("%.1f deg", data.fieldOfViewDeg(state.filmDiagonalMm)));
+    ImGui::EndTable();
+  }
+  if (ImGui::BeginTable("first-order-long", 2, kFlags)) {
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
     const auto pupil = [](const optics::PupilData& p, const char* vertex) {
       if (p.atInfinity) return std::string("at infinity (telecentric)");
       char text[128];
@@ -108,21 +162,14 @@ void drawFirstOrderSection(ViewerState& state) {
     };
     textRow("Entrance pupil", pupil(data.entrancePupil, "front"));
     textRow("Exit pupil", pupil(data.exitPupil, "rear"));
-    row("Principal planes", "H %.2f mm", data.frontPrincipalPlaneMm);
-    ImGui::SameLine();
-    ImGui::Text("H' %.2f mm", data.rearPrincipalPlaneMm);
-    row("Total track", "%.2f mm", data.totalTrackMm);
-    char fov[64];
-    std::snprintf(fov, sizeof fov, "%.1f deg (%.1f mm film)", data.fieldOfViewDeg(state.filmDiagonalMm),
-                  state.filmDiagonalMm);
-    textRow("Field of view", fov);
-    const optics::FocusResult inFocus =
-        optics::objectDistanceForFilmDistance(lens, lens.filmDistanceMm());
-    textRow("In focus", inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
-                                     : "nothing (" + inFocus.whyNot + ")");
+    char planes[96];
+    std::snprintf(planes, sizeof planes, "H %.2f mm, H' %.2f mm", data.frontPrincipalPlaneMm,
+                  data.rearPrincipalPlaneMm);
+    textRow("Principal planes", planes);
+    textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
+    textRow("In focus", inFocusText(state));
     ImGui::EndTable();
   }
-  drawControls(state, lens);
 }
 
 }  // namespace lenslab::app

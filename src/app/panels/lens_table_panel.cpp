@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <string>
 
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
+#include "app/ui_scale.h"
 #include "app/value_text.h"
 
 namespace lenslab::app {
@@ -19,11 +21,45 @@ constexpr ImU32 kSelectedRow = IM_COL32(60, 90, 140, 90);
 
 double fieldValue(const optics::Surface& surface, SurfaceField field) {
   switch (field) {
-    case SurfaceField::RadiusMm: return surface.radiusMm;
-    case SurfaceField::ThicknessMm: return surface.thicknessMm;
-    case SurfaceField::IndexD: return surface.indexD;
-    case SurfaceField::AbbeD: return surface.abbeD.value_or(std::nan(""));
-    case SurfaceField::ApertureDiameterMm: return surface.apertureDiameterMm;
+    case SurfaceField::RadiusMm:
+      return surface.radiusMm;
+    case SurfaceField::ThicknessMm:
+      return surface.thicknessMm;
+    // pbrt's lens files write 0 for air after the stop; the table shows air as 1 everywhere.
+    case SurfaceField::IndexD:
+      return surface.mediumIndexD();
+    case SurfaceField::AbbeD:
+      return surface.abbeD.value_or(std::nan(""));
+    case SurfaceField::ApertureDiameterMm:
+      return surface.apertureDiameterMm;
+  }
+  return 0;
+}
+
+// The most significant digits (6 at most, 3 at least) that fit in `width` pixels.
+std::string fittingText(SurfaceField field, double value, float width) {
+  std::string text;
+  for (int digits = 6; digits >= 3; --digits) {
+    text = formatFieldValue(field, value, digits);
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) break;
+  }
+  return text;
+}
+
+struct CellCallbackData {
+  const LensTableState* table;
+  const std::string* cell;
+  const std::string* exactText;
+};
+
+// Runs while the cell is being edited: on its first frame (the click that activated it), swap
+// the shortened text for every digit, selected, so typing replaces it and Enter keeps it exact.
+int replaceWithExactText(ImGuiInputTextCallbackData* data) {
+  const auto* cell = static_cast<const CellCallbackData*>(data->UserData);
+  if (cell->table->editingCell != *cell->cell) {
+    data->DeleteChars(0, data->BufTextLen);
+    data->InsertChars(0, cell->exactText->c_str());
+    data->SelectAll();
   }
   return 0;
 }
@@ -34,19 +70,29 @@ void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double v
   LensTableState& table = state.lensTable;
   const std::string cell = std::to_string(row) + "/" + surfaceFieldName(field);
   const std::string label = "##" + cell;
-  char display[64];
-  const std::string formatted = formatFieldValue(field, value);
+  const float textWidth =
+      ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().FramePadding.x;
+  char display[sizeof table.editText];
+  const std::string formatted = fittingText(field, value, textWidth);
   std::strncpy(display, formatted.c_str(), sizeof display - 1);
   display[sizeof display - 1] = '\0';
+  const std::string exact = formatFieldValueExact(field, value);
   const bool editing = table.editingCell == cell;
   char* buffer = editing ? table.editText : display;
+  CellCallbackData callbackData{&table, &cell, &exact};
   ImGui::SetNextItemWidth(-FLT_MIN);
   ImGui::InputText(label.c_str(), buffer, sizeof table.editText,
-                   ImGuiInputTextFlags_CharsScientific | ImGuiInputTextFlags_AutoSelectAll);
+                   ImGuiInputTextFlags_CharsScientific | ImGuiInputTextFlags_AutoSelectAll |
+                       ImGuiInputTextFlags_CallbackAlways,
+                   replaceWithExactText, &callbackData);
   if (ImGui::IsItemActivated()) {
     table.editingCell = cell;
-    std::memcpy(table.editText, display, sizeof display);
+    std::strncpy(table.editText, exact.c_str(), sizeof table.editText - 1);
+    table.editText[sizeof table.editText - 1] = '\0';
     table.selectedRow = static_cast<int>(row);
+  }
+  if (!editing && formatted != exact && ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", exact.c_str());
   }
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   state.uiRects["lens-table/" + std::to_string(row + 1) + "/" + surfaceFieldName(field)] = {
@@ -58,8 +104,8 @@ void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double v
       const bool unchanged = (std::isnan(old) && std::isnan(*parsed.value)) || old == *parsed.value;
       if (!unchanged) state.requestEdit(SetSurfaceField{row, field, *parsed.value});
     } else {
-      state.log.error("surface " + std::to_string(row + 1) + " " + surfaceFieldName(field) +
-                      ": " + parsed.error);
+      state.log.error("surface " + std::to_string(row + 1) + " " + surfaceFieldName(field) + ": " +
+                      parsed.error);
     }
     table.editingCell.clear();
   }
@@ -115,28 +161,36 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
     return;
   }
   const auto& surfaces = state.lens.prescription().surfaces;
-  const std::string name =
-      state.lens.path().empty() ? std::string("(unsaved lens)") : state.lens.path();
-  ImGui::TextDisabled("%s", name.c_str());
+  const std::string& path = state.lens.path();
+  const std::string name = path.empty() ? std::string("(unsaved lens)")
+                                        : std::filesystem::path(path).filename().string();
+  // The file name, with "*" while the lens differs from what was opened or saved.
+  const bool modified = state.lens.modified();
+  ImGui::TextDisabled("%s%s", name.c_str(), modified ? "*" : "");
+  if (ImGui::IsItemHovered() && !path.empty()) ImGui::SetTooltip("%s", path.c_str());
+  if (modified) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "modified");
+  }
   drawToolbar(state);
 
   constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
                                           ImGuiTableFlags_SizingStretchProp |
                                           ImGuiTableFlags_ScrollY;
-  // The table takes the rows it needs (up to 60% of the panel); first-order data goes below.
+  // The table takes the rows it needs (up to 55% of the panel); first-order data goes below.
   const float rowHeight = ImGui::GetFrameHeightWithSpacing() + 1.0f;
-  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + 6.0f;
+  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + px(6.0f);
   const float tableHeight =
-      std::clamp(wanted, 80.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y * 0.6f));
+      std::clamp(wanted, px(80.0f), std::max(px(80.0f), ImGui::GetContentRegionAvail().y * 0.55f));
   if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight))) {
     ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, 28.0f);
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, px(34.0f));
     ImGui::TableSetupColumn("Radius", ImGuiTableColumnFlags_WidthStretch, 1.2f);
-    ImGui::TableSetupColumn("Thick.", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("Thick.", ImGuiTableColumnFlags_WidthStretch, 1.05f);
     ImGui::TableSetupColumn("n_d", ImGuiTableColumnFlags_WidthStretch, 0.9f);
-    ImGui::TableSetupColumn("V_d", ImGuiTableColumnFlags_WidthStretch, 0.8f);
-    ImGui::TableSetupColumn("Aper.", ImGuiTableColumnFlags_WidthStretch, 0.9f);
-    ImGui::TableSetupColumn("Stop", ImGuiTableColumnFlags_WidthFixed, 34.0f);
+    ImGui::TableSetupColumn("V_d", ImGuiTableColumnFlags_WidthStretch, 0.75f);
+    ImGui::TableSetupColumn("Aper.", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("Stop", ImGuiTableColumnFlags_WidthFixed, px(34.0f));
     ImGui::TableHeadersRow();
     for (std::size_t row = 0; row < surfaces.size(); ++row) {
       const optics::Surface& surface = surfaces[row];
@@ -167,22 +221,34 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
       }
       ImGui::TableSetColumnIndex(6);
       bool isStop = surface.isStop();
+      // The cell's extent (its clip rectangle) and the checkbox, for the HiDPI layout test.
+      const ImVec2 cellMin = ImGui::GetWindowDrawList()->GetClipRectMin();
+      const ImVec2 cellMax = ImGui::GetWindowDrawList()->GetClipRectMax();
       if (ImGui::Checkbox("##stop", &isStop) && isStop) state.requestEdit(MakeStop{row});
+      if (row == 0) {
+        const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+        state.uiRects["lens-table/1/stop"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+        state.uiRects["lens-table/1/stop-cell"] = {cellMin.x, cellMin.y, cellMax.x - cellMin.x,
+                                                   cellMax.y - cellMin.y};
+      }
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip(surface.isStop() ? "The aperture stop (type a radius to make it a surface)"
-                                           : "Make this surface the aperture stop");
+        ImGui::SetTooltip(surface.isStop()
+                              ? "The aperture stop (type a radius to make it a surface)"
+                              : "Make this surface the aperture stop");
       }
       ImGui::PopID();
     }
     ImGui::EndTable();
   }
-  // Problems that are not tied to one row, and a summary.
+  // Every problem, with its row, wrapped to the panel.
+  ImGui::PushTextWrapPos(0.0f);
   for (const LensProblem& problem : state.lensProblems) {
     const std::string where =
         problem.surface >= 0 ? "surface " + std::to_string(problem.surface + 1) + ": " : "";
     ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "%s%s", where.c_str(),
                        problem.message.c_str());
   }
+  ImGui::PopTextWrapPos();
   ImGui::Separator();
   ImGui::BeginChild("first-order-data");
   drawFirstOrderSection(state);

@@ -7,9 +7,12 @@ namespace {
 
 ImVec4 colourFor(LogLevel level) {
   switch (level) {
-    case LogLevel::Error: return ImVec4(1.0f, 0.45f, 0.40f, 1.0f);
-    case LogLevel::Warning: return ImVec4(1.0f, 0.80f, 0.35f, 1.0f);
-    case LogLevel::Info: break;
+    case LogLevel::Error:
+      return ImVec4(1.0f, 0.45f, 0.40f, 1.0f);
+    case LogLevel::Warning:
+      return ImVec4(1.0f, 0.80f, 0.35f, 1.0f);
+    case LogLevel::Info:
+      break;
   }
   return ImGui::GetStyleColorVec4(ImGuiCol_Text);
 }
@@ -27,7 +30,8 @@ void drawLogPanel(ViewerState& state, const Rect& rect) {
       ImGui::PopStyleColor();
     }
     // Follow new entries, but only when the user has not scrolled up to read older ones.
-    if (state.log.revision() != state.logShownRevision && ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) {
+    if (state.log.revision() != state.logShownRevision &&
+        ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) {
       ImGui::SetScrollHereY(1.0f);
     }
     state.logShownRevision = state.log.revision();

@@ -4,6 +4,7 @@
 
 #include "app/panels/panels.h"
 #include "app/resources.h"
+#include "app/ui_scale.h"
 
 namespace lenslab::app {
 
@@ -20,9 +21,12 @@ void fileMenu(ViewerState& state) {
     ImGui::EndMenu();
   }
   ImGui::Separator();
-  if (ImGui::MenuItem("Save lens as...", "Ctrl+S")) state.fileRequests.push_back({Kind::SaveLens, {}});
+  if (ImGui::MenuItem("Save lens as...", "Ctrl+S"))
+    state.fileRequests.push_back({Kind::SaveLens, {}});
   ImGui::Separator();
   if (ImGui::MenuItem("Save window screenshot", "F12")) state.windowScreenshotRequested = true;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  state.uiRects["menu/File/Save window screenshot"] = {min.x, min.y, max.x - min.x, max.y - min.y};
   if (ImGui::MenuItem("Save render as PNG or EXR...")) {
     state.fileRequests.push_back({Kind::SaveRender, {}});
   }
@@ -51,7 +55,7 @@ void lensMenu(ViewerState& state) {
   ImGui::Separator();
   if (ImGui::MenuItem("Flip front to back")) state.requestEdit(FlipLens{});
   if (ImGui::BeginMenu("Scale to focal length")) {
-    ImGui::SetNextItemWidth(120);
+    ImGui::SetNextItemWidth(px(120));
     ImGui::InputDouble("mm##efl", &state.lensTable.scaleTargetEflMm, 0, 0, "%.2f");
     if (ImGui::Button("Scale") && state.lensEflMm > 0 && state.lensTable.scaleTargetEflMm > 0) {
       state.requestEdit(ScaleLens{state.lensTable.scaleTargetEflMm / state.lensEflMm});
@@ -73,7 +77,10 @@ void viewMenu(ViewerState& state) {
 float drawMainMenu(ViewerState& state) {
   float height = 0;
   if (!ImGui::BeginMainMenuBar()) return height;
-  if (ImGui::BeginMenu("File")) {
+  const bool fileOpen = ImGui::BeginMenu("File");
+  const ImVec2 fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();
+  state.uiRects["menu/File"] = {fileMin.x, fileMin.y, fileMax.x - fileMin.x, fileMax.y - fileMin.y};
+  if (fileOpen) {
     fileMenu(state);
     ImGui::EndMenu();
   }

@@ -4,6 +4,8 @@
 
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
+#include "app/preview_controller.h"
+#include "app/ui_scale.h"
 
 namespace lenslab::app {
 
@@ -12,7 +14,7 @@ namespace {
 void drawControls(ViewerState& state) {
   PreviewState& preview = state.preview;
   float exposure = static_cast<float>(state.exposureStops);
-  ImGui::SetNextItemWidth(140);
+  ImGui::SetNextItemWidth(px(140));
   if (ImGui::SliderFloat("Exposure", &exposure, -6.0f, 6.0f, "%+.1f EV")) {
     state.exposureStops = exposure;
   }
@@ -22,13 +24,23 @@ void drawControls(ViewerState& state) {
   ImGui::SameLine();
   ImGui::RadioButton("Pinhole", &camera, 1);
   state.pinholeCamera = camera == 1;
-  if (preview.samplesPerPixel > 0) {
-    ImGui::Text("%d spp   %.2f M rays/s   %.2f s%s", preview.samplesPerPixel,
-                preview.raysPerSecond * 1e-6, preview.seconds,
-                preview.rendering ? (preview.reducedResolution ? "   (draft)" : "   ...") : "");
+  const ImVec4 kBusy(1.0f, 0.8f, 0.35f, 1.0f);
+  if (preview.stale) {
+    // The figures of the previous image would read as this one's: say what is happening.
+    ImGui::TextColored(kBusy, "rendering the edit...");
+  } else if (preview.coarse) {
+    ImGui::TextColored(kBusy, "rendering: first look at 1/%d resolution...",
+                       PreviewController::kCoarseDivisor);
+  } else if (preview.samplesPerPixel > 0) {
+    ImGui::Text("%d spp   %.2f M rays/s   %.2f s", preview.samplesPerPixel,
+                preview.raysPerSecond * 1e-6, preview.seconds);
+    if (preview.rendering) {
+      ImGui::SameLine();
+      ImGui::TextColored(kBusy, preview.reducedResolution ? "rendering (draft)" : "rendering");
+    }
   } else {
-    ImGui::TextDisabled("%s", preview.status.empty() ? "waiting for the first pass"
-                                                     : preview.status.c_str());
+    ImGui::TextDisabled(
+        "%s", preview.status.empty() ? "waiting for the first pass" : preview.status.c_str());
   }
   if (preview.samplesPerPixel > 0 && !preview.status.empty()) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", preview.status.c_str());
@@ -60,7 +72,19 @@ void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
       }
       const ImVec2 topLeft(origin.x + (size.x - width) * 0.5f, origin.y + (size.y - height) * 0.5f);
       ImGui::SetCursorScreenPos(topLeft);
-      ImGui::Image(preview.texture.imguiId(), ImVec2(width, height));
+      // The previous change's image, dimmed, until this change's first look replaces it.
+      const ImVec4 tint = preview.stale ? ImVec4(0.55f, 0.55f, 0.55f, 1.0f) : ImVec4(1, 1, 1, 1);
+      ImGui::Image(preview.texture.imguiId(), ImVec2(width, height), ImVec2(0, 0), ImVec2(1, 1),
+                   tint);
+      if (preview.stale) {
+        const char* label = "rendering...";
+        const ImVec2 text = ImGui::CalcTextSize(label);
+        const ImVec2 pad(px(8), px(4));
+        const ImVec2 at(topLeft.x + px(8), topLeft.y + px(8));
+        draw->AddRectFilled(at, ImVec2(at.x + text.x + 2 * pad.x, at.y + text.y + 2 * pad.y),
+                            IM_COL32(0, 0, 0, 190), px(3));
+        draw->AddText(ImVec2(at.x + pad.x, at.y + pad.y), IM_COL32(255, 205, 90, 255), label);
+      }
       state.uiRects["preview/image"] = {topLeft.x, topLeft.y, width, height};
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("Click to focus here");

@@ -34,6 +34,8 @@ ImVec2 splitter(const char* id, const Rect& rect, ImGuiMouseCursor cursor) {
 void drawSplitters(ViewerState& state, float windowWidth, float /*windowHeight*/) {
   LayoutFractions& fractions = state.settings.layout;
   const PanelLayout& layout = state.layout;
+  state.uiRects["layout/left-splitter"] = layout.leftSplitter;
+  state.uiRects["layout/right-splitter"] = layout.rightSplitter;
   const float usableHeight =
       layout.lensTable.height + layout.bottomSplitter.height + layout.log.height;
   if (windowWidth > 0) {
