@@ -68,14 +68,17 @@ BuildResult LensSystem::build(const Prescription& prescription, double wavelengt
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withFilmDistance(double filmDistanceMm) const {
-  if (!(std::isfinite(filmDistanceMm) && filmDistanceMm > 0.0)) return nullptr;
+  if (!(std::isfinite(filmDistanceMm) && filmDistanceMm > 0.0 && filmDistanceMm <= kMaxLengthMm))
+    return nullptr;
   Prescription p = prescription_;
   p.surfaces.back().thicknessMm = filmDistanceMm;
   return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withStopDiameter(double stopDiameterMm) const {
-  if (!(std::isfinite(stopDiameterMm) && stopDiameterMm > 0.0)) return nullptr;
+  if (!(std::isfinite(stopDiameterMm) && stopDiameterMm > 0.0 &&
+        stopDiameterMm <= kMaxApertureDiameterMm))
+    return nullptr;
   Prescription p = prescription_;
   p.surfaces[stopIndex_].apertureDiameterMm = stopDiameterMm;
   return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);

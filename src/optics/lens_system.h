@@ -68,8 +68,11 @@ struct PupilSample {
 };
 
 struct ValidationError {
-  int surface = -1;  // prescription row (0-based), -1 for the lens as a whole
+  int surface = -1;  // prescription row as an index (0-based), -1 for the lens as a whole
   std::string message;
+  // What users read: "surface N: message" with N counted from 1 (as the viewer's table and the
+  // script commands count), or the message alone for the lens as a whole.
+  std::string toString() const;
 };
 
 class LensSystem;
@@ -83,7 +86,8 @@ struct BuildResult {
 
 // Checks a prescription without building it: crossing neighbours (negative edge thickness),
 // semi-aperture larger than |radius|, n < 1, non-positive aperture, missing or repeated stop,
-// non-finite numbers.
+// non-finite numbers, magnitudes beyond kMaxLengthMm / kMaxApertureDiameterMm /
+// kMaxRefractiveIndex (prescription.h).
 std::vector<ValidationError> validate(const Prescription& prescription);
 
 class LensSystem {
@@ -94,7 +98,8 @@ class LensSystem {
                            double wavelengthNm = kDefaultWavelengthNm);
 
   // Cheap variants (no validation beyond the changed value, exit-pupil table rebuilt lazily).
-  // Return null when the value is not positive and finite.
+  // Return null when the value is not positive and finite, or beyond the limits validate() has
+  // (kMaxLengthMm, kMaxApertureDiameterMm).
   std::shared_ptr<const LensSystem> withFilmDistance(double filmDistanceMm) const;
   std::shared_ptr<const LensSystem> withStopDiameter(double stopDiameterMm) const;
   // Same geometry, indices at another wavelength (for spectral rendering: a few microseconds;
