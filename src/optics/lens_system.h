@@ -50,10 +50,20 @@ const char* toString(RayStop stop);
 
 // A traced ray as the cross-section draws it.
 struct RayPath {
-  // points[0] is the ray origin; points[i] for i >= 1 is the hit point on surface
-  // surfaceIndices[i - 1]. For a clipped ray the last point is where it met the surface outside
-  // the clear aperture; for total internal reflection, where it met the reflecting surface; a
-  // missed surface adds no point.
+  // points[0] is the ray origin; points[i] for i >= 1 is the point on surface
+  // surfaceIndices[i - 1]: the hit point, except for the last point of a blocked ray.
+  // - Total internal reflection: the last point is where the ray met the reflecting surface.
+  // - Clipped by a clear aperture, or missed the surface's sphere entirely: the last point is
+  //   where the ray meets the element's edge, as lens_outline.h draws it: the plane of the rim
+  //   (z of the surface at its semi-aperture, where a smaller surface continues as a flat
+  //   annulus) when the ray crosses that plane ahead of it at or beyond the semi-aperture;
+  //   otherwise, when it crosses the plane inside the opening and leaves through the element's
+  //   side, the aperture cylinder r = semi-aperture. (Never the extended sphere beyond the rim,
+  //   which is empty space in the drawing.) For the stop the rim plane is the stop plane.
+  //   Only when the ray meets neither ahead (it runs away from the surface) does the path end at
+  //   the sphere hit, if any, or repeat the previous point.
+  // So points.size() == surfaceIndices.size() + 1 always, and the last surface index of a
+  // blocked ray is stopSurface.
   std::vector<glm::dvec3> points;
   std::vector<int> surfaceIndices;
   RayStop stop = RayStop::Passed;
