@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "optics/lens_system.h"
+#include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
 
@@ -23,21 +24,10 @@ LensRay launch(const LensSystem& lens, double objectFromFront, double y) {
 
 // Height at the stop plane of that ray, ignoring clear apertures (only aiming); nullopt when it
 // misses a surface or is totally reflected on the way.
-std::optional<double> heightAtStop(const LensSystem& lens, LensRay ray) {
-  const auto& surfaces = lens.surfaces();
-  for (std::size_t k = 0; k <= lens.stopIndex(); ++k) {
-    const SurfaceGeometry& s = surfaces[k];
-    double t = 0.0;
-    if (!intersectSurface(s, ray.origin, ray.direction, t)) return std::nullopt;
-    ray.origin += t * ray.direction;
-    if (k == lens.stopIndex()) return ray.origin.x;
-    glm::dvec3 refracted;
-    if (!refract(ray.direction, surfaceNormal(s, ray.origin), s.indexFront / s.indexRear,
-                 refracted))
-      return std::nullopt;
-    ray.direction = refracted;
-  }
-  return std::nullopt;
+std::optional<double> heightAtStop(const LensSystem& lens, const LensRay& ray) {
+  const auto atStop = traceFromSceneUnclipped(lens, ray, lens.stopIndex());
+  if (!atStop) return std::nullopt;
+  return atStop->origin.x;
 }
 
 // Launch height whose ray crosses the stop at `target`, by the secant method from a paraxial
