@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/lens_loading.h"
+#include "cli/number_validators.h"
 #include "optics/focus.h"
 
 namespace lenslab::cli {
@@ -108,7 +109,7 @@ void addFocusCommand(CLI::App& app, SubcommandRunner& run) {
                    ->add_option("--film-distance", arguments->filmDistanceMm,
                                 "Film distance in mm (rear vertex to film): print the object "
                                 "distance in focus instead")
-                   ->check(CLI::PositiveNumber);
+                   ->check(PositiveFiniteNumber());
   object->excludes(film);
   focus->add_flag("--json", arguments->json, "Print JSON instead of text");
   focus->callback([arguments, object, film, &run] {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/lens_loading.h"
+#include "cli/number_validators.h"
 #include "optics/field.h"
 
 namespace lenslab::cli {
@@ -25,6 +26,12 @@ nlohmann::json number(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
+// Focal lengths and distances of an afocal lens (zero power) are infinite: null, not the 0 that
+// FirstOrderData holds for them.
+nlohmann::json focal(const optics::FirstOrderData& fo, double value) {
+  return fo.afocal ? nlohmann::json(nullptr) : number(value);
+}
+
 nlohmann::json pupilJson(const optics::PupilData& pupil, const char* reference) {
   return {{"diameter_mm", number(pupil.diameterMm)},
           {"position_mm", pupil.atInfinity ? nlohmann::json(nullptr) : number(pupil.positionMm)},
@@ -39,7 +46,8 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
   nlohmann::json surfaces = nlohmann::json::array();
   for (std::size_t i = 0; i < lens.prescription().surfaces.size(); ++i) {
     const optics::Surface& s = lens.prescription().surfaces[i];
-    surfaces.push_back({{"radius_mm", s.isFlat() ? nlohmann::json(nullptr) : number(s.radiusMm)},
+    surfaces.push_back({{"surface", i + 1},
+                        {"radius_mm", s.isFlat() ? nlohmann::json(nullptr) : number(s.radiusMm)},
                         {"flat", s.isFlat()},
                         {"stop", s.isStop()},
                         {"thickness_mm", s.thicknessMm},
@@ -53,21 +61,21 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       {"lens", arguments.lensPath},
       {"wavelength_nm", lens.wavelengthNm()},
       {"afocal", fo.afocal},
-      {"efl_mm", number(fo.eflMm)},
-      {"bfl_mm", number(fo.bflMm)},
-      {"ffl_mm", number(fo.fflMm)},
-      {"front_principal_plane_mm", number(fo.frontPrincipalPlaneMm)},
-      {"rear_principal_plane_mm", number(fo.rearPrincipalPlaneMm)},
-      {"f_number", number(fo.fNumber)},
+      {"efl_mm", focal(fo, fo.eflMm)},
+      {"bfl_mm", focal(fo, fo.bflMm)},
+      {"ffl_mm", focal(fo, fo.fflMm)},
+      {"front_principal_plane_mm", focal(fo, fo.frontPrincipalPlaneMm)},
+      {"rear_principal_plane_mm", focal(fo, fo.rearPrincipalPlaneMm)},
+      {"f_number", focal(fo, fo.fNumber)},
       {"total_track_mm", fo.totalTrackMm},
       {"lens_length_mm", fo.lensLengthMm},
       {"film_distance_mm", lens.filmDistanceMm()},
       {"entrance_pupil", pupilJson(fo.entrancePupil, "front_vertex")},
       {"exit_pupil", pupilJson(fo.exitPupil, "rear_vertex")},
-      {"stop_surface", lens.stopIndex()},
+      {"stop_surface", lens.stopIndex() + 1},  // counted from 1, as "surface" above
       {"stop_diameter_mm", lens.stopDiameterMm()},
       {"film_diagonal_mm", arguments.filmDiagonalMm},
-      {"field_of_view_deg", fo.fieldOfViewDeg(arguments.filmDiagonalMm)},
+      {"field_of_view_deg", focal(fo, fo.fieldOfViewDeg(arguments.filmDiagonalMm))},
       {"field_of_view_real_deg", realField ? nlohmann::json(*realField) : nlohmann::json(nullptr)},
       {"surfaces", surfaces}};
 }
@@ -77,16 +85,23 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   auto line = [](const char* label, double value, const char* unit) {
     std::printf("%-34s %12.4f %s\n", label, value, unit);
   };
-  std::printf("%s: %zu surfaces, stop is surface %zu (0-based), at %.2f nm\n",
-              arguments.lensPath.c_str(), lens.prescription().surfaces.size(), lens.stopIndex(),
+  // Values that are infinite for an afocal lens.
+  auto focalLine = [&](const char* label, double value, const char* unit) {
+    if (fo.afocal)
+      std::printf("%-34s %12s\n", label, "afocal (infinite)");
+    else
+      line(label, value, unit);
+  };
+  std::printf("%s: %zu surfaces, stop is surface %zu (counted from 1), at %.2f nm\n",
+              arguments.lensPath.c_str(), lens.prescription().surfaces.size(), lens.stopIndex() + 1,
               lens.wavelengthNm());
   if (fo.afocal) std::printf("afocal: zero power, no focal lengths\n");
-  line("effective focal length (EFL)", fo.eflMm, "mm");
-  line("back focal length (BFL)", fo.bflMm, "mm from the rear vertex");
-  line("front focal length (FFL)", fo.fflMm, "mm in front of the front vertex");
-  line("front principal plane", fo.frontPrincipalPlaneMm, "mm from the front vertex");
-  line("rear principal plane", fo.rearPrincipalPlaneMm, "mm from the rear vertex");
-  line("f-number (infinity)", fo.fNumber, "");
+  focalLine("effective focal length (EFL)", fo.eflMm, "mm");
+  focalLine("back focal length (BFL)", fo.bflMm, "mm from the rear vertex");
+  focalLine("front focal length (FFL)", fo.fflMm, "mm in front of the front vertex");
+  focalLine("front principal plane", fo.frontPrincipalPlaneMm, "mm from the front vertex");
+  focalLine("rear principal plane", fo.rearPrincipalPlaneMm, "mm from the rear vertex");
+  focalLine("f-number (infinity)", fo.fNumber, "");
   line("entrance pupil diameter", fo.entrancePupil.diameterMm, "mm");
   line("entrance pupil position", fo.entrancePupil.positionMm, "mm from the front vertex");
   line("exit pupil diameter", fo.exitPupil.diameterMm, "mm");
@@ -94,8 +109,11 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   line("lens length", fo.lensLengthMm, "mm (front to rear vertex)");
   line("film distance", lens.filmDistanceMm(), "mm (rear vertex to film)");
   line("total track", fo.totalTrackMm, "mm (front vertex to film)");
-  std::printf("%-34s %12.4f deg (paraxial, %.2f mm film diagonal)\n", "field of view",
-              fo.fieldOfViewDeg(arguments.filmDiagonalMm), arguments.filmDiagonalMm);
+  if (fo.afocal)
+    std::printf("%-34s %12s (afocal: no image on the film)\n", "field of view", "-");
+  else
+    std::printf("%-34s %12.4f deg (paraxial, %.2f mm film diagonal)\n", "field of view",
+                fo.fieldOfViewDeg(arguments.filmDiagonalMm), arguments.filmDiagonalMm);
   if (const auto real = optics::realFieldOfViewDeg(lens, arguments.filmDiagonalMm))
     std::printf("%-34s %12.4f deg (chief ray)\n", "field of view, real", *real);
   else
@@ -111,10 +129,11 @@ void addInfoCommand(CLI::App& app, SubcommandRunner& run) {
   info->add_option("LENS", arguments->lensPath, "Lens file (.dat, pbrt format)")->required();
   info->add_flag("--json", arguments->json, "Print JSON instead of text");
   info->add_option("--wavelength", arguments->wavelengthNm, "Wavelength in nm (default 587.56)")
+      ->check(PositiveFiniteNumber())
       ->check(CLI::Range(200.0, 2000.0));
   info->add_option("--film-diagonal", arguments->filmDiagonalMm,
                    "Film diagonal in mm for the field of view (default 43.27, full frame)")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveFiniteNumber());
   info->callback([arguments, &run] {
     run = [arguments] {
       const auto lens = loadLensOrReport(arguments->lensPath, "info", arguments->wavelengthNm);

@@ -21,7 +21,7 @@ std::shared_ptr<const optics::LensSystem> loadLensOrReport(const std::string& pa
     for (const auto& error : built.errors) {
       const int line =
           error.surface >= 0 ? file.lens->rowLines[error.surface] : file.lens->rowLines.front();
-      std::cerr << path << ":" << line << ":1: " << error.message << "\n";
+      std::cerr << path << ":" << line << ":1: " << error.toString() << "\n";
     }
     return nullptr;
   }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/number_validators.h"
 #include "cli/size_argument.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
@@ -67,7 +68,8 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
                       "Output image; format from the extension: .png .exr .pfm "
                       "(default: the scene's film filename, else out.png)");
   command->add_option("--stats-json", arguments->statsJsonPath, "Write timing statistics here");
-  command->add_option("--exposure", arguments->exposureStops, "PNG exposure in stops");
+  command->add_option("--exposure", arguments->exposureStops, "PNG exposure in stops")
+      ->check(FiniteNumber());
   command->add_flag("--quiet", arguments->quiet, "No progress bar");
   return arguments;
 }

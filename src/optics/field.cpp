@@ -5,29 +5,11 @@
 #include <numbers>
 
 #include "optics/lens_system.h"
+#include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
 
 namespace {
-
-// Film-to-scene trace through surfaces [rear, last] ignoring clear apertures; `last` = 0 traces
-// the whole lens. nullopt if a surface is missed or the ray is totally reflected.
-std::optional<LensRay> traceUnclipped(const LensSystem& lens, LensRay ray, std::size_t last) {
-  const auto& surfaces = lens.surfaces();
-  for (std::size_t k = surfaces.size(); k-- > last;) {
-    const SurfaceGeometry& s = surfaces[k];
-    double t = 0.0;
-    if (!intersectSurface(s, ray.origin, ray.direction, t)) return std::nullopt;
-    ray.origin += t * ray.direction;
-    if (k == last && s.isStop) return ray;
-    glm::dvec3 refracted;
-    if (!refract(ray.direction, surfaceNormal(s, ray.origin), s.indexRear / s.indexFront,
-                 refracted))
-      return std::nullopt;
-    ray.direction = refracted;
-  }
-  return ray;
-}
 
 LensRay aimedRay(const LensSystem& lens, double filmHeight, double planeX) {
   const glm::dvec3 origin{filmHeight, 0.0, 0.0};
@@ -43,7 +25,7 @@ std::optional<double> realFieldOfViewDeg(const LensSystem& lens, double filmDiag
   // Height at the stop as a function of where the ray crosses the rear-vertex plane; find its
   // zero by the secant method, starting from the aim at the paraxial exit pupil.
   auto stopHeight = [&](double planeX) -> std::optional<double> {
-    const auto at = traceUnclipped(lens, aimedRay(lens, h, planeX), stop);
+    const auto at = traceFromFilmUnclipped(lens, aimedRay(lens, h, planeX), stop);
     if (!at) return std::nullopt;
     return at->origin.x;
   };
@@ -63,7 +45,7 @@ std::optional<double> realFieldOfViewDeg(const LensSystem& lens, double filmDiag
     f1 = stopHeight(x1);
   }
   if (!f1 || std::abs(*f1) > 1e-6) return std::nullopt;
-  const auto out = traceUnclipped(lens, aimedRay(lens, h, x1), 0);
+  const auto out = traceFromFilmUnclipped(lens, aimedRay(lens, h, x1), 0);
   if (!out || out->direction.z <= -1.0) return std::nullopt;
   const double halfAngle = std::acos(std::clamp(out->direction.z, -1.0, 1.0));
   return 2.0 * halfAngle * 180.0 / std::numbers::pi;

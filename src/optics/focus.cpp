@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "optics/lens_system.h"
+#include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
 
@@ -23,21 +24,10 @@ LensRay launch(const LensSystem& lens, double objectFromFront, double y) {
 
 // Height at the stop plane of that ray, ignoring clear apertures (only aiming); nullopt when it
 // misses a surface or is totally reflected on the way.
-std::optional<double> heightAtStop(const LensSystem& lens, LensRay ray) {
-  const auto& surfaces = lens.surfaces();
-  for (std::size_t k = 0; k <= lens.stopIndex(); ++k) {
-    const SurfaceGeometry& s = surfaces[k];
-    double t = 0.0;
-    if (!intersectSurface(s, ray.origin, ray.direction, t)) return std::nullopt;
-    ray.origin += t * ray.direction;
-    if (k == lens.stopIndex()) return ray.origin.x;
-    glm::dvec3 refracted;
-    if (!refract(ray.direction, surfaceNormal(s, ray.origin), s.indexFront / s.indexRear,
-                 refracted))
-      return std::nullopt;
-    ray.direction = refracted;
-  }
-  return std::nullopt;
+std::optional<double> heightAtStop(const LensSystem& lens, const LensRay& ray) {
+  const auto atStop = traceFromSceneUnclipped(lens, ray, lens.stopIndex());
+  if (!atStop) return std::nullopt;
+  return atStop->origin.x;
 }
 
 // Launch height whose ray crosses the stop at `target`, by the secant method from a paraxial
@@ -92,6 +82,59 @@ std::optional<double> bestFocusBehindRearVertexMm(const LensSystem& lens,
   return lens.rearVertexZ() - zFocus;
 }
 
+std::optional<ClosestFocus> closestFocus(const LensSystem& lens) {
+  const double lensLength = lens.frontVertexZ() - lens.rearVertexZ();
+  const double efl = std::abs(lens.firstOrder().eflMm);
+  // Over the object vergence v = 1 / s (s from the front vertex), the object-to-film distance
+  // s + L + focus(s) grows without bound at both ends of the range with a real image: as v -> 0
+  // (the object recedes) and as the object nears the front focal point (the image recedes).
+  auto focusAt = [&](double v) -> std::optional<double> {
+    const auto focus = bestFocusBehindRearVertexMm(lens, 1.0 / v);
+    if (!focus || *focus <= 0.0) return std::nullopt;
+    return focus;
+  };
+  auto total = [&](double v) {
+    const auto focus = focusAt(v);
+    return focus ? 1.0 / v + lensLength + *focus : kInfinity;
+  };
+  // The end of the range: double the vergence until there is no real image, then bisect.
+  double lo = 1e-3 / (efl > 0 ? efl : 1.0), hi = lo;
+  if (!focusAt(lo)) return std::nullopt;
+  while (focusAt(hi)) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e6) return std::nullopt;
+  }
+  for (int k = 0; k < 60 && hi - lo > 1e-14 * hi; ++k) {
+    const double m = 0.5 * (lo + hi);
+    (focusAt(m) ? lo : hi) = m;
+  }
+  // Golden-section search for the minimum on (0, lo].
+  constexpr double kGolden = 0.6180339887498949;
+  double a = 0.0, b = lo;
+  double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
+  double fc = total(c), fd = total(d);
+  for (int k = 0; k < 120 && b - a > 1e-13 * b; ++k) {
+    if (fc <= fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - kGolden * (b - a);
+      fc = total(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + kGolden * (b - a);
+      fd = total(d);
+    }
+  }
+  const double v = fc <= fd ? c : d;
+  const auto focus = focusAt(v);
+  if (!focus) return std::nullopt;
+  return ClosestFocus{1.0 / v + lensLength + *focus, *focus};
+}
+
 FocusResult filmDistanceForObjectDistance(const LensSystem& lens, double objectDistanceMm) {
   FocusResult result;
   if (!(objectDistanceMm > 0.0)) {
@@ -119,10 +162,32 @@ FocusResult filmDistanceForObjectDistance(const LensSystem& lens, double objectD
     return *focus - t;
   };
   const double efl = std::abs(lens.firstOrder().eflMm);
+  auto bisect = [&](double a, double b) {  // g(a) > 0 >= g(b)
+    for (int k = 0; k < 60 && b - a > 1e-10 * b; ++k) {
+      const double m = 0.5 * (a + b);
+      const auto gm = g(m);
+      if (gm && *gm > 0.0)
+        a = m;
+      else
+        b = m;
+    }
+    return 0.5 * (a + b);
+  };
+  // Said when there is no solution: the real limit, not a thin-lens rule of thumb.
+  auto closestText = [&](const std::optional<ClosestFocus>& closest) {
+    std::ostringstream text;
+    if (closest)
+      text << "the closest focus is " << closest->objectDistanceMm
+           << " mm from the film (film distance " << closest->filmDistanceMm << " mm)";
+    else
+      text << "no closest focus could be found";
+    return text.str();
+  };
   double lo = *atInfinity;
   auto glo = g(lo);
   if (!glo) {
-    result.whyNot = "the object is inside the lens's focal length or behind its front";
+    result.whyNot = "the object is inside the lens's focal length or behind its front; " +
+                    closestText(closestFocus(lens));
     return result;
   }
   constexpr int kSteps = 96;
@@ -132,24 +197,28 @@ FocusResult filmDistanceForObjectDistance(const LensSystem& lens, double objectD
     const auto ghi = g(hi);
     if (!ghi) break;
     if (*ghi <= 0.0) {
-      double a = lo, b = hi;
-      for (int k = 0; k < 60 && b - a > 1e-10 * b; ++k) {
-        const double m = 0.5 * (a + b);
-        const auto gm = g(m);
-        if (gm && *gm > 0.0)
-          a = m;
-        else
-          b = m;
-      }
-      result.valueMm = 0.5 * (a + b);
+      result.valueMm = bisect(lo, hi);
       return result;
     }
     lo = hi;
   }
+  // The scan found no film position. Near the closest focus the two solutions can lie between
+  // two scan steps, so decide with the closest focus itself.
+  const auto closest = closestFocus(lens);
+  if (closest && objectDistanceMm >= closest->objectDistanceMm) {
+    const auto gClosest = g(closest->filmDistanceMm);
+    if (gClosest && *gClosest <= 0.0 && closest->filmDistanceMm > *atInfinity) {
+      result.valueMm = bisect(*atInfinity, closest->filmDistanceMm);
+      return result;
+    }
+    if (gClosest) {  // at the closest focus itself, up to rounding
+      result.valueMm = closest->filmDistanceMm;
+      return result;
+    }
+  }
   std::ostringstream why;
   why << "no film position focuses an object " << objectDistanceMm
-      << " mm from the film: it is nearer than the closest focus (about 4 x EFL = " << 4 * efl
-      << " mm for a thin lens)";
+      << " mm from the film: " << closestText(closest);
   result.whyNot = why.str();
   return result;
 }

@@ -34,6 +34,16 @@ FocusResult filmDistanceForObjectDistance(const LensSystem& lens, double objectD
 // that.
 FocusResult objectDistanceForFilmDistance(const LensSystem& lens, double filmDistanceMm);
 
+// The nearest object that any film position brings into focus, by the same real-ray criterion:
+// the minimum over film distances of objectDistanceForFilmDistance (near 1:1 for a simple lens,
+// where it is 4 f plus the principal-plane gap).
+struct ClosestFocus {
+  double objectDistanceMm = 0.0;  // from the film
+  double filmDistanceMm = 0.0;    // rear vertex to film, at that focus
+};
+// nullopt when the lens forms no real image.
+std::optional<ClosestFocus> closestFocus(const LensSystem& lens);
+
 // Real-ray best focus for an axial object `objectFromFrontVertexMm` in front of the front vertex
 // (infinity allowed): distance of the focus behind the rear vertex (negative when the image is
 // virtual, in front of it). nullopt when no zone's ray passes.

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "optics/lens_system.h"
@@ -55,8 +56,30 @@ std::string parseNumber(std::string_view text, int columnIndex, double& value) {
       return message.str();
     }
     value = kFlatRadius;
+    return {};
+  }
+  // Absurd magnitudes (a slip such as 1e300) are refused here, at the token, before they can
+  // overflow the geometry downstream. validate() has the same limits for edited prescriptions.
+  const double limit = columnIndex <= 1   ? kMaxLengthMm
+                       : columnIndex == 2 ? kMaxRefractiveIndex
+                       : columnIndex == 3 ? kMaxApertureDiameterMm
+                                          : std::numeric_limits<double>::infinity();
+  if (std::abs(value) > limit) {
+    message << what << " " << text << " is beyond any real lens (at most " << limit
+            << (columnIndex == 2 ? "" : " mm")
+            << (columnIndex == 0 ? "; use inf for a flat surface" : "") << ")";
+    return message.str();
   }
   return {};
+}
+
+// Length of the line terminator at text[i]: "\r\n" (DOS), "\n" (Unix) or a lone "\r" (classic
+// Mac OS); 0 if there is none.
+std::size_t terminatorLength(std::string_view text, std::size_t i) {
+  if (i >= text.size()) return 0;
+  if (text[i] == '\n') return 1;
+  if (text[i] != '\r') return 0;
+  return i + 1 < text.size() && text[i + 1] == '\n' ? 2 : 1;
 }
 
 }  // namespace
@@ -69,6 +92,10 @@ std::string LensFileError::toString() const {
 
 LensFileResult parseLensText(std::string_view text, const std::string& fileName) {
   LensFileResult result;
+  // A UTF-8 byte-order mark (some Windows editors write one) is not part of the first line.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
+    text.remove_prefix(kByteOrderMark.size());
   auto fail = [&](int line, int column, std::string message) {
     result.errors.push_back({fileName, line, column, std::move(message)});
     return result;
@@ -78,12 +105,14 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
   int lineNumber = 0;
   std::size_t position = 0;
   while (position <= text.size()) {
-    if (position == text.size() && (text.empty() || text.back() == '\n')) break;
+    if (position == text.size() && (text.empty() || text.back() == '\n' || text.back() == '\r'))
+      break;
     ++lineNumber;
-    const std::size_t newline = text.find('\n', position);
+    const std::size_t newline = text.find_first_of("\r\n", position);
     std::string_view line = text.substr(
         position, newline == std::string_view::npos ? std::string_view::npos : newline - position);
-    position = newline == std::string_view::npos ? text.size() + 1 : newline + 1;
+    position = newline == std::string_view::npos ? text.size() + 1
+                                                 : newline + terminatorLength(text, newline);
 
     // Binary data: a NUL or another control character outside comments is not a lens file.
     const std::size_t hash = line.find('#');
@@ -152,9 +181,7 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
 
   for (const ValidationError& e : validate(lens.prescription)) {
     const int line = e.surface >= 0 ? lens.rowLines[e.surface] : lens.rowLines.front();
-    const std::string where =
-        e.surface >= 0 ? "surface " + std::to_string(e.surface) + ": " : std::string();
-    result.errors.push_back({fileName, line, 1, where + e.message});
+    result.errors.push_back({fileName, line, 1, e.toString()});
   }
   if (!result.errors.empty()) return result;
   result.lens = std::move(lens);

@@ -1,11 +1,48 @@
 #include "optics/lens_system.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "optics/exit_pupil.h"
 #include "optics/glass.h"
 
 namespace lenslab::optics {
+
+namespace {
+
+// Where a ray blocked at surface s ends in its RayPath (see the comment there). tHit is the
+// ray's hit on the extended sphere, when it has one.
+glm::dvec3 blockedEndPoint(const SurfaceGeometry& s, const LensRay& ray,
+                           std::optional<double> tHit) {
+  const glm::dvec3& o = ray.origin;
+  const glm::dvec3& d = ray.direction;
+  const double a = s.semiApertureMm;
+  // Sag at the rim, c a^2 / (1 + sqrt(1 - c^2 a^2)); validation keeps a <= |R|.
+  const double c = s.curvaturePerMm;
+  const double sag = c * a * a / (1.0 + std::sqrt(std::max(0.0, 1.0 - c * c * a * a)));
+  const double zRim = s.vertexZMm - sag;
+  const double tPlane = d.z != 0.0 ? (zRim - o.z) / d.z : -1.0;
+  const bool planeAhead = std::isfinite(tPlane) && tPlane > 0.0;
+  if (planeAhead) {
+    const glm::dvec3 p = o + tPlane * d;
+    if (p.x * p.x + p.y * p.y >= a * a * (1.0 - 1e-12)) return p;
+    // Inside the opening at the rim plane: it leaves through the side, where it exits the
+    // cylinder r = a (the larger root of |o_xy + t d_xy|^2 = a^2).
+    const double qa = d.x * d.x + d.y * d.y;
+    const double qb = o.x * d.x + o.y * d.y;
+    const double qc = o.x * o.x + o.y * o.y - a * a;
+    const double disc = qb * qb - qa * qc;
+    if (qa > 0.0 && disc >= 0.0) {
+      const double tSide = (-qb + std::sqrt(disc)) / qa;
+      if (tSide > tPlane && (!tHit || tSide <= *tHit)) return o + tSide * d;
+    }
+  }
+  if (tHit) return o + *tHit * d;
+  if (planeAhead) return o + tPlane * d;
+  return o;
+}
+
+}  // namespace
 
 void LensRayBatch::resize(std::size_t n) {
   ox.resize(n);
@@ -68,14 +105,17 @@ BuildResult LensSystem::build(const Prescription& prescription, double wavelengt
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withFilmDistance(double filmDistanceMm) const {
-  if (!(std::isfinite(filmDistanceMm) && filmDistanceMm > 0.0)) return nullptr;
+  if (!(std::isfinite(filmDistanceMm) && filmDistanceMm > 0.0 && filmDistanceMm <= kMaxLengthMm))
+    return nullptr;
   Prescription p = prescription_;
   p.surfaces.back().thicknessMm = filmDistanceMm;
   return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withStopDiameter(double stopDiameterMm) const {
-  if (!(std::isfinite(stopDiameterMm) && stopDiameterMm > 0.0)) return nullptr;
+  if (!(std::isfinite(stopDiameterMm) && stopDiameterMm > 0.0 &&
+        stopDiameterMm <= kMaxApertureDiameterMm))
+    return nullptr;
   Prescription p = prescription_;
   p.surfaces[stopIndex_].apertureDiameterMm = stopDiameterMm;
   return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
@@ -112,14 +152,25 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* pa
     const int k = fromFilm ? n - 1 - step : step;
     const SurfaceGeometry& s = surfaces_[k];
     double t = 0.0;
-    if (!intersectSurface(s, ray.origin, ray.direction, t)) return fail(RayStop::MissedSurface, k);
+    if (!intersectSurface(s, ray.origin, ray.direction, t)) {
+      if constexpr (kRecord) {
+        path->points.push_back(blockedEndPoint(s, ray, std::nullopt));
+        path->surfaceIndices.push_back(k);
+      }
+      return fail(RayStop::MissedSurface, k);
+    }
     const glm::dvec3 hit = ray.origin + t * ray.direction;
+    if (hit.x * hit.x + hit.y * hit.y > s.semiApertureMm * s.semiApertureMm) {
+      if constexpr (kRecord) {
+        path->points.push_back(blockedEndPoint(s, ray, t));
+        path->surfaceIndices.push_back(k);
+      }
+      return fail(RayStop::ClippedByAperture, k);
+    }
     if constexpr (kRecord) {
       path->points.push_back(hit);
       path->surfaceIndices.push_back(k);
     }
-    if (hit.x * hit.x + hit.y * hit.y > s.semiApertureMm * s.semiApertureMm)
-      return fail(RayStop::ClippedByAperture, k);
     ray.origin = hit;
     const double eta = fromFilm ? s.indexRear / s.indexFront : s.indexFront / s.indexRear;
     if (eta != 1.0) {

@@ -50,10 +50,20 @@ const char* toString(RayStop stop);
 
 // A traced ray as the cross-section draws it.
 struct RayPath {
-  // points[0] is the ray origin; points[i] for i >= 1 is the hit point on surface
-  // surfaceIndices[i - 1]. For a clipped ray the last point is where it met the surface outside
-  // the clear aperture; for total internal reflection, where it met the reflecting surface; a
-  // missed surface adds no point.
+  // points[0] is the ray origin; points[i] for i >= 1 is the point on surface
+  // surfaceIndices[i - 1]: the hit point, except for the last point of a blocked ray.
+  // - Total internal reflection: the last point is where the ray met the reflecting surface.
+  // - Clipped by a clear aperture, or missed the surface's sphere entirely: the last point is
+  //   where the ray meets the element's edge, as lens_outline.h draws it: the plane of the rim
+  //   (z of the surface at its semi-aperture, where a smaller surface continues as a flat
+  //   annulus) when the ray crosses that plane ahead of it at or beyond the semi-aperture;
+  //   otherwise, when it crosses the plane inside the opening and leaves through the element's
+  //   side, the aperture cylinder r = semi-aperture. (Never the extended sphere beyond the rim,
+  //   which is empty space in the drawing.) For the stop the rim plane is the stop plane.
+  //   Only when the ray meets neither ahead (it runs away from the surface) does the path end at
+  //   the sphere hit, if any, or repeat the previous point.
+  // So points.size() == surfaceIndices.size() + 1 always, and the last surface index of a
+  // blocked ray is stopSurface.
   std::vector<glm::dvec3> points;
   std::vector<int> surfaceIndices;
   RayStop stop = RayStop::Passed;
@@ -68,8 +78,11 @@ struct PupilSample {
 };
 
 struct ValidationError {
-  int surface = -1;  // prescription row (0-based), -1 for the lens as a whole
+  int surface = -1;  // prescription row as an index (0-based), -1 for the lens as a whole
   std::string message;
+  // What users read: "surface N: message" with N counted from 1 (as the viewer's table and the
+  // script commands count), or the message alone for the lens as a whole.
+  std::string toString() const;
 };
 
 class LensSystem;
@@ -83,7 +96,8 @@ struct BuildResult {
 
 // Checks a prescription without building it: crossing neighbours (negative edge thickness),
 // semi-aperture larger than |radius|, n < 1, non-positive aperture, missing or repeated stop,
-// non-finite numbers.
+// non-finite numbers, magnitudes beyond kMaxLengthMm / kMaxApertureDiameterMm /
+// kMaxRefractiveIndex (prescription.h).
 std::vector<ValidationError> validate(const Prescription& prescription);
 
 class LensSystem {
@@ -94,7 +108,8 @@ class LensSystem {
                            double wavelengthNm = kDefaultWavelengthNm);
 
   // Cheap variants (no validation beyond the changed value, exit-pupil table rebuilt lazily).
-  // Return null when the value is not positive and finite.
+  // Return null when the value is not positive and finite, or beyond the limits validate() has
+  // (kMaxLengthMm, kMaxApertureDiameterMm).
   std::shared_ptr<const LensSystem> withFilmDistance(double filmDistanceMm) const;
   std::shared_ptr<const LensSystem> withStopDiameter(double stopDiameterMm) const;
   // Same geometry, indices at another wavelength (for spectral rendering: a few microseconds;

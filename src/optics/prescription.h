@@ -15,6 +15,12 @@ namespace lenslab::optics {
 // is also what the curvature 1/R = 0 means, so the tracing code needs no special case.
 inline constexpr double kFlatRadius = std::numeric_limits<double>::infinity();
 
+// Magnitudes beyond any real lens. Larger values are typing slips (1e300 for 300) that would turn
+// into overflow and nonsense downstream, so lens files and validate() refuse them.
+inline constexpr double kMaxLengthMm = 1e6;            // |radius| (when finite) and thickness
+inline constexpr double kMaxApertureDiameterMm = 1e5;  // clear aperture
+inline constexpr double kMaxRefractiveIndex = 10.0;    // n_d (real glasses stay below 2.1)
+
 struct Surface {
   // Signed radius of curvature; > 0 puts the centre of curvature toward the film.
   // 0 marks the aperture stop (pbrt convention); +-infinity (kFlatRadius) is a flat refracting

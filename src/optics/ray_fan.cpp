@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "optics/unclipped_trace.h"
+
 namespace lenslab::optics {
 
 namespace {
@@ -17,6 +19,14 @@ struct ObjectField {
   glm::dvec3 point{0.0};
 };
 
+// A field's chief ray: its height on the entrance-pupil plane and, traced without clear
+// apertures, where it meets the film (image heights are positive below the axis: the image of
+// an object above the axis is inverted).
+struct ChiefAim {
+  double pupilHeight = 0;
+  double imageHeight = 0;
+};
+
 class FanTracer {
  public:
   FanTracer(const LensSystem& lens, const FanSpec& spec) : lens_(lens), spec_(spec) {
@@ -26,6 +36,10 @@ class FanTracer {
     if (!(pupilRadius_ > 0) || !std::isfinite(pupilRadius_)) {
       pupilRadius_ = 0.5 * lens.prescription().surfaces.front().apertureDiameterMm;
     }
+    stopRadius_ = lens.surfaces()[lens.stopIndex()].semiApertureMm;
+    // Pupil heights worth searching for a chief ray: the front element and then some, since a
+    // wide-angle lens's real pupil moves well off the paraxial one.
+    aimRange_ = std::max(4.0 * pupilRadius_, 2.0 * lens.surfaces().front().semiApertureMm);
     // Rays start a little in front of the lens: far enough to read as incoming, close enough
     // that the lens stays the subject of the drawing.
     startZ_ = lens.frontVertexZ() + std::max(5.0, 0.25 * lens.totalTrackMm());
@@ -33,7 +47,7 @@ class FanTracer {
   }
 
   // The ray of `field` through height `pupilHeight` on the entrance-pupil plane.
-  FanRay trace(const ObjectField& field, double pupilHeight) const {
+  LensRay ray(const ObjectField& field, double pupilHeight) const {
     const glm::dvec3 onPupil(0.0, pupilHeight, pupilZ_);
     LensRay ray;
     if (field.atInfinity) {
@@ -49,8 +63,13 @@ class FanTracer {
         ray.origin = field.point + ray.direction * ((field.point.z - startZ_) / -ray.direction.z);
       }
     }
+    return ray;
+  }
+
+  // That ray traced through the lens, clear apertures included.
+  FanRay trace(const ObjectField& field, double pupilHeight) const {
     FanRay result;
-    result.path = lens_.traceFromScenePath(ray);
+    result.path = lens_.traceFromScenePath(ray(field, pupilHeight));
     if (result.path.stop == RayStop::Passed && result.path.exitRay &&
         result.path.exitRay->direction.z < 0) {
       const LensRay& exit = *result.path.exitRay;
@@ -59,33 +78,50 @@ class FanTracer {
     return result;
   }
 
-  // Height of the traced ray where it crosses the stop, if it gets there.
-  std::optional<double> heightAtStop(const FanRay& ray) const {
-    const int stop = static_cast<int>(lens_.stopIndex());
-    for (std::size_t i = 0; i < ray.path.surfaceIndices.size(); ++i) {
-      if (ray.path.surfaceIndices[i] == stop) return ray.path.points[i + 1].y;
-    }
-    return std::nullopt;
+  // Height on the stop of the ray through `pupilHeight`, ignoring clear apertures.
+  std::optional<double> stopHeight(const ObjectField& field, double pupilHeight) const {
+    const auto atStop = traceFromSceneUnclipped(lens_, ray(field, pupilHeight), lens_.stopIndex());
+    if (!atStop) return std::nullopt;
+    return atStop->origin.y;
   }
 
-  // The chief ray: aimed (secant iterations on the pupil height) to cross the stop's centre.
-  std::optional<FanRay> chief(const ObjectField& field) const {
-    double a = 0.0, b = 0.1 * std::max(pupilRadius_, 1e-3);
-    FanRay rayA = trace(field, a), rayB = trace(field, b);
-    auto fa = heightAtStop(rayA), fb = heightAtStop(rayB);
-    for (int iteration = 0; iteration < 30 && fa && fb; ++iteration) {
-      if (std::abs(*fb) < 1e-9 || *fb == *fa) break;
+  // The chief ray: the pupil height whose ray crosses the stop's centre (secant steps from `start`,
+  // the paraxial aim 0 or a neighbouring field's answer; if they fail, the sign change of the stop
+  // height nearest `start` on a scan of the pupil heights, then bisection), and where it meets
+  // the film.
+  std::optional<ChiefAim> aimChief(const ObjectField& field, double start = 0.0) const {
+    const double tolerance = 1e-9 * (1.0 + stopRadius_);
+    std::optional<double> pupilHeight;
+    double a = start, b = start + 0.1 * std::max(pupilRadius_, 1e-3);
+    auto fa = stopHeight(field, a), fb = stopHeight(field, b);
+    if (fa && std::abs(*fa) < tolerance) pupilHeight = a;
+    for (int iteration = 0; iteration < 40 && !pupilHeight && fa && fb; ++iteration) {
+      if (std::abs(*fb) < tolerance) {
+        pupilHeight = b;
+        break;
+      }
+      if (*fb == *fa) break;
       const double next = b - *fb * (b - a) / (*fb - *fa);
-      if (!std::isfinite(next)) break;
+      if (!std::isfinite(next) || std::abs(next) > aimRange_) break;
       a = b;
       fa = fb;
-      rayA = std::move(rayB);
       b = next;
-      rayB = trace(field, b);
-      fb = heightAtStop(rayB);
+      fb = stopHeight(field, b);
     }
-    if (fb && std::abs(*fb) < 1e-4 && rayB.filmPoint) return rayB;
-    // The paraxial aim, when the real aim does not converge (the ray is vignetted on the way).
+    if (!pupilHeight) pupilHeight = bracketChief(field, tolerance, start);
+    if (!pupilHeight) return std::nullopt;
+    const auto out =
+        traceFromSceneUnclipped(lens_, ray(field, *pupilHeight), lens_.surfaces().size() - 1);
+    if (!out || !(out->direction.z < 0.0)) return std::nullopt;
+    const double filmY = out->origin.y + out->direction.y * (out->origin.z / -out->direction.z);
+    if (!std::isfinite(filmY)) return std::nullopt;
+    return ChiefAim{*pupilHeight, -filmY};
+  }
+
+  // The clipped trace of the chief ray, for drawing; the paraxial aim when no real one exists
+  // but that ray passes.
+  std::optional<FanRay> chief(const ObjectField& field, const std::optional<ChiefAim>& aim) const {
+    if (aim) return trace(field, aim->pupilHeight);
     FanRay paraxial = trace(field, 0.0);
     if (paraxial.filmPoint) return paraxial;
     return std::nullopt;
@@ -102,48 +138,113 @@ class FanTracer {
     return field;
   }
 
-  // Finds the field parameter (angle or object height) whose chief ray lands at image height
-  // -target (the image is inverted). Scans for a bracket, then bisects; returns the widest
-  // reachable field when the target is out of reach.
-  std::pair<double, bool> solveField(double target) const {
-    if (target <= 0) return {0.0, true};
+  // The widest field the lens covers: where the chief ray, traced with the clear apertures,
+  // still reaches the film, scanning out from the axis (an angle up to 89.5 degrees, or an
+  // object height), the edge refined by bisection. Light from beyond it may still pass off the
+  // chief ray, but the image there is a vignetted fringe.
+  struct Coverage {
+    double parameter = 0;
+    ChiefAim aim;
+  };
+  Coverage coverage() const {
     const double limit = spec_.objectDistanceMm
                              ? *spec_.objectDistanceMm * 3.0 + 10.0 * pupilRadius_ + 1.0
-                             : 89.0 / kDegrees;
-    constexpr int kSteps = 60;
-    double previous = 0.0, best = 0.0;
+                             : 89.5 / kDegrees;
+    Coverage covered;  // the axis: image height 0
+    auto passes = [&](const ObjectField& field, const std::optional<ChiefAim>& aim) {
+      return aim && trace(field, aim->pupilHeight).filmPoint.has_value();
+    };
+    constexpr int kSteps = 90;
+    double failed = -1.0;
     for (int step = 1; step <= kSteps; ++step) {
       const double parameter = limit * step / kSteps;
-      const auto ray = chief(fieldFor(parameter));
-      if (!ray) continue;
-      const double height = -ray->filmPoint->y;
-      if (height >= target) {
-        double low = previous, high = parameter;
-        for (int iteration = 0; iteration < 40; ++iteration) {
-          const double middle = 0.5 * (low + high);
-          const auto probe = chief(fieldFor(middle));
-          if (probe && -probe->filmPoint->y < target) {
-            low = middle;
-          } else if (probe) {
-            high = middle;
-          } else {
-            break;
-          }
-        }
-        return {0.5 * (low + high), true};
+      const auto field = fieldFor(parameter);
+      const auto aim = aimChief(field, covered.aim.pupilHeight);
+      if (!passes(field, aim) || aim->imageHeight < covered.aim.imageHeight) {
+        failed = parameter;
+        break;
       }
-      previous = parameter;
-      best = parameter;
+      covered = {parameter, *aim};
     }
-    return {best, false};
+    if (failed < 0.0) return covered;
+    for (int iteration = 0; iteration < 40; ++iteration) {
+      const double middle = 0.5 * (covered.parameter + failed);
+      const auto field = fieldFor(middle);
+      const auto aim = aimChief(field, covered.aim.pupilHeight);
+      if (passes(field, aim) && aim->imageHeight >= covered.aim.imageHeight)
+        covered = {middle, *aim};
+      else
+        failed = middle;
+    }
+    return covered;
+  }
+
+  // The field inside the coverage whose chief ray lands at image height `target` (at most the
+  // coverage's), by bisection: the image height grows with the field inside the coverage.
+  Coverage fieldForImageHeight(double target, const Coverage& covered) const {
+    if (target <= 0.0) return {};
+    if (target >= covered.aim.imageHeight) return covered;
+    double low = 0.0, high = covered.parameter;
+    Coverage best = covered;
+    for (int iteration = 0; iteration < 50; ++iteration) {
+      const double middle = 0.5 * (low + high);
+      const auto aim = aimChief(fieldFor(middle), best.aim.pupilHeight);
+      if (!aim) {
+        high = middle;
+        continue;
+      }
+      if (aim->imageHeight < target) {
+        low = middle;
+      } else {
+        high = middle;
+        best = {middle, *aim};
+      }
+    }
+    return best;
   }
 
   double pupilRadius() const { return pupilRadius_; }
 
  private:
+  std::optional<double> bracketChief(const ObjectField& field, double tolerance,
+                                     double start) const {
+    constexpr int kSamples = 400;
+    std::optional<double> best;
+    std::optional<double> lastHeight;
+    double lastPupil = 0.0;
+    for (int i = 0; i <= kSamples; ++i) {
+      const double pupil = aimRange_ * (2.0 * i / kSamples - 1.0);
+      const auto height = stopHeight(field, pupil);
+      if (height && lastHeight && (*height <= 0.0) != (*lastHeight <= 0.0)) {
+        // Bisect this bracket; keep the root nearest the start.
+        double lo = lastPupil, hi = pupil, fLo = *lastHeight;
+        for (int k = 0; k < 100 && hi - lo > 1e-12 * aimRange_; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          const auto fMid = stopHeight(field, mid);
+          if (!fMid) break;
+          if ((*fMid <= 0.0) == (fLo <= 0.0)) {
+            lo = mid;
+            fLo = *fMid;
+          } else {
+            hi = mid;
+          }
+        }
+        const double root = 0.5 * (lo + hi);
+        const auto check = stopHeight(field, root);
+        if (check && std::abs(*check) < 1e3 * tolerance &&
+            (!best || std::abs(root - start) < std::abs(*best - start)))
+          best = root;
+      }
+      lastHeight = height;
+      lastPupil = pupil;
+    }
+    return best;
+  }
+
   const LensSystem& lens_;
   const FanSpec& spec_;
-  double pupilZ_ = 0, pupilRadius_ = 0, startZ_ = 0, farObjectZ_ = 0;
+  double pupilZ_ = 0, pupilRadius_ = 0, stopRadius_ = 0, aimRange_ = 0, startZ_ = 0,
+         farObjectZ_ = 0;
 };
 
 }  // namespace
@@ -152,20 +253,29 @@ RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
   RayFans result;
   const FanTracer tracer(lens, spec);
   const int count = std::max(2, spec.raysPerFan);
+  // The fans spread over the film's half diagonal, or over the lens's coverage when the film
+  // corner lies beyond it (a circular fisheye on a full frame): then they are not at their
+  // requested heights, and say so.
+  const auto covered = tracer.coverage();
+  const bool filmCovered = spec.filmHalfDiagonalMm <= covered.aim.imageHeight * (1.0 + 1e-9);
+  const double halfHeight = filmCovered ? spec.filmHalfDiagonalMm : covered.aim.imageHeight;
   for (double fraction : spec.fieldFractions) {
     RayFan fan;
     fan.fieldFraction = fraction;
-    const auto [parameter, reached] = tracer.solveField(fraction * spec.filmHalfDiagonalMm);
-    fan.fieldReached = reached;
+    fan.requestedImageHeightMm = fraction * spec.filmHalfDiagonalMm;
+    const auto solved = tracer.fieldForImageHeight(fraction * halfHeight, covered);
+    fan.fieldReached = filmCovered || fraction <= 0.0;
+    fan.imageHeightMm = solved.aim.imageHeight;
     if (spec.objectDistanceMm) {
-      fan.objectHeightMm = parameter;
+      fan.objectHeightMm = solved.parameter;
     } else {
-      fan.fieldAngleDeg = parameter * kDegrees;
+      fan.fieldAngleDeg = solved.parameter * kDegrees;
     }
-    const auto field = tracer.fieldFor(parameter);
-    fan.chief = tracer.chief(field);
-    // Centre the fan on the chief ray's pupil height (0 for the paraxial aim).
-    const double centre = 0.0;
+    const auto field = tracer.fieldFor(solved.parameter);
+    const auto aim = tracer.aimChief(field, solved.aim.pupilHeight);
+    fan.chief = tracer.chief(field, aim);
+    // Centre the fan on the chief ray, so off-axis fans show the bundle the lens really takes.
+    const double centre = aim ? aim->pupilHeight : 0.0;
     const double span = spec.pupilOverfill * tracer.pupilRadius();
     for (int i = 0; i < count; ++i) {
       const double t = -1.0 + 2.0 * i / (count - 1);

@@ -4,6 +4,18 @@
 // point at a finite distance), plus the chief ray (through the centre of the stop) and the
 // marginal ray (the highest axial ray that passes). Plain data: the viewer only maps it to pixels.
 //
+// The chief ray is aimed at the real centre of the stop (1-D root finding on its height in the
+// paraxial entrance-pupil plane, ignoring clear apertures), not at the paraxial pupil: in a
+// fisheye or a wide-angle lens the real entrance pupil moves and tilts far off axis, and the
+// paraxial aim is vignetted beyond a few tens of degrees. The field of a fan is the one whose
+// chief ray lands at the requested image height, so it matches realFieldOfViewDeg (field.h), and
+// each fan is centred on its chief ray.
+//
+// The lens's coverage is the widest field whose chief ray passes (clear apertures included).
+// When the film's corner lies beyond it (a circular fisheye on a full frame), the fans spread
+// over the coverage instead of the film: the 1.0 fan is at its edge, the 0.7 fan at 0.7 of its
+// image height, and fieldReached is false for every off-axis fan.
+//
 // Frame: the lens frame (mm, film at z = 0, object side +z); fans lie in the y-z plane.
 
 #include <optional>
@@ -24,7 +36,7 @@ struct FanSpec {
 };
 
 struct FanRay {
-  RayPath path;              // from its start point through the lens, as traced
+  RayPath path;                         // from its start point through the lens, as traced
   std::optional<glm::dvec3> filmPoint;  // where a passing ray meets the film plane z = 0
 };
 
@@ -34,9 +46,15 @@ struct RayFan {
   // above the axis.
   double fieldAngleDeg = 0;
   double objectHeightMm = 0;
-  bool fieldReached = true;  // false when no chief ray reaches that image height: the fan shows
-                             // the widest field that does
+  // False when the film's corner is beyond the lens's coverage, so this off-axis fan is not at
+  // the requested image height but at its fraction of the coverage; imageHeightMm says where it
+  // is. The viewer can show both.
+  bool fieldReached = true;
+  double requestedImageHeightMm = 0;  // fieldFraction x the film's half diagonal
+  double imageHeightMm = 0;           // where this fan's chief ray meets the film (>= 0)
   std::vector<FanRay> rays;
+  // Traced with the clear apertures, so it may be blocked (then it ends at the blocking rim and
+  // has no filmPoint); absent only when no ray through the stop's centre exists.
   std::optional<FanRay> chief;
 };
 

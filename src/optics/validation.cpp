@@ -26,6 +26,11 @@ std::string describe(double value) {
 
 }  // namespace
 
+std::string ValidationError::toString() const {
+  if (surface < 0) return message;
+  return "surface " + std::to_string(surface + 1) + ": " + message;
+}
+
 std::vector<ValidationError> validate(const Prescription& prescription) {
   std::vector<ValidationError> errors;
   const auto& rows = prescription.surfaces;
@@ -37,19 +42,32 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Surface& s = rows[i];
     const int row = static_cast<int>(i);
-    if (std::isnan(s.radiusMm)) errors.push_back({row, "radius is not a number"});
+    if (std::isnan(s.radiusMm))
+      errors.push_back({row, "radius is not a number"});
+    else if (std::isfinite(s.radiusMm) && std::abs(s.radiusMm) > kMaxLengthMm)
+      errors.push_back({row, "radius " + describe(s.radiusMm) + " mm is beyond +-" +
+                                 describe(kMaxLengthMm) + " mm (use inf for a flat surface)"});
     if (!std::isfinite(s.thicknessMm))
       errors.push_back({row, "thickness must be a finite number"});
     else if (s.thicknessMm < 0.0)
       errors.push_back({row, "thickness " + describe(s.thicknessMm) + " mm is negative"});
+    else if (s.thicknessMm > kMaxLengthMm)
+      errors.push_back({row, "thickness " + describe(s.thicknessMm) + " mm is beyond " +
+                                 describe(kMaxLengthMm) + " mm"});
     if (!std::isfinite(s.indexD) || (s.indexD != 0.0 && s.indexD < 1.0))
       errors.push_back(
           {row, "refractive index " + describe(s.indexD) + " is below 1 (use 1 or 0 for air)"});
+    else if (s.indexD > kMaxRefractiveIndex)
+      errors.push_back({row, "refractive index " + describe(s.indexD) + " is beyond " +
+                                 describe(kMaxRefractiveIndex)});
     if (s.abbeD && !(std::isfinite(*s.abbeD) && *s.abbeD > 0.0))
       errors.push_back({row, "Abbe number " + describe(*s.abbeD) + " must be positive"});
     if (!std::isfinite(s.apertureDiameterMm) || s.apertureDiameterMm <= 0.0)
       errors.push_back(
           {row, "aperture diameter " + describe(s.apertureDiameterMm) + " mm must be positive"});
+    else if (s.apertureDiameterMm > kMaxApertureDiameterMm)
+      errors.push_back({row, "aperture diameter " + describe(s.apertureDiameterMm) +
+                                 " mm is beyond " + describe(kMaxApertureDiameterMm) + " mm"});
     if (s.isStop()) ++stops;
     if (!s.isStop() && !s.isFlat() && std::isfinite(s.radiusMm) &&
         0.5 * s.apertureDiameterMm > std::abs(s.radiusMm))
@@ -73,10 +91,10 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
     const double h = 0.5 * std::min(a.apertureDiameterMm, b.apertureDiameterMm);
     const double edge = a.thicknessMm + sagMm(b.curvaturePerMm(), h) - sagMm(a.curvaturePerMm(), h);
     if (edge < -1e-9) {
-      errors.push_back(
-          {static_cast<int>(i + 1), "crosses the previous surface (row " + std::to_string(i) +
-                                        ") inside the clear aperture: edge thickness " +
-                                        describe(edge) + " mm at height " + describe(h) + " mm"});
+      errors.push_back({static_cast<int>(i + 1),
+                        "crosses the previous surface (surface " + std::to_string(i + 1) +
+                            ") inside the clear aperture: edge thickness " + describe(edge) +
+                            " mm at height " + describe(h) + " mm"});
     }
   }
   return errors;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -42,7 +43,11 @@ TEST_F(LensCommands, InfoJsonHasTheFirstOrderKeys) {
   EXPECT_TRUE(json.at("entrance_pupil").at("position_mm").is_number());
   EXPECT_GT(json.at("exit_pupil").at("diameter_mm").get<double>(), 20.0);
   EXPECT_TRUE(json.at("exit_pupil").at("position_mm").is_number());
-  EXPECT_EQ(json.at("stop_surface").get<int>(), 5);
+  // Surfaces count from 1, as in the viewer's table and the script commands: the stop is the
+  // sixth row, surfaces[5] in the JSON array, whose "surface" says 6.
+  EXPECT_EQ(json.at("stop_surface").get<int>(), 6);
+  EXPECT_EQ(json.at("surfaces").at(5).at("surface").get<int>(), 6);
+  EXPECT_FALSE(json.at("afocal").get<bool>());
   EXPECT_NEAR(json.at("field_of_view_real_deg").get<double>(), 46.7, 0.5);
   EXPECT_EQ(json.at("surfaces").size(), 11u);
   EXPECT_TRUE(json.at("surfaces").at(5).at("stop").get<bool>());
@@ -52,6 +57,7 @@ TEST_F(LensCommands, InfoTextAndWavelengthAndFilmDiagonal) {
   const auto text = testing::runProcess(lenslab("info " + lensPath("dgauss-50mm.dat")), scratch);
   ASSERT_EQ(text.exitCode, 0) << text.err;
   EXPECT_NE(text.out.find("effective focal length"), std::string::npos);
+  EXPECT_NE(text.out.find("stop is surface 6 (counted from 1)"), std::string::npos) << text.out;
   // The course lenses have no Abbe numbers: the same EFL at any wavelength...
   auto efl = [&](const std::string& lens, const std::string& extra) {
     const auto r =
@@ -98,6 +104,87 @@ TEST_F(LensCommands, FocusWithNoSolutionSaysSoAndFails) {
   EXPECT_NE(result.err.find("no solution"), std::string::npos) << result.err;
 }
 
+TEST_F(LensCommands, FocusReportsTheClosestFocusItReallyFinds) {
+  // 196 mm is too close for the double-Gauss, 197 mm is not; the message used to say "about
+  // 4 x EFL = 201.433 mm". It now gives the limit the solver found, which lies between.
+  const auto near = testing::runProcess(
+      lenslab("focus --object-distance 196 " + lensPath("dgauss-50mm.dat")), scratch);
+  EXPECT_EQ(near.exitCode, 1);
+  const std::string label = "the closest focus is ";
+  const auto at = near.err.find(label);
+  ASSERT_NE(at, std::string::npos) << near.err;
+  const double limit = std::strtod(near.err.c_str() + at + label.size(), nullptr);
+  EXPECT_GT(limit, 196.0) << near.err;
+  EXPECT_LT(limit, 197.0) << near.err;
+  EXPECT_EQ(near.err.find("4 x EFL"), std::string::npos) << near.err;
+  const auto far = testing::runProcess(
+      lenslab("focus --json --object-distance 197 " + lensPath("dgauss-50mm.dat")), scratch);
+  ASSERT_EQ(far.exitCode, 0) << far.err;
+  EXPECT_GT(nlohmann::json::parse(far.out).at("film_distance_mm").get<double>(), 70.0);
+}
+
+TEST_F(LensCommands, NumericOptionsMustBePositiveFiniteNumbers) {
+  const std::string lens = lensPath("dgauss-50mm.dat");
+  for (const std::string& arguments :
+       {"info --wavelength nan " + lens, "info --wavelength inf " + lens,
+        "info --wavelength 0 " + lens, "info --wavelength 5000 " + lens,
+        "info --film-diagonal nan " + lens, "info --film-diagonal 0 " + lens,
+        "info --film-diagonal -3 " + lens, "info --film-diagonal inf " + lens,
+        "info --film-diagonal 2x " + lens, "focus --film-distance nan " + lens,
+        "focus --film-distance inf " + lens, "focus --film-distance 0 " + lens,
+        "focus --film-distance -1 " + lens, std::string("render --exposure nan scene.pbrt"),
+        std::string("render --exposure inf scene.pbrt")}) {
+    const auto result = testing::runProcess(lenslab(arguments), scratch);
+    // A usage error (2), reported against the option, not against the lens file.
+    EXPECT_EQ(result.exitCode, 2) << arguments << ": " << result.err;
+    const std::string option = arguments.substr(
+        arguments.find("--"), arguments.find(' ', arguments.find("--")) - arguments.find("--"));
+    EXPECT_NE(result.err.find(option), std::string::npos) << arguments << ": " << result.err;
+    EXPECT_EQ(result.err.find(".dat:"), std::string::npos) << arguments << ": " << result.err;
+    // Short: no DBL_MAX spelled out in the message.
+    EXPECT_EQ(result.err.find("17976931348623157"), std::string::npos) << result.err;
+    EXPECT_TRUE(result.out.empty()) << arguments;
+  }
+  const auto nan = testing::runProcess(lenslab("info --film-diagonal nan " + lens), scratch);
+  EXPECT_NE(nan.err.find("--film-diagonal: 'nan' is not a positive finite number"),
+            std::string::npos)
+      << nan.err;
+  // Ordinary values still work, with a leading '+' too.
+  for (const std::string& arguments :
+       {"info --film-diagonal 70 --wavelength 486.13 " + lens,
+        "info --film-diagonal +43.27 " + lens, "focus --film-distance 37.5 " + lens}) {
+    const auto result = testing::runProcess(lenslab(arguments), scratch);
+    EXPECT_EQ(result.exitCode, 0) << arguments << ": " << result.err;
+  }
+}
+
+TEST_F(LensCommands, AfocalLensHasNullFocalLengths) {
+  // A plane-parallel plate has zero power: no focal lengths, not 0 mm ones.
+  const std::string plate = writeFile("plate.dat", "inf 5 1.5 20\ninf 5 1 20\n0 10 0 10\n");
+  const auto json = testing::runProcess(lenslab("info --json " + plate), scratch);
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const auto data = nlohmann::json::parse(json.out);
+  EXPECT_TRUE(data.at("afocal").get<bool>());
+  for (const char* key : {"efl_mm", "bfl_mm", "ffl_mm", "front_principal_plane_mm",
+                          "rear_principal_plane_mm", "f_number", "field_of_view_deg"})
+    EXPECT_TRUE(data.at(key).is_null()) << key << ": " << data.at(key);
+  EXPECT_EQ(data.at("stop_surface").get<int>(), 3);
+  const auto text = testing::runProcess(lenslab("info " + plate), scratch);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("afocal (infinite)"), std::string::npos) << text.out;
+  for (const char* label : {"effective focal length", "back focal length", "front focal length",
+                            "principal plane", "f-number"}) {
+    const auto at = text.out.find(label);
+    ASSERT_NE(at, std::string::npos) << label;
+    const std::string line = text.out.substr(at, text.out.find('\n', at) - at);
+    EXPECT_NE(line.find("afocal (infinite)"), std::string::npos) << line;
+    EXPECT_EQ(line.find("0.0000"), std::string::npos) << line;  // not a focal length of 0 mm
+  }
+  // A lens with power is not afocal.
+  const auto lens = testing::runProcess(lenslab("info " + lensPath("dgauss-50mm.dat")), scratch);
+  EXPECT_EQ(lens.out.find("afocal"), std::string::npos) << lens.out;
+}
+
 TEST_F(LensCommands, UsageErrorsExit2) {
   for (const char* arguments : {"info", "focus", "info --wavelength -3 x.dat",
                                 "focus --object-distance 5 --film-distance 5 x.dat"}) {
@@ -124,6 +211,10 @@ TEST_F(LensCommands, BadLensFilesGiveFileLineColumnAndExit1) {
        ":1:"},
       {"nan.dat", "50 5 1.5 nan\n0 5 0 10\n-50 40 1 20\n", ":1:10: "},
       {"nostop.dat", "50 5 1.5 20\n-50 40 1 20\n", ":1:1: "},
+      {"huge.dat", "50 5 1.5 20\n0 5 0 10\n-50 1e300 1 20\n", ":3:5: thickness 1e300 is beyond"},
+      // Surfaces are named counting from 1, as everywhere users see them.
+      {"crossing.dat", "12 1 1.5 20\n-12 5 1 20\n0 40 0 10\n",
+       ":2:1: surface 2: crosses the previous surface (surface 1)"},
   };
   for (const auto& c : cases) {
     const std::string path = writeFile(c.name, c.text);

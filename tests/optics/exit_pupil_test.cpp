@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "optics/exit_pupil.h"
 #include "test_lenses.h"
@@ -129,6 +132,99 @@ TEST(ExitPupil, TransmittedPowerMatchesWholeRearElementSampling) {
         EXPECT_LT(errA, errB);
       }
     }
+  }
+}
+
+// The table's bin position of film radius r: bin j and the blend f toward bin j + 1, as the
+// table maps radii (equal steps in (x + x^2) / 2, x = r / filmRadiusMax).
+std::pair<int, double> binOf(const ExitPupilTable& table, double r) {
+  const double x = r / table.filmRadiusMaxMm();
+  const double t = 0.5 * (x + x * x) * (table.radialBins() - 1);
+  const int j = std::min(static_cast<int>(t), table.radialBins() - 2);
+  return {j, std::clamp(t - j, 0.0, 1.0)};
+}
+
+// A plane point inside the sampled region for film point (r, 0): the blended bin centre.
+glm::dvec2 centreAt(const ExitPupilTable& table, double r) {
+  const auto [j, f] = binOf(table, r);
+  return {(1.0 - f) * table.bin(j).centreXMm + f * table.bin(j + 1).centreXMm, 0.0};
+}
+
+// No banding (mmp/pbrt-v3#162), over the whole image circle of every course lens at full
+// aperture and at f/8: the sampling density is continuous in the film radius, at every table
+// radius (where a per-bin table would jump) and between them, and the fraction of samples that
+// pass has no jumps from one table radius to the next.
+TEST(ExitPupil, NoBandingOverTheWholeImageCircle) {
+  for (const auto& lens : courseLensesAtTwoApertures()) {
+    const ExitPupilTable& table = lens->exitPupilTable();
+    const double circle = table.imageCircleRadiusMm();
+    ASSERT_GT(circle, 0.0);
+    const double eps = 1e-9 * table.filmRadiusMaxMm();
+    int checked = 0;
+    auto expectContinuousAt = [&](double r) {
+      const glm::dvec2 film{r, 0.0};
+      const glm::dvec2 point = centreAt(table, r);
+      const double before = table.pdf({r - eps, 0.0}, point);
+      const double after = table.pdf({r + eps, 0.0}, point);
+      const double at = table.pdf(film, point);
+      ASSERT_GT(at, 0.0) << "film radius " << r << " stop " << lens->stopDiameterMm();
+      EXPECT_NEAR(before, at, 1e-6 * at) << "film radius " << r;
+      EXPECT_NEAR(after, at, 1e-6 * at) << "film radius " << r;
+      ++checked;
+    };
+    // At every table radius inside the image circle, and at 1000 radii between them.
+    for (int j = 1; j < table.radialBins() && table.binRadiusMm(j) < circle; ++j)
+      expectContinuousAt(table.binRadiusMm(j));
+    for (int i = 1; i < 1000; ++i) expectContinuousAt(circle * i / 1000.0);
+    EXPECT_GT(checked, 1000);
+
+    // Pass fraction at each table radius and half-way between (where a per-bin table would
+    // jump), from 1500 samples of the R2 low-discrepancy sequence (a regular grid would alias
+    // with the table's 32 sectors).
+    std::vector<double> radii, fractions;
+    for (int j = 0; j < table.radialBins() && table.binRadiusMm(j) <= circle; ++j) {
+      for (double r :
+           {table.binRadiusMm(j), 0.5 * (table.binRadiusMm(j) + table.binRadiusMm(j + 1))}) {
+        if (r > circle) continue;
+        const glm::dvec2 film{r, 0.0};
+        int generated = 0, passed = 0;
+        constexpr int kSamples = 1500;
+        constexpr double kA1 = 0.7548776662466927, kA2 = 0.5698402909980532;  // 1/g, 1/g^2
+        for (int i = 0; i < kSamples; ++i) {
+          const glm::dvec2 u{std::fmod(0.5 + kA1 * i, 1.0), std::fmod(0.5 + kA2 * i, 1.0)};
+          const auto s = lens->sampleExitPupil(film, u);
+          if (!s) continue;
+          ++generated;
+          if (passes(*lens, film, s->pointMm)) ++passed;
+        }
+        if (generated < kSamples / 2) continue;
+        radii.push_back(r);
+        fractions.push_back(static_cast<double>(passed) / generated);
+      }
+    }
+    ASSERT_GT(fractions.size(), 150u);
+    // Inside 90% of the image circle the pass fraction changes by small steps only. Beyond, it
+    // falls toward 0 as vignetting shrinks the pass region to nothing at the rim; that fall must
+    // be smooth, without an isolated jump or dip (second difference small beside the steps).
+    double largestStep = 0.0;
+    for (std::size_t i = 1; i < fractions.size(); ++i) {
+      const double step = std::abs(fractions[i] - fractions[i - 1]);
+      if (radii[i] <= 0.9 * circle) {
+        largestStep = std::max(largestStep, step);
+        EXPECT_LT(step, 0.03) << "film radius " << radii[i] << " stop " << lens->stopDiameterMm();
+      }
+      if (i + 1 < fractions.size()) {
+        const double next = std::abs(fractions[i + 1] - fractions[i]);
+        const double bend = std::abs(fractions[i + 1] - 2.0 * fractions[i] + fractions[i - 1]);
+        EXPECT_LE(bend, 0.03 + std::max(step, next))
+            << "film radius " << radii[i] << " stop " << lens->stopDiameterMm() << ": "
+            << fractions[i - 1] << " " << fractions[i] << " " << fractions[i + 1];
+      }
+    }
+    std::printf(
+        "  stop %.3f mm: pass fraction at %zu film radii, largest step inside 0.9 of the "
+        "image circle %.4f, %.3f at its rim\n",
+        lens->stopDiameterMm(), fractions.size(), largestStep, fractions.back());
   }
 }
 

@@ -44,6 +44,39 @@ TEST(LensFile, AcceptsCrlfAndNoFinalNewline) {
   EXPECT_EQ(crlf.lens->prescription.surfaces[2].apertureDiameterMm, 20.0);
 }
 
+TEST(LensFile, SkipsAUtf8ByteOrderMark) {
+  const auto r = parse("\xEF\xBB\xBF# x\n" + std::string(kFourRows));
+  ASSERT_TRUE(r.ok()) << firstError(r);
+  EXPECT_EQ(r.lens->prescription.surfaces.size(), 3u);
+  EXPECT_EQ(r.lens->headerComments.front(), "x");
+  // Right before a number, too; columns count from after the mark.
+  const auto row = parse(
+      "\xEF\xBB\xBF"
+      "50 5 1.5 20\n0 5 0 10\n-50 40 1 20\n");
+  ASSERT_TRUE(row.ok()) << firstError(row);
+  EXPECT_EQ(row.lens->prescription.surfaces[0].radiusMm, 50.0);
+  const auto bad = parse(
+      "\xEF\xBB\xBF"
+      "5x 5 1.5 20\n");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.errors.front().column, 1) << firstError(bad);
+}
+
+TEST(LensFile, AcceptsLoneCarriageReturnLineEndings) {
+  // Classic Mac OS text: rows end in a CR alone.
+  const auto r = parse("# old Mac\r50 5 1.5 20\r0 5 0 10\r-50 40 1 20\r");
+  ASSERT_TRUE(r.ok()) << firstError(r);
+  ASSERT_EQ(r.lens->prescription.surfaces.size(), 3u);
+  EXPECT_EQ(r.lens->prescription.surfaces[2].thicknessMm, 40.0);
+  EXPECT_EQ(r.lens->headerComments, std::vector<std::string>{"old Mac"});
+  EXPECT_EQ(r.lens->rowLines, (std::vector<int>{2, 3, 4}));
+  // Errors count those lines, and a mix of endings is fine.
+  const auto bad = parse("50 5 1.5 20\r\n0 5 0 10\r-50 4x 1 20\n");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.errors.front().line, 3) << firstError(bad);
+  EXPECT_EQ(bad.errors.front().column, 5) << firstError(bad);
+}
+
 TEST(LensFile, AcceptsStrayQuotesInComments) {
   const auto r = parse("# US patent 2,673,491 Tronnier\"\t\t\n# Modern Lens Design, p.312\"\n" +
                        std::string(kFourRows));
@@ -135,6 +168,16 @@ TEST(LensFile, BadInputGivesFileLineColumnErrors) {
       {"50 5 1.5 20\n0 5 0 10\n\x01\x02\x03\x04\n", 3, 1, "binary"},
       {"50 5 1.5 20\n0 5 0 -3\n-50 40 1 20\n", 2, 1, "aperture diameter"},
       {"50 5 0.5 20\n0 5 0 10\n-50 40 1 20\n", 1, 1, "below 1"},
+      // Absurd magnitudes are refused at the token, not traced into nonsense.
+      {"1e300 5 1.5 20\n0 5 0 10\n-50 40 1 20\n", 1, 1, "beyond any real lens"},
+      {"50 5 1.5 20\n0 5 0 10\n-50 1e300 1 20\n", 3, 5, "thickness 1e300 is beyond"},
+      {"50 -2e6 1.5 20\n0 5 0 10\n-50 40 1 20\n", 1, 4, "beyond any real lens"},
+      {"50 5 1.5 20\n0 5 0 2e5\n-50 40 1 20\n", 2, 7, "aperture diameter 2e5 is beyond"},
+      {"50 5 1e3 20\n0 5 0 10\n-50 40 1 20\n", 1, 6, "refractive index 1e3 is beyond"},
+      // Validation errors name the surface counted from 1, as the viewer's table does.
+      {"50 5 1.5 20\n0 5 0 -3\n-50 40 1 20\n", 2, 1, "surface 2: aperture diameter"},
+      {"12 1 1.5 20\n-12 5 1 20\n0 40 0 10\n", 2, 1,
+       "surface 2: crosses the previous surface (surface 1)"},
   };
   for (const auto& c : cases) {
     const std::string text(c.text);
@@ -147,6 +190,32 @@ TEST(LensFile, BadInputGivesFileLineColumnErrors) {
     EXPECT_NE(e.message.find(c.fragment), std::string::npos) << e.toString();
     EXPECT_EQ(e.toString().rfind("t.dat:" + std::to_string(c.line) + ":", 0), 0u) << e.toString();
   }
+}
+
+TEST(LensFile, BundledLensesNameTheirSources) {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::bundledLensDir())) {
+    if (entry.path().extension() != ".dat") continue;
+    ++files;
+    const auto r = readLensFile(entry.path());
+    ASSERT_TRUE(r.ok()) << firstError(r);
+    std::string header;
+    for (const std::string& line : r.lens->headerComments) header += line + "\n";
+    EXPECT_TRUE(header.find("Source") != std::string::npos ||
+                header.find("patent") != std::string::npos)
+        << entry.path() << ":\n"
+        << header;
+  }
+  EXPECT_GE(files, 9);
+  // The fisheye is the Muller design in Smith's Modern Lens Design, p. 164 (as pbrt's file
+  // says); the patent number it used to cite could not be confirmed and is gone.
+  const auto fisheye = readLensFile(testing::bundledLensDir() / "fisheye-10mm.dat");
+  ASSERT_TRUE(fisheye.ok());
+  std::string header;
+  for (const std::string& line : fisheye.lens->headerComments) header += line + "\n";
+  EXPECT_NE(header.find("Modern Lens Design"), std::string::npos) << header;
+  EXPECT_NE(header.find("p. 164"), std::string::npos) << header;
+  EXPECT_EQ(header.find("4,747,675"), std::string::npos) << header;
 }
 
 TEST(LensFile, EmbeddedNulIsBinary) {

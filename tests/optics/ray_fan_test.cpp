@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "optics/field.h"
 #include "test_lenses.h"
 
 namespace lenslab::optics {
@@ -84,6 +85,70 @@ TEST(RayFan, FocusedSingletBringsTheAxialFanToAPoint) {
     ASSERT_TRUE(ray.filmPoint.has_value());
     EXPECT_NEAR(ray.filmPoint->y, 0.0, 0.05);
   }
+}
+
+// Wide-angle lenses: the chief ray is aimed at the real centre of the stop. The old paraxial aim
+// was vignetted beyond about 26 degrees in the fisheye, so its 0.7 and 1.0 fans fell on top of
+// each other there although the lens covers far more.
+TEST(RayFan, FisheyeFansReachTheLensCoverageAndStayApart) {
+  const auto lens = testing::loadLens(testing::bundledLensDir() / "fisheye-10mm.dat");
+  ASSERT_TRUE(lens);
+  FanSpec spec;
+  spec.filmHalfDiagonalMm = 21.6;  // full frame: beyond this fisheye's image circle
+  const RayFans fans = computeRayFans(*lens, spec);
+  ASSERT_EQ(fans.fans.size(), 3u);
+  const RayFan& mid = fans.fans[1];
+  const RayFan& full = fans.fans[2];
+  // The full field is the coverage, far beyond 26 degrees (the design is a 155.9 degree lens).
+  EXPECT_GT(full.fieldAngleDeg, 65.0);
+  EXPECT_LT(full.fieldAngleDeg, 89.5);
+  EXPECT_GT(full.fieldAngleDeg, mid.fieldAngleDeg + 10.0);
+  // The film corner is not reached, and the fans say so and where they are instead.
+  EXPECT_FALSE(full.fieldReached);
+  EXPECT_FALSE(mid.fieldReached);
+  EXPECT_TRUE(fans.fans[0].fieldReached);
+  EXPECT_DOUBLE_EQ(full.requestedImageHeightMm, 21.6);
+  EXPECT_GT(full.imageHeightMm, 10.0);
+  EXPECT_LT(full.imageHeightMm, 21.6);
+  EXPECT_NEAR(mid.imageHeightMm, 0.7 * full.imageHeightMm, 1e-3);
+  for (const RayFan* fan : {&mid, &full}) {
+    // The chief ray crosses the stop at its centre and passes, landing where the fan says.
+    ASSERT_TRUE(fan->chief);
+    ASSERT_TRUE(fan->chief->filmPoint) << fan->fieldFraction;
+    EXPECT_NEAR(-fan->chief->filmPoint->y, fan->imageHeightMm, 1e-6);
+    const int stop = static_cast<int>(lens->stopIndex());
+    bool crossed = false;
+    for (std::size_t i = 0; i < fan->chief->path.surfaceIndices.size(); ++i) {
+      if (fan->chief->path.surfaceIndices[i] != stop) continue;
+      crossed = true;
+      EXPECT_NEAR(fan->chief->path.points[i + 1].y, 0.0, 1e-6) << fan->fieldFraction;
+    }
+    EXPECT_TRUE(crossed);
+    // The bundle around it is the one the lens takes: some of its rays pass.
+    int passed = 0;
+    for (const FanRay& ray : fan->rays) passed += ray.filmPoint ? 1 : 0;
+    EXPECT_GT(passed, 2) << fan->fieldFraction;
+  }
+  // The 0.7 and 1.0 bundles are different rays, not one fan drawn twice.
+  EXPECT_GT(std::abs(full.rays[6].path.points.front().y - mid.rays[6].path.points.front().y), 1.0);
+}
+
+TEST(RayFan, WideAngleFullFieldMatchesTheRealFieldOfView) {
+  const auto lens = testing::loadLens(testing::bundledLensDir() / "wide-22mm.dat");
+  ASSERT_TRUE(lens);
+  FanSpec spec;
+  spec.filmHalfDiagonalMm = 21.6;
+  const RayFans fans = computeRayFans(*lens, spec);
+  const auto real = realFieldOfViewDeg(*lens, 2.0 * spec.filmHalfDiagonalMm);
+  ASSERT_TRUE(real);
+  EXPECT_GT(*real / 2.0, 40.0);
+  for (const RayFan& fan : fans.fans) {
+    EXPECT_TRUE(fan.fieldReached) << fan.fieldFraction;
+    ASSERT_TRUE(fan.chief && fan.chief->filmPoint) << fan.fieldFraction;
+    EXPECT_NEAR(-fan.chief->filmPoint->y, fan.fieldFraction * 21.6, 1e-6);
+  }
+  EXPECT_NEAR(fans.fans[2].fieldAngleDeg, *real / 2.0, 1e-3);
+  EXPECT_GT(fans.fans[2].fieldAngleDeg, fans.fans[1].fieldAngleDeg + 5.0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "optics/surface_geometry.h"
@@ -169,6 +170,134 @@ TEST(Trace, SceneToFilmRetracesFilmToScene) {
     EXPECT_NEAR(back->origin.y + t * back->direction.y, film.y, 1e-9);
   }
   EXPECT_GT(passed, 20);
+}
+
+// z of surface k at its semi-aperture: where the element's edge (the rim plane) is drawn.
+double rimZ(const LensSystem& lens, int k) {
+  const SurfaceGeometry& s = lens.surfaces()[k];
+  const double a = s.semiApertureMm, c = s.curvaturePerMm;
+  return s.vertexZMm - c * a * a / (1.0 + std::sqrt(1.0 - c * c * a * a));
+}
+
+TEST(RayPath, SceneToFilmPathVisitsEverySurfaceInOrder) {
+  const auto built = LensSystem::build(testing::singlet(40.0, -60.0, 6.0, 1.5, 50.0, 30.0));
+  ASSERT_TRUE(built.ok());
+  const LensSystem& lens = *built.system;
+  const auto path = lens.traceFromScenePath({{0.0, 5.0, 100.0}, {0.0, 0.0, -1.0}});
+  ASSERT_EQ(path.stop, RayStop::Passed);
+  EXPECT_EQ(path.stopSurface, -1);
+  EXPECT_EQ(path.surfaceIndices, (std::vector<int>{0, 1, 2}));
+  ASSERT_EQ(path.points.size(), 4u);
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec3& p = path.points[k + 1];
+    // On the surface: its sphere through the vertex, F(p) = c |p - v|^2 + 2 (p - v).z = 0.
+    const SurfaceGeometry& s = lens.surfaces()[k];
+    const glm::dvec3 q = p - glm::dvec3(0.0, 0.0, s.vertexZMm);
+    EXPECT_NEAR(s.curvaturePerMm * glm::dot(q, q) + 2.0 * q.z, 0.0, 1e-12) << k;
+  }
+  ASSERT_TRUE(path.exitRay);
+  EXPECT_LT(path.exitRay->direction.z, 0.0);  // toward the film
+  EXPECT_LT(path.exitRay->direction.y, 0.0);  // bent toward the axis by the positive lens
+}
+
+TEST(RayPath, ClippedRaysEndAtTheRimPlaneNotOnTheExtendedSphere) {
+  const auto built = LensSystem::build(testing::singlet(40.0, -60.0, 6.0, 1.5, 50.0, 30.0));
+  ASSERT_TRUE(built.ok());
+  const LensSystem& lens = *built.system;
+  // From the scene at 20 mm: outside the front's 15 mm semi-aperture, inside its 40 mm radius.
+  const auto scene = lens.traceFromScenePath({{0.0, 20.0, 100.0}, {0.0, 0.0, -1.0}});
+  ASSERT_EQ(scene.stop, RayStop::ClippedByAperture);
+  EXPECT_EQ(scene.stopSurface, 0);
+  ASSERT_EQ(scene.points.size(), 2u);
+  EXPECT_EQ(scene.surfaceIndices, (std::vector<int>{0}));
+  const double sphereZ = lens.surfaces()[0].vertexZMm - (40.0 - std::sqrt(40.0 * 40.0 - 400.0));
+  EXPECT_NEAR(scene.points[1].z, rimZ(lens, 0), 1e-12);
+  EXPECT_GT(scene.points[1].z, sphereZ + 2.0);  // stops at the rim, short of the sphere
+  EXPECT_NEAR(scene.points[1].y, 20.0, 1e-12);
+
+  // From the film at 12 mm, clipped by a rear surface of 10 mm semi-aperture: the ray meets the
+  // rim plane first and ends there.
+  Prescription p = lens.prescription();
+  p.surfaces[1].apertureDiameterMm = 20.0;
+  const auto small = LensSystem::build(p);
+  ASSERT_TRUE(small.ok());
+  const auto film = small.system->traceFromFilmPath({{12.0, 0.0, 0.0}, {0.0, 0.0, 1.0}});
+  ASSERT_EQ(film.stop, RayStop::ClippedByAperture);
+  EXPECT_EQ(film.stopSurface, 1);
+  EXPECT_EQ(film.surfaceIndices, (std::vector<int>{2, 1}));
+  EXPECT_NEAR(film.points.back().z, rimZ(*small.system, 1), 1e-12);
+  EXPECT_NEAR(film.points.back().x, 12.0, 1e-12);
+}
+
+TEST(RayPath, AMissedSurfaceStillEndsTheRayAtItsRimPlane) {
+  const auto built = LensSystem::build(testing::singlet(40.0, -60.0, 6.0, 1.5, 50.0, 30.0));
+  ASSERT_TRUE(built.ok());
+  const LensSystem& lens = *built.system;
+  // At 45 mm the ray passes beside the front surface's whole 40 mm sphere.
+  const auto path = lens.traceFromScenePath({{0.0, 45.0, 100.0}, {0.0, 0.0, -1.0}});
+  ASSERT_EQ(path.stop, RayStop::MissedSurface);
+  EXPECT_EQ(path.stopSurface, 0);
+  ASSERT_EQ(path.points.size(), 2u);  // it no longer vanishes from the drawing
+  EXPECT_EQ(path.surfaceIndices, (std::vector<int>{0}));
+  EXPECT_NEAR(path.points[1].z, rimZ(lens, 0), 1e-12);
+  EXPECT_NEAR(path.points[1].y, 45.0, 1e-12);
+  EXPECT_FALSE(path.exitRay);
+}
+
+// Every blocked path of many rays through real lenses, both ways: the last point lies on the
+// blocking element's edge, on its rim plane at or beyond the semi-aperture, or on its aperture
+// cylinder; never on the extended sphere beyond the rim. (A ray that missed a surface while
+// running away from it, e.g. turned backwards, repeats its previous point: rare.)
+TEST(RayPath, BlockedRaysOfRealLensesEndOnTheElementEdge) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (const auto& course : testing::kCourseLenses) {
+    const auto lens = testing::loadLens(testing::bundledLensDir() / course.bundled);
+    ASSERT_TRUE(lens);
+    const double reach = 1.5 * lens->surfaces().front().semiApertureMm;
+    int onRimPlane = 0, onSide = 0, runaway = 0, total = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const bool fromScene = i % 2 == 0;
+      LensRay ray;
+      if (fromScene) {
+        const double angle = 1.4 * uniform(rng);
+        ray.direction = {0.0, std::sin(angle), -std::cos(angle)};
+        ray.origin =
+            glm::dvec3(0.0, reach * uniform(rng), lens->frontVertexZ() + 1.0) - 5.0 * ray.direction;
+      } else {
+        const glm::dvec3 film{0.0, 20.0 * uniform(rng), 0.0};
+        const glm::dvec3 aim{0.0, 2.0 * lens->rearApertureRadiusMm() * uniform(rng),
+                             lens->rearVertexZ()};
+        ray = {film, glm::normalize(aim - film)};
+      }
+      const RayPath path = fromScene ? lens->traceFromScenePath(ray) : lens->traceFromFilmPath(ray);
+      ASSERT_EQ(path.points.size(), path.surfaceIndices.size() + 1);
+      if (path.stop != RayStop::ClippedByAperture && path.stop != RayStop::MissedSurface) continue;
+      ++total;
+      ASSERT_EQ(path.surfaceIndices.back(), path.stopSurface);
+      const SurfaceGeometry& s = lens->surfaces()[path.stopSurface];
+      const glm::dvec3& end = path.points.back();
+      const double r = std::hypot(end.x, end.y);
+      const double zRim = rimZ(*lens, path.stopSurface);
+      if (std::abs(end.z - zRim) < 1e-9 && r >= s.semiApertureMm * (1.0 - 1e-9)) {
+        ++onRimPlane;
+      } else if (std::abs(r - s.semiApertureMm) < 1e-9 * (1.0 + r)) {
+        ++onSide;
+      } else if (path.stop == RayStop::MissedSurface &&
+                 end == path.points[path.points.size() - 2]) {
+        ++runaway;
+      } else {
+        ADD_FAILURE() << course.bundled << " surface " << path.stopSurface << " "
+                      << toString(path.stop) << ": ends at z " << end.z << " r " << r
+                      << ", rim plane z " << zRim << " semi-aperture " << s.semiApertureMm;
+      }
+    }
+    EXPECT_GT(total, 200) << course.bundled;
+    EXPECT_GT(onRimPlane, total / 2) << course.bundled;
+    EXPECT_LT(runaway, total / 100 + 1) << course.bundled;
+    std::printf("  %s: %d blocked paths, %d end on the rim plane, %d on the side, %d ran away\n",
+                course.bundled, total, onRimPlane, onSide, runaway);
+  }
 }
 
 }  // namespace

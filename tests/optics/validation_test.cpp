@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
+#include <string>
 
 #include "test_lenses.h"
 
@@ -81,11 +83,57 @@ TEST(Validation, NonFiniteNumbersAreRejectedNotTraced) {
 
 TEST(Validation, NoSurfaces) { expectError(Prescription{}, -1, "no surfaces"); }
 
+TEST(Validation, AbsurdMagnitudesAreFlagged) {
+  // Table edits in the viewer go through validate(): a slip such as 1e300 must not build.
+  Prescription p = goodLens();
+  p.surfaces[0].radiusMm = 2e6;
+  expectError(p, 0, "radius 2e+06 mm is beyond");
+  p = goodLens();
+  p.surfaces[1].radiusMm = -1e300;
+  expectError(p, 1, "radius");
+  p = goodLens();
+  p.surfaces[2].thicknessMm = 1e300;
+  expectError(p, 2, "thickness 1e+300 mm is beyond");
+  p = goodLens();
+  p.surfaces[0].apertureDiameterMm = 2e5;
+  p.surfaces[0].radiusMm = kFlatRadius;  // so that only the magnitude is wrong
+  expectError(p, 0, "aperture diameter 200000 mm is beyond");
+  p = goodLens();
+  p.surfaces[0].indexD = 1e300;
+  expectError(p, 0, "refractive index 1e+300 is beyond");
+  // The largest allowed values still build (a flat surface stays inf).
+  p = goodLens();
+  p.surfaces[2].thicknessMm = kMaxLengthMm;
+  EXPECT_TRUE(LensSystem::build(p).ok());
+}
+
+TEST(Validation, MessagesCountSurfacesFromOne) {
+  // ValidationError::surface is an index; what users read counts from 1, as the viewer's table
+  // and the script commands ("set surface 3 radius 40") do.
+  Prescription p = goodLens();
+  p.surfaces[0].radiusMm = 12.0;
+  p.surfaces[1].radiusMm = -12.0;
+  p.surfaces[0].thicknessMm = 1.0;
+  const auto errors = validate(p);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].surface, 1);
+  EXPECT_EQ(errors[0].toString().rfind("surface 2: crosses the previous surface (surface 1)", 0),
+            0u)
+      << errors[0].toString();
+  Prescription noStop = goodLens();
+  noStop.surfaces.pop_back();
+  const auto lensWide = validate(noStop);
+  ASSERT_FALSE(lensWide.empty());
+  EXPECT_EQ(lensWide.back().toString(), lensWide.back().message);  // no surface to name
+}
+
 TEST(Validation, CheapVariantsRefuseNonsense) {
   const auto lens = LensSystem::build(goodLens()).system;
   EXPECT_FALSE(lens->withFilmDistance(-1.0));
   EXPECT_FALSE(lens->withStopDiameter(0.0));
   EXPECT_FALSE(lens->withWavelength(std::nan("")));
+  EXPECT_FALSE(lens->withFilmDistance(1e300));
+  EXPECT_FALSE(lens->withStopDiameter(1e300));
   const auto moved = lens->withFilmDistance(42.0);
   ASSERT_TRUE(moved);
   EXPECT_EQ(moved->filmDistanceMm(), 42.0);
@@ -99,22 +147,45 @@ TEST(Validation, CheapVariantsRefuseNonsense) {
 namespace lenslab::optics {
 namespace {
 
-// DESIGN.md: src/optics builds and tests without a display; no GL, GLFW or ImGui header in it.
-TEST(Layering, OpticsIncludesNoGuiHeaders) {
+// DESIGN.md: src/optics and src/render build and test without a display: no GL, GLFW or ImGui
+// header in them, nor in src/common, which both use. Each library also stays below the ones
+// that use it (optics knows no renderer, common knows neither).
+// Fails on every #include in src/DIRECTORY that names a banned word; returns the files scanned.
+int scanIncludesFor(const std::string& directory, std::initializer_list<const char*> banned) {
   const std::filesystem::path dir =
-      std::filesystem::path(LENSLAB_BUNDLED_LENS_DIR) / ".." / "src" / "optics";
+      std::filesystem::path(LENSLAB_BUNDLED_LENS_DIR) / ".." / "src" / directory;
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
     std::ifstream in(entry.path());
     std::string line;
     ++files;
     while (std::getline(in, line)) {
-      if (line.rfind("#include", 0) != 0) continue;
-      for (const char* banned : {"GL/", "GLFW", "glad", "imgui", "app/", "render/"})
-        EXPECT_EQ(line.find(banned), std::string::npos) << entry.path() << ": " << line;
+      const auto first = line.find_first_not_of(" \t");
+      if (first == std::string::npos || line.compare(first, 1, "#") != 0) continue;
+      if (line.find("include", first) == std::string::npos) continue;
+      for (const char* word : banned)
+        EXPECT_EQ(line.find(word), std::string::npos) << entry.path() << ": " << line;
     }
   }
-  EXPECT_GT(files, 10);
+  return files;
+}
+
+TEST(Layering, OpticsIncludesNoGuiHeaders) {
+  EXPECT_GT(scanIncludesFor(
+                "optics", {"GL/", "GLFW", "glad", "imgui", "backends/", "app/", "render/", "cli/"}),
+            10);
+}
+
+TEST(Layering, RenderIncludesNoGuiHeaders) {
+  EXPECT_GT(
+      scanIncludesFor("render", {"GL/", "GLFW", "glad", "imgui", "backends/", "app/", "cli/"}), 10);
+}
+
+TEST(Layering, CommonIncludesNoGuiOrHigherLevelHeaders) {
+  EXPECT_GE(scanIncludesFor("common", {"GL/", "GLFW", "glad", "imgui", "backends/", "app/", "cli/",
+                                       "render/", "optics/"}),
+            2);
 }
 
 }  // namespace
