@@ -263,13 +263,14 @@ TEST_F(ScriptedViewer, IndexBelow1AndAHugeApertureAreFlaggedAndThePreviewStaysFi
       "dump-ui flagged.json\n"
       "screenshot-render flagged.exr\n"
       "undo\nundo\n"
-      "set stop-diameter 1e9\n"  // the stop itself: valid, the rims limit the bundle
+      "set stop-diameter 1e4\n"  // a 10 m stop: valid, the rims limit the bundle
       "wait-spp 2\n"
       "dump-ui huge-stop.json\n"
       "screenshot-render huge-stop.exr\n"
       "quit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  EXPECT_EQ(problemRows(json("flagged.json")), (std::vector<int>{2, 8}));
+  // Row 8 twice: the aperture exceeds its radius and the 1e5 mm plausibility limit.
+  EXPECT_EQ(problemRows(json("flagged.json")), (std::vector<int>{2, 8, 8}));
   EXPECT_TRUE(problemRows(json("huge-stop.json")).empty());
   for (const char* name : {"flagged.exr", "huge-stop.exr"}) {
     const render::ReadResult read = render::readImage(scratch / name);
