@@ -39,6 +39,10 @@ LoadedScene loadSceneFile(const std::filesystem::path& path) {
   return loaded;
 }
 
+PreviewController::PreviewController(std::function<void()> wake) {
+  renderer_.setPublishListener(std::move(wake));
+}
+
 void PreviewController::setScene(const LoadedScene& loaded) {
   description_ = loaded.description;
   scene_ = loaded.scene;
@@ -76,52 +80,38 @@ std::optional<std::uint64_t> PreviewController::update(
     const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft) {
   if (!description_ || !scene_ || !lens) return std::nullopt;
   const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_};
-  if (!submitted_ || !(*submitted_ == wanted)) {
-    // A change: the coarse first look.
-    submitted_ = wanted;
-    submittedLens_ = lens;
-    const auto [width, height] = previewSize(draft);
-    generation_ = renderer_.start(
-        makeJob(std::max(1, width / kCoarseDivisor), std::max(1, height / kCoarseDivisor), 1));
-    coarseGeneration_ = generation_;
-    fullGeneration_ = 0;
-    coarseReported_ = firstPassReported_ = false;
-    return ++changeId_;
-  }
-  if (fullGeneration_ == 0) {
-    // The full job starts when the coarse one is done (checked once a frame: the renderer runs
-    // one job at a time, and a frame is short next to the full job's first pass).
-    const auto snapshot = renderer_.snapshot();
-    if (snapshot && snapshot->generation == coarseGeneration_ && snapshot->complete) {
-      const auto [width, height] = previewSize(draft);
-      generation_ = renderer_.start(makeJob(width, height, kMaxPreviewSpp));
-      fullGeneration_ = generation_;
-    }
-  }
-  return std::nullopt;
+  if (submitted_ && *submitted_ == wanted) return std::nullopt;
+  submitted_ = wanted;
+  submittedLens_ = lens;
+  const auto [width, height] = previewSize(draft);
+  render::RenderJob job = makeJob(width, height, kMaxPreviewSpp);
+  job.settings.coarseDivisor = kCoarseDivisor;
+  generation_ = renderer_.start(std::move(job));
+  coarseReported_ = firstPassReported_ = false;
+  return ++changeId_;
 }
 
 int PreviewController::currentSpp(const std::shared_ptr<const optics::LensSystem>& lens,
                                   bool pinhole) const {
   const Submitted wanted{lens.get(), pinhole, false, sceneVersion_};
-  if (!submitted_ || !(*submitted_ == wanted) || fullGeneration_ == 0) return 0;
+  if (!submitted_ || !(*submitted_ == wanted)) return 0;
   // What the preview shows (poll() ran before the frame was drawn), not what the renderer has
-  // just published: a script that waits for 4 spp and takes a screenshot sees 4 spp.
-  return shownGeneration_ == fullGeneration_ ? shownSpp_ : 0;
+  // just published: a script that waits for 4 spp and takes a screenshot sees 4 spp. The coarse
+  // look counts 0.
+  return shownGeneration_ == generation_ ? shownSpp_ : 0;
 }
 
 bool PreviewController::busy() const {
   if (!submitted_) return false;
-  if (fullGeneration_ == 0) return true;  // the coarse job, or the wait for the full one
   const auto snapshot = renderer_.snapshot();
-  return !snapshot || snapshot->generation != fullGeneration_ || !snapshot->complete;
+  return !snapshot || snapshot->generation != generation_ || !snapshot->complete;
 }
 
 void PreviewController::poll(PreviewState& preview, double exposureStops, ViewerStats& stats) {
   const auto snapshot = renderer_.snapshot();
   preview.rendering = busy();
   // The image on screen belongs to an earlier change until this change's first image arrives.
-  preview.stale = submitted_ && (!snapshot || snapshot->generation < coarseGeneration_);
+  preview.stale = submitted_ && (!snapshot || snapshot->generation < generation_);
   if (!snapshot) return;
   const bool fresh =
       snapshot->generation != shownGeneration_ || snapshot->samplesPerPixel != shownSpp_;
@@ -133,7 +123,7 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   ++preview.uploads;
   preview.imageWidth = snapshot->width;
   preview.imageHeight = snapshot->height;
-  preview.coarse = snapshot->generation == coarseGeneration_;
+  preview.coarse = snapshot->coarse;
   preview.samplesPerPixel = snapshot->samplesPerPixel;
   preview.seconds = snapshot->renderSeconds;
   preview.raysPerSecond = snapshot->renderSeconds > 0
@@ -143,11 +133,12 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   shownGeneration_ = snapshot->generation;
   shownSpp_ = snapshot->samplesPerPixel;
   shownExposure_ = exposureStops;
-  if (snapshot->generation == coarseGeneration_ && !coarseReported_) {
+  if (snapshot->generation != generation_) return;
+  if (!coarseReported_) {  // the coarse look, or the first pass if it came first
     stats.firstPictureShown(changeId_, ViewerStats::Clock::now());
     coarseReported_ = true;
   }
-  if (fullGeneration_ != 0 && snapshot->generation == fullGeneration_ && !firstPassReported_) {
+  if (!snapshot->coarse && !firstPassReported_) {
     stats.firstPassShown(changeId_, ViewerStats::Clock::now());
     firstPassReported_ = true;
   }

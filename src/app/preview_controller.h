@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,13 +30,17 @@ struct LoadedScene {
 // Parses and builds a scene file (blocking; the viewer calls it on load).
 LoadedScene loadSceneFile(const std::filesystem::path& path);
 
-// After every change the preview renders in two steps: a coarse first look (a quarter of the
-// resolution per axis, one sample per pixel: a sixteenth of the work, so it appears within a
-// frame or two of the edit), then the real job at the preview resolution, refining
-// progressively. The texture shows the coarse image stretched until the real job's first pass
-// replaces it.
+// After every change the preview job renders a coarse first look (a quarter of the resolution
+// per axis, one sample per pixel: a sixteenth of a pass, so it appears within a frame or two of
+// the edit), then refines progressively at the preview resolution (the renderer's
+// RenderSettings::coarseDivisor). The texture shows the coarse image stretched until the first
+// full pass replaces it.
 class PreviewController {
  public:
+  // `wake` is called from the renderer's thread whenever a new image is ready (the viewer posts
+  // an empty event so that its loop, asleep until the next frame, shows it at once).
+  explicit PreviewController(std::function<void()> wake = {});
+
   // Preview images are at most this many pixels on their longer side; drafts (while dragging)
   // half that.
   static constexpr int kMaxPreviewExtent = 640;
@@ -53,8 +58,8 @@ class PreviewController {
   // job's (the new job starts on the next update).
   int currentSpp(const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole) const;
 
-  // Starts the coarse job when anything the preview depends on changed, and the full job once
-  // the coarse one is done. Returns an id for the change when it starts a new coarse job.
+  // Starts a new job when anything the preview depends on changed. Returns an id for the change
+  // when it does.
   std::optional<std::uint64_t> update(const std::shared_ptr<const optics::LensSystem>& lens,
                                       bool pinhole, bool draft);
   // Reads the newest snapshot into `preview` when there is a new one (re-encoding on an exposure
@@ -86,10 +91,8 @@ class PreviewController {
   render::RenderJob makeJob(int width, int height, int samplesPerPixel) const;
   std::optional<Submitted> submitted_;
   std::shared_ptr<const optics::LensSystem> submittedLens_;  // keeps the pointer above alive
-  std::uint64_t changeId_ = 0;          // counts changes (the ids update() returns)
-  std::uint64_t coarseGeneration_ = 0;  // the renderer's generation of the change's coarse job
-  std::uint64_t fullGeneration_ = 0;    // and of its full job; 0 until it starts
-  std::uint64_t generation_ = 0;        // the running job's (one of the two)
+  std::uint64_t changeId_ = 0;    // counts changes (the ids update() returns)
+  std::uint64_t generation_ = 0;  // the renderer's generation of the change's job
 
   // What the texture shows.
   std::uint64_t shownGeneration_ = 0;

@@ -19,7 +19,8 @@ namespace lenslab::app {
 
 class Viewer final : public ScriptHost {
  public:
-  Viewer(Window& window, ViewerState& state) : window_(window), state_(state) {}
+  Viewer(Window& window, ViewerState& state)
+      : window_(window), state_(state), preview_(&Window::wakeFromAnyThread) {}
 
   int run(const ViewerOptions& options, std::optional<ScriptRunner> script);
 

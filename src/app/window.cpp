@@ -198,6 +198,8 @@ void Window::holdTappedKeys() {
 
 std::vector<std::string> Window::takeDroppedFiles() { return std::exchange(dropped_, {}); }
 
+void Window::wakeFromAnyThread() { glfwPostEmptyEvent(); }
+
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
 
 void Window::waitEvents(double seconds) const {

@@ -29,6 +29,8 @@ class Window {
   bool shouldClose() const;
   // Waits for input at most `seconds` (0: just polls).
   void waitEvents(double seconds) const;
+  // Ends a waitEvents() early; safe to call from any thread (glfwPostEmptyEvent).
+  static void wakeFromAnyThread();
   void beginFrame();
   // Ends the ImGui frame: its draw data is ready (nothing is drawn yet).
   void endFrame();

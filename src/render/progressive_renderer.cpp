@@ -36,13 +36,23 @@ std::vector<Tile> makeTiles(int width, int height, int size) {
 // single rays).
 constexpr std::size_t kCameraBatchRays = 1024;
 
-// Renders samples [firstSample, firstSample + count) of every pixel in the tile and adds their
-// sum to `sums`. Returns false when cancelled part-way.
-bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int count,
-                std::vector<double>& sums, const std::function<bool()>& cancelled,
-                RenderStatistics& statistics) {
+// One wave over an image: which samples, and at what resolution.
+struct Wave {
+  int firstSample = 0;
+  int count = 1;
+  int width = 0;          // of the image the tiles cover
+  float rasterScale = 1;  // camera raster units per image pixel (the coarse pass's divisor)
+  IntegratorSettings integrator;
+};
+
+// Renders the wave's samples of every pixel in the tile and adds their sum to `sums`. Returns
+// false when cancelled part-way.
+bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::vector<double>& sums,
+                const std::function<bool()>& cancelled, RenderStatistics& statistics) {
   const Camera& camera = *job.camera;
-  const int width = camera.width();
+  const int width = wave.width;
+  const int firstSample = wave.firstSample;
+  const int count = wave.count;
   const int tileWidth = tile.x1 - tile.x0;
   const int tilePixels = tileWidth * (tile.y1 - tile.y0);
   const auto samplesPerPixel = static_cast<std::size_t>(count);
@@ -70,7 +80,7 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
         const std::size_t i = samplers.size();
         samplers.emplace_back(pixelIndex, static_cast<std::uint32_t>(firstSample + s),
                               job.settings.seed);
-        rasterPoints[i] = glm::vec2(x, y) + samplers[i].next2D();
+        rasterPoints[i] = (glm::vec2(x, y) + samplers[i].next2D()) * wave.rasterScale;
         lensSamples[i] = samplers[i].next2D();
       }
     }
@@ -85,8 +95,8 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
         ++statistics.lensPassed;
         const CameraRay& ray = rays[i];
         const glm::vec3 radiance =
-            ray.weight * incomingRadiance(*job.scene, ray.origin, ray.direction, samplers[i],
-                                          job.settings.integrator);
+            ray.weight *
+            incomingRadiance(*job.scene, ray.origin, ray.direction, samplers[i], wave.integrator);
         if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
             !std::isfinite(radiance.z)) {
           ++statistics.discardedSamples;
@@ -105,75 +115,144 @@ bool renderTile(const RenderJob& job, const Tile& tile, int firstSample, int cou
   return true;
 }
 
+// Runs one wave over all tiles on the arena. False when cancelled.
+bool runWave(tbb::task_arena& arena, const RenderJob& job, const Wave& wave,
+             const std::vector<Tile>& tiles, std::vector<double>& sums,
+             std::vector<RenderStatistics>& tileStatistics,
+             const std::function<bool()>& cancelled) {
+  std::atomic<bool> stopped{false};
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+          for (std::size_t t = range.begin(); t != range.end(); ++t) {
+            if (!renderTile(job, wave, tiles[t], sums, cancelled, tileStatistics[t])) {
+              stopped = true;
+              return;
+            }
+          }
+        },
+        tbb::simple_partitioner());
+  });
+  return !stopped && !cancelled();
+}
+
+RenderStatistics total(const std::vector<RenderStatistics>& parts) {
+  RenderStatistics sum;
+  for (const RenderStatistics& s : parts) {
+    sum.cameraSamples += s.cameraSamples;
+    sum.lensPassed += s.lensPassed;
+    sum.discardedSamples += s.discardedSamples;
+  }
+  return sum;
+}
+
+std::shared_ptr<RenderSnapshot> makeSnapshot(int width, int height, const std::vector<double>& sums,
+                                             int samples, std::uint64_t generation) {
+  auto snapshot = std::make_shared<RenderSnapshot>();
+  snapshot->width = width;
+  snapshot->height = height;
+  snapshot->generation = generation;
+  snapshot->rgb.resize(sums.size());
+  const double scale = 1.0 / samples;
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    snapshot->rgb[i] = static_cast<float>(sums[i] * scale);
+  }
+  return snapshot;
+}
+
+// Renders one coarse sample per pixel at 1/divisor of the resolution and publishes it. False
+// when cancelled.
+bool renderCoarsePass(tbb::task_arena& arena, const RenderJob& job, int divisor,
+                      std::uint64_t generation, Clock::time_point started,
+                      const std::function<bool()>& cancelled,
+                      const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
+  Wave wave;
+  wave.width = (job.camera->width() + divisor - 1) / divisor;
+  const int height = (job.camera->height() + divisor - 1) / divisor;
+  wave.rasterScale = static_cast<float>(divisor);
+  wave.integrator = job.settings.integrator;
+  // A coarse pixel covers divisor^2 full pixels: so does its texture footprint.
+  wave.integrator.cameraSpreadRadians = job.camera->pixelSpreadRadians() * divisor;
+  const std::vector<Tile> tiles = makeTiles(wave.width, height, std::max(4, job.settings.tileSize));
+  std::vector<double> sums(static_cast<std::size_t>(wave.width) * height * 3, 0.0);
+  std::vector<RenderStatistics> tileStatistics(tiles.size());
+  if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return false;
+  auto snapshot = makeSnapshot(wave.width, height, sums, 1, generation);
+  snapshot->samplesPerPixel = 0;
+  snapshot->coarse = true;
+  snapshot->statistics = total(tileStatistics);
+  snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+  publish(std::move(snapshot));
+  return true;
+}
+
 // The driver shared by the threaded renderer and renderToCompletion: waves until done or
 // cancelled, publishing after each wave.
-void renderWaves(const RenderJob& jobIn, std::uint64_t generation,
+void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t generation,
                  const std::function<bool()>& cancelled,
                  const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
   const Clock::time_point started = Clock::now();
-  RenderJob job = jobIn;
-  if (job.settings.integrator.cameraSpreadRadians == 0.0f) {
+  Wave wave;
+  wave.width = job.camera->width();
+  wave.integrator = job.settings.integrator;
+  if (wave.integrator.cameraSpreadRadians == 0.0f) {
     // pbrt shrinks a pixel's footprint by 1/sqrt(spp): more samples, sharper texture lookups.
     const int spp = job.settings.samplesPerPixel > 0 ? job.settings.samplesPerPixel : 64;
-    job.settings.integrator.cameraSpreadRadians =
+    wave.integrator.cameraSpreadRadians =
         job.camera->pixelSpreadRadians() / std::sqrt(static_cast<float>(spp));
+  }
+  if (job.settings.coarseDivisor > 1 &&
+      !renderCoarsePass(arena, job, job.settings.coarseDivisor, generation, started, cancelled,
+                        publish)) {
+    return;
   }
   const int width = job.camera->width();
   const int height = job.camera->height();
   const std::vector<Tile> tiles = makeTiles(width, height, std::max(4, job.settings.tileSize));
   std::vector<double> sums(static_cast<std::size_t>(width) * height * 3, 0.0);
   std::vector<RenderStatistics> tileStatistics(tiles.size());
-  const int threads =
-      job.settings.threads > 0 ? job.settings.threads : tbb::this_task_arena::max_concurrency();
-  tbb::task_arena arena(threads);
-  std::optional<LowPriorityWorkers> lowPriority;
-  if (job.settings.lowPriority) {
-    arena.initialize();
-    lowPriority.emplace(arena);
-  }
   const int target = job.settings.samplesPerPixel;
   int done = 0;
-  for (int wave = 0; target == 0 || done < target; ++wave) {
-    int count = wave == 0 ? 1 : std::max(1, done);  // 1, 1, 2, 4, 8, ...
+  for (int index = 0; target == 0 || done < target; ++index) {
+    int count = index == 0 ? 1 : std::max(1, done);  // 1, 1, 2, 4, 8, ...
     count = std::min(count, 1024);
     if (target > 0) count = std::min(count, target - done);
-    std::atomic<bool> stopped{false};
-    arena.execute([&] {
-      tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
-          [&](const tbb::blocked_range<std::size_t>& range) {
-            for (std::size_t t = range.begin(); t != range.end(); ++t) {
-              if (!renderTile(job, tiles[t], done, count, sums, cancelled, tileStatistics[t])) {
-                stopped = true;
-                return;
-              }
-            }
-          },
-          tbb::simple_partitioner());
-    });
-    if (stopped || cancelled()) return;
+    wave.firstSample = done;
+    wave.count = count;
+    if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return;
     done += count;
-    auto snapshot = std::make_shared<RenderSnapshot>();
-    snapshot->width = width;
-    snapshot->height = height;
+    auto snapshot = makeSnapshot(width, height, sums, done, generation);
     snapshot->samplesPerPixel = done;
-    snapshot->generation = generation;
     snapshot->complete = target > 0 && done >= target;
-    snapshot->rgb.resize(sums.size());
-    const double scale = 1.0 / done;
-    for (std::size_t i = 0; i < sums.size(); ++i) {
-      snapshot->rgb[i] = static_cast<float>(sums[i] * scale);
-    }
-    for (const RenderStatistics& s : tileStatistics) {
-      snapshot->statistics.cameraSamples += s.cameraSamples;
-      snapshot->statistics.lensPassed += s.lensPassed;
-      snapshot->statistics.discardedSamples += s.discardedSamples;
-    }
+    snapshot->statistics = total(tileStatistics);
     snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
     publish(std::move(snapshot));
   }
 }
 
+}  // namespace
+
+// A task arena with the workers a job asks for (and their priority).
+class WorkerArena {
+ public:
+  WorkerArena(int threadCount, bool lowPriorityWorkers)
+      : threads(threadCount), low(lowPriorityWorkers), arena(threadCount) {
+    if (low) {
+      arena.initialize();
+      lowPriority.emplace(arena);
+    }
+  }
+  const int threads;
+  const bool low;
+  tbb::task_arena arena;
+  std::optional<LowPriorityWorkers> lowPriority;  // observes `arena`: declared after it
+};
+
+namespace {
+int threadsFor(const RenderSettings& settings) {
+  return settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
+}
 }  // namespace
 
 ProgressiveRenderer::ProgressiveRenderer() : controller_([this] { controllerLoop(); }) {}
@@ -247,17 +326,30 @@ void ProgressiveRenderer::controllerLoop() {
   }
 }
 
+void ProgressiveRenderer::setPublishListener(std::function<void()> listener) {
+  std::lock_guard lock(mutex_);
+  publishListener_ = std::move(listener);
+}
+
 void ProgressiveRenderer::runJob(const RenderJob& job, std::uint64_t generation) {
   if (!job.camera || !job.scene) return;
+  const int threads = threadsFor(job.settings);
+  if (!arena_ || arena_->threads != threads || arena_->low != job.settings.lowPriority) {
+    arena_.reset();  // its workers leave before the new arena's start
+    arena_ = std::make_unique<WorkerArena>(threads, job.settings.lowPriority);
+  }
   renderWaves(
-      job, generation,
+      arena_->arena, job, generation,
       [&] { return requestedGeneration_.load(std::memory_order_relaxed) != generation; },
       [&](std::shared_ptr<const RenderSnapshot> snapshot) {
+        std::function<void()> listener;
         {
           std::lock_guard lock(mutex_);
           snapshot_ = std::move(snapshot);
+          listener = publishListener_;
         }
         changed_.notify_all();
+        if (listener) listener();
       });
 }
 
@@ -266,8 +358,9 @@ std::shared_ptr<const RenderSnapshot> renderToCompletion(
   std::shared_ptr<const RenderSnapshot> last;
   const int target = std::max(1, job.settings.samplesPerPixel);
   job.settings.samplesPerPixel = target;
+  WorkerArena arena(threadsFor(job.settings), job.settings.lowPriority);
   renderWaves(
-      job, 1, [] { return false; },
+      arena.arena, job, 1, [] { return false; },
       [&](std::shared_ptr<const RenderSnapshot> snapshot) {
         last = std::move(snapshot);
         if (progress) progress(static_cast<double>(last->samplesPerPixel) / target);

@@ -27,6 +27,10 @@ struct RenderSettings {
   int tileSize = 16;
   // Run the workers at a lower priority than other threads of the process (the viewer's UI).
   bool lowPriority = false;
+  // Above 1: before the first full-resolution wave, render one sample per pixel at
+  // 1/coarseDivisor of the resolution per axis and publish it as a coarse snapshot, so that an
+  // interactive view has a picture after a small fraction of a full pass.
+  int coarseDivisor = 1;
 };
 
 struct RenderJob {
@@ -36,8 +40,8 @@ struct RenderJob {
 };
 
 struct RenderStatistics {
-  std::uint64_t cameraSamples = 0;  // rays asked of the camera
-  std::uint64_t lensPassed = 0;     // of those, rays that left the lens
+  std::uint64_t cameraSamples = 0;     // rays asked of the camera
+  std::uint64_t lensPassed = 0;        // of those, rays that left the lens
   std::uint64_t discardedSamples = 0;  // non-finite radiance, dropped
 };
 
@@ -49,9 +53,14 @@ struct RenderSnapshot {
   int samplesPerPixel = 0;
   std::uint64_t generation = 0;  // the start() call this belongs to
   bool complete = false;         // all requested samples are in
+  // The coarse first look (RenderSettings::coarseDivisor): width and height are the reduced
+  // ones, one sample per pixel, and samplesPerPixel is 0 (no full-resolution sample yet).
+  bool coarse = false;
   double renderSeconds = 0.0;
   RenderStatistics statistics;
 };
+
+class WorkerArena;  // the render threads (progressive_renderer.cpp)
 
 class ProgressiveRenderer {
  public:
@@ -73,6 +82,9 @@ class ProgressiveRenderer {
   // True while a job is being rendered (false once it completed or was cancelled and its
   // workers returned).
   bool busy() const { return busy_.load(); }
+  // Called on the renderer's thread after every published snapshot (e.g. to wake a UI loop that
+  // sleeps between frames). Keep it short and thread-safe.
+  void setPublishListener(std::function<void()> listener);
 
  private:
   void controllerLoop();
@@ -87,6 +99,10 @@ class ProgressiveRenderer {
   std::atomic<std::uint64_t> requestedGeneration_{0};
   std::uint64_t finishedGeneration_ = 0;
   std::atomic<bool> busy_{false};
+  std::function<void()> publishListener_;
+  // Kept between jobs with the same thread count and priority: a viewer starts a job on every
+  // edit, and a new arena would start its worker threads again.
+  std::unique_ptr<WorkerArena> arena_;  // guarded by being used on the controller thread only
   std::thread controller_;
 };
 

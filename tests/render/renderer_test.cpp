@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <mutex>
 #include <thread>
 
 #include "optics/lens_system.h"
@@ -23,7 +24,8 @@ using Clock = std::chrono::steady_clock;
 std::string furnaceWorld(double radiance) {
   const std::string l = std::to_string(radiance);
   return "WorldBegin\nAttributeBegin\nMaterial \"matte\" \"rgb Kd\" [0 0 0]\n"
-         "AreaLightSource \"diffuse\" \"rgb L\" [" + l + " " + l + " " + l +
+         "AreaLightSource \"diffuse\" \"rgb L\" [" +
+         l + " " + l + " " + l +
          "] \"bool twosided\" \"true\"\nShape \"sphere\" \"float radius\" [50]\nAttributeEnd\n"
          "WorldEnd\n";
 }
@@ -36,7 +38,8 @@ TEST(Renderer, PinholeFurnaceSeesTheEmittedRadianceEverywhere) {
         directory / "furnace.pbrt",
         std::string("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" [60]\n"
                     "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [12]\n"
-                    "Integrator \"") + integrator + "\"\n" + furnaceWorld(radiance));
+                    "Integrator \"") +
+            integrator + "\"\n" + furnaceWorld(radiance));
     RenderJob job = loadJob(path, 4);
     ASSERT_TRUE(job.camera && job.scene);
     const auto image = renderToCompletion(job);
@@ -75,16 +78,18 @@ class LensFurnace : public ::testing::TestWithParam<FurnaceCase> {};
 
 TEST_P(LensFurnace, SeesRadianceTimesTheLensRelativeIllumination) {
   const FurnaceCase& furnace = GetParam();
-  const auto directory = lenslab::testing::makeTestDirectory(std::string("furnace-") + furnace.name);
+  const auto directory =
+      lenslab::testing::makeTestDirectory(std::string("furnace-") + furnace.name);
   writeFile(directory / "dgauss.dat", render::testing::kDoubleGauss50);
   const double radiance = 2.0;
   const int size = 16;
   const double diagonalMm = 60.0;
-  const auto path = writeFile(
-      directory / "furnace.pbrt",
-      std::string("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" ") + furnace.camera +
-          "\nFilm \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
-          "\"float diagonal\" [60]\nIntegrator \"path\"\n" + furnaceWorld(radiance));
+  const auto path =
+      writeFile(directory / "furnace.pbrt",
+                std::string("LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" ") + furnace.camera +
+                    "\nFilm \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
+                    "\"float diagonal\" [60]\nIntegrator \"path\"\n" +
+                    furnaceWorld(radiance));
   RenderJob job = loadJob(path, 1024);
   ASSERT_TRUE(job.camera && job.scene);
   const auto* camera = dynamic_cast<const RealisticCamera*>(job.camera.get());
@@ -113,13 +118,14 @@ TEST_P(LensFurnace, SeesRadianceTimesTheLensRelativeIllumination) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cameras, LensFurnace,
-    ::testing::Values(
-        FurnaceCase{"pbrt_v3", "\"string lensfile\" \"dgauss.dat\" \"float aperturediameter\" "
-                               "[12] \"float focusdistance\" [3]",
-                    false},
-        FurnaceCase{"course", "\"string specfile\" \"dgauss.dat\" \"float filmdistance\" 36.77 "
-                              "\"float aperture_diameter\" 17.1 \"float filmdiag\" 60",
-                    true}),
+    ::testing::Values(FurnaceCase{"pbrt_v3",
+                                  "\"string lensfile\" \"dgauss.dat\" \"float aperturediameter\" "
+                                  "[12] \"float focusdistance\" [3]",
+                                  false},
+                      FurnaceCase{"course",
+                                  "\"string specfile\" \"dgauss.dat\" \"float filmdistance\" 36.77 "
+                                  "\"float aperture_diameter\" 17.1 \"float filmdiag\" 60",
+                                  true}),
     [](const ::testing::TestParamInfo<FurnaceCase>& caseInfo) { return caseInfo.param.name; });
 
 std::filesystem::path writeSmallScene(const std::filesystem::path& directory) {
@@ -214,6 +220,46 @@ TEST(Renderer, ProgressiveJobsPublishWavesAndCancelQuickly) {
   }
   EXPECT_LT(bestStartSeconds, 0.001);  // start() never waits for the workers
   EXPECT_LT(bestCancelSeconds, 0.010);
+}
+
+// An interactive job first publishes a coarse look (reduced size, one sample per pixel), then
+// the usual full-resolution waves; every publication calls the listener.
+TEST(Renderer, ACoarseFirstLookComesBeforeTheFullWavesAndEachPublicationIsAnnounced) {
+  const auto directory = lenslab::testing::makeTestDirectory("coarse");
+  RenderJob job = loadJob(writeSmallScene(directory), 4);
+  ASSERT_TRUE(job.camera && job.scene);
+  job.settings.coarseDivisor = 4;
+  ProgressiveRenderer renderer;
+  std::mutex mutex;
+  std::vector<std::shared_ptr<const RenderSnapshot>> seen;
+  renderer.setPublishListener([&] {
+    std::lock_guard lock(mutex);
+    seen.push_back(renderer.snapshot());
+  });
+  const std::uint64_t generation = renderer.start(job);
+  ASSERT_TRUE(renderer.waitForCompletion(generation, 20.0));
+  renderer.setPublishListener({});
+  std::lock_guard lock(mutex);
+  // Coarse, then 1, 2 and 4 samples per pixel.
+  ASSERT_EQ(seen.size(), 4u);
+  const RenderSnapshot& coarse = *seen[0];
+  EXPECT_TRUE(coarse.coarse);
+  EXPECT_EQ(coarse.samplesPerPixel, 0);
+  EXPECT_EQ(coarse.width, (job.camera->width() + 3) / 4);
+  EXPECT_EQ(coarse.height, (job.camera->height() + 3) / 4);
+  EXPECT_FALSE(coarse.complete);
+  double coarseSum = 0;
+  for (float value : coarse.rgb) coarseSum += value;
+  EXPECT_GT(coarseSum, 0.0);  // it shows the scene, not black
+  for (std::size_t i = 1; i < seen.size(); ++i) {
+    EXPECT_FALSE(seen[i]->coarse);
+    EXPECT_EQ(seen[i]->width, job.camera->width());
+    EXPECT_EQ(seen[i]->samplesPerPixel, 1 << (i - 1));
+  }
+  EXPECT_TRUE(seen.back()->complete);
+  // The coarse pass changes nothing in the final image: it equals a job without one.
+  job.settings.coarseDivisor = 1;
+  EXPECT_EQ(renderToCompletion(job)->rgb, seen.back()->rgb);
 }
 
 }  // namespace
