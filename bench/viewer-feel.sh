@@ -4,7 +4,7 @@
 # the default scene, makes EDITS film-distance edits (each waits for its first pass), and prints
 # the viewer's own --stats-json figures.
 #
-#   bench/viewer-feel.sh [EDITS]      (default 20; needs build/lenslab and Xvfb)
+#   bench/viewer-feel.sh [EDITS]      (default 20; needs Xvfb and build/lenslab, or the binary named by $LENSLAB)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 edits=${1:-20}
@@ -20,6 +20,6 @@ trap 'rm -rf "$work"' EXIT
   done
   echo "quit"
 } > "$work/feel.script"
-tests/app/with-xvfb build/lenslab --size 1400x850 --script "$work/feel.script" \
+tests/app/with-xvfb ${LENSLAB:-build/lenslab} --size 1400x850 --script "$work/feel.script" \
   --stats-json "$work/stats.json"
 cat "$work/stats.json"

@@ -1,6 +1,7 @@
 #include "app/preview_controller.h"
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 #include "render/camera_factory.h"
@@ -49,13 +50,25 @@ void PreviewController::setScene(const LoadedScene& loaded) {
   ++sceneVersion_;
 }
 
+void PreviewController::setDisplayRegion(float widthPx, float heightPx) {
+  regionWidthPx_ = widthPx;
+  regionHeightPx_ = heightPx;
+}
+
 std::pair<int, int> PreviewController::previewSize(bool draft) const {
   if (!description_) return {0, 0};
   const int filmWidth = std::max(1, description_->film.xResolution);
   const int filmHeight = std::max(1, description_->film.yResolution);
-  const double scale =
-      std::min(1.0, static_cast<double>(kMaxPreviewExtent) / std::max(filmWidth, filmHeight)) *
-      (draft ? 0.5 : 1.0);
+  const int filmExtent = std::max(filmWidth, filmHeight);
+  // The longer side of the film fitted into the panel's region, in whole steps.
+  int extent = kDefaultExtentPx;
+  if (regionWidthPx_ >= 1.0f && regionHeightPx_ >= 1.0f) {
+    const double fit = std::min(regionWidthPx_ / filmWidth, regionHeightPx_ / filmHeight);
+    const int shown = static_cast<int>(std::ceil(fit * filmExtent));
+    extent = std::max(kExtentStepPx, (shown + kExtentStepPx - 1) / kExtentStepPx * kExtentStepPx);
+  }
+  extent = std::min({extent, kMaxPreviewExtent, filmExtent});
+  const double scale = static_cast<double>(extent) / filmExtent * (draft ? 0.5 : 1.0);
   return {std::max(1, static_cast<int>(filmWidth * scale)),
           std::max(1, static_cast<int>(filmHeight * scale))};
 }
@@ -79,11 +92,11 @@ render::RenderJob PreviewController::makeJob(int width, int height, int samplesP
 std::optional<std::uint64_t> PreviewController::update(
     const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft) {
   if (!description_ || !scene_ || !lens) return std::nullopt;
-  const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_};
+  const auto [width, height] = previewSize(draft);
+  const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_, width, height};
   if (submitted_ && *submitted_ == wanted) return std::nullopt;
   submitted_ = wanted;
   submittedLens_ = lens;
-  const auto [width, height] = previewSize(draft);
   render::RenderJob job = makeJob(width, height, kMaxPreviewSpp);
   job.settings.coarseDivisor = kCoarseDivisor;
   generation_ = renderer_.start(std::move(job));
@@ -93,7 +106,8 @@ std::optional<std::uint64_t> PreviewController::update(
 
 int PreviewController::currentSpp(const std::shared_ptr<const optics::LensSystem>& lens,
                                   bool pinhole) const {
-  const Submitted wanted{lens.get(), pinhole, false, sceneVersion_};
+  const auto [width, height] = previewSize(false);
+  const Submitted wanted{lens.get(), pinhole, false, sceneVersion_, width, height};
   if (!submitted_ || !(*submitted_ == wanted)) return 0;
   // What the preview shows (poll() ran before the frame was drawn), not what the renderer has
   // just published: a script that waits for 4 spp and takes a screenshot sees 4 spp. The coarse

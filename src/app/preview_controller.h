@@ -41,9 +41,13 @@ class PreviewController {
   // an empty event so that its loop, asleep until the next frame, shows it at once).
   explicit PreviewController(std::function<void()> wake = {});
 
-  // Preview images are at most this many pixels on their longer side; drafts (while dragging)
-  // half that.
-  static constexpr int kMaxPreviewExtent = 640;
+  // The preview renders at the size the panel shows it (at most the scene's film resolution,
+  // and at most this many pixels on the longer side), rounded up to a multiple of
+  // kExtentStepPx so that small panel resizes do not restart it; drafts (while dragging) at half
+  // that. Before the panel's size is known: kDefaultExtentPx.
+  static constexpr int kMaxPreviewExtent = 2048;
+  static constexpr int kExtentStepPx = 64;
+  static constexpr int kDefaultExtentPx = 640;
   // The coarse first look divides each side by this.
   static constexpr int kCoarseDivisor = 4;
   // The preview keeps refining to this many samples per pixel, then the workers rest.
@@ -62,6 +66,8 @@ class PreviewController {
   // when it does.
   std::optional<std::uint64_t> update(const std::shared_ptr<const optics::LensSystem>& lens,
                                       bool pinhole, bool draft);
+  // The room the panel has for the image, in framebuffer pixels (see PreviewState).
+  void setDisplayRegion(float widthPx, float heightPx);
   // Reads the newest snapshot into `preview` when there is a new one (re-encoding on an exposure
   // change; otherwise no work) and tells `stats` when the change's coarse image and its first
   // full pass appear.
@@ -78,6 +84,7 @@ class PreviewController {
   std::shared_ptr<const render::SceneDescription> description_;
   std::shared_ptr<const render::Scene> scene_;
   std::uint64_t sceneVersion_ = 0;
+  float regionWidthPx_ = 0, regionHeightPx_ = 0;
 
   // What the preview is being rendered for.
   struct Submitted {
@@ -85,6 +92,7 @@ class PreviewController {
     bool pinhole = false;
     bool draft = false;
     std::uint64_t sceneVersion = 0;
+    int width = 0, height = 0;
     bool operator==(const Submitted&) const = default;
   };
   // A job for the submitted lens and camera at this size.

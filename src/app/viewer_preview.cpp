@@ -15,6 +15,7 @@ std::optional<int> Viewer::previewSpp() const {
 }
 
 void Viewer::updatePreview() {
+  preview_.setDisplayRegion(state_.preview.regionWidthPx, state_.preview.regionHeightPx);
   if (const auto change =
           preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
     stats_.editSubmitted(*change, ViewerStats::Clock::now());

@@ -58,6 +58,9 @@ void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
   PreviewState& preview = state.preview;
+  const ImVec2 framebufferScale = ImGui::GetIO().DisplayFramebufferScale;
+  preview.regionWidthPx = std::max(0.0f, size.x) * framebufferScale.x;
+  preview.regionHeightPx = std::max(0.0f, size.y) * framebufferScale.y;
   if (size.x > 1 && size.y > 1) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
