@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 
 #include "app/canvas_clip.h"
 #include "app/cross_section_drawing.h"
@@ -105,11 +107,40 @@ void drawFanControls(ViewerState& state) {
   };
   legendRow.next(ImGui::CalcTextSize("field:").x);
   ImGui::TextDisabled("field:");
-  legend(palette::kFieldColours[0], "0");
-  legend(palette::kFieldColours[1], "0.7");
-  legend(palette::kFieldColours[2], "1.0");
+  // Each fan's fraction of the film's half diagonal, with its real field angle (or object
+  // height) when the fans are traced.
+  const std::vector<optics::RayFan>& traced = state.rayFans.fans;
+  bool beyondCoverage = false;
+  static constexpr const char* kFractions[] = {"0", "0.7", "1.0"};  // FanSpec's fields
+  for (std::size_t i = 0; i < std::size(kFractions); ++i) {
+    char text[48];
+    if (state.lensSystemIsCurrent && i < traced.size() && traced[i].fieldFraction > 0) {
+      const optics::RayFan& fan = traced[i];
+      beyondCoverage |= !fan.fieldReached;
+      if (fans.objectAtInfinity) {
+        std::snprintf(text, sizeof text, "%s (%.1f deg)", kFractions[i], fan.fieldAngleDeg);
+      } else {
+        std::snprintf(text, sizeof text, "%s (%.0f mm)", kFractions[i], fan.objectHeightMm);
+      }
+    } else {
+      std::snprintf(text, sizeof text, "%s", kFractions[i]);
+    }
+    legend(palette::kFieldColours[i], text);
+  }
   legend(palette::kChiefRay, "chief (dashed)");
   legend(palette::kMarginalRay, "marginal");
+  if (beyondCoverage) {
+    // A circular fisheye on a larger film: the lens does not reach the film's corner.
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "the film corner (%.1f mm) is beyond the lens's coverage: fans spread over its "
+                  "image circle (%.1f mm)",
+                  traced.back().requestedImageHeightMm, traced.back().imageHeightMm);
+    legendRow.next(ImGui::CalcTextSize(text).x);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", text);
+    ImGui::PopTextWrapPos();
+  }
   static constexpr const char* kHint = "wheel: zoom, drag: pan, drag film/stop edge: edit";
   legendRow.next(ImGui::CalcTextSize(kHint).x);
   ImGui::PushTextWrapPos(0.0f);  // wrap at the panel's right edge when even a line is too short
