@@ -73,9 +73,10 @@ TEST_P(CourseSceneQuick, RendersTheImageCircleOfTheCourses32SppRender) {
       compareImages(boxDownsample(*image, kBlock), boxDownsample(*reference32, kBlock));
   RecordProperty("brightness_ratio", std::to_string(brightness));
   RecordProperty("dark_mismatch", std::to_string(blocks.darkMismatchFraction));
-  std::printf("%s at %d spp against the course's 32 spp: brightness ratio %.4f, dark mismatch "
-              "(%dx%d blocks) %.4f\n",
-              lens.c_str(), kQuickSpp, brightness, kBlock, kBlock, blocks.darkMismatchFraction);
+  std::printf(
+      "%s at %d spp against the course's 32 spp: brightness ratio %.4f, dark mismatch "
+      "(%dx%d blocks) %.4f\n",
+      lens.c_str(), kQuickSpp, brightness, kBlock, kBlock, blocks.darkMismatchFraction);
   EXPECT_LE(blocks.darkMismatchFraction, 0.02);
   EXPECT_NEAR(brightness, 1.0, 0.10);
 }
