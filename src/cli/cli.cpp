@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <exception>
 #include <iostream>
 #include <string>
 
@@ -17,6 +18,7 @@ namespace lenslab::cli {
 namespace {
 
 constexpr int kUsageError = 2;
+constexpr int kInternalError = 1;
 
 struct ViewerArguments {
   std::string lensPath;
@@ -29,7 +31,8 @@ struct ViewerArguments {
 };
 
 void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
-  app.add_option("--lens", arguments.lensPath, "Lens file to open (.dat)")->check(CLI::ExistingFile);
+  app.add_option("--lens", arguments.lensPath, "Lens file to open (.dat)")
+      ->check(CLI::ExistingFile);
   app.add_option("--scene", arguments.scenePath, "Scene file to open (.pbrt)")
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", arguments.screenshotPath,
@@ -92,8 +95,17 @@ int run(int argc, char** argv) {
     std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
     return kUsageError;
   }
-  if (subcommand) return subcommand();
-  return runViewer(viewerArguments);
+  // Last resort: nothing a user passes may end in an uncaught exception (an abort, exit 134).
+  // Expected problems are reported where they arise; this names the unexpected ones.
+  try {
+    if (subcommand) return subcommand();
+    return runViewer(viewerArguments);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "lenslab: internal error: %s\n", error.what());
+  } catch (...) {
+    std::fprintf(stderr, "lenslab: internal error: an unknown exception\n");
+  }
+  return kInternalError;
 }
 
 }  // namespace lenslab::cli

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -55,7 +56,12 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("render", "Render a pbrt scene to an image, headless");
   arguments->command = command;
   command->add_option("scene", arguments->scenePath, "Scene file (.pbrt)")->required();
-  command->add_option("--lens", arguments->lensPath, "Lens file replacing the scene's (.dat)");
+  command->add_option("--lens", arguments->lensPath,
+                      "Lens file (.dat) to render through. It replaces a realistic camera's lens "
+                      "(keeping the scene's stop and focus). A perspective camera becomes a "
+                      "realistic one at the same place: this lens at its own stop, focused at the "
+                      "camera's \"focaldistance\" (default: infinity), with the Film's "
+                      "\"diagonal\" (default 35 mm)");
   command->add_option("--spp", arguments->samplesPerPixel, "Samples per pixel (default: scene's)")
       ->check(CLI::Range(1, 1 << 20));
   command->add_option("--resolution", arguments->resolution, "Image size WIDTHxHEIGHT");
@@ -76,9 +82,8 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
 
 void addRenderCommand(CLI::App& app, SubcommandRunner& run) {
   const std::shared_ptr<RenderArguments> arguments = registerRenderCommand(app);
-  arguments->command->callback([arguments, &run] {
-    run = [arguments] { return runRenderCommand(*arguments); };
-  });
+  arguments->command->callback(
+      [arguments, &run] { run = [arguments] { return runRenderCommand(*arguments); }; });
 }
 
 int runRenderCommand(const RenderArguments& arguments) {
@@ -102,8 +107,10 @@ int runRenderCommand(const RenderArguments& arguments) {
   const render::SceneDescription& description = *parsed.scene;
 
   std::string outPath = arguments.outPath;
-  if (outPath.empty()) outPath = description.film.filename.empty() ? "out.png" : description.film.filename;
-  const std::string extension = std::filesystem::path(outPath).extension().string();
+  if (outPath.empty())
+    outPath = description.film.filename.empty() ? "out.png" : description.film.filename;
+  std::string extension = std::filesystem::path(outPath).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".png" && extension != ".exr" && extension != ".pfm") {
     std::fprintf(stderr, "lenslab render: %s: unknown image format (use .png, .exr or .pfm)\n",
                  outPath.c_str());

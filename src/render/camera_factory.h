@@ -16,9 +16,14 @@ class LensSystem;
 
 namespace lenslab::render {
 
+// pbrt's perspective camera focuses this far away (scene units) unless told otherwise.
+inline constexpr double kPerspectiveDefaultFocalDistance = 1e6;
+
 struct CameraOverrides {
-  std::optional<std::filesystem::path> lensPath;  // replaces the scene's lens file
-  std::optional<int> width, height;               // replaces the film resolution
+  // Replaces the scene's lens file; for a perspective camera, puts this lens in place of the
+  // pinhole (see makeCamera).
+  std::optional<std::filesystem::path> lensPath;
+  std::optional<int> width, height;  // replaces the film resolution
 };
 
 // How a scene's camera is placed, whatever lens it looks through.
@@ -47,7 +52,10 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& 
                                                         const optics::LensSystem& lens, int width,
                                                         int height);
 
-// Null after reporting an error.
+// The scene's camera. With a lens override, a realistic camera uses that lens instead of its
+// own; a perspective camera becomes a realistic one with the same placement, the lens at its own
+// stop, focused at the perspective camera's "focaldistance" (default: infinity), with the
+// scene's Film "diagonal". Null after reporting an error.
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
                                          const CameraOverrides& overrides,
                                          Diagnostics& diagnostics);

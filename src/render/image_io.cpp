@@ -30,7 +30,8 @@ WriteResult writePngRgba8(const std::filesystem::path& path, int width, int heig
 std::filesystem::path nonClobberingPath(const std::filesystem::path& directory,
                                         const std::string& stem, const std::string& extension) {
   std::filesystem::path candidate = directory / (stem + extension);
-  for (int suffix = 2; std::filesystem::exists(candidate); ++suffix) {
+  std::error_code error;  // an unreadable directory ends the search: the name is then free enough
+  for (int suffix = 2; std::filesystem::exists(candidate, error); ++suffix) {
     candidate = directory / (stem + "-" + std::to_string(suffix) + extension);
   }
   return candidate;

@@ -40,9 +40,31 @@ bool checkMesh(MeshData& mesh, const SourceLocation& where, Diagnostics& diagnos
     kept.insert(kept.end(), {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]});
   }
   if (dropped > 0) {
-    diagnostics.warning(where, std::to_string(dropped) +
-                                   " zero-area triangle(s) in the mesh; they were dropped");
+    diagnostics.warning(
+        where, std::to_string(dropped) + " zero-area triangle(s) in the mesh; they were dropped");
     mesh.indices = std::move(kept);
+  }
+  auto finite = [](auto v) {
+    for (int i = 0; i < v.length(); ++i) {
+      if (!std::isfinite(v[i])) return false;
+    }
+    return true;
+  };
+  for (const glm::dvec3& n : mesh.normals) {
+    if (!finite(n) || glm::dot(n, n) == 0.0) {
+      diagnostics.warning(where,
+                          "mesh has a zero or non-finite normal; the mesh's normals are "
+                          "ignored (faceted shading is used)");
+      mesh.normals.clear();
+      break;
+    }
+  }
+  for (const glm::dvec2& uv : mesh.uvs) {
+    if (!finite(uv)) {
+      diagnostics.warning(where, "mesh has a non-finite uv; the mesh's uvs are ignored");
+      mesh.uvs.clear();
+      break;
+    }
   }
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) {
     diagnostics.warning(where, "mesh has a different number of normals than vertices; ignored");

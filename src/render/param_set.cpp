@@ -1,5 +1,8 @@
 #include "render/param_set.h"
 
+#include <cmath>
+#include <limits>
+
 namespace lenslab::render {
 
 void ParamSet::add(Param param) {
@@ -27,9 +30,47 @@ double ParamSet::getFloat(const std::string& name, double fallback) const {
   return item && !item->numbers.empty() ? item->numbers[0] : fallback;
 }
 
+namespace {
+
+bool isInt(double value) {
+  return std::isfinite(value) && value == std::trunc(value) &&
+         value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max();
+}
+
+std::string formatNumber(double value) {
+  std::string text = std::to_string(value);
+  if (text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
+}
+
+}  // namespace
+
 int ParamSet::getInt(const std::string& name, int fallback) const {
   const Param* item = find(name);
-  return item && !item->numbers.empty() ? static_cast<int>(item->numbers[0]) : fallback;
+  if (!item || item->numbers.empty() || !isInt(item->numbers[0])) return fallback;
+  return static_cast<int>(item->numbers[0]);
+}
+
+std::optional<int> ParamSet::getInt(const std::string& name, int fallback, int min, int max,
+                                    Diagnostics& diagnostics) const {
+  const Param* item = find(name);
+  if (!item || item->numbers.empty()) return fallback;
+  const double value = item->numbers[0];
+  const std::string what = "\"" + item->type + " " + item->name + "\"";
+  if (!isInt(value)) {
+    diagnostics.error(item->location,
+                      what + " must be a whole number, found " + formatNumber(value));
+    return std::nullopt;
+  }
+  if (value < min || value > max) {
+    diagnostics.error(item->location, what + " is " + formatNumber(value) + ", outside " +
+                                          std::to_string(min) + " to " + std::to_string(max));
+    return std::nullopt;
+  }
+  return static_cast<int>(value);
 }
 
 bool ParamSet::getBool(const std::string& name, bool fallback) const {
@@ -72,12 +113,21 @@ std::optional<std::string> ParamSet::getTextureName(const std::string& name) con
   return std::nullopt;
 }
 
-void ParamSet::warnUnused(Diagnostics& diagnostics, const std::string& what) const {
+void ParamSet::unsupported(const std::string& name, const std::string& instead) const {
   for (const Param& item : items_) {
-    if (!item.used) {
-      diagnostics.warning(item.location, "parameter \"" + item.type + " " + item.name +
-                                             "\" of " + what + " is not supported; ignored");
+    if (item.name == name) {
+      item.used = true;
+      item.substitute = instead;
     }
+  }
+}
+
+void ParamSet::reportUnused(Diagnostics& diagnostics) const {
+  for (const Param& item : items_) {
+    if (item.used && item.substitute.empty()) continue;
+    diagnostics.warning(item.location, "parameter \"" + item.type + " " + item.name + "\" of " +
+                                           owner + " is not supported; " +
+                                           (item.used ? item.substitute : "ignored"));
   }
 }
 

@@ -9,6 +9,8 @@
 #include <limits>
 #include <map>
 
+#include "render/unused_parameters.h"
+
 namespace lenslab::render {
 
 namespace {
@@ -140,6 +142,8 @@ class SceneBuilder {
       scene_->radius_ = std::max(1e-3f, 0.5f * glm::length(upper - lower));
     }
     buildLights();
+    // Everything that reads parameters has run (the camera's were read by the parser).
+    reportUnusedParameters(description_, diagnostics_);
     if (diagnostics_.hasErrors()) return nullptr;
     return scene_;
   }
@@ -181,10 +185,8 @@ class SceneBuilder {
       texture.vScale = static_cast<float>(params.getFloat("vscale", 1.0));
       texture.uDelta = static_cast<float>(params.getFloat("udelta", 0.0));
       texture.vDelta = static_cast<float>(params.getFloat("vdelta", 0.0));
-      const std::string mapping = params.getString("mapping", "uv");
-      if (mapping != "uv") {
-        diagnostics_.warning(description.location, "texture mapping \"" + mapping +
-                                                       "\" is not supported; uv mapping is used");
+      if (params.getString("mapping", "uv") != "uv") {
+        params.unsupported("mapping", "uv mapping is used");
       }
       if (description.className == "constant") {
         texture.value = toFloat(params.getTriple("value", glm::dvec3(1.0)));
@@ -194,10 +196,10 @@ class SceneBuilder {
         texture.second = textureParam(params, "tex2", glm::vec3(1.0f), description.location);
       } else if (description.className == "checkerboard") {
         texture.kind = TextureKind::Checkerboard;
-        if (params.getInt("dimension", 2) != 2) {
-          diagnostics_.warning(description.location,
-                               "3D checkerboard is not supported; the 2D one is used");
+        if (params.getFloat("dimension", 2.0) != 2.0) {
+          params.unsupported("dimension", "the 2D checkerboard is used");
         }
+        params.unsupported("aamode", "the checkerboard is point sampled (no antialiasing)");
         texture.first = textureParam(params, "tex1", glm::vec3(1.0f), description.location);
         texture.second = textureParam(params, "tex2", glm::vec3(0.0f), description.location);
       } else if (description.className == "imagemap") {
@@ -211,15 +213,22 @@ class SceneBuilder {
         texture.flipT = !description_.pbrtV2;
         texture.mipLevels = buildMipLevels(*texture.image);
         if (params.getBool("invert", false)) {
-          diagnostics_.warning(description.location, "imagemap \"invert\" is not supported");
+          params.unsupported("invert", "the image is used as it is");
         }
         const std::string wrap = params.getString("wrap", "repeat");
         texture.clampWrap = wrap == "clamp";
         texture.blackWrap = wrap == "black";
-        params.find("filename");
-        params.find("filtertype");
-        params.find("maxanisotropy");
-        params.find("trilinear");
+        if (wrap != "repeat" && wrap != "clamp" && wrap != "black") {
+          params.unsupported("wrap", "\"repeat\" is used");
+        }
+        // Lookups are trilinear (mip-mapped) where the image allows: pbrt-v3's trilinear true.
+        if (!params.getBool("trilinear", true)) {
+          params.unsupported("trilinear", "trilinear filtering is used instead of EWA");
+        }
+        params.unsupported("maxanisotropy", "isotropic trilinear filtering is used");
+        if (params.getString("filter", "trilinear") != "trilinear") {
+          params.unsupported("filter", "trilinear filtering is used");
+        }
       }
       textureIndex_[description.name] = scene_->textures_.add(std::move(texture));
     }
@@ -235,8 +244,7 @@ class SceneBuilder {
         material.kind = MaterialKind::Matte;
         material.kd = textureParam(params, "Kd", glm::vec3(0.5f), at);
         if (params.getFloat("sigma", 0.0) != 0.0) {
-          diagnostics_.warning(at, "matte \"sigma\" (Oren-Nayar) is not supported; Lambertian "
-                                   "reflection is used");
+          params.unsupported("sigma", "Lambertian reflection is used (no Oren-Nayar roughness)");
         }
       } else if (description.type == "plastic") {
         material.kind = MaterialKind::Plastic;
@@ -252,22 +260,35 @@ class SceneBuilder {
         material.kr = textureParam(params, "Kr", glm::vec3(1.0f), at);
         material.kt = textureParam(params, "Kt", glm::vec3(1.0f), at);
         material.eta = static_cast<float>(params.getFloat("index", params.getFloat("eta", 1.5)));
-        if (params.getFloat("roughness", 0.0) != 0.0 || params.getFloat("uroughness", 0.0) != 0.0) {
-          diagnostics_.warning(at, "rough glass is not supported; smooth glass is used");
+        for (const char* rough : {"roughness", "uroughness", "vroughness"}) {
+          if (params.getFloat(rough, 0.0) != 0.0) {
+            params.unsupported(rough, "smooth glass is used");
+          }
         }
+        params.find("remaproughness");
       } else if (description.type == "metal") {
         material.kind = MaterialKind::Metal;
-        if (const auto eta = params.getTriple("eta")) material.metalEta = toFloat(*eta);
-        if (const auto k = params.getTriple("k")) material.metalK = toFloat(*k);
+        for (const char* name : {"eta", "k"}) {
+          const auto value = params.getTriple(name);
+          if (value) (name[0] == 'e' ? material.metalEta : material.metalK) = toFloat(*value);
+          if (params.getTextureName(name)) {
+            params.unsupported(name,
+                               "textures are not supported here; the default (copper) is "
+                               "used");
+          }
+        }
         const char* roughnessName = params.find("roughness") ? "roughness" : "uroughness";
         material.roughness = textureParam(params, roughnessName, glm::vec3(0.01f), at);
-        params.find("vroughness");
+        if (roughnessName[0] == 'u' && params.find("vroughness") &&
+            params.getFloat("vroughness", 0.01) != params.getFloat("uroughness", 0.01)) {
+          params.unsupported("vroughness", "isotropic roughness (uroughness) is used");
+        }
         material.remapRoughness = params.getBool("remaproughness", true);
       } else {
         material.kind = MaterialKind::None;  // "none" / "": an interface that only passes light
       }
       params.find("type");
-      params.find("bumpmap");
+      params.unsupported("bumpmap", "the surface is shaded without bump mapping");
       material.usesUv = materialUsesUv(material, scene_->textures_);
       scene_->materials_.push_back(material);
     }
@@ -306,12 +327,6 @@ class SceneBuilder {
           rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                   3 * sizeof(unsigned), record.indices.size() / 3));
       std::copy(record.indices.begin(), record.indices.end(), indices);
-      params.find("P");
-      params.find("indices");
-      params.find("N");
-      params.find("uv");
-      params.find("st");
-      params.find("filename");
     } else {
       record.kind = GeometryRecord::Kind::Quadric;
       Quadric& q = record.quadric.quadric;
@@ -346,7 +361,6 @@ class SceneBuilder {
       geometry = rtcNewGeometry(scene_->device_, RTC_GEOMETRY_TYPE_USER);
       rtcSetGeometryUserPrimitiveCount(geometry, 1);
     }
-    params.warnUnused(diagnostics_, "Shape \"" + shape.type + "\"");
 
     if (shape.areaLight && allowEmission) record.light = addAreaLight(shape, record);
     records.push_back(std::move(record));
@@ -418,6 +432,19 @@ class SceneBuilder {
     return static_cast<int>(scene_->lights_.size()) - 1;
   }
 
+  // The unit world direction of `from - to` in light space, or nothing (with a warning) when
+  // from and to coincide.
+  std::optional<glm::vec3> lightDirection(const LightDescription& description, glm::dvec3 vector) {
+    const glm::dvec3 world = glm::dvec3(description.worldFromLight * glm::dvec4(vector, 0.0));
+    if (!(glm::length(world) > 0.0)) {
+      diagnostics_.warning(description.location, "light \"" + description.type +
+                                                     "\" has \"from\" equal to \"to\" (no "
+                                                     "direction); the light is left out");
+      return std::nullopt;
+    }
+    return toFloat(glm::normalize(world));
+  }
+
   void buildLights() {
     for (const LightDescription& description : description_.lights) {
       const ParamSet& params = description.params;
@@ -431,7 +458,9 @@ class SceneBuilder {
         light.position = toFloat(glm::dvec3(m * glm::dvec4(from, 1.0)));
         if (light.kind == LightKind::Spot) {
           const glm::dvec3 to = params.getTriple("to", glm::dvec3(0.0, 0.0, 1.0));
-          light.direction = toFloat(glm::normalize(glm::dvec3(m * glm::dvec4(to - from, 0.0))));
+          const auto direction = lightDirection(description, to - from);
+          if (!direction) continue;
+          light.direction = *direction;
           const double cone = params.getFloat("coneangle", 30.0);
           const double delta = params.getFloat("conedelta", 5.0);
           light.cosTotalWidth = static_cast<float>(std::cos(glm::radians(cone)));
@@ -442,11 +471,18 @@ class SceneBuilder {
         light.intensity = toFloat(params.getTriple("L", glm::dvec3(1.0)) * scale);
         const glm::dvec3 from = params.getTriple("from", glm::dvec3(0.0));
         const glm::dvec3 to = params.getTriple("to", glm::dvec3(0.0, 0.0, 1.0));
-        light.direction = toFloat(glm::normalize(glm::dvec3(m * glm::dvec4(from - to, 0.0))));
+        const auto direction = lightDirection(description, from - to);
+        if (!direction) continue;
+        light.direction = *direction;
       } else {
         light.kind = LightKind::Infinite;
         light.intensity = toFloat(params.getTriple("L", glm::dvec3(1.0)) * scale);
-        light.samples = std::max(1, params.getInt("nsamples", params.getInt("samples", 1)));
+        constexpr int kMaxSamples = 4096;
+        const auto v2Samples = params.getInt("samples", 1, 1, kMaxSamples, diagnostics_);
+        const auto samples =
+            params.getInt("nsamples", v2Samples.value_or(1), 1, kMaxSamples, diagnostics_);
+        if (!samples || !v2Samples) continue;
+        light.samples = *samples;
         light.lightFromWorld = glm::mat3(glm::inverse(glm::dmat3(m)));
         if (!description.mapPath.empty()) {
           params.find("mapname");
@@ -456,7 +492,6 @@ class SceneBuilder {
         }
         scene_->infiniteLights_.push_back(static_cast<int>(scene_->lights_.size()));
       }
-      params.warnUnused(diagnostics_, "LightSource \"" + description.type + "\"");
       scene_->lights_.push_back(std::move(light));
     }
   }

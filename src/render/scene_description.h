@@ -17,6 +17,7 @@ namespace lenslab::render {
 
 struct CameraDescription {
   std::string type = "perspective";
+  // As written; the parser reads it into the fields below (kept for the unused-parameter report).
   ParamSet params;
   // pbrt's camera transform: the CTM when the Camera directive was read (world -> camera).
   glm::dmat4 cameraFromWorld{1.0};
@@ -26,6 +27,18 @@ struct CameraDescription {
   std::filesystem::path lensPath;
   // true for the course's pbrt-v2 parameters (specfile ...): its camera space is in mm.
   bool courseParameters = false;
+
+  // "perspective": full field of view across the shorter image side, thin-lens radius and focal
+  // distance in scene units (no focal distance given: focused at infinity).
+  double fovDegrees = 90.0;
+  double lensRadius = 0.0;
+  std::optional<double> focalDistance;
+  // "realistic": the stop diameter (0: the lens file's own), the course camera's film distance
+  // and film diagonal, pbrt-v3's focus distance in scene units.
+  double apertureDiameterMm = 0.0;
+  double filmDistanceMm = 0.0;
+  std::optional<double> filmDiagonalMm;
+  double focusDistance = 10.0;
 };
 
 struct FilmDescription {
@@ -116,6 +129,9 @@ struct SceneDescription {
   std::vector<LightDescription> lights;
   std::vector<ObjectDescription> objects;
   std::vector<InstanceDescription> instances;
+  // The parameters of directives the parser applies itself (Film, Sampler, Integrator,
+  // PixelFilter, AreaLightSource), kept for the unused-parameter report.
+  std::vector<ParamSet> parsedParams;
 };
 
 }  // namespace lenslab::render

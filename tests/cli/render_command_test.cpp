@@ -30,11 +30,13 @@ class RenderCommand : public ::testing::Test {
 };
 
 TEST_F(RenderCommand, WritesTheImageAndTheStatistics) {
-  const auto result = testing::runProcess(
-      lenslab("render '" + (scratch / "scene.pbrt").string() + "' --spp 4 --resolution 40x30 "
-              "--threads 2 --seed 3 --integrator path --out '" + (scratch / "out.png").string() +
-              "' --stats-json '" + (scratch / "stats.json").string() + "'"),
-      scratch);
+  const auto result =
+      testing::runProcess(lenslab("render '" + (scratch / "scene.pbrt").string() +
+                                  "' --spp 4 --resolution 40x30 "
+                                  "--threads 2 --seed 3 --integrator path --out '" +
+                                  (scratch / "out.png").string() + "' --stats-json '" +
+                                  (scratch / "stats.json").string() + "'"),
+                          scratch);
   ASSERT_EQ(result.exitCode, 0) << result.err;
   int width = 0, height = 0, channels = 0;
   stbi_uc* pixels = stbi_load((scratch / "out.png").c_str(), &width, &height, &channels, 4);
@@ -57,10 +59,10 @@ TEST_F(RenderCommand, WritesTheImageAndTheStatistics) {
 
 TEST_F(RenderCommand, FormatFollowsTheExtension) {
   for (const char* name : {"out.exr", "out.pfm"}) {
-    const auto result = testing::runProcess(
-        lenslab("render '" + (scratch / "scene.pbrt").string() + "' --spp 1 --out '" +
-                (scratch / name).string() + "'"),
-        scratch);
+    const auto result =
+        testing::runProcess(lenslab("render '" + (scratch / "scene.pbrt").string() +
+                                    "' --spp 1 --out '" + (scratch / name).string() + "'"),
+                            scratch);
     ASSERT_EQ(result.exitCode, 0) << result.err;
     const std::string bytes = testing::readWholeFile(scratch / name);
     if (std::string(name) == "out.exr") {
@@ -73,23 +75,23 @@ TEST_F(RenderCommand, FormatFollowsTheExtension) {
 
 TEST_F(RenderCommand, SceneErrorsExitNonZeroAndWriteNothing) {
   std::ofstream(scratch / "bad.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [1\n";
-  const auto result = testing::runProcess(
-      lenslab("render '" + (scratch / "bad.pbrt").string() + "' --out '" +
-              (scratch / "bad.png").string() + "'"),
-      scratch);
+  const auto result =
+      testing::runProcess(lenslab("render '" + (scratch / "bad.pbrt").string() + "' --out '" +
+                                  (scratch / "bad.png").string() + "'"),
+                          scratch);
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_NE(result.err.find("bad.pbrt:"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(scratch / "bad.png"));
 
-  const auto missing = testing::runProcess(
-      lenslab("render '" + (scratch / "nope.pbrt").string() + "'"), scratch);
+  const auto missing =
+      testing::runProcess(lenslab("render '" + (scratch / "nope.pbrt").string() + "'"), scratch);
   EXPECT_NE(missing.exitCode, 0);
   EXPECT_NE(missing.err.find("nope.pbrt"), std::string::npos);
 
-  const auto extension = testing::runProcess(
-      lenslab("render '" + (scratch / "scene.pbrt").string() + "' --out '" +
-              (scratch / "x.bmp").string() + "'"),
-      scratch);
+  const auto extension =
+      testing::runProcess(lenslab("render '" + (scratch / "scene.pbrt").string() + "' --out '" +
+                                  (scratch / "x.bmp").string() + "'"),
+                          scratch);
   EXPECT_EQ(extension.exitCode, 2);
   EXPECT_FALSE(std::filesystem::exists(scratch / "x.bmp"));
 }
@@ -102,12 +104,87 @@ TEST_F(RenderCommand, LensOptionReplacesTheCamerasLens) {
          "\"float aperturediameter\" [5] \"float focusdistance\" [4]\n"
          "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16]\n"
          "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\nWorldEnd\n";
-  const auto withoutLens = testing::runProcess(
-      lenslab("render '" + (scratch / "real.pbrt").string() + "' --out '" +
-              (scratch / "a.png").string() + "'"),
-      scratch);
+  const auto withoutLens =
+      testing::runProcess(lenslab("render '" + (scratch / "real.pbrt").string() + "' --out '" +
+                                  (scratch / "a.png").string() + "'"),
+                          scratch);
   EXPECT_NE(withoutLens.exitCode, 0);
   EXPECT_NE(withoutLens.err.find("nope.dat"), std::string::npos) << withoutLens.err;
+}
+
+TEST_F(RenderCommand, LensOptionPutsTheLensInPlaceOfAPinhole) {
+  // A perspective scene with --lens is seen through the lens (documented in --help), not
+  // silently rendered through the pinhole.
+  std::ofstream(scratch / "lens.dat")
+      << "# a thick single lens\n50 5 1.5 20\n0 5 0 10\n-50 40 1 20\n";
+  const auto result = testing::runProcess(
+      lenslab("render '" + (scratch / "scene.pbrt").string() + "' --spp 4 --lens '" +
+              (scratch / "lens.dat").string() + "' --out '" + (scratch / "lens.png").string() +
+              "' --stats-json '" + (scratch / "lens.json").string() + "'"),
+      scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto stats = nlohmann::json::parse(testing::readWholeFile(scratch / "lens.json"));
+  // A pinhole passes every camera ray; a real lens's stop and rims do not.
+  EXPECT_LT(stats["lens_pass_fraction"].get<double>(), 0.99);
+  EXPECT_GT(stats["lens_pass_fraction"].get<double>(), 0.0);
+
+  const auto missing = testing::runProcess(
+      lenslab("render '" + (scratch / "scene.pbrt").string() + "' --lens '" +
+              (scratch / "nope.dat").string() + "' --out '" + (scratch / "n.png").string() + "'"),
+      scratch);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("nope.dat"), std::string::npos) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch / "n.png"));
+
+  const auto help = testing::runProcess(lenslab("render --help"), scratch);
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("A perspective camera becomes a realistic one"), std::string::npos)
+      << help.out;
+}
+
+TEST_F(RenderCommand, UpperCaseExtensionsAreAccepted) {
+  const auto result =
+      testing::runProcess(lenslab("render '" + (scratch / "scene.pbrt").string() +
+                                  "' --spp 1 --out '" + (scratch / "a.PNG").string() + "'"),
+                          scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(testing::readWholeFile(scratch / "a.PNG").substr(1, 3), "PNG");
+}
+
+TEST_F(RenderCommand, BadInputNeverCrashes) {
+  // Each used to abort: a zero view direction reached Embree (exit 134), a 300-character name
+  // threw filesystem_error.
+  const std::string longName(300, 'n');
+  struct Case {
+    const char* name;
+    std::string scene;
+    std::string message;
+  };
+  const Case cases[] = {
+      {"lookat", "LookAt 0 0 0 0 0 0 0 1 0\nCamera \"perspective\"\nWorldBegin\nWorldEnd\n",
+       "lookat.pbrt:1:1: error: LookAt: the eye and the target are the same point"},
+      {"scale", "Scale 0 0 0\nCamera \"perspective\"\nWorldBegin\nWorldEnd\n",
+       "scale.pbrt:2:1: error: the camera transform is singular"},
+      {"include", "WorldBegin\nInclude \"" + longName + "\"\nWorldEnd\n",
+       "include.pbrt:2:9: error: cannot open included file"},
+  };
+  for (const Case& bad : cases) {
+    const auto path = scratch / (std::string(bad.name) + ".pbrt");
+    std::ofstream(path) << bad.scene;
+    const auto result = testing::runProcess(
+        lenslab("render '" + path.string() + "' --out '" + (scratch / "bad.png").string() + "'"),
+        scratch);
+    EXPECT_EQ(result.exitCode, 1) << bad.name << "\n" << result.err;
+    EXPECT_NE(result.err.find(bad.message), std::string::npos) << result.err;
+    EXPECT_FALSE(std::filesystem::exists(scratch / "bad.png"));
+  }
+  // A long output name is an error message too.
+  const auto out = testing::runProcess(
+      lenslab("render '" + (scratch / "scene.pbrt").string() + "' --spp 1 --out '" +
+              (scratch / (longName + ".png")).string() + "'"),
+      scratch);
+  EXPECT_EQ(out.exitCode, 1) << out.err;
+  EXPECT_NE(out.err.find("File name too long"), std::string::npos) << out.err;
 }
 
 }  // namespace
