@@ -1,5 +1,6 @@
 #include "optics/focus.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -14,12 +15,16 @@ namespace {
 constexpr int kZones = 8;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A ray from the axial object through the front-vertex plane at height y.
+// A ray from the axial object through the front-vertex plane at height y. It starts on the ray
+// just in front of the lens, not at the object: from an object 1e9 mm away, every hit point
+// would lose about 1e-7 mm to the cancellation in z, enough to move the focus of a distant
+// object by micrometres (and far more beyond that).
 LensRay launch(const LensSystem& lens, double objectFromFront, double y) {
   const double zFront = lens.frontVertexZ();
   if (std::isinf(objectFromFront)) return {{y, 0.0, zFront + 1.0}, {0.0, 0.0, -1.0}};
-  const glm::dvec3 origin{0.0, 0.0, zFront + objectFromFront};
-  return {origin, glm::normalize(glm::dvec3{y, 0.0, zFront} - origin)};
+  const double ahead = std::min(1.0, 0.5 * objectFromFront);  // start this far before the vertex
+  return {{y * (1.0 - ahead / objectFromFront), 0.0, zFront + ahead},
+          glm::normalize(glm::dvec3{y / objectFromFront, 0.0, -1.0})};
 }
 
 // Height at the stop plane of that ray, ignoring clear apertures (only aiming); nullopt when it

@@ -79,6 +79,30 @@ TEST(Focus, FilmAndObjectDistanceInvertEachOther) {
   }
 }
 
+// Distant objects: the film distance falls steadily toward the infinity focus, as Newton's
+// x x' = f^2 says (x' = f^2 / x beyond it), however far the object is. Rays launched from the
+// object itself lost micrometres to rounding at 1e8 mm and failed outright at 1e12 mm.
+TEST(Focus, DistantObjectsApproachTheInfinityFocusSmoothly) {
+  for (const auto& course : testing::kCourseLenses) {
+    const auto lens =
+        testing::loadLens(testing::referenceLensDir() / course.file, course.filmDistanceMm);
+    ASSERT_TRUE(lens);
+    const auto atInfinity = filmDistanceForObjectDistance(*lens, kInf);
+    ASSERT_TRUE(atInfinity.ok()) << course.file;
+    const double f = lens->firstOrder().eflMm;
+    double previous = kInf;
+    for (double d = 1e5; d <= 1e16; d *= 10.0) {
+      const auto film = filmDistanceForObjectDistance(*lens, d);
+      ASSERT_TRUE(film.ok()) << course.file << " at " << d << " mm: " << film.whyNot;
+      EXPECT_LE(*film.valueMm, previous) << course.file << " at " << d << " mm";
+      previous = *film.valueMm;
+      const double newton = f * f / d;  // beyond the infinity focus, to first order in f / d
+      EXPECT_NEAR(*film.valueMm - *atInfinity.valueMm, newton, 0.05 * newton + 1e-7)
+          << course.file << " at " << d << " mm";
+    }
+  }
+}
+
 TEST(Focus, CourseSceneFilmDistanceFocusesNearTheScene) {
   // The course's double-Gauss scene puts the film 36.77 mm behind the rear vertex, about 0.6 mm
   // behind the infinity focus: by Newton's x x' = f^2, an object some 4 m away.
