@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <vector>
 
 #include "render/material.h"
 #include "render/sampling.h"
@@ -44,62 +45,96 @@ glm::vec3 escapedRadiance(const Scene& scene, glm::vec3 direction) {
   return sum;
 }
 
-// One light's direct contribution at a hit, from one light sample and (for non-delta lights)
-// one BSDF sample combined with the power heuristic (pbrt-v2's EstimateDirect).
-glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
-                         int lightIndex, glm::vec2 uLight, float uLobe, glm::vec2 uBsdf,
-                         bool sampleBsdf, float selectionProbability = 1.0f) {
+// A direct-lighting term that counts only if its shadow ray is unblocked.
+struct ShadowedTerm {
+  ShadowRay ray;
+  glm::vec3 value{0.0f};
+};
+
+// One light's direct-lighting terms at a hit, from one light sample and (for non-delta lights
+// when `sampleBsdf`) one BSDF sample, combined with the power heuristic (pbrt-v2's
+// EstimateDirect). Terms that need a shadow ray go to `shadowed`; a term decided without one (a
+// BSDF sample that found a mesh emitter by a full intersection) is added to `decided`.
+void directTerms(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
+                 int lightIndex, glm::vec2 uLight, float uLobe, glm::vec2 uBsdf, bool sampleBsdf,
+                 float selectionProbability, std::vector<ShadowedTerm>& shadowed,
+                 glm::vec3& decided) {
   const Light& light = scene.lights()[static_cast<std::size_t>(lightIndex)];
-  glm::vec3 result(0.0f);
   LightSample ls;
   if (sampleLight(light, hit.point, uLight, scene.radius(), ls) && !isBlack(ls.radiance)) {
     float bsdfPdf = 0.0f;
     const glm::vec3 f = bsdf.evaluate(wo, ls.wi, bsdfPdf);
-    if (!isBlack(f)) {
-      const glm::vec3 origin = offsetOrigin(hit, ls.wi);
+    const float lightPdf = ls.pdf * selectionProbability;
+    if (!isBlack(f) && lightPdf > 0.0f) {
+      const float weight = light.isDelta() ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
       const float distance = std::isinf(ls.distance) ? kInfinity : ls.distance * (1.0f - 1e-4f);
-      if (!scene.occluded(origin, ls.wi, distance)) {
-        const float lightPdf = ls.pdf * selectionProbability;
-        const float weight = light.isDelta() ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
-        result +=
-            f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf;
-      }
+      shadowed.push_back(
+          {{offsetOrigin(hit, ls.wi), ls.wi, distance},
+           f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf});
     }
   }
-  if (!sampleBsdf || light.isDelta()) return result;
+  if (!sampleBsdf || light.isDelta()) return;
   BsdfSample bs;
-  if (!bsdf.sample(wo, uLobe, uBsdf, bs) || bs.specular) return result;
+  if (!bsdf.sample(wo, uLobe, uBsdf, bs) || bs.specular) return;
   const glm::vec3 origin = offsetOrigin(hit, bs.wi);
-  glm::vec3 radiance(0.0f);
-  float lightPdf = 0.0f;
   if (light.kind == LightKind::Area) {
     // The sample counts only if the first thing it meets is this light. Most BSDF samples miss
-    // a small emitter: for a quadric, testing it alone first skips the scene query for those.
-    glm::vec3 lightPoint, lightNormal;
+    // a small emitter: for a quadric, testing it alone first skips the scene query for those,
+    // and a hit needs only a shadow ray up to it.
+    glm::vec3 lightNormal;
     float t = 0.0f;
     if (light.emitter->isQuadric) {
-      if (!light.emitter->intersectQuadric(origin, bs.wi, t, lightNormal) ||
-          scene.occluded(origin, bs.wi, t * (1.0f - 1e-4f))) {
-        return result;
-      }
-      lightPoint = origin + t * bs.wi;
-    } else {
-      SurfaceHit lightHit;
-      if (!scene.intersect(origin, bs.wi, kInfinity, lightHit) || lightHit.light != lightIndex) {
-        return result;
-      }
-      lightPoint = lightHit.point;
-      lightNormal = lightHit.geometricNormal;
+      if (!light.emitter->intersectQuadric(origin, bs.wi, t, lightNormal)) return;
+      const float lightPdf = areaPdf(light, hit.point, origin + t * bs.wi, lightNormal);
+      if (lightPdf <= 0.0f) return;
+      const glm::vec3 value =
+          bs.weight * areaRadiance(light, lightNormal, -bs.wi) * powerHeuristic(bs.pdf, lightPdf);
+      if (!isBlack(value)) shadowed.push_back({{origin, bs.wi, t * (1.0f - 1e-4f)}, value});
+      return;
     }
-    radiance = areaRadiance(light, lightNormal, -bs.wi);
-    lightPdf = areaPdf(light, hit.point, lightPoint, lightNormal);
-  } else {  // infinite
-    if (scene.occluded(origin, bs.wi, kInfinity)) return result;
-    radiance = infiniteRadiance(light, bs.wi);
-    lightPdf = infinitePdf(light);
+    SurfaceHit lightHit;
+    if (!scene.intersect(origin, bs.wi, kInfinity, lightHit) || lightHit.light != lightIndex) {
+      return;
+    }
+    const float lightPdf = areaPdf(light, hit.point, lightHit.point, lightHit.geometricNormal);
+    if (lightPdf <= 0.0f) return;
+    decided += bs.weight * areaRadiance(light, lightHit.geometricNormal, -bs.wi) *
+               powerHeuristic(bs.pdf, lightPdf);
+    return;
   }
-  if (lightPdf <= 0.0f) return result;
-  return result + bs.weight * radiance * powerHeuristic(bs.pdf, lightPdf);
+  // Infinite light: whatever the ray escapes to.
+  const float lightPdf = infinitePdf(light);
+  if (lightPdf <= 0.0f) return;
+  const glm::vec3 value =
+      bs.weight * infiniteRadiance(light, bs.wi) * powerHeuristic(bs.pdf, lightPdf);
+  if (!isBlack(value)) shadowed.push_back({{origin, bs.wi, kInfinity}, value});
+}
+
+// The sum of the terms whose shadow rays are unblocked (traced together), and clears `terms`.
+glm::vec3 resolveShadowed(const Scene& scene, std::vector<ShadowedTerm>& terms) {
+  thread_local std::vector<ShadowRay> rays;
+  thread_local std::vector<std::uint8_t> blocked;
+  rays.clear();
+  for (const ShadowedTerm& term : terms) rays.push_back(term.ray);
+  blocked.resize(rays.size());
+  scene.occluded(rays.data(), rays.size(), blocked.data());
+  glm::vec3 sum(0.0f);
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    if (!blocked[i]) sum += terms[i].value;
+  }
+  terms.clear();
+  return sum;
+}
+
+// One light's direct contribution at a hit (light sample and, optionally, BSDF sample).
+glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
+                         int lightIndex, glm::vec2 uLight, float uLobe, glm::vec2 uBsdf,
+                         bool sampleBsdf, float selectionProbability) {
+  thread_local std::vector<ShadowedTerm> terms;
+  glm::vec3 decided(0.0f);
+  directTerms(scene, hit, bsdf, wo, lightIndex, uLight, uLobe, uBsdf, sampleBsdf,
+              selectionProbability, terms, decided);
+  return decided + resolveShadowed(scene, terms);
 }
 
 glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
@@ -120,7 +155,9 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
     const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal,
                     footprint);
     if (!bsdf.isSpecular()) {
-      // pbrt-v2's default strategy: every light, with its own number of samples.
+      // pbrt-v2's default strategy: every light, with its own number of samples. All the
+      // shadow rays of one light go to the scene together.
+      thread_local std::vector<ShadowedTerm> terms;
       const auto& lights = scene.lights();
       for (std::size_t l = 0; l < lights.size(); ++l) {
         const int count = lights[l].samples;
@@ -128,9 +165,10 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
         for (int s = 0; s < count; ++s) {
           const glm::vec2 uLight = sampler.next2D();
           const glm::vec2 uBsdf = sampler.next2D();
-          sum += estimateDirect(scene, hit, bsdf, wo, static_cast<int>(l), uLight, uBsdf.x,
-                                sampler.next2D(), true);
+          directTerms(scene, hit, bsdf, wo, static_cast<int>(l), uLight, uBsdf.x, sampler.next2D(),
+                      true, 1.0f, terms, sum);
         }
+        sum += resolveShadowed(scene, terms);
         radiance += throughput * sum / static_cast<float>(count);
       }
       break;

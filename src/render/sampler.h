@@ -86,6 +86,26 @@ inline std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
   return x;
 }
 
+// SplitMix64's output function (G. Steele, D. Lea and C. Flood, "Fast Splittable Pseudorandom
+// Number Generators", OOPSLA 2014; constants by S. Vigna): 64 well-mixed bits from one call.
+inline std::uint64_t splitMix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// The three scrambling seeds of one dimension pair of one pixel: the index shuffle's and the
+// two dimensions', as three 32-bit windows of one 64-bit hash.
+struct PairSeeds {
+  std::uint32_t shuffle, x, y;
+};
+inline PairSeeds pairSeeds(std::uint32_t pixelSeed, std::uint32_t pair) {
+  const std::uint64_t h = splitMix64((static_cast<std::uint64_t>(pixelSeed) << 32) | pair);
+  return {static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h >> 32),
+          static_cast<std::uint32_t>(h >> 16)};
+}
+
 inline float toUnitFloat(std::uint32_t bits) {
   // 24 bits so that the result is strictly below 1 in float.
   return static_cast<float>(bits >> 8) * 0x1p-24f;
@@ -104,14 +124,13 @@ class PixelSampler {
   // reversal folded into a value that is already reversed: three reversals per pair, not five.
   glm::vec2 next2D() {
     using namespace sampler_detail;
-    const std::uint32_t pairSeed = hashCombine(pixelSeed_, dimensionPair_++);
+    const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
     // The sample index, Owen-shuffled per pixel and dimension pair.
-    const std::uint32_t index = reverseBits(laineKarras(reversedSampleIndex_, pairSeed));
+    const std::uint32_t index = reverseBits(laineKarras(reversedSampleIndex_, seeds.shuffle));
     // First Sobol dimension: reverseBits(index), so its scramble is
     // reverseBits(laineKarras(index)).
-    const std::uint32_t x = reverseBits(laineKarras(index, hashCombine(pairSeed, 1u)));
-    const std::uint32_t y =
-        reverseBits(laineKarras(sobolSecondReversed(index), hashCombine(pairSeed, 2u)));
+    const std::uint32_t x = reverseBits(laineKarras(index, seeds.x));
+    const std::uint32_t y = reverseBits(laineKarras(sobolSecondReversed(index), seeds.y));
     return {toUnitFloat(x), toUnitFloat(y)};
   }
   float next1D() { return next2D().x; }

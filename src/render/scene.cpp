@@ -1,5 +1,6 @@
 #include "render/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -16,8 +17,7 @@ Scene::~Scene() {
 
 namespace {
 
-void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit,
-                           SurfaceHit& hit) {
+void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit, SurfaceHit& hit) {
   hit.material = record.material;
   hit.light = record.light;
   if (record.kind == GeometryRecord::Kind::Mesh) {
@@ -28,8 +28,8 @@ void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit
     const float b1 = embreeHit.u, b2 = embreeHit.v, b0 = 1.0f - b1 - b2;
     glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
     if (!record.normals.empty()) {
-      glm::vec3 ns = b0 * record.normals[tri[0]] + b1 * record.normals[tri[1]] +
-                     b2 * record.normals[tri[2]];
+      glm::vec3 ns =
+          b0 * record.normals[tri[0]] + b1 * record.normals[tri[1]] + b2 * record.normals[tri[2]];
       const float length = glm::length(ns);
       ns = length > 0.0f ? ns / length : n;
       // pbrt orients the geometric normal by the shading normal when a mesh has normals.
@@ -104,6 +104,44 @@ bool Scene::intersect(glm::vec3 origin, glm::vec3 direction, float tMax, Surface
     hit.light = -1;  // emitters inside instances are not lights (a warning said so)
   }
   return true;
+}
+
+void Scene::occluded(const ShadowRay* rays, std::size_t count, std::uint8_t* blocked) const {
+  if (!packets8_) {
+    for (std::size_t i = 0; i < count; ++i) {
+      blocked[i] = occluded(rays[i].origin, rays[i].direction, rays[i].tMax) ? 1 : 0;
+    }
+    return;
+  }
+  for (std::size_t first = 0; first < count; first += 8) {
+    const std::size_t n = std::min<std::size_t>(8, count - first);
+    if (n == 1) {  // a lone ray: the packet's set-up would cost more than it saves
+      blocked[first] = occluded(rays[first].origin, rays[first].direction, rays[first].tMax);
+      continue;
+    }
+    alignas(32) int valid[8];
+    alignas(32) RTCRay8 packet;
+    for (std::size_t k = 0; k < 8; ++k) {
+      const ShadowRay& ray = rays[first + std::min(k, n - 1)];
+      valid[k] = k < n ? -1 : 0;
+      packet.org_x[k] = ray.origin.x;
+      packet.org_y[k] = ray.origin.y;
+      packet.org_z[k] = ray.origin.z;
+      packet.dir_x[k] = ray.direction.x;
+      packet.dir_y[k] = ray.direction.y;
+      packet.dir_z[k] = ray.direction.z;
+      packet.tnear[k] = 0.0f;
+      packet.tfar[k] = ray.tMax;
+      packet.time[k] = 0.0f;
+      packet.mask[k] = 0xFFFFFFFFu;
+      packet.id[k] = static_cast<unsigned>(k);
+      packet.flags[k] = 0;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcOccluded8(valid, top_, &context, &packet);
+    for (std::size_t k = 0; k < n; ++k) blocked[first + k] = packet.tfar[k] < 0.0f ? 1 : 0;
+  }
 }
 
 bool Scene::occluded(glm::vec3 origin, glm::vec3 direction, float tMax) const {

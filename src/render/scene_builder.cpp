@@ -133,6 +133,8 @@ class SceneBuilder {
     }
     for (const InstanceDescription& instance : description_.instances) addInstance(instance);
     rtcCommitScene(scene_->top_);
+    scene_->packets8_ =
+        rtcGetDeviceProperty(scene_->device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
     RTCBounds bounds;
     rtcGetSceneBounds(scene_->top_, &bounds);
     if (bounds.lower_x <= bounds.upper_x) {

@@ -17,16 +17,16 @@ using namespace sampler_detail;
 // then each of the two Sobol dimensions Owen-scrambled), with no reversal folded away.
 glm::vec2 referenceNext2D(std::uint32_t pixel, std::uint32_t sample, std::uint32_t seed,
                           std::uint32_t pair) {
-  const std::uint32_t pairSeed = hashCombine(hashCombine(pixel, seed), pair);
-  const std::uint32_t index = owenScramble(sample, pairSeed);
+  const PairSeeds seeds = pairSeeds(hashCombine(pixel, seed), pair);
+  const std::uint32_t index = owenScramble(sample, seeds.shuffle);
   std::uint32_t second = 0;  // second Sobol dimension, bit by bit from its direction numbers
   std::uint32_t direction = 1u << 31;
   for (int bit = 0; bit < 32; ++bit) {
     if (index & (1u << bit)) second ^= direction;
     direction ^= direction >> 1;
   }
-  const std::uint32_t x = owenScramble(reverseBits(index), hashCombine(pairSeed, 1u));
-  const std::uint32_t y = owenScramble(second, hashCombine(pairSeed, 2u));
+  const std::uint32_t x = owenScramble(reverseBits(index), seeds.x);
+  const std::uint32_t y = owenScramble(second, seeds.y);
   return {toUnitFloat(x), toUnitFloat(y)};
 }
 
