@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "render/sampling.h"
+
 namespace lenslab::render {
 
 namespace {
@@ -144,10 +146,10 @@ double Quadric::area() const {
 }
 
 glm::dvec3 Quadric::sampleArea(glm::dvec2 u, glm::dvec3& normal) const {
-  // The angle's cosine and sine in single precision (GCC fuses them into one sincosf call): the
-  // point then lies within about 1e-7 (relative) of the surface, far inside the ray offsets.
-  const auto phi = static_cast<float>(u.y * phiMax);
-  const double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+  // The angle's cosine and sine in single precision: the point then lies within about 1e-7
+  // (relative) of the surface, far inside the ray offsets.
+  const CosSin phi = cosSin(static_cast<float>(u.y * phiMax));
+  const double cosPhi = phi.cos, sinPhi = phi.sin;
   switch (kind) {
     case QuadricKind::Sphere: {
       // Archimedes: z is uniform over a sphere's zone.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "render/material.h"
@@ -52,11 +53,11 @@ struct ShadowedTerm {
 };
 
 // One light's direct-lighting terms at a hit, from one light sample and (for non-delta lights
-// when `sampleBsdf`) one BSDF sample, combined with the power heuristic (pbrt-v2's
+// given `uBsdf`) one BSDF sample, combined with the power heuristic (pbrt-v2's
 // EstimateDirect). Terms that need a shadow ray go to `shadowed`; a term decided without one (a
 // BSDF sample that found a mesh emitter by a full intersection) is added to `decided`.
 void directTerms(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
-                 int lightIndex, glm::vec2 uLight, float uLobe, glm::vec2 uBsdf, bool sampleBsdf,
+                 int lightIndex, glm::vec2 uLight, std::optional<glm::vec2> uBsdf,
                  float selectionProbability, std::vector<ShadowedTerm>& shadowed,
                  glm::vec3& decided) {
   const Light& light = scene.lights()[static_cast<std::size_t>(lightIndex)];
@@ -73,9 +74,9 @@ void directTerms(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, gl
            f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf});
     }
   }
-  if (!sampleBsdf || light.isDelta()) return;
+  if (!uBsdf || light.isDelta()) return;
   BsdfSample bs;
-  if (!bsdf.sample(wo, uLobe, uBsdf, bs) || bs.specular) return;
+  if (!bsdf.sample(wo, *uBsdf, bs) || bs.specular) return;
   const glm::vec3 origin = offsetOrigin(hit, bs.wi);
   if (light.kind == LightKind::Area) {
     // The sample counts only if the first thing it meets is this light. Most BSDF samples miss
@@ -126,14 +127,14 @@ glm::vec3 resolveShadowed(const Scene& scene, std::vector<ShadowedTerm>& terms) 
   return sum;
 }
 
-// One light's direct contribution at a hit (light sample and, optionally, BSDF sample).
-glm::vec3 estimateDirect(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
-                         int lightIndex, glm::vec2 uLight, float uLobe, glm::vec2 uBsdf,
-                         bool sampleBsdf, float selectionProbability) {
+// Next-event estimation: one light's contribution at a hit from one light sample (the path
+// tracer's BSDF sample continues the path instead).
+glm::vec3 sampleLightTerm(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, glm::vec3 wo,
+                          int lightIndex, glm::vec2 uLight, float selectionProbability) {
   thread_local std::vector<ShadowedTerm> terms;
   glm::vec3 decided(0.0f);
-  directTerms(scene, hit, bsdf, wo, lightIndex, uLight, uLobe, uBsdf, sampleBsdf,
-              selectionProbability, terms, decided);
+  directTerms(scene, hit, bsdf, wo, lightIndex, uLight, std::nullopt, selectionProbability, terms,
+              decided);
   return decided + resolveShadowed(scene, terms);
 }
 
@@ -165,8 +166,7 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
         for (int s = 0; s < count; ++s) {
           const glm::vec2 uLight = sampler.next2D();
           const glm::vec2 uBsdf = sampler.next2D();
-          directTerms(scene, hit, bsdf, wo, static_cast<int>(l), uLight, uBsdf.x, sampler.next2D(),
-                      true, 1.0f, terms, sum);
+          directTerms(scene, hit, bsdf, wo, static_cast<int>(l), uLight, uBsdf, 1.0f, terms, sum);
         }
         sum += resolveShadowed(scene, terms);
         radiance += throughput * sum / static_cast<float>(count);
@@ -229,8 +229,8 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
       // Next-event estimation toward one light chosen uniformly.
       const int index =
           std::min(static_cast<int>(uChoose.x * lightCount), static_cast<int>(lights.size()) - 1);
-      radiance += throughput * estimateDirect(scene, hit, bsdf, wo, index, uLight, 0.0f,
-                                              glm::vec2(0.0f), false, 1.0f / lightCount);
+      radiance +=
+          throughput * sampleLightTerm(scene, hit, bsdf, wo, index, uLight, 1.0f / lightCount);
     }
     BsdfSample bs;
     if (!bsdf.sample(wo, uChoose.y, uBsdf, bs)) break;

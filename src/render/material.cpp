@@ -36,8 +36,8 @@ glm::vec3 ggxSampleHalf(glm::vec2 u, float alpha) {
   const float tan2 = alpha * alpha * u.x / std::max(1e-7f, 1.0f - u.x);
   const float cosT = 1.0f / std::sqrt(1.0f + tan2);
   const float sinT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT));
-  const float phi = 2.0f * kPi * u.y;
-  return {sinT * std::cos(phi), sinT * std::sin(phi), cosT};
+  const CosSin phi = cosSin(2.0f * kPi * u.y);
+  return {sinT * phi.cos, sinT * phi.sin, cosT};
 }
 
 glm::vec3 reflect(glm::vec3 wo, glm::vec3 n) { return -wo + 2.0f * glm::dot(wo, n) * n; }
@@ -158,6 +158,21 @@ glm::vec3 Bsdf::evaluate(glm::vec3 wo, glm::vec3 wi, float& pdf) const {
     return glm::vec3(0.0f);
   }
   return evaluateLocal(frame_.toLocal(wo), frame_.toLocal(wi), pdf);
+}
+
+bool Bsdf::sample(glm::vec3 woWorld, glm::vec2 u, BsdfSample& out) const {
+  // The probability of the first lobe, as sample() chooses it from uLobe.
+  float first = 1.0f;
+  if (kind_ == MaterialKind::Plastic) {
+    first = 0.5f;
+  } else if (kind_ == MaterialKind::Glass) {
+    first = fresnelDielectric(cosTheta(frame_.toLocal(woWorld)), eta_);
+  }
+  if (first >= 1.0f || first <= 0.0f) return sample(woWorld, first >= 1.0f ? 0.0f : 1.0f, u, out);
+  const float uLobe = u.x;
+  u.x = uLobe < first ? uLobe / first : (uLobe - first) / (1.0f - first);
+  u.x = std::min(u.x, 0.99999994f);
+  return sample(woWorld, uLobe, u, out);
 }
 
 bool Bsdf::sample(glm::vec3 woWorld, float uLobe, glm::vec2 u, BsdfSample& out) const {

@@ -45,6 +45,9 @@ class Bsdf {
   // f(wo, wi) and the density sample() would have for wi (solid angle), world directions.
   glm::vec3 evaluate(glm::vec3 wo, glm::vec3 wi, float& pdf) const;
   bool sample(glm::vec3 wo, float uLobe, glm::vec2 u, BsdfSample& out) const;
+  // The same from one 2D sample: u.x picks the lobe and is stretched back to [0, 1) within it,
+  // so that a caller spends one dimension pair instead of one and a half.
+  bool sample(glm::vec3 wo, glm::vec2 u, BsdfSample& out) const;
   // true when the BSDF is all delta lobes: light sampling cannot help.
   bool isSpecular() const {
     return kind_ == MaterialKind::Mirror || kind_ == MaterialKind::Glass ||
