@@ -166,15 +166,17 @@ void Window::onKey(GLFWwindow* handle, int key, int /*scancode*/, int action, in
 
 // Dear ImGui 1.86 samples key state once per frame, so a key pressed and released between two
 // frames (a quick tap, or xdotool's "key Return") is never seen as pressed. Keep such a key down
-// for one frame, as ImGui 1.87's input queue would.
+// for one frame, as ImGui 1.87's input queue would. Likewise the modifiers: xdotool's "key
+// ctrl+o" releases Ctrl before O, and when both events land in one frame ImGui would see O
+// pressed without Ctrl. A press is seen with the modifiers that were down when it happened.
 void Window::holdTappedKeys() {
   ImGuiIO& io = ImGui::GetIO();
   constexpr int kKeyCount = static_cast<int>(IM_ARRAYSIZE(io.KeysDown));
-  if (!heldKeys_.empty()) {
-    for (int key : heldKeys_) {
-      if (key < kKeyCount && glfwGetKey(window_, key) == GLFW_RELEASE) io.KeysDown[key] = false;
-    }
-    heldKeys_.clear();
+  for (int key : heldKeys_) {
+    if (key < kKeyCount && glfwGetKey(window_, key) == GLFW_RELEASE) io.KeysDown[key] = false;
+  }
+  heldKeys_.clear();
+  if (std::exchange(modifiersOverridden_, false)) {
     // Back to the modifiers' real state.
     const auto down = [&](int a, int b) {
       return glfwGetKey(window_, a) == GLFW_PRESS || glfwGetKey(window_, b) == GLFW_PRESS;
@@ -184,13 +186,19 @@ void Window::holdTappedKeys() {
     io.KeyAlt = down(GLFW_KEY_LEFT_ALT, GLFW_KEY_RIGHT_ALT);
   }
   for (const KeyPress& press : pressedKeys_) {
-    if (press.key < kKeyCount && !io.KeysDown[press.key]) {
+    if (press.key >= kKeyCount) continue;
+    if (!io.KeysDown[press.key]) {
       io.KeysDown[press.key] = true;
-      // The modifiers that were down with it (Ctrl+Z tapped quickly is still Ctrl+Z).
-      io.KeyCtrl |= (press.mods & GLFW_MOD_CONTROL) != 0;
-      io.KeyShift |= (press.mods & GLFW_MOD_SHIFT) != 0;
-      io.KeyAlt |= (press.mods & GLFW_MOD_ALT) != 0;
       heldKeys_.push_back(press.key);
+    }
+    const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
+    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
+    const bool alt = (press.mods & GLFW_MOD_ALT) != 0;
+    if ((ctrl && !io.KeyCtrl) || (shift && !io.KeyShift) || (alt && !io.KeyAlt)) {
+      io.KeyCtrl |= ctrl;
+      io.KeyShift |= shift;
+      io.KeyAlt |= alt;
+      modifiersOverridden_ = true;
     }
   }
   pressedKeys_.clear();

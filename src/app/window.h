@@ -86,6 +86,7 @@ class Window {
   };
   std::vector<KeyPress> pressedKeys_;
   std::vector<int> heldKeys_;
+  bool modifiersOverridden_ = false;  // a press's modifiers stand in for released ones
 };
 
 // True when a display server is named in the environment (DISPLAY or WAYLAND_DISPLAY).
