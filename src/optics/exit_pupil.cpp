@@ -276,6 +276,8 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     if (anyPasses(probe, kMaxFilmRadiusMm * i / kCoarse, fallbackRadiusMm_)) lastPassing = i;
   if (lastPassing < 0) return;
   filmRadiusMaxMm_ = kMaxFilmRadiusMm * std::min(lastPassing + 1, kCoarse) / kCoarse;
+  // Rays pass at the last searched radius: the image circle may reach beyond the search.
+  if (lastPassing < kCoarse) imageCircleBoundMm_ = filmRadiusMaxMm_;
   radialBins = std::max(radialBins, 2);
   binScale_ = radialBins - 1;
 

@@ -23,6 +23,7 @@
 // bound is the union of its neighbours'.
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -56,6 +57,11 @@ class ExitPupilTable {
   double filmRadiusMaxMm() const { return filmRadiusMaxMm_; }
   double fallbackRadiusMm() const { return fallbackRadiusMm_; }
   double planeZMm() const { return planeZMm_; }
+  // No ray from a film point farther from the axis than this passes the lens: the search found
+  // none beyond the image circle's last passing radius, one search step (2.5 mm) out. Infinite
+  // when the search could not bound it (rays pass at its 60 mm limit, or it found no passing
+  // ray to start from).
+  double imageCircleBoundMm() const { return imageCircleBoundMm_; }
   // Largest tabulated film radius with a non-empty bin (the image circle at the table's
   // resolution).
   double imageCircleRadiusMm() const;
@@ -88,6 +94,7 @@ class ExitPupilTable {
   std::vector<Bin> bins_;
   double binScale_ = 0.0;  // bins - 1
   double filmRadiusMaxMm_ = 0.0;
+  double imageCircleBoundMm_ = std::numeric_limits<double>::infinity();
   double fallbackRadiusMm_ = 0.0;
   double planeZMm_ = 0.0;
   std::array<double, kSectors + 1> cosAt_{}, sinAt_{};  // sector edge directions

@@ -208,6 +208,8 @@ const ExitPupilTable& LensSystem::exitPupilTable() const {
 
 double LensSystem::exitPupilTableRadiusMm() const { return exitPupilTable().filmRadiusMaxMm(); }
 
+double LensSystem::imageCircleBoundMm() const { return exitPupilTable().imageCircleBoundMm(); }
+
 void LensSystem::sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
                                   const float* u1, std::size_t n, LensRayBatch& rays,
                                   float* pdfPerMm2) const {

@@ -161,6 +161,9 @@ class LensSystem {
                         const float* u1, std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
   // Forces the table build now (e.g. on a worker thread); returns its film-radius range.
   double exitPupilTableRadiusMm() const;
+  // No ray from a film point farther than this from the axis passes the lens (see
+  // ExitPupilTable::imageCircleBoundMm; infinite when unknown).
+  double imageCircleBoundMm() const;
   const ExitPupilTable& exitPupilTable() const;
 
   // First-order (paraxial) data at the system's wavelength, or at another one.

@@ -14,7 +14,7 @@ namespace lenslab::render {
 struct CameraRay {
   glm::vec3 origin{0.0f};
   glm::vec3 direction{0.0f, 0.0f, 1.0f};  // unit
-  float weight = 1.0f;                     // exposure weight; 0 means the lens blocked it
+  float weight = 1.0f;                    // exposure weight; 0 means the lens blocked it
 };
 
 class Camera {
@@ -31,6 +31,9 @@ class Camera {
       passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
     }
   }
+  // False only when no ray from any film point of the raster rectangle [min, max] can leave the
+  // lens (outside its image circle): the renderer then leaves those pixels black unsampled.
+  virtual bool maySeeScene(glm::vec2 /*rasterMin*/, glm::vec2 /*rasterMax*/) const { return true; }
   // The angle one pixel subtends from the lens (for texture filtering footprints).
   virtual float pixelSpreadRadians() const = 0;
   int width() const { return width_; }

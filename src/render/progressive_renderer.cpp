@@ -53,8 +53,6 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   const int width = wave.width;
   const int firstSample = wave.firstSample;
   const int count = wave.count;
-  const int tileWidth = tile.x1 - tile.x0;
-  const int tilePixels = tileWidth * (tile.y1 - tile.y0);
   const auto samplesPerPixel = static_cast<std::size_t>(count);
   const int pixelsPerBatch =
       static_cast<int>(std::max<std::size_t>(1, kCameraBatchRays / samplesPerPixel));
@@ -63,9 +61,24 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   thread_local std::vector<glm::vec2> rasterPoints, lensSamples;
   thread_local std::vector<CameraRay> rays;
   thread_local std::vector<std::uint8_t> passed;
-  for (int first = 0; first < tilePixels; first += pixelsPerBatch) {
+  // The tile's pixels that some camera ray can leave the lens from; the others (outside a
+  // lens's image circle) stay black, and their samples are counted without being taken.
+  thread_local std::vector<glm::ivec2> visible;
+  visible.clear();
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      if (camera.maySeeScene(glm::vec2(x, y) * wave.rasterScale,
+                             glm::vec2(x + 1, y + 1) * wave.rasterScale)) {
+        visible.push_back({x, y});
+      }
+    }
+  }
+  const int tilePixels = (tile.x1 - tile.x0) * (tile.y1 - tile.y0);
+  statistics.cameraSamples += (tilePixels - visible.size()) * samplesPerPixel;
+  const int visibleCount = static_cast<int>(visible.size());
+  for (int first = 0; first < visibleCount; first += pixelsPerBatch) {
     if (cancelled()) return false;
-    const int pixels = std::min(pixelsPerBatch, tilePixels - first);
+    const int pixels = std::min(pixelsPerBatch, visibleCount - first);
     const std::size_t n = static_cast<std::size_t>(pixels) * samplesPerPixel;
     samplers.clear();
     rasterPoints.resize(n);
@@ -73,8 +86,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     rays.resize(n);
     passed.resize(n);
     for (int p = 0; p < pixels; ++p) {
-      const int x = tile.x0 + (first + p) % tileWidth;
-      const int y = tile.y0 + (first + p) / tileWidth;
+      const int x = visible[first + p].x, y = visible[first + p].y;
       const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
       for (int s = 0; s < count; ++s) {
         const std::size_t i = samplers.size();
@@ -104,8 +116,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         }
         sum += radiance;
       }
-      const int x = tile.x0 + (first + p) % tileWidth;
-      const int y = tile.y0 + (first + p) / tileWidth;
+      const int x = visible[first + p].x, y = visible[first + p].y;
       double* pixel = &sums[3 * static_cast<std::size_t>(y * width + x)];
       pixel[0] += sum.x;
       pixel[1] += sum.y;

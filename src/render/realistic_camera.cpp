@@ -1,5 +1,6 @@
 #include "render/realistic_camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -57,6 +58,14 @@ glm::vec2 RealisticCamera::rearDiskPointMm(glm::vec2 u) const {
 double RealisticCamera::rearDiskPdfPerMm2() const {
   const double radius = lens_->rearApertureRadiusMm();
   return 1.0 / (3.14159265358979323846 * radius * radius);
+}
+
+bool RealisticCamera::maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) const {
+  // The film rectangle's point nearest the axis, against the lens's image-circle bound.
+  const glm::dvec2 a = filmPointMm(rasterMin), b = filmPointMm(rasterMax);
+  const double x = std::clamp(0.0, std::min(a.x, b.x), std::max(a.x, b.x));
+  const double y = std::clamp(0.0, std::min(a.y, b.y), std::max(a.y, b.y));
+  return std::hypot(x, y) <= lens_->imageCircleBoundMm();
 }
 
 glm::dvec2 RealisticCamera::filmPointMm(glm::vec2 raster) const {

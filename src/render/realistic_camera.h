@@ -40,6 +40,7 @@ class RealisticCamera final : public Camera {
                     CameraRay* rays, std::uint8_t* passed) const override;
 
   float pixelSpreadRadians() const override;
+  bool maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) const override;
   const optics::LensSystem& lens() const { return *lens_; }
 
  private:

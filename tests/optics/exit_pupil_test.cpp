@@ -62,6 +62,31 @@ TEST(ExitPupil, ContainsEveryPassingRayFoundByBruteForce) {
   }
 }
 
+// The renderer leaves pixels beyond LensSystem::imageCircleBoundMm() black without sampling
+// them, so no ray may pass from there: a dense search of the rear plane finds none.
+TEST(ExitPupil, NoRayPassesBeyondTheImageCircleBound) {
+  int bounded = 0;
+  for (const auto& lens : courseLensesAtTwoApertures()) {
+    const double bound = lens->imageCircleBoundMm();
+    ASSERT_GT(bound, 0.0);
+    if (std::isinf(bound)) continue;  // no claim made
+    const double domain = lens->exitPupilTable().fallbackRadiusMm();
+    const double planeZ = lens->exitPupilTable().planeZMm();
+    int passing = 0;
+    for (double r = bound + 0.01; r < bound + 20.0; r += 0.5) {
+      for (int i = 0; i <= 60; ++i) {
+        for (int j = 0; j <= 60; ++j) {
+          const glm::dvec2 p{domain * (i / 30.0 - 1.0), domain * (j / 30.0 - 1.0)};
+          passing += passes(*lens, {r, 0.0}, {p, planeZ});
+        }
+      }
+    }
+    EXPECT_EQ(passing, 0) << "bound " << bound << " mm";
+    ++bounded;
+  }
+  EXPECT_GE(bounded, 6);  // all but the telephoto, whose image circle exceeds the 60 mm search
+}
+
 TEST(ExitPupil, AtLeastNinetyPercentOfSamplesPass) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
