@@ -24,7 +24,7 @@ struct PreviewState {
   // The panel's room for the image, in framebuffer pixels (0 before the panel is first drawn):
   // the preview renders at the size it is shown, not more.
   float regionWidthPx = 0, regionHeightPx = 0;
-  std::string status;         // why there is no picture, or which lens it shows
+  std::string status;  // why there is no picture, or which lens it shows
   // A click on the image, in image pixels (x right, y down), to focus on. Consumed by the viewer.
   std::optional<std::pair<double, double>> focusClick;
 };

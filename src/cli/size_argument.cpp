@@ -17,13 +17,12 @@ std::optional<int> parseExtent(std::string_view text) {
 
 }  // namespace
 
-std::optional<PixelSize> parsePixelSize(std::string_view text, std::string* error,
-                                        int maxExtent) {
+std::optional<PixelSize> parsePixelSize(std::string_view text, std::string* error, int maxExtent) {
   const std::size_t cross = text.find_first_of("xX");
-  const auto width = cross == std::string_view::npos ? std::nullopt
-                                                     : parseExtent(text.substr(0, cross));
-  const auto height = cross == std::string_view::npos ? std::nullopt
-                                                      : parseExtent(text.substr(cross + 1));
+  const auto width =
+      cross == std::string_view::npos ? std::nullopt : parseExtent(text.substr(0, cross));
+  const auto height =
+      cross == std::string_view::npos ? std::nullopt : parseExtent(text.substr(cross + 1));
   if (!width || !height) {
     if (error) {
       // A stream, not operator+: GCC 12 flags string concatenation here with a false

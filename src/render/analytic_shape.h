@@ -21,7 +21,7 @@ struct QuadricHit {
 struct Quadric {
   QuadricKind kind = QuadricKind::Sphere;
   double radius = 1.0;
-  double innerRadius = 0.0;  // disk
+  double innerRadius = 0.0;        // disk
   double zMin = -1.0, zMax = 1.0;  // sphere and cylinder
   double height = 0.0;             // disk: z of the plane; cone: apex height
   double phiMax = 2.0 * 3.14159265358979323846;

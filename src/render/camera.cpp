@@ -10,8 +10,7 @@
 namespace lenslab::render {
 
 PerspectiveCamera::PerspectiveCamera(const glm::dmat4& cameraFromWorld, double fovDegrees,
-                                     int width, int height, double lensRadius,
-                                     double focalDistance)
+                                     int width, int height, double lensRadius, double focalDistance)
     : Camera(width, height),
       worldFromCamera_(glm::inverse(cameraFromWorld)),
       tanHalfFov_(static_cast<float>(std::tan(glm::radians(fovDegrees) * 0.5))),
@@ -27,8 +26,7 @@ PerspectiveCamera::PerspectiveCamera(const glm::dmat4& cameraFromWorld, double f
   screenHeight_ = 2.0f * halfY;
 }
 
-bool PerspectiveCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample,
-                                    CameraRay& ray) const {
+bool PerspectiveCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, CameraRay& ray) const {
   const float sx = screenMinX_ + raster.x / static_cast<float>(width_) * screenWidth_;
   const float sy = screenMaxY_ - raster.y / static_cast<float>(height_) * screenHeight_;
   glm::vec3 origin(0.0f);

@@ -31,8 +31,7 @@ struct Emitter {
   glm::vec3 sample(glm::vec2 u, glm::vec3& normal) const;
   // The nearest hit of the ray on a quadric emitter alone (no other geometry), with the unit
   // normal oriented as sample() orients it. False when it misses or the emitter is a mesh.
-  bool intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t,
-                        glm::vec3& normal) const;
+  bool intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t, glm::vec3& normal) const;
 };
 
 struct Light {
@@ -55,7 +54,7 @@ struct Light {
 };
 
 struct LightSample {
-  glm::vec3 wi{0.0f};  // unit, toward the light
+  glm::vec3 wi{0.0f};     // unit, toward the light
   float distance = 0.0f;  // to the sampled point; infinity for lights at infinity
   glm::vec3 radiance{0.0f};
   float pdf = 0.0f;  // solid angle (1 for delta lights)

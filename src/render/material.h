@@ -18,7 +18,7 @@ struct Material {
   int kd = -1, ks = -1, kr = -1, kt = -1;  // colour textures
   int roughness = -1;                      // float texture (grey colour)
   bool remapRoughness = true;
-  float eta = 1.5f;  // glass
+  float eta = 1.5f;                       // glass
   glm::vec3 metalEta{0.2f, 0.92f, 1.1f};  // copper, roughly, as pbrt's default
   glm::vec3 metalK{3.9f, 2.45f, 2.14f};
   // Whether any texture above varies over the surface: only then do hits need their (u, v)
@@ -29,7 +29,7 @@ struct Material {
 bool materialUsesUv(const Material& material, const TextureSet& textures);
 
 struct BsdfSample {
-  glm::vec3 wi{0.0f};     // world space
+  glm::vec3 wi{0.0f};      // world space
   glm::vec3 weight{0.0f};  // f * |cos| / pdf
   float pdf = 0.0f;
   bool specular = false;

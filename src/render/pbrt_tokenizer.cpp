@@ -75,8 +75,8 @@ Token PbrtTokenizer::scan(Diagnostics& diagnostics) {
   if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.') {
     const std::size_t start = position_;
     while (position_ < text_.size() &&
-           (std::isalnum(static_cast<unsigned char>(text_[position_])) ||
-            text_[position_] == '.' || text_[position_] == '-' || text_[position_] == '+')) {
+           (std::isalnum(static_cast<unsigned char>(text_[position_])) || text_[position_] == '.' ||
+            text_[position_] == '-' || text_[position_] == '+')) {
       advance();
     }
     token.text = text_.substr(start, position_ - start);
@@ -102,8 +102,9 @@ Token PbrtTokenizer::scan(Diagnostics& diagnostics) {
   }
   if (std::isalpha(static_cast<unsigned char>(c))) {
     const std::size_t start = position_;
-    while (position_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[position_])) ||
-                                        text_[position_] == '_')) {
+    while (
+        position_ < text_.size() &&
+        (std::isalnum(static_cast<unsigned char>(text_[position_])) || text_[position_] == '_')) {
       advance();
     }
     token.kind = TokenKind::Word;

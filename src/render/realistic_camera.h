@@ -30,10 +30,9 @@ class RealisticCamera final : public Camera {
   // whose camera space is in mm; 0.001 for pbrt-v3 scenes in metres).
   // `cameraOriginZMm`: the lens-frame z that sits at the camera-space origin. pbrt-v3 puts the
   // film there (0); the course's pbrt-v2 reference camera put the front lens vertex there.
-  RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
-                  const glm::dmat4& cameraFromWorld, int width, int height,
-                  double filmDiagonalMm, double sceneUnitsPerMm, double cameraOriginZMm = 0.0,
-                  LensSampling sampling = LensSampling::ExitPupil);
+  RealisticCamera(std::shared_ptr<const optics::LensSystem> lens, const glm::dmat4& cameraFromWorld,
+                  int width, int height, double filmDiagonalMm, double sceneUnitsPerMm,
+                  double cameraOriginZMm = 0.0, LensSampling sampling = LensSampling::ExitPupil);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
   // Traces the whole batch with the optics library's vectorised trace.
   void generateRays(std::size_t count, const glm::vec2* rasterPoints, const glm::vec2* lensSamples,

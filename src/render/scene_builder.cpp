@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/trigonometric.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 #include <limits>
 #include <map>
 
@@ -54,8 +54,7 @@ std::optional<QuadricHit> quadricHitFor(const Args* args, unsigned i, RTCRayN* r
   // An affine map keeps the ray parameter t: no renormalisation of the direction.
   const glm::dvec3 o = glm::dvec3(placed.objectFromParent * glm::dvec4(origin, 1.0));
   const glm::dvec3 d = glm::dvec3(placed.objectFromParent * glm::dvec4(direction, 0.0));
-  return placed.quadric.intersect(o, d, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i),
-                                  withUv);
+  return placed.quadric.intersect(o, d, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i), withUv);
 }
 
 void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -317,9 +316,9 @@ class SceneBuilder {
       record.flipNormal = shape.reverseOrientation != (glm::determinant(glm::dmat3(m)) < 0.0);
       if (record.indices.empty()) return;
       geometry = rtcNewGeometry(scene_->device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-          record.positions.size()));
+      auto* vertices = static_cast<float*>(
+          rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                  3 * sizeof(float), record.positions.size()));
       for (std::size_t i = 0; i < record.positions.size(); ++i) {
         vertices[3 * i] = record.positions[i].x;
         vertices[3 * i + 1] = record.positions[i].y;
@@ -358,8 +357,7 @@ class SceneBuilder {
         return;
       }
       record.quadric.place(shape.worldFromObject, shape.reverseOrientation);
-      record.quadricNeedsUv =
-          scene_->materials_[static_cast<std::size_t>(record.material)].usesUv;
+      record.quadricNeedsUv = scene_->materials_[static_cast<std::size_t>(record.material)].usesUv;
       geometry = rtcNewGeometry(scene_->device_, RTC_GEOMETRY_TYPE_USER);
       rtcSetGeometryUserPrimitiveCount(geometry, 1);
     }

@@ -20,7 +20,8 @@ void LowPriorityWorkers::on_scheduler_entry(bool /*isWorker*/) { lowerCurrentThr
 void lowerCurrentThreadPriority() {
   // On Linux, PRIO_PROCESS with a thread id sets that thread's nice value alone.
   const auto thread = static_cast<id_t>(syscall(SYS_gettid));
-  if (getpriority(PRIO_PROCESS, thread) < kRenderNice) setpriority(PRIO_PROCESS, thread, kRenderNice);
+  if (getpriority(PRIO_PROCESS, thread) < kRenderNice)
+    setpriority(PRIO_PROCESS, thread, kRenderNice);
 }
 
 }  // namespace lenslab::render

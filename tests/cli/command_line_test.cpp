@@ -40,7 +40,8 @@ TEST_F(CommandLine, UnknownFlagPrintsUsageAndExits2) {
 
 TEST_F(CommandLine, BadSizesAreClearErrorsWithExit2) {
   for (const char* size : {"0x0", "garbage", "10x-3"}) {
-    const auto result = testing::runProcess(lenslab("--screenshot x.png --size " + std::string(size)), scratch);
+    const auto result =
+        testing::runProcess(lenslab("--screenshot x.png --size " + std::string(size)), scratch);
     EXPECT_EQ(result.exitCode, 2) << size;
     EXPECT_NE(result.err.find("--size"), std::string::npos) << size << ": " << result.err;
   }
@@ -56,8 +57,8 @@ TEST_F(CommandLine, NoDisplayIsOneLineAndExit2) {
 }
 
 TEST_F(CommandLine, UnreachableDisplayIsOneLineAndExit2) {
-  const auto result =
-      testing::runProcess("env -u WAYLAND_DISPLAY DISPLAY=:987 '" + std::string(LENSLAB_BINARY) + "'", scratch);
+  const auto result = testing::runProcess(
+      "env -u WAYLAND_DISPLAY DISPLAY=:987 '" + std::string(LENSLAB_BINARY) + "'", scratch);
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }

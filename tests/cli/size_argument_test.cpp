@@ -14,8 +14,8 @@ TEST(PixelSize, ParsesWidthByHeight) {
 }
 
 TEST(PixelSize, RejectsZeroNegativeHugeAndGarbage) {
-  for (const char* bad : {"0x0", "0x100", "100x0", "-5x10", "x", "100", "abc", "12x34x56",
-                          "100x", "x100", "99999x10", "1e3x10", ""}) {
+  for (const char* bad : {"0x0", "0x100", "100x0", "-5x10", "x", "100", "abc", "12x34x56", "100x",
+                          "x100", "99999x10", "1e3x10", ""}) {
     std::string error;
     EXPECT_FALSE(parsePixelSize(bad, &error).has_value()) << bad;
     EXPECT_FALSE(error.empty()) << bad;

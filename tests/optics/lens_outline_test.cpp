@@ -18,8 +18,8 @@ TEST(SphericalSag, MatchesTheCircleAndItsSign) {
 
 Prescription cementedDoubletAndStop() {
   Prescription lens;
-  lens.surfaces = {{60.0, 6.0, 1.6, 60.0, 30.0},       // crown
-                   {-40.0, 2.0, 1.7, 30.0, 30.0},      // flint, cemented
+  lens.surfaces = {{60.0, 6.0, 1.6, 60.0, 30.0},   // crown
+                   {-40.0, 2.0, 1.7, 30.0, 30.0},  // flint, cemented
                    {-150.0, 5.0, 1.0, std::nullopt, 28.0},
                    {0.0, 80.0, 1.0, std::nullopt, 12.0}};
   return lens;

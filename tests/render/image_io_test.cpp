@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "support/run_process.h"
@@ -122,19 +122,19 @@ TEST(ImageIo, SrgbEncodingMatchesTheCurveWithExposure) {
   FloatImage image;
   image.width = 5;
   image.height = 1;
-  image.rgb = {0.0f, 1.0f, 0.5f,  0.25f, 0.25f, 0.25f,  std::nanf(""), -1.0f, 7.0f,
-               0.0031308f, 0.0f, 0.0f,  0.214f, 0.214f, 0.214f};
+  image.rgb = {0.0f, 1.0f,       0.5f, 0.25f, 0.25f,  0.25f,  std::nanf(""), -1.0f,
+               7.0f, 0.0031308f, 0.0f, 0.0f,  0.214f, 0.214f, 0.214f};
   const auto rgba = encodeSrgbRgba8(image, 0.0);
   ASSERT_EQ(rgba.size(), 20u);
   EXPECT_EQ(rgba[0], 0);
   EXPECT_EQ(rgba[1], 255);
-  EXPECT_EQ(rgba[2], 188);  // sRGB(0.5) = 0.7354
-  EXPECT_EQ(rgba[3], 255);  // opaque
-  EXPECT_EQ(rgba[4], 137);  // sRGB(0.25) = 0.5371
-  EXPECT_EQ(rgba[8], 0);    // NaN is black
-  EXPECT_EQ(rgba[9], 0);    // negative is black
-  EXPECT_EQ(rgba[10], 255); // overexposed is white
-  EXPECT_EQ(rgba[12], 10);  // the curve's knee: 0.04045 * 255 = 10.3
+  EXPECT_EQ(rgba[2], 188);   // sRGB(0.5) = 0.7354
+  EXPECT_EQ(rgba[3], 255);   // opaque
+  EXPECT_EQ(rgba[4], 137);   // sRGB(0.25) = 0.5371
+  EXPECT_EQ(rgba[8], 0);     // NaN is black
+  EXPECT_EQ(rgba[9], 0);     // negative is black
+  EXPECT_EQ(rgba[10], 255);  // overexposed is white
+  EXPECT_EQ(rgba[12], 10);   // the curve's knee: 0.04045 * 255 = 10.3
   // One stop up doubles linear light: 0.25 becomes 0.5.
   const auto brighter = encodeSrgbRgba8(image, 1.0);
   EXPECT_EQ(brighter[4], 188);

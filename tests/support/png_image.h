@@ -42,7 +42,8 @@ struct PngImage {
 
   std::size_t distinctColours() const {
     std::set<std::array<std::uint8_t, 3>> colours;
-    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) colours.insert({rgb[i], rgb[i + 1], rgb[i + 2]});
+    for (std::size_t i = 0; i + 2 < rgb.size(); i += 3)
+      colours.insert({rgb[i], rgb[i + 1], rgb[i + 2]});
     return colours.size();
   }
 
