@@ -121,6 +121,7 @@ int runRenderCommand(const RenderArguments& arguments) {
   auto camera = render::makeCamera(description, overrides, cameraDiagnostics);
   printDiagnostics(cameraDiagnostics);
   if (!camera) return kFailure;
+  camera->prepare();  // the exit-pupil table is set-up, as pbrt's is
   render::BuildResult built = render::buildScene(description);
   printDiagnostics(built.diagnostics);
   if (!built.scene) return kFailure;

@@ -34,6 +34,10 @@ class Camera {
   // False only when no ray from any film point of the raster rectangle [min, max] can leave the
   // lens (outside its image circle): the renderer then leaves those pixels black unsampled.
   virtual bool maySeeScene(glm::vec2 /*rasterMin*/, glm::vec2 /*rasterMax*/) const { return true; }
+  // Computes what the camera builds once and caches (a lens's exit-pupil table), so that no render
+  // worker waits for it inside a wave. Renderers call it on their own thread before the first
+  // wave; a viewer need not, and its UI thread should not. Idempotent and thread-safe.
+  virtual void prepare() const {}
   // The angle one pixel subtends from the lens (for texture filtering footprints).
   virtual float pixelSpreadRadians() const = 0;
   int width() const { return width_; }

@@ -129,9 +129,6 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
                                              int width, int height) {
   const CameraFraming framing = framingOf(scene);
-  // Build the exit-pupil table now, on the calling thread, not inside the first render wave:
-  // every mode needs its image-circle bound (RealisticCamera::maySeeScene).
-  lens->exitPupilTableRadiusMm();
   const double originZMm = framing.frontVertexAtOrigin ? lens->frontVertexZ() : 0.0;
   return std::make_shared<RealisticCamera>(std::move(lens), framing.cameraFromWorld, width, height,
                                            framing.filmDiagonalMm, framing.sceneUnitsPerMm,

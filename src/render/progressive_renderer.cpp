@@ -204,6 +204,7 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
                  const std::function<bool()>& cancelled,
                  const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
   const Clock::time_point started = Clock::now();
+  job.camera->prepare();  // here, on the job's thread: not on a viewer's UI thread, not in a wave
   Wave wave;
   wave.width = job.camera->width();
   wave.integrator = job.settings.integrator;

@@ -60,6 +60,8 @@ double RealisticCamera::rearDiskPdfPerMm2() const {
   return 1.0 / (3.14159265358979323846 * radius * radius);
 }
 
+void RealisticCamera::prepare() const { lens_->exitPupilTable(); }
+
 bool RealisticCamera::maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) const {
   // The film rectangle's point nearest the axis, against the lens's image-circle bound.
   const glm::dvec2 a = filmPointMm(rasterMin), b = filmPointMm(rasterMax);

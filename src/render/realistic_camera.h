@@ -39,6 +39,8 @@ class RealisticCamera final : public Camera {
                     CameraRay* rays, std::uint8_t* passed) const override;
 
   float pixelSpreadRadians() const override;
+  // Builds the lens's exit-pupil table: every sampling mode needs its image-circle bound.
+  void prepare() const override;
   bool maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) const override;
   const optics::LensSystem& lens() const { return *lens_; }
 

@@ -262,5 +262,59 @@ TEST(Renderer, ACoarseFirstLookComesBeforeTheFullWavesAndEachPublicationIsAnnoun
   EXPECT_EQ(renderToCompletion(job)->rgb, seen.back()->rgb);
 }
 
+// A camera that delegates to another and records where and when it was prepared.
+class RecordingCamera final : public Camera {
+ public:
+  explicit RecordingCamera(std::shared_ptr<const Camera> inner)
+      : Camera(inner->width(), inner->height()), inner_(std::move(inner)) {}
+  void prepare() const override {
+    std::lock_guard lock(mutex_);
+    preparedOn_ = std::this_thread::get_id();
+    preparedBeforeAnyRay_ = rays_ == 0;
+    inner_->prepare();
+  }
+  bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override {
+    std::lock_guard lock(mutex_);
+    ++rays_;
+    return inner_->generateRay(rasterPoint, lensSample, ray);
+  }
+  bool maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) const override {
+    return inner_->maySeeScene(rasterMin, rasterMax);
+  }
+  float pixelSpreadRadians() const override { return inner_->pixelSpreadRadians(); }
+  std::thread::id preparedOn() const {
+    std::lock_guard lock(mutex_);
+    return preparedOn_;
+  }
+  bool preparedBeforeAnyRay() const {
+    std::lock_guard lock(mutex_);
+    return preparedBeforeAnyRay_;
+  }
+
+ private:
+  std::shared_ptr<const Camera> inner_;
+  mutable std::mutex mutex_;
+  mutable std::thread::id preparedOn_;
+  mutable bool preparedBeforeAnyRay_ = false;
+  mutable long rays_ = 0;
+};
+
+// The camera's one-time work (a lens's exit-pupil table, milliseconds per edit) runs on the
+// renderer's thread before the first wave: not on the thread that calls start(), which in the
+// viewer is the UI thread.
+TEST(Renderer, PreparesTheCameraOnItsOwnThreadBeforeTheFirstRay) {
+  const auto directory = lenslab::testing::makeTestDirectory("prepare");
+  RenderJob job = loadJob(writeSmallScene(directory), 1);
+  ASSERT_TRUE(job.camera && job.scene);
+  const auto camera = std::make_shared<RecordingCamera>(job.camera);
+  job.camera = camera;
+  ProgressiveRenderer renderer;
+  const std::uint64_t generation = renderer.start(job);
+  ASSERT_TRUE(renderer.waitForCompletion(generation, 20.0));
+  EXPECT_NE(camera->preparedOn(), std::thread::id());
+  EXPECT_NE(camera->preparedOn(), std::this_thread::get_id());
+  EXPECT_TRUE(camera->preparedBeforeAnyRay());
+}
+
 }  // namespace
 }  // namespace lenslab::render
