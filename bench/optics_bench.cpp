@@ -53,7 +53,7 @@ void BM_LensTrace(benchmark::State& state, const std::string& lensFile) {
     state.SkipWithError("cannot load lens");
     return;
   }
-  lens->exitPupilTableRadiusMm();  // build the table outside the timed loop
+  lens->exitPupilTable();  // build the table outside the timed loop
   constexpr std::size_t kBatch = 4096;
   const CameraSamples samples = makeSamples(kBatch);
   std::vector<float> filmX(kBatch), filmY(kBatch), u0(kBatch), u1(kBatch), pdf(kBatch);
@@ -83,7 +83,7 @@ void BM_LensTraceScalar(benchmark::State& state, const std::string& lensFile) {
     state.SkipWithError("cannot load lens");
     return;
   }
-  lens->exitPupilTableRadiusMm();
+  lens->exitPupilTable();  // build the table outside the timed loop
   constexpr std::size_t kBatch = 4096;
   const CameraSamples samples = makeSamples(kBatch);
   std::size_t passed = 0, total = 0;

@@ -206,8 +206,6 @@ const ExitPupilTable& LensSystem::exitPupilTable() const {
   return *pupil_;
 }
 
-double LensSystem::exitPupilTableRadiusMm() const { return exitPupilTable().filmRadiusMaxMm(); }
-
 double LensSystem::imageCircleBoundMm() const { return exitPupilTable().imageCircleBoundMm(); }
 
 void LensSystem::sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,

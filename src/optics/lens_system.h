@@ -159,11 +159,10 @@ class LensSystem {
   // cos^4(theta) / (rearVertexZ()^2 pdfPerMm2[i]) with cos(theta) = dz.
   void sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
                         const float* u1, std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
-  // Forces the table build now (e.g. on a worker thread); returns its film-radius range.
-  double exitPupilTableRadiusMm() const;
   // No ray from a film point farther than this from the axis passes the lens (see
   // ExitPupilTable::imageCircleBoundMm; infinite when unknown).
   double imageCircleBoundMm() const;
+  // The table, built on first use (thread-safe); call it to build it now, off a UI thread.
   const ExitPupilTable& exitPupilTable() const;
 
   // First-order (paraxial) data at the system's wavelength, or at another one.
