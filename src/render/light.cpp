@@ -9,7 +9,60 @@
 
 namespace lenslab::render {
 
+PlanarDisk PlanarDisk::fromPlaced(const PlacedQuadric& placed, bool flip) {
+  const Quadric& q = placed.quadric;
+  PlanarDisk disk;
+  disk.center = glm::vec3(placed.parentFromObject * glm::dvec4(0.0, 0.0, q.height, 1.0));
+  const glm::dvec3 axisX(placed.parentFromObject * glm::dvec4(1.0, 0.0, 0.0, 0.0));
+  const glm::dvec3 axisY(placed.parentFromObject * glm::dvec4(0.0, 1.0, 0.0, 0.0));
+  // The reciprocal basis of (axisX, axisY) within their plane: dot(dualX, axisX) = 1 and
+  // dot(dualX, axisY) = 0, and the same for dualY.
+  const glm::dvec3 planeNormal = glm::cross(axisX, axisY);
+  const double planeNormal2 = glm::dot(planeNormal, planeNormal);
+  disk.axisX = glm::vec3(axisX);
+  disk.axisY = glm::vec3(axisY);
+  disk.dualX = glm::vec3(glm::cross(axisY, planeNormal) / planeNormal2);
+  disk.dualY = glm::vec3(glm::cross(planeNormal, axisX) / planeNormal2);
+  glm::vec3 normal(glm::normalize(placed.normalToParent * glm::dvec3(0.0, 0.0, 1.0)));
+  disk.normal = flip ? -normal : normal;
+  disk.radius = static_cast<float>(q.radius);
+  disk.innerRadius = static_cast<float>(q.innerRadius);
+  disk.phiMax = static_cast<float>(q.phiMax);
+  // Exact for any affine map: the in-plane area scales by |axisX x axisY|.
+  disk.area = static_cast<float>(q.area() * std::sqrt(planeNormal2));
+  return disk;
+}
+
+glm::vec3 PlanarDisk::sample(glm::vec2 u) const {
+  // The same warp as Quadric::sampleArea: r^2 uniform between the radii, phi uniform.
+  const float r =
+      std::sqrt(innerRadius * innerRadius + u.x * (radius * radius - innerRadius * innerRadius));
+  const CosSin phi = cosSin(u.y * phiMax);
+  return center + (r * phi.cos) * axisX + (r * phi.sin) * axisY;
+}
+
+bool PlanarDisk::intersect(glm::vec3 origin, glm::vec3 direction, float& t) const {
+  const float cosine = glm::dot(direction, normal);
+  if (cosine == 0.0f) return false;
+  t = glm::dot(center - origin, normal) / cosine;
+  if (!(t > 0.0f && t < std::numeric_limits<float>::infinity())) return false;
+  const glm::vec3 offset = origin + t * direction - center;
+  const float x = glm::dot(dualX, offset), y = glm::dot(dualY, offset);
+  const float r2 = x * x + y * y;
+  if (r2 > radius * radius || r2 < innerRadius * innerRadius) return false;
+  if (phiMax < 2.0f * kPi) {
+    float phi = std::atan2(y, x);
+    if (phi < 0.0f) phi += 2.0f * kPi;
+    if (phi > phiMax) return false;
+  }
+  return true;
+}
+
 glm::vec3 Emitter::sample(glm::vec2 u, glm::vec3& normal) const {
+  if (isDisk) {
+    normal = disk.normal;
+    return disk.sample(u);
+  }
   glm::vec3 point;
   if (isQuadric) {
     glm::dvec3 objectNormal;
@@ -40,6 +93,10 @@ glm::vec3 Emitter::sample(glm::vec2 u, glm::vec3& normal) const {
 bool Emitter::intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t,
                                glm::vec3& normal) const {
   if (!isQuadric) return false;
+  if (isDisk) {
+    normal = disk.normal;
+    return disk.intersect(origin, direction, t);
+  }
   const glm::dvec3 o(quadric.objectFromParent * glm::dvec4(glm::dvec3(origin), 1.0));
   const glm::dvec3 d(quadric.objectFromParent * glm::dvec4(glm::dvec3(direction), 0.0));
   const auto hit =
@@ -58,9 +115,10 @@ glm::vec3 areaRadiance(const Light& light, glm::vec3 normal, glm::vec3 wo) {
 float areaPdf(const Light& light, glm::vec3 point, glm::vec3 lightPoint, glm::vec3 lightNormal) {
   const glm::vec3 toLight = lightPoint - point;
   const float distance2 = glm::dot(toLight, toLight);
-  const float cosLight = std::abs(glm::dot(lightNormal, toLight)) / std::sqrt(distance2);
-  if (cosLight <= 0.0f || light.emitter->area <= 0.0f) return 0.0f;
-  return distance2 / (cosLight * light.emitter->area);
+  // distance^2 / (cos * area) with cos = |n . toLight| / distance, as one division.
+  const float projected = std::abs(glm::dot(lightNormal, toLight));
+  if (projected <= 0.0f || light.emitter->area <= 0.0f) return 0.0f;
+  return distance2 * std::sqrt(distance2) / (projected * light.emitter->area);
 }
 
 glm::vec3 infiniteRadiance(const Light& light, glm::vec3 direction) {
@@ -88,7 +146,7 @@ bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float /*scene
       const float distance2 = glm::dot(toLight, toLight);
       if (distance2 <= 0.0f) return false;
       out.distance = std::sqrt(distance2);
-      out.wi = toLight / out.distance;
+      out.wi = toLight * (1.0f / out.distance);
       out.pdf = 1.0f;
       out.radiance = light.intensity / distance2;
       if (light.kind == LightKind::Spot) {
@@ -122,7 +180,7 @@ bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float /*scene
       const float distance2 = glm::dot(toLight, toLight);
       if (distance2 <= 0.0f) return false;
       out.distance = std::sqrt(distance2);
-      out.wi = toLight / out.distance;
+      out.wi = toLight * (1.0f / out.distance);
       out.radiance = areaRadiance(light, normal, -out.wi);
       out.pdf = areaPdf(light, point, lightPoint, normal);
       return out.pdf > 0.0f && (out.radiance.x > 0 || out.radiance.y > 0 || out.radiance.z > 0);

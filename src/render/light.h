@@ -15,6 +15,28 @@ namespace lenslab::render {
 
 enum class LightKind { Point, Spot, Distant, Infinite, Area };
 
+// A disk emitter's world-space geometry in single precision. An affine map takes pbrt's disk
+// (z = height, innerRadius <= r <= radius, phi <= phiMax) to a flat elliptical annulus and
+// uniform points on the one to uniform points on the other, so sampling the emitter and testing a
+// ray against it need neither double precision nor a change of space per call.
+struct PlanarDisk {
+  glm::vec3 center{0.0f};             // the image of (0, 0, height)
+  glm::vec3 axisX{1.0f, 0.0f, 0.0f};  // the images of the object x and y unit vectors
+  glm::vec3 axisY{0.0f, 1.0f, 0.0f};
+  glm::vec3 dualX{1.0f, 0.0f, 0.0f};  // object x of an in-plane point = dot(dualX, p - center)
+  glm::vec3 dualY{0.0f, 1.0f, 0.0f};
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};       // unit; the side sample() reports (flip applied)
+  float radius = 1.0f, innerRadius = 0.0f;  // object units
+  float phiMax = 6.2831853f;
+  float area = 0.0f;  // world units
+
+  // From the quadric (a Disk) placed in world space; `flip` is ReverseOrientation.
+  static PlanarDisk fromPlaced(const PlacedQuadric& placed, bool flip);
+  glm::vec3 sample(glm::vec2 u) const;
+  // The hit distance along a ray with t > 0, if the ray meets the annulus.
+  bool intersect(glm::vec3 origin, glm::vec3 direction, float& t) const;
+};
+
 // The surface of an area light, in world space.
 struct Emitter {
   // Triangles: world-space vertices, three per triangle, with a cumulative area table.
@@ -24,7 +46,10 @@ struct Emitter {
   bool isQuadric = false;
   PlacedQuadric quadric;
   double areaScale = 1.0;  // world area / object area of the quadric
-  float area = 0.0f;       // world-space area
+  // Disks, the usual area light, take this single-precision path instead of `quadric`.
+  bool isDisk = false;
+  PlanarDisk disk;
+  float area = 0.0f;  // world-space area
   bool flipNormal = false;
 
   // A uniform point on the surface with its unit normal (emitting side when one-sided).

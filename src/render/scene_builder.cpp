@@ -421,6 +421,11 @@ class SceneBuilder {
       emitter->areaScale = std::pow(det, 2.0 / 3.0);
       emitter->area = static_cast<float>(record.quadric.quadric.area() * emitter->areaScale);
       emitter->flipNormal = record.quadric.flipNormal;
+      if (record.quadric.quadric.kind == QuadricKind::Disk) {
+        emitter->isDisk = true;
+        emitter->disk = PlanarDisk::fromPlaced(record.quadric, emitter->flipNormal);
+        emitter->area = emitter->disk.area;
+      }
     }
     Light light;
     light.kind = LightKind::Area;
