@@ -71,7 +71,7 @@ void directTerms(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, gl
       const float distance = std::isinf(ls.distance) ? kInfinity : ls.distance * (1.0f - 1e-4f);
       shadowed.push_back(
           {{offsetOrigin(hit, ls.wi), ls.wi, distance},
-           f * ls.radiance * std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf});
+           f * ls.radiance * (std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf)});
     }
   }
   if (!uBsdf || light.isDelta()) return;
@@ -156,20 +156,25 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
     const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal,
                     footprint);
     if (!bsdf.isSpecular()) {
-      // pbrt-v2's default strategy: every light, with its own number of samples. All the
-      // shadow rays of one light go to the scene together.
+      // pbrt-v2's default strategy: every light, with its own number of samples, drawn as two
+      // stratified arrays (light points, BSDF directions). All the shadow rays of one light go
+      // to the scene together.
       thread_local std::vector<ShadowedTerm> terms;
+      thread_local std::vector<glm::vec2> uLights, uBsdfs;
       const auto& lights = scene.lights();
       for (std::size_t l = 0; l < lights.size(); ++l) {
         const int count = lights[l].samples;
+        uLights.resize(static_cast<std::size_t>(count));
+        uBsdfs.resize(static_cast<std::size_t>(count));
+        sampler.next2DArray(static_cast<std::uint32_t>(count), uLights.data());
+        sampler.next2DArray(static_cast<std::uint32_t>(count), uBsdfs.data());
         glm::vec3 sum(0.0f);
         for (int s = 0; s < count; ++s) {
-          const glm::vec2 uLight = sampler.next2D();
-          const glm::vec2 uBsdf = sampler.next2D();
-          directTerms(scene, hit, bsdf, wo, static_cast<int>(l), uLight, uBsdf, 1.0f, terms, sum);
+          directTerms(scene, hit, bsdf, wo, static_cast<int>(l), uLights[s], uBsdfs[s], 1.0f, terms,
+                      sum);
         }
         sum += resolveShadowed(scene, terms);
-        radiance += throughput * sum / static_cast<float>(count);
+        radiance += throughput * sum * (1.0f / static_cast<float>(count));
       }
       break;
     }

@@ -21,6 +21,13 @@ inline std::uint32_t reverseBits(std::uint32_t x) {
   return __builtin_bswap32(x);
 }
 
+inline std::uint64_t reverseBits64(std::uint64_t x) {
+  x = ((x >> 1) & 0x5555555555555555ull) | ((x & 0x5555555555555555ull) << 1);
+  x = ((x >> 2) & 0x3333333333333333ull) | ((x & 0x3333333333333333ull) << 2);
+  x = ((x >> 4) & 0x0F0F0F0F0F0F0F0Full) | ((x & 0x0F0F0F0F0F0F0F0Full) << 4);
+  return __builtin_bswap64(x);
+}
+
 // A hash that only lets each bit depend on lower bits (Laine and Karras 2011, constants from
 // Burley 2020): applied to bit-reversed values it is a nested uniform (Owen) scramble.
 inline std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
@@ -125,17 +132,44 @@ class PixelSampler {
   glm::vec2 next2D() {
     using namespace sampler_detail;
     const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
-    // The sample index, Owen-shuffled per pixel and dimension pair.
-    const std::uint32_t index = reverseBits(laineKarras(reversedSampleIndex_, seeds.shuffle));
-    // First Sobol dimension: reverseBits(index), so its scramble is
-    // reverseBits(laineKarras(index)).
-    const std::uint32_t x = reverseBits(laineKarras(index, seeds.x));
-    const std::uint32_t y = reverseBits(laineKarras(sobolSecondReversed(index), seeds.y));
-    return {toUnitFloat(x), toUnitFloat(y)};
+    return point(shuffledIndex(seeds), seeds);
+  }
+
+  // `count` points of one dimension pair for this sample: points count * s + k (k < count) of
+  // the pair's sequence, with s the Owen-shuffled sample index. Over the first 2^m samples of a
+  // pixel and a power-of-two count, they form a (0, m + log2(count), 2)-net: one sample's points
+  // are stratified among themselves and against every other sample's, as pbrt-v2 draws its
+  // light and BSDF sample arrays. The seeds and the shuffle are computed once for all of them.
+  void next2DArray(std::uint32_t count, glm::vec2* out) {
+    using namespace sampler_detail;
+    const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
+    const std::uint32_t first = shuffledIndex(seeds) * count;
+    for (std::uint32_t k = 0; k < count; ++k) out[k] = point(first + k, seeds);
   }
   float next1D() { return next2D().x; }
 
  private:
+  // The sample index, Owen-shuffled per pixel and dimension pair.
+  std::uint32_t shuffledIndex(const sampler_detail::PairSeeds& seeds) const {
+    using namespace sampler_detail;
+    return reverseBits(laineKarras(reversedSampleIndex_, seeds.shuffle));
+  }
+
+  // Point `index` of the pair's two Owen-scrambled Sobol dimensions. The first dimension is
+  // reverseBits(index), so its scramble is reverseBits(laineKarras(index)). The two final
+  // reversals are one 64-bit reversal of the pair (low half x's scrambled bits, high half y's),
+  // which leaves x's result in the high half and y's in the low half, for the instructions of
+  // one 32-bit reversal.
+  static glm::vec2 point(std::uint32_t index, const sampler_detail::PairSeeds& seeds) {
+    using namespace sampler_detail;
+    const std::uint64_t scrambled =
+        laineKarras(index, seeds.x) |
+        static_cast<std::uint64_t>(laineKarras(sobolSecondReversed(index), seeds.y)) << 32;
+    const std::uint64_t reversed = reverseBits64(scrambled);
+    return {toUnitFloat(static_cast<std::uint32_t>(reversed >> 32)),
+            toUnitFloat(static_cast<std::uint32_t>(reversed))};
+  }
+
   std::uint32_t pixelSeed_;
   std::uint32_t reversedSampleIndex_;
   std::uint32_t dimensionPair_ = 0;

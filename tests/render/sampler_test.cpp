@@ -75,5 +75,60 @@ TEST(PixelSampler, PowerOfTwoPrefixesAreStratifiedInEveryDimensionPair) {
   }
 }
 
+// An array of n points is points n * s' + k of the same sequence, s' the shuffled sample index.
+TEST(PixelSampler, ArraysAreConsecutivePointsOfTheShuffledSequence) {
+  for (std::uint32_t sample : {0u, 1u, 5u, 511u}) {
+    PixelSampler sampler(321u, sample, 9u);
+    sampler.next2D();  // the arrays take the next dimension pairs, 1 and 2
+    for (std::uint32_t pair = 1; pair <= 2; ++pair) {
+      glm::vec2 points[4];
+      sampler.next2DArray(4, points);
+      const PairSeeds seeds = pairSeeds(hashCombine(321u, 9u), pair);
+      const std::uint32_t first = owenScramble(sample, seeds.shuffle) * 4;
+      for (std::uint32_t k = 0; k < 4; ++k) {
+        // Point first + k of the pair's sequence, from the direction numbers bit by bit.
+        std::uint32_t second = 0, direction = 1u << 31;
+        for (int bit = 0; bit < 32; ++bit) {
+          if ((first + k) & (1u << bit)) second ^= direction;
+          direction ^= direction >> 1;
+        }
+        EXPECT_EQ(points[k].x, toUnitFloat(owenScramble(reverseBits(first + k), seeds.x)));
+        EXPECT_EQ(points[k].y, toUnitFloat(owenScramble(second, seeds.y)));
+      }
+    }
+  }
+}
+
+// The arrays of the first 2^m samples together form a (0, m + 2, 2)-net for arrays of 4, and
+// each sample's own 4 points a (0, 2, 2)-net: one per quadrant-shaped cell of every shape.
+TEST(PixelSampler, ArraysAreStratifiedWithinAndAcrossSamples) {
+  for (int m : {0, 3, 6}) {
+    const std::uint32_t samples = 1u << m;
+    std::vector<glm::vec2> all;
+    for (std::uint32_t sample = 0; sample < samples; ++sample) {
+      PixelSampler sampler(4321u, sample, 3u);
+      glm::vec2 points[4];
+      sampler.next2DArray(4, points);
+      for (int a = 0; a <= 2; ++a) {
+        std::set<std::pair<int, int>> cells;
+        for (const glm::vec2& p : points) {
+          cells.insert({static_cast<int>(p.x * (1 << a)), static_cast<int>(p.y * (1 << (2 - a)))});
+        }
+        EXPECT_EQ(cells.size(), 4u) << "sample " << sample << " a " << a;
+      }
+      all.insert(all.end(), points, points + 4);
+    }
+    const int total = m + 2;
+    for (int a = 0; a <= total; ++a) {
+      std::set<std::pair<int, int>> cells;
+      for (const glm::vec2& p : all) {
+        cells.insert(
+            {static_cast<int>(p.x * (1 << a)), static_cast<int>(p.y * (1 << (total - a)))});
+      }
+      EXPECT_EQ(cells.size(), all.size()) << "m " << m << " a " << a;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lenslab::render
