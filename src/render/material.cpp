@@ -127,8 +127,8 @@ glm::vec3 Bsdf::evaluateLocal(glm::vec3 wo, glm::vec3 wi, float& pdf) const {
   if (cosI == 0.0f || cosO == 0.0f) return glm::vec3(0.0f);
   switch (kind_) {
     case MaterialKind::Matte:
-      pdf = cosI / kPi;
-      return kd_ / kPi;
+      pdf = cosI * kInvPi;
+      return kd_ * kInvPi;
     case MaterialKind::Plastic:
     case MaterialKind::Metal: {
       glm::vec3 h = glm::normalize(wo + wi);
@@ -144,8 +144,8 @@ glm::vec3 Bsdf::evaluateLocal(glm::vec3 wo, glm::vec3 wi, float& pdf) const {
         pdf = specularPdf;
         return specular;
       }
-      pdf = 0.5f * (specularPdf + cosI / kPi);
-      return kd_ / kPi + ks_ * specular;
+      pdf = 0.5f * (specularPdf + cosI * kInvPi);
+      return kd_ * kInvPi + ks_ * specular;
     }
     default:
       return glm::vec3(0.0f);
@@ -217,10 +217,18 @@ bool Bsdf::sample(glm::vec3 woWorld, float uLobe, glm::vec2 u, BsdfSample& out) 
       out.specular = true;
       return true;
     }
-    case MaterialKind::Matte:
+    case MaterialKind::Matte: {
+      // Lambert with cosine sampling: f |cos| / pdf is exactly Kd, so evaluateLocal is not needed.
       wi = cosineHemisphere(u);
       if (wo.z < 0.0f) wi.z = -wi.z;
-      break;
+      const float cosI = absCos(wi);
+      if (cosI == 0.0f) return false;
+      out.wi = frame_.toWorld(wi);
+      out.weight = kd_;
+      out.pdf = cosI * kInvPi;
+      out.specular = false;
+      return true;
+    }
     case MaterialKind::Metal:
     case MaterialKind::Plastic: {
       if (kind_ == MaterialKind::Plastic && uLobe < 0.5f) {

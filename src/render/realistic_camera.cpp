@@ -30,6 +30,8 @@ RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
   const double diagonalPixels = std::hypot(static_cast<double>(width), static_cast<double>(height));
   filmWidthMm_ = filmDiagonalMm * width / diagonalPixels;
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
+  mmPerRasterX_ = filmWidthMm_ / width;
+  mmPerRasterY_ = filmHeightMm_ / height;
   // Lens frame (mm, film at z = 0) to camera space (scene units, origin at cameraOriginZMm) to
   // world, as one matrix: the only lens-millimetre to scene-unit conversion.
   glm::dmat4 cameraFromLens(sceneUnitsPerMm);
@@ -67,14 +69,15 @@ bool RealisticCamera::maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) cons
   const glm::dvec2 a = filmPointMm(rasterMin), b = filmPointMm(rasterMax);
   const double x = std::clamp(0.0, std::min(a.x, b.x), std::max(a.x, b.x));
   const double y = std::clamp(0.0, std::min(a.y, b.y), std::max(a.y, b.y));
-  return std::hypot(x, y) <= lens_->imageCircleBoundMm();
+  const double bound = lens_->imageCircleBoundMm();
+  return x * x + y * y <= bound * bound;
 }
 
 glm::dvec2 RealisticCamera::filmPointMm(glm::vec2 raster) const {
   // pbrt's film mapping: raster x runs toward -x on the film and raster y toward +y, because the
   // lens turns the image upside down and mirrors it; the scene then appears upright.
-  return {0.5 * filmWidthMm_ - raster.x / width_ * filmWidthMm_,
-          -0.5 * filmHeightMm_ + raster.y / height_ * filmHeightMm_};
+  return {0.5 * filmWidthMm_ - raster.x * mmPerRasterX_,
+          -0.5 * filmHeightMm_ + raster.y * mmPerRasterY_};
 }
 
 void RealisticCamera::finishRay(glm::vec3 exitOriginMm, glm::vec3 exitDirection,

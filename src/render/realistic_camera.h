@@ -54,6 +54,7 @@ class RealisticCamera final : public Camera {
   std::shared_ptr<const optics::LensSystem> lens_;
   glm::mat4 worldFromLensMm_;
   double filmWidthMm_, filmHeightMm_;
+  double mmPerRasterX_, mmPerRasterY_;  // film size over resolution: no division per ray
   LensSampling sampling_;
 };
 
