@@ -276,6 +276,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     if (anyPasses(probe, kMaxFilmRadiusMm * i / kCoarse, fallbackRadiusMm_)) lastPassing = i;
   if (lastPassing < 0) return;
   filmRadiusMaxMm_ = kMaxFilmRadiusMm * std::min(lastPassing + 1, kCoarse) / kCoarse;
+  invFilmRadiusMaxMm_ = filmRadiusMaxMm_ > 0.0 ? 1.0 / filmRadiusMaxMm_ : 0.0;
   // Rays pass at the last searched radius: the image circle may reach beyond the search.
   if (lastPassing < kCoarse) imageCircleBoundMm_ = filmRadiusMaxMm_;
   radialBins = std::max(radialBins, 2);
@@ -436,7 +437,7 @@ inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, 
     return true;
   }
   // Written without unpredictable branches: the renderer calls this for every camera ray.
-  const double x = r / filmRadiusMaxMm_;
+  const double x = r * invFilmRadiusMaxMm_;
   const double t = 0.5 * (x + x * x) * binScale_;
   const int j = std::min(static_cast<int>(t), static_cast<int>(bins_.size()) - 2);
   const double f = std::clamp(t - j, 0.0, 1.0);

@@ -94,6 +94,7 @@ class ExitPupilTable {
   std::vector<Bin> bins_;
   double binScale_ = 0.0;  // bins - 1
   double filmRadiusMaxMm_ = 0.0;
+  double invFilmRadiusMaxMm_ = 0.0;  // sampling multiplies: one division fewer per ray
   double imageCircleBoundMm_ = std::numeric_limits<double>::infinity();
   double fallbackRadiusMm_ = 0.0;
   double planeZMm_ = 0.0;

@@ -26,12 +26,16 @@ void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit
     const glm::vec3& p1 = record.positions[tri[1]];
     const glm::vec3& p2 = record.positions[tri[2]];
     const float b1 = embreeHit.u, b2 = embreeHit.v, b0 = 1.0f - b1 - b2;
-    glm::vec3 n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    // The cross product's length is twice the triangle's area: one square root serves the
+    // normal and the texture footprint below.
+    const glm::vec3 edgeCross = glm::cross(p1 - p0, p2 - p0);
+    const float worldArea = glm::length(edgeCross);
+    glm::vec3 n = edgeCross * (1.0f / worldArea);
     if (!record.normals.empty()) {
       glm::vec3 ns =
           b0 * record.normals[tri[0]] + b1 * record.normals[tri[1]] + b2 * record.normals[tri[2]];
       const float length = glm::length(ns);
-      ns = length > 0.0f ? ns / length : n;
+      ns = length > 0.0f ? ns * (1.0f / length) : n;
       // pbrt orients the geometric normal by the shading normal when a mesh has normals.
       if (glm::dot(n, ns) < 0.0f) n = -n;
       hit.shadingNormal = ns;
@@ -46,7 +50,6 @@ void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit
       const glm::vec2 e1 = record.uvs[tri[1]] - record.uvs[tri[0]];
       const glm::vec2 e2 = record.uvs[tri[2]] - record.uvs[tri[0]];
       const float uvArea = std::abs(e1.x * e2.y - e1.y * e2.x);
-      const float worldArea = glm::length(glm::cross(p1 - p0, p2 - p0));
       hit.uvPerWorldUnit = worldArea > 0.0f ? std::sqrt(uvArea / worldArea) : 0.0f;
     } else {
       // pbrt's default parametrisation: (0,0), (1,0), (1,1) at the three vertices.
