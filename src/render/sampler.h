@@ -82,6 +82,44 @@ inline std::uint32_t sobolSecondReversed(std::uint32_t index) {
          t[3][index >> 24];
 }
 
+// The same two reversed Sobol dimensions, but as a function of reverseBits(index), which is
+// what the index shuffle produces before its final reversal: the low half of an entry is the
+// first dimension (reverseBits of reverseBits(index), i.e. index itself), the high half the
+// second. Both maps are linear over GF(2), so four lookups of 64-bit entries give the pair and
+// the shuffle's final bit reversal is never computed.
+struct SobolPairFromReversedIndexTables {
+  std::uint64_t byByte[4][256];
+  constexpr SobolPairFromReversedIndexTables() : byByte{} {
+    std::uint32_t secondReversed[32] = {};  // the second dimension's reversed direction numbers
+    std::uint32_t v = 1u << 31;
+    for (int k = 0; k < 32; ++k) {
+      secondReversed[k] = reverseBitsConstexpr(v);
+      v ^= v >> 1;
+    }
+    for (int table = 0; table < 4; ++table) {
+      for (int value = 0; value < 256; ++value) {
+        std::uint64_t result = 0;
+        for (int bit = 0; bit < 8; ++bit) {
+          if (!(value & (1 << bit))) continue;
+          const int indexBit = 31 - (8 * table + bit);  // where reverseBits puts this bit
+          result ^= (std::uint64_t{1} << indexBit) |
+                    (static_cast<std::uint64_t>(secondReversed[indexBit]) << 32);
+        }
+        byByte[table][value] = result;
+      }
+    }
+  }
+};
+inline constexpr SobolPairFromReversedIndexTables kSobolPairFromReversedIndex{};
+
+// {index, reverseBits(the second Sobol dimension of index)} packed low and high, from
+// reversedIndex = reverseBits(index).
+inline std::uint64_t sobolPairFromReversedIndex(std::uint32_t reversedIndex) {
+  const auto& t = kSobolPairFromReversedIndex.byByte;
+  return t[0][reversedIndex & 0xFFu] ^ t[1][(reversedIndex >> 8) & 0xFFu] ^
+         t[2][(reversedIndex >> 16) & 0xFFu] ^ t[3][reversedIndex >> 24];
+}
+
 inline std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
   // A small avalanche mixer (the "lowbias32" hash by C. Wellons).
   std::uint32_t x = a ^ (b + 0x9e3779b9u + (a << 6) + (a >> 2));
@@ -126,13 +164,18 @@ class PixelSampler {
       : pixelSeed_(sampler_detail::hashCombine(pixelIndex, seed)),
         reversedSampleIndex_(sampler_detail::reverseBits(sampleIndex)) {}
 
-  // Bit reversals are the sampler's main cost (x86 has no instruction for them), so each
-  // owenScramble(v) = reverseBits(laineKarras(reverseBits(v))) below is written with the inner
-  // reversal folded into a value that is already reversed: three reversals per pair, not five.
+  // Bit reversals are a large part of the sampler's cost (x86 has no instruction for them), so
+  // each owenScramble(v) = reverseBits(laineKarras(reverseBits(v))) below is written with the
+  // inner reversal folded into a value that is already reversed, and the shuffled index is
+  // never un-reversed: the Sobol tables read it reversed. The six reversals of the textbook
+  // form become one 64-bit reversal per pair.
   glm::vec2 next2D() {
     using namespace sampler_detail;
     const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
-    return point(shuffledIndex(seeds), seeds);
+    const std::uint64_t dimensions =
+        sobolPairFromReversedIndex(laineKarras(reversedSampleIndex_, seeds.shuffle));
+    return scramble(static_cast<std::uint32_t>(dimensions),
+                    static_cast<std::uint32_t>(dimensions >> 32), seeds);
   }
 
   // `count` points of one dimension pair for this sample: points count * s + k (k < count) of
@@ -144,6 +187,14 @@ class PixelSampler {
     using namespace sampler_detail;
     const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
     const std::uint32_t first = shuffledIndex(seeds) * count;
+    if ((count & (count - 1)) == 0 && count <= 256) {
+      // first + k = first ^ k, and the second dimension is linear: one table row per point.
+      const std::uint32_t secondOfFirst = sobolSecondReversed(first);
+      for (std::uint32_t k = 0; k < count; ++k) {
+        out[k] = scramble(first | k, secondOfFirst ^ kSobolSecondReversed.byByte[0][k], seeds);
+      }
+      return;
+    }
     for (std::uint32_t k = 0; k < count; ++k) out[k] = point(first + k, seeds);
   }
   float next1D() { return next2D().x; }
@@ -156,15 +207,21 @@ class PixelSampler {
   }
 
   // Point `index` of the pair's two Owen-scrambled Sobol dimensions. The first dimension is
-  // reverseBits(index), so its scramble is reverseBits(laineKarras(index)). The two final
-  // reversals are one 64-bit reversal of the pair (low half x's scrambled bits, high half y's),
-  // which leaves x's result in the high half and y's in the low half, for the instructions of
-  // one 32-bit reversal.
+  // reverseBits(index), so its scramble is reverseBits(laineKarras(index)).
   static glm::vec2 point(std::uint32_t index, const sampler_detail::PairSeeds& seeds) {
+    return scramble(index, sampler_detail::sobolSecondReversed(index), seeds);
+  }
+
+  // The two Owen scrambles, from the dimensions' bit-reversed values. Their final reversals
+  // are one 64-bit reversal of the pair (low half x's scrambled bits, high half y's), which
+  // leaves x's result in the high half and y's in the low half, for the instructions of one
+  // 32-bit reversal.
+  static glm::vec2 scramble(std::uint32_t xReversed, std::uint32_t yReversed,
+                            const sampler_detail::PairSeeds& seeds) {
     using namespace sampler_detail;
-    const std::uint64_t scrambled =
-        laineKarras(index, seeds.x) |
-        static_cast<std::uint64_t>(laineKarras(sobolSecondReversed(index), seeds.y)) << 32;
+    const std::uint64_t scrambled = laineKarras(xReversed, seeds.x) |
+                                    static_cast<std::uint64_t>(laineKarras(yReversed, seeds.y))
+                                        << 32;
     const std::uint64_t reversed = reverseBits64(scrambled);
     return {toUnitFloat(static_cast<std::uint32_t>(reversed >> 32)),
             toUnitFloat(static_cast<std::uint32_t>(reversed))};

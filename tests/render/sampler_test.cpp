@@ -76,24 +76,29 @@ TEST(PixelSampler, PowerOfTwoPrefixesAreStratifiedInEveryDimensionPair) {
 }
 
 // An array of n points is points n * s' + k of the same sequence, s' the shuffled sample index.
+// Power-of-two counts take a shortcut (first + k = first ^ k); 3 and 5 check the general path.
 TEST(PixelSampler, ArraysAreConsecutivePointsOfTheShuffledSequence) {
-  for (std::uint32_t sample : {0u, 1u, 5u, 511u}) {
-    PixelSampler sampler(321u, sample, 9u);
-    sampler.next2D();  // the arrays take the next dimension pairs, 1 and 2
-    for (std::uint32_t pair = 1; pair <= 2; ++pair) {
-      glm::vec2 points[4];
-      sampler.next2DArray(4, points);
-      const PairSeeds seeds = pairSeeds(hashCombine(321u, 9u), pair);
-      const std::uint32_t first = owenScramble(sample, seeds.shuffle) * 4;
-      for (std::uint32_t k = 0; k < 4; ++k) {
-        // Point first + k of the pair's sequence, from the direction numbers bit by bit.
-        std::uint32_t second = 0, direction = 1u << 31;
-        for (int bit = 0; bit < 32; ++bit) {
-          if ((first + k) & (1u << bit)) second ^= direction;
-          direction ^= direction >> 1;
+  for (std::uint32_t count : {1u, 3u, 4u, 5u, 8u}) {
+    for (std::uint32_t sample : {0u, 1u, 5u, 511u}) {
+      PixelSampler sampler(321u, sample, 9u);
+      sampler.next2D();  // the arrays take the next dimension pairs, 1 and 2
+      for (std::uint32_t pair = 1; pair <= 2; ++pair) {
+        std::vector<glm::vec2> points(count);
+        sampler.next2DArray(count, points.data());
+        const PairSeeds seeds = pairSeeds(hashCombine(321u, 9u), pair);
+        const std::uint32_t first = owenScramble(sample, seeds.shuffle) * count;
+        for (std::uint32_t k = 0; k < count; ++k) {
+          // Point first + k of the pair's sequence, from the direction numbers bit by bit.
+          std::uint32_t second = 0, direction = 1u << 31;
+          for (int bit = 0; bit < 32; ++bit) {
+            if ((first + k) & (1u << bit)) second ^= direction;
+            direction ^= direction >> 1;
+          }
+          EXPECT_EQ(points[k].x, toUnitFloat(owenScramble(reverseBits(first + k), seeds.x)))
+              << "count " << count << " sample " << sample << " k " << k;
+          EXPECT_EQ(points[k].y, toUnitFloat(owenScramble(second, seeds.y)))
+              << "count " << count << " sample " << sample << " k " << k;
         }
-        EXPECT_EQ(points[k].x, toUnitFloat(owenScramble(reverseBits(first + k), seeds.x)));
-        EXPECT_EQ(points[k].y, toUnitFloat(owenScramble(second, seeds.y)));
       }
     }
   }

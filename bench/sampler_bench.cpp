@@ -1,0 +1,56 @@
+// The cost of the renderer's sample points (render/sampler.h).
+//
+// BM_SamplerPath: one camera sample of a path: a PixelSampler is made, then draws 11 2D points
+// (2 for the camera, 3 for each of 3 bounces). items_per_second is points per second. Points
+// here overlap in the pipeline; in a render, the tracing between them keeps them apart, so
+// this is a lower bound of their cost there.
+// BM_SamplerArrays: direct lighting's arrays: 2 camera points, then two 4-point arrays (one
+// area light with 4 samples, as the course scenes ask).
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+
+#include "render/sampler.h"
+
+namespace {
+
+using lenslab::render::PixelSampler;
+
+void BM_SamplerPath(benchmark::State& state) {
+  constexpr int kPointsPerSample = 11;
+  std::uint32_t pixel = 0, sample = 0;
+  for (auto _ : state) {
+    PixelSampler sampler(pixel, sample, 7u);
+    for (int i = 0; i < kPointsPerSample; ++i) benchmark::DoNotOptimize(sampler.next2D());
+    if (++sample == 32u) {
+      sample = 0;
+      ++pixel;
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kPointsPerSample);
+}
+BENCHMARK(BM_SamplerPath);
+
+void BM_SamplerArrays(benchmark::State& state) {
+  constexpr int kPoints = 2 + 8;
+  std::uint32_t pixel = 0, sample = 0;
+  glm::vec2 lights[4], bsdfs[4];
+  for (auto _ : state) {
+    PixelSampler sampler(pixel, sample, 7u);
+    benchmark::DoNotOptimize(sampler.next2D());
+    benchmark::DoNotOptimize(sampler.next2D());
+    sampler.next2DArray(4, lights);
+    sampler.next2DArray(4, bsdfs);
+    benchmark::DoNotOptimize(lights);
+    benchmark::DoNotOptimize(bsdfs);
+    if (++sample == 512u) {
+      sample = 0;
+      ++pixel;
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kPoints);
+}
+BENCHMARK(BM_SamplerArrays);
+
+}  // namespace
