@@ -22,15 +22,9 @@ void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit
   hit.light = record.light;
   if (record.kind == GeometryRecord::Kind::Mesh) {
     const unsigned* tri = &record.indices[3 * embreeHit.primID];
-    const glm::vec3& p0 = record.positions[tri[0]];
-    const glm::vec3& p1 = record.positions[tri[1]];
-    const glm::vec3& p2 = record.positions[tri[2]];
+    const glm::vec4 frame = record.triangleFrames[embreeHit.primID];
     const float b1 = embreeHit.u, b2 = embreeHit.v, b0 = 1.0f - b1 - b2;
-    // The cross product's length is twice the triangle's area: one square root serves the
-    // normal and the texture footprint below.
-    const glm::vec3 edgeCross = glm::cross(p1 - p0, p2 - p0);
-    const float worldArea = glm::length(edgeCross);
-    glm::vec3 n = edgeCross * (1.0f / worldArea);
+    glm::vec3 n(frame);
     if (!record.normals.empty()) {
       glm::vec3 ns =
           b0 * record.normals[tri[0]] + b1 * record.normals[tri[1]] + b2 * record.normals[tri[2]];
@@ -46,11 +40,7 @@ void fillShadingFromRecord(const GeometryRecord& record, const RTCHit& embreeHit
     hit.geometricNormal = n;
     if (!record.uvs.empty()) {
       hit.uv = b0 * record.uvs[tri[0]] + b1 * record.uvs[tri[1]] + b2 * record.uvs[tri[2]];
-      // sqrt(uv area / world area) of the triangle: the mean (u, v) rate per unit length.
-      const glm::vec2 e1 = record.uvs[tri[1]] - record.uvs[tri[0]];
-      const glm::vec2 e2 = record.uvs[tri[2]] - record.uvs[tri[0]];
-      const float uvArea = std::abs(e1.x * e2.y - e1.y * e2.x);
-      hit.uvPerWorldUnit = worldArea > 0.0f ? std::sqrt(uvArea / worldArea) : 0.0f;
+      hit.uvPerWorldUnit = frame.w;
     } else {
       // pbrt's default parametrisation: (0,0), (1,0), (1,1) at the three vertices.
       hit.uv = glm::vec2(b1 + b2, b2);

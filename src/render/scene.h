@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct GeometryRecord {
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> uvs;
   std::vector<unsigned> indices;
+  // Per triangle, computed once at build: the unit geometric normal (xyz, before flipNormal)
+  // and the mean texture-space rate per world unit (w; 0 without uvs). Shading a hit then reads
+  // 16 bytes instead of three vertices, a cross product, two square roots and two divisions.
+  std::vector<glm::vec4> triangleFrames;
   bool flipNormal = false;
   // Quadric
   PlacedQuadric quadric;

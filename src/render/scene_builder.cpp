@@ -90,6 +90,32 @@ void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
 
 glm::vec3 toFloat(glm::dvec3 v) { return glm::vec3(v); }
 
+// GeometryRecord::triangleFrames of a mesh record whose positions, uvs and indices are set.
+std::vector<glm::vec4> triangleFrames(const GeometryRecord& record) {
+  std::vector<glm::vec4> frames;
+  frames.reserve(record.indices.size() / 3);
+  for (std::size_t t = 0; t + 2 < record.indices.size(); t += 3) {
+    const unsigned* tri = &record.indices[t];
+    const glm::vec3 p0 = record.positions[tri[0]];
+    // The cross product's length is twice the area: it normalises the normal and gives the
+    // world side of the texture-rate ratio.
+    const glm::vec3 edgeCross =
+        glm::cross(record.positions[tri[1]] - p0, record.positions[tri[2]] - p0);
+    const float worldArea = glm::length(edgeCross);
+    const glm::vec3 normal = edgeCross * (1.0f / worldArea);
+    float uvPerWorldUnit = 0.0f;
+    if (!record.uvs.empty()) {
+      // sqrt(uv area / world area): the mean (u, v) rate per unit length.
+      const glm::vec2 e1 = record.uvs[tri[1]] - record.uvs[tri[0]];
+      const glm::vec2 e2 = record.uvs[tri[2]] - record.uvs[tri[0]];
+      const float uvArea = std::abs(e1.x * e2.y - e1.y * e2.x);
+      uvPerWorldUnit = worldArea > 0.0f ? std::sqrt(uvArea / worldArea) : 0.0f;
+    }
+    frames.emplace_back(normal, uvPerWorldUnit);
+  }
+  return frames;
+}
+
 }  // namespace
 
 class SceneBuilder {
@@ -315,6 +341,7 @@ class SceneBuilder {
       record.indices = shape.mesh.indices;
       record.flipNormal = shape.reverseOrientation != (glm::determinant(glm::dmat3(m)) < 0.0);
       if (record.indices.empty()) return;
+      record.triangleFrames = triangleFrames(record);
       geometry = rtcNewGeometry(scene_->device_, RTC_GEOMETRY_TYPE_TRIANGLE);
       auto* vertices = static_cast<float*>(
           rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
