@@ -7,6 +7,7 @@
 // After B. Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4), 2020. Power-of-two prefixes
 // of the index range stay stratified, which suits progressive waves of 1, 1, 2, 4, ... samples.
 
+#include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
 
@@ -49,76 +50,61 @@ constexpr std::uint32_t reverseBitsConstexpr(std::uint32_t x) {
   return result;
 }
 
-// The second Sobol dimension (direction numbers v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1)), as
-// 32-bit fixed point, bit-reversed: Owen scrambling works on the reversed value, so the table
-// hands it over directly. The map is linear over GF(2), so four byte-indexed tables give it
-// with four lookups.
-struct SobolSecondReversedTables {
-  std::uint32_t byByte[4][256];
-  constexpr SobolSecondReversedTables() : byByte{} {
-    std::uint32_t direction[32] = {};
-    std::uint32_t v = 1u << 31;
-    for (int k = 0; k < 32; ++k) {
-      direction[k] = reverseBitsConstexpr(v);
-      v ^= v >> 1;
-    }
+// Four byte-indexed tables of a map that is linear over GF(2): bit b of byte t of the input
+// contributes contribution[8 t + b], and the map of a word is the XOR of its four bytes' rows.
+template <typename Word>
+struct LinearByteTables {
+  Word byByte[4][256];
+  constexpr explicit LinearByteTables(const std::array<Word, 32>& contribution) : byByte{} {
     for (int table = 0; table < 4; ++table) {
       for (int value = 0; value < 256; ++value) {
-        std::uint32_t result = 0;
+        Word result = 0;
         for (int bit = 0; bit < 8; ++bit) {
-          if (value & (1 << bit)) result ^= direction[8 * table + bit];
+          if (value & (1 << bit)) result ^= contribution[8 * table + bit];
         }
         byByte[table][value] = result;
       }
     }
   }
-};
-inline constexpr SobolSecondReversedTables kSobolSecondReversed{};
-
-// reverseBits(the second Sobol dimension of `index`).
-inline std::uint32_t sobolSecondReversed(std::uint32_t index) {
-  const auto& t = kSobolSecondReversed.byByte;
-  return t[0][index & 0xFFu] ^ t[1][(index >> 8) & 0xFFu] ^ t[2][(index >> 16) & 0xFFu] ^
-         t[3][index >> 24];
-}
-
-// The same two reversed Sobol dimensions, but as a function of reverseBits(index), which is
-// what the index shuffle produces before its final reversal: the low half of an entry is the
-// first dimension (reverseBits of reverseBits(index), i.e. index itself), the high half the
-// second. Both maps are linear over GF(2), so four lookups of 64-bit entries give the pair and
-// the shuffle's final bit reversal is never computed.
-struct SobolPairFromReversedIndexTables {
-  std::uint64_t byByte[4][256];
-  constexpr SobolPairFromReversedIndexTables() : byByte{} {
-    std::uint32_t secondReversed[32] = {};  // the second dimension's reversed direction numbers
-    std::uint32_t v = 1u << 31;
-    for (int k = 0; k < 32; ++k) {
-      secondReversed[k] = reverseBitsConstexpr(v);
-      v ^= v >> 1;
-    }
-    for (int table = 0; table < 4; ++table) {
-      for (int value = 0; value < 256; ++value) {
-        std::uint64_t result = 0;
-        for (int bit = 0; bit < 8; ++bit) {
-          if (!(value & (1 << bit))) continue;
-          const int indexBit = 31 - (8 * table + bit);  // where reverseBits puts this bit
-          result ^= (std::uint64_t{1} << indexBit) |
-                    (static_cast<std::uint64_t>(secondReversed[indexBit]) << 32);
-        }
-        byByte[table][value] = result;
-      }
-    }
+  Word operator()(std::uint32_t x) const {
+    return byByte[0][x & 0xFFu] ^ byByte[1][(x >> 8) & 0xFFu] ^ byByte[2][(x >> 16) & 0xFFu] ^
+           byByte[3][x >> 24];
   }
 };
-inline constexpr SobolPairFromReversedIndexTables kSobolPairFromReversedIndex{};
 
-// {index, reverseBits(the second Sobol dimension of index)} packed low and high, from
-// reversedIndex = reverseBits(index).
-inline std::uint64_t sobolPairFromReversedIndex(std::uint32_t reversedIndex) {
-  const auto& t = kSobolPairFromReversedIndex.byByte;
-  return t[0][reversedIndex & 0xFFu] ^ t[1][(reversedIndex >> 8) & 0xFFu] ^
-         t[2][(reversedIndex >> 16) & 0xFFu] ^ t[3][reversedIndex >> 24];
+// The second Sobol dimension's direction numbers (v_0 = 2^31, v_k = v_{k-1} ^ (v_{k-1} >> 1)),
+// as 32-bit fixed point, bit-reversed: Owen scrambling works on reversed values.
+constexpr std::array<std::uint32_t, 32> sobolSecondReversedDirections() {
+  std::array<std::uint32_t, 32> direction{};
+  std::uint32_t v = 1u << 31;
+  for (int k = 0; k < 32; ++k) {
+    direction[k] = reverseBitsConstexpr(v);
+    v ^= v >> 1;
+  }
+  return direction;
 }
+
+// reverseBits(the second Sobol dimension of index), as a function of index.
+inline constexpr LinearByteTables<std::uint32_t> kSobolSecondReversed{
+    sobolSecondReversedDirections()};
+
+// The same two reversed Sobol dimensions as a function of reverseBits(index), which is what the
+// index shuffle produces before its final reversal: the low half of an entry is the first
+// dimension (reverseBits of reverseBits(index), i.e. index itself), the high half the second.
+// Four lookups of 64-bit entries give the pair, and the shuffle's final reversal is never
+// computed.
+constexpr std::array<std::uint64_t, 32> sobolPairFromReversedIndexContributions() {
+  const std::array<std::uint32_t, 32> second = sobolSecondReversedDirections();
+  std::array<std::uint64_t, 32> contribution{};
+  for (int bit = 0; bit < 32; ++bit) {
+    const int indexBit = 31 - bit;  // where reverseBits puts this bit
+    contribution[bit] =
+        (std::uint64_t{1} << indexBit) | (static_cast<std::uint64_t>(second[indexBit]) << 32);
+  }
+  return contribution;
+}
+inline constexpr LinearByteTables<std::uint64_t> kSobolPairFromReversedIndex{
+    sobolPairFromReversedIndexContributions()};
 
 inline std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
   // A small avalanche mixer (the "lowbias32" hash by C. Wellons).
@@ -173,7 +159,7 @@ class PixelSampler {
     using namespace sampler_detail;
     const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
     const std::uint64_t dimensions =
-        sobolPairFromReversedIndex(laineKarras(reversedSampleIndex_, seeds.shuffle));
+        kSobolPairFromReversedIndex(laineKarras(reversedSampleIndex_, seeds.shuffle));
     return scramble(static_cast<std::uint32_t>(dimensions),
                     static_cast<std::uint32_t>(dimensions >> 32), seeds);
   }
@@ -189,7 +175,7 @@ class PixelSampler {
     const std::uint32_t first = shuffledIndex(seeds) * count;
     if ((count & (count - 1)) == 0 && count <= 256) {
       // first + k = first ^ k, and the second dimension is linear: one table row per point.
-      const std::uint32_t secondOfFirst = sobolSecondReversed(first);
+      const std::uint32_t secondOfFirst = kSobolSecondReversed(first);
       for (std::uint32_t k = 0; k < count; ++k) {
         out[k] = scramble(first | k, secondOfFirst ^ kSobolSecondReversed.byByte[0][k], seeds);
       }
@@ -209,7 +195,7 @@ class PixelSampler {
   // Point `index` of the pair's two Owen-scrambled Sobol dimensions. The first dimension is
   // reverseBits(index), so its scramble is reverseBits(laineKarras(index)).
   static glm::vec2 point(std::uint32_t index, const sampler_detail::PairSeeds& seeds) {
-    return scramble(index, sampler_detail::sobolSecondReversed(index), seeds);
+    return scramble(index, sampler_detail::kSobolSecondReversed(index), seeds);
   }
 
   // The two Owen scrambles, from the dimensions' bit-reversed values. Their final reversals
