@@ -153,8 +153,9 @@ class PixelSampler {
   // Bit reversals are a large part of the sampler's cost (x86 has no instruction for them), so
   // each owenScramble(v) = reverseBits(laineKarras(reverseBits(v))) below is written with the
   // inner reversal folded into a value that is already reversed, and the shuffled index is
-  // never un-reversed: the Sobol tables read it reversed. The six reversals of the textbook
-  // form become one 64-bit reversal per pair.
+  // never un-reversed: the Sobol tables read it reversed. The seven reversals per pair of the
+  // textbook form (two for the shuffle, three for x, two for y) become one 64-bit reversal per
+  // pair, plus one per sample in the constructor.
   glm::vec2 next2D() {
     using namespace sampler_detail;
     const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
