@@ -87,13 +87,13 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     passed.resize(n);
     for (int p = 0; p < pixels; ++p) {
       const int x = visible[first + p].x, y = visible[first + p].y;
-      const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
+      const PixelSeeds pixelSeeds(static_cast<std::uint32_t>(y * width + x), job.settings.seed);
       for (int s = 0; s < count; ++s) {
         const std::size_t i = samplers.size();
-        samplers.emplace_back(pixelIndex, static_cast<std::uint32_t>(firstSample + s),
-                              job.settings.seed);
-        rasterPoints[i] = (glm::vec2(x, y) + samplers[i].next2D()) * wave.rasterScale;
-        lensSamples[i] = samplers[i].next2D();
+        samplers.emplace_back(pixelSeeds, static_cast<std::uint32_t>(firstSample + s));
+        rasterPoints[i] =
+            (glm::vec2(x, y) + samplers[i].nextLeading2D(pixelSeeds)) * wave.rasterScale;
+        lensSamples[i] = samplers[i].nextLeading2D(pixelSeeds);
       }
     }
     camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());

@@ -8,6 +8,7 @@
 // of the index range stay stratified, which suits progressive waves of 1, 1, 2, 4, ... samples.
 
 #include <array>
+#include <cassert>
 #include <cstdint>
 #include <glm/vec2.hpp>
 
@@ -144,11 +145,37 @@ inline float toUnitFloat(std::uint32_t bits) {
 
 }  // namespace sampler_detail
 
+// What every sample of one pixel shares: the pixel's seed and the scrambling seeds of the first
+// dimension pairs (the camera's film and lens points). A renderer that takes many samples of a
+// pixel in a row computes these once per pixel instead of once per sample.
+struct PixelSeeds {
+  static constexpr std::uint32_t kLeadingPairs = 2;
+  PixelSeeds(std::uint32_t pixelIndex, std::uint32_t seed)
+      : pixelSeed(sampler_detail::hashCombine(pixelIndex, seed)) {
+    for (std::uint32_t pair = 0; pair < kLeadingPairs; ++pair) {
+      leadingPairs[pair] = sampler_detail::pairSeeds(pixelSeed, pair);
+    }
+  }
+  std::uint32_t pixelSeed;
+  sampler_detail::PairSeeds leadingPairs[kLeadingPairs];
+};
+
 class PixelSampler {
  public:
   PixelSampler(std::uint32_t pixelIndex, std::uint32_t sampleIndex, std::uint32_t seed)
       : pixelSeed_(sampler_detail::hashCombine(pixelIndex, seed)),
         reversedSampleIndex_(sampler_detail::reverseBits(sampleIndex)) {}
+  // The same sampler, from seeds computed once for the pixel.
+  PixelSampler(const PixelSeeds& pixel, std::uint32_t sampleIndex)
+      : pixelSeed_(pixel.pixelSeed),
+        reversedSampleIndex_(sampler_detail::reverseBits(sampleIndex)) {}
+
+  // next2D() for one of the first PixelSeeds::kLeadingPairs pairs, with its seeds from `pixel`
+  // (the pixel this sampler was made for): the same point, without hashing the seeds again.
+  glm::vec2 nextLeading2D(const PixelSeeds& pixel) {
+    assert(dimensionPair_ < PixelSeeds::kLeadingPairs);
+    return pointOfPair(pixel.leadingPairs[dimensionPair_++]);
+  }
 
   // Bit reversals are a large part of the sampler's cost (x86 has no instruction for them), so
   // each owenScramble(v) = reverseBits(laineKarras(reverseBits(v))) below is written with the
@@ -157,12 +184,7 @@ class PixelSampler {
   // textbook form (two for the shuffle, three for x, two for y) become one 64-bit reversal per
   // pair, plus one per sample in the constructor.
   glm::vec2 next2D() {
-    using namespace sampler_detail;
-    const PairSeeds seeds = pairSeeds(pixelSeed_, dimensionPair_++);
-    const std::uint64_t dimensions =
-        kSobolPairFromReversedIndex(laineKarras(reversedSampleIndex_, seeds.shuffle));
-    return scramble(static_cast<std::uint32_t>(dimensions),
-                    static_cast<std::uint32_t>(dimensions >> 32), seeds);
+    return pointOfPair(sampler_detail::pairSeeds(pixelSeed_, dimensionPair_++));
   }
 
   // `count` points of one dimension pair for this sample: points count * s + k (k < count) of
@@ -187,6 +209,15 @@ class PixelSampler {
   float next1D() { return next2D().x; }
 
  private:
+  // This sample's point of the dimension pair with `seeds`.
+  glm::vec2 pointOfPair(const sampler_detail::PairSeeds& seeds) const {
+    using namespace sampler_detail;
+    const std::uint64_t dimensions =
+        kSobolPairFromReversedIndex(laineKarras(reversedSampleIndex_, seeds.shuffle));
+    return scramble(static_cast<std::uint32_t>(dimensions),
+                    static_cast<std::uint32_t>(dimensions >> 32), seeds);
+  }
+
   // The sample index, Owen-shuffled per pixel and dimension pair.
   std::uint32_t shuffledIndex(const sampler_detail::PairSeeds& seeds) const {
     using namespace sampler_detail;

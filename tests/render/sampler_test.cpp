@@ -44,6 +44,21 @@ TEST(PixelSampler, EqualsTheUnfoldedOwenScrambledSobolSequence) {
   }
 }
 
+// The renderer's per-pixel shortcut gives the same points as a sampler made from scratch.
+TEST(PixelSampler, PixelSeedsGiveTheSamePointsAsAFreshSampler) {
+  for (std::uint32_t pixel : {0u, 12345u}) {
+    const PixelSeeds seeds(pixel, 11u);
+    for (std::uint32_t sample : {0u, 7u, 300u}) {
+      PixelSampler fresh(pixel, sample, 11u);
+      PixelSampler shared(seeds, sample);
+      for (std::uint32_t pair = 0; pair < PixelSeeds::kLeadingPairs; ++pair) {
+        EXPECT_EQ(shared.nextLeading2D(seeds), fresh.next2D()) << "pair " << pair;
+      }
+      for (int pair = 0; pair < 3; ++pair) EXPECT_EQ(shared.next2D(), fresh.next2D());
+    }
+  }
+}
+
 TEST(PixelSampler, IsDeterministicAndDependsOnPixelSampleAndSeed) {
   EXPECT_EQ(PixelSampler(5, 3, 1).next2D(), PixelSampler(5, 3, 1).next2D());
   EXPECT_NE(PixelSampler(5, 3, 1).next2D(), PixelSampler(6, 3, 1).next2D());
