@@ -238,7 +238,7 @@ class SceneBuilder {
         if (!texture.image) continue;
         texture.imageScale = static_cast<float>(params.getFloat("scale", 1.0));
         texture.flipT = !description_.pbrtV2;
-        texture.mipLevels = buildMipLevels(*texture.image);
+        texture.coarserMipLevels = buildCoarserMipLevels(*texture.image);
         if (params.getBool("invert", false)) {
           params.unsupported("invert", "the image is used as it is");
         }

@@ -47,21 +47,24 @@ glm::vec3 TextureSet::evaluate(int index, glm::vec2 uv, float footprint) const {
     case TextureKind::Image: {
       const glm::vec2 st(texture.uScale * uv.x + texture.uDelta,
                          texture.vScale * uv.y + texture.vDelta);
-      const auto& levels = texture.mipLevels;
-      if (!levels || footprint <= 0.0f) {
+      const auto& coarser = texture.coarserMipLevels;
+      if (!coarser || coarser->empty() || footprint <= 0.0f) {
         return lookupImage(texture, *texture.image, st) * texture.imageScale;
       }
       // Trilinear: the level whose texel matches the footprint, blended with the next one.
       const float texels = footprint *
                            std::max(std::abs(texture.uScale), std::abs(texture.vScale)) *
                            static_cast<float>(texture.image->width);
-      const float level = std::clamp(std::log2(std::max(texels, 1.0f)), 0.0f,
-                                     static_cast<float>(levels->size() - 1));
+      const float level =
+          std::clamp(std::log2(std::max(texels, 1.0f)), 0.0f, static_cast<float>(coarser->size()));
       const auto lower = static_cast<std::size_t>(level);
-      const std::size_t upper = std::min(lower + 1, levels->size() - 1);
+      const std::size_t upper = std::min(lower + 1, coarser->size());
       const float blend = level - static_cast<float>(lower);
-      const glm::vec3 a = lookupImage(texture, (*levels)[lower], st);
-      const glm::vec3 b = blend > 0.0f ? lookupImage(texture, (*levels)[upper], st) : a;
+      const auto levelImage = [&](std::size_t levelIndex) -> const FloatImage& {
+        return levelIndex == 0 ? *texture.image : (*coarser)[levelIndex - 1];
+      };
+      const glm::vec3 a = lookupImage(texture, levelImage(lower), st);
+      const glm::vec3 b = blend > 0.0f ? lookupImage(texture, levelImage(upper), st) : a;
       return ((1.0f - blend) * a + blend * b) * texture.imageScale;
     }
   }
@@ -100,13 +103,12 @@ glm::vec3 TextureSet::lookupImage(const Texture& texture, const FloatImage& imag
 
 namespace lenslab::render {
 
-std::shared_ptr<const std::vector<FloatImage>> buildMipLevels(const FloatImage& image) {
+std::shared_ptr<const std::vector<FloatImage>> buildCoarserMipLevels(const FloatImage& image) {
   const int size = image.width;
   if (size != image.height || size <= 0 || (size & (size - 1)) != 0) return nullptr;
   auto levels = std::make_shared<std::vector<FloatImage>>();
-  levels->push_back(image);
-  while (levels->back().width > 1) {
-    const FloatImage& fine = levels->back();
+  while ((levels->empty() ? image : levels->back()).width > 1) {
+    const FloatImage& fine = levels->empty() ? image : levels->back();
     FloatImage coarse;
     coarse.width = coarse.height = fine.width / 2;
     coarse.rgb.resize(static_cast<std::size_t>(coarse.width) * coarse.height * 3);

@@ -21,9 +21,9 @@ struct Texture {
   // The (u, v) mapping: s = uScale * u + uDelta, t = vScale * v + vDelta.
   float uScale = 1.0f, vScale = 1.0f, uDelta = 0.0f, vDelta = 0.0f;
   std::shared_ptr<const FloatImage> image;
-  // Box-filtered mip levels of `image` (level 0 is the image itself), for footprint-sized
-  // lookups; only built for power-of-two square images.
-  std::shared_ptr<const std::vector<FloatImage>> mipLevels;
+  // Box-filtered mip levels 1, 2, ... of `image` (level 0 is `image` itself, not copied), for
+  // footprint-sized lookups; only built for power-of-two square images.
+  std::shared_ptr<const std::vector<FloatImage>> coarserMipLevels;
   float imageScale = 1.0f;
   bool clampWrap = false;
   bool blackWrap = false;
@@ -31,8 +31,9 @@ struct Texture {
   bool flipT = true;
 };
 
-// Halves a power-of-two square image repeatedly (2x2 box filter) down to 1x1.
-std::shared_ptr<const std::vector<FloatImage>> buildMipLevels(const FloatImage& image);
+// Halves a power-of-two square image repeatedly (2x2 box filter) down to 1x1: levels 1, 2, ...
+// of its pyramid (none for a 1x1 image); null for any other shape.
+std::shared_ptr<const std::vector<FloatImage>> buildCoarserMipLevels(const FloatImage& image);
 
 class TextureSet {
  public:
