@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "cli/number_validators.h"
 #include "cli/size_argument.h"
@@ -121,8 +122,11 @@ int runRenderCommand(const RenderArguments& arguments) {
   auto camera = render::makeCamera(description, overrides, cameraDiagnostics);
   printDiagnostics(cameraDiagnostics);
   if (!camera) return kFailure;
-  camera->prepare();  // the exit-pupil table is set-up, as pbrt's is
+  // The exit-pupil table is set-up, as pbrt's is. It and the scene (image textures, Embree's
+  // BVH) are independent, so they are built side by side.
+  std::thread preparingCamera([&camera] { camera->prepare(); });
   render::BuildResult built = render::buildScene(description);
+  preparingCamera.join();
   printDiagnostics(built.diagnostics);
   if (!built.scene) return kFailure;
   const double setupSeconds = secondsSince(started);
