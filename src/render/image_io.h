@@ -26,8 +26,11 @@ struct FloatImage {
   std::vector<float> rgb;
 };
 
-// 32-bit float RGB OpenEXR (ZIP compressed).
+// 32-bit float RGB OpenEXR: ZIP compressed where exrZipPays, else uncompressed.
 WriteResult writeExr(const std::filesystem::path& path, const FloatImage& image);
+// Whether zipping `image` saves at least a fifth of its size, judged from a few zipped stripes
+// (a noisy render does not compress, and zipping it costs ~15x a raw write).
+bool exrZipPays(const FloatImage& image);
 // Portable float map ("PF", little endian, rows bottom to top as the format requires).
 WriteResult writePfm(const std::filesystem::path& path, const FloatImage& image);
 // 8-bit sRGB RGBA (alpha 255) of image * 2^exposureStops, clamped: what PNGs and the viewer's

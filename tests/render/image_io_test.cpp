@@ -76,6 +76,35 @@ TEST(ImageIo, ExrRoundTripsFloatPixels) {
   EXPECT_FALSE(std::filesystem::exists(directory / "out.exr.tmp-lenslab"));
 }
 
+// A render's noise does not zip, so it is written raw; a picture with flat regions is zipped.
+// Either way the pixels come back exactly, and the zipped file is the smaller.
+TEST(ImageIo, ExrIsZippedOnlyWhereZipPays) {
+  const int width = 256, height = 128;
+  FloatImage noise{width, height, {}};
+  std::uint32_t state = 12345;
+  for (int i = 0; i < width * height * 3; ++i) {
+    state = state * 1664525u + 1013904223u;  // Numerical Recipes' LCG
+    noise.rgb.push_back(0.5f + static_cast<float>(state >> 8) * 0x1p-24f);
+  }
+  FloatImage flat{width, height, std::vector<float>(noise.rgb.size(), 0.0f)};
+  for (int y = 0; y < height; ++y) {  // a bright band, black elsewhere
+    for (int x = width / 4; x < width / 2; ++x) flat.rgb[(y * width + x) * 3 + 1] = 3.0f;
+  }
+  EXPECT_FALSE(exrZipPays(noise));
+  EXPECT_TRUE(exrZipPays(flat));
+
+  const auto directory = testing::makeTestDirectory("exr-zip");
+  for (const auto& [name, image] : {std::pair{"noise.exr", &noise}, std::pair{"flat.exr", &flat}}) {
+    ASSERT_TRUE(writeExr(directory / name, *image).ok);
+    const ReadResult read = readImage(directory / name);
+    ASSERT_TRUE(read.ok) << read.error;
+    EXPECT_EQ(read.image.rgb, image->rgb) << name;
+  }
+  const auto rawBytes = static_cast<std::uintmax_t>(width) * height * 3 * sizeof(float);
+  EXPECT_GT(std::filesystem::file_size(directory / "noise.exr"), rawBytes);
+  EXPECT_LT(std::filesystem::file_size(directory / "flat.exr"), rawBytes / 10);
+}
+
 TEST(ImageIo, PfmHasItsHeaderAndBottomUpRows) {
   const auto directory = testing::makeTestDirectory("pfm");
   const FloatImage image = gradient(4, 2);
