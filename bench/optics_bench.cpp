@@ -5,6 +5,7 @@
 // traceFromFilmBatch, 4096 rays per batch. items_per_second is camera rays per second. The film is
 // the course scenes' square film of 70 mm diagonal, at the film distance in the lens file.
 // BM_LensTraceScalar/<lens>: the same rays through the scalar double-precision trace.
+// BM_PupilSample/<lens>: sampleCameraRays alone (the exit-pupil half of BM_LensTrace).
 // BM_ExitPupil/<lens>: building the table (2 threads), wall time.
 
 #include <benchmark/benchmark.h>
@@ -102,6 +103,33 @@ void BM_LensTraceScalar(benchmark::State& state, const std::string& lensFile) {
   state.counters["pass_fraction"] = total ? static_cast<double>(passed) / total : 0.0;
 }
 
+// The exit-pupil sampling alone (LensSystem::sampleCameraRays), per camera ray: the part of
+// BM_LensTrace before the trace.
+void BM_PupilSample(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(lensFile);
+  if (!lens) {
+    state.SkipWithError("cannot load lens");
+    return;
+  }
+  lens->exitPupilTable();  // build the table outside the timed loop
+  constexpr std::size_t kBatch = 4096;
+  const CameraSamples samples = makeSamples(kBatch);
+  std::vector<float> filmX(kBatch), filmY(kBatch), u0(kBatch), u1(kBatch), pdf(kBatch);
+  for (std::size_t i = 0; i < kBatch; ++i) {
+    filmX[i] = static_cast<float>(samples.film[i].x);
+    filmY[i] = static_cast<float>(samples.film[i].y);
+    u0[i] = static_cast<float>(samples.u[i].x);
+    u1[i] = static_cast<float>(samples.u[i].y);
+  }
+  LensRayBatch batch;
+  for (auto _ : state) {
+    lens->sampleCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), kBatch, batch,
+                           pdf.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kBatch));
+}
+
 void BM_ExitPupil(benchmark::State& state, const std::string& lensFile) {
   const auto lens = loadBundled(lensFile);
   if (!lens) {
@@ -122,6 +150,8 @@ const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
 [[maybe_unused]] const bool kRegistered = [] {
   for (const auto& [name, file] : kLenses) {
     benchmark::RegisterBenchmark((std::string("BM_LensTrace/") + name).c_str(), BM_LensTrace,
+                                 std::string(file));
+    benchmark::RegisterBenchmark((std::string("BM_PupilSample/") + name).c_str(), BM_PupilSample,
                                  std::string(file));
     benchmark::RegisterBenchmark((std::string("BM_LensTraceScalar/") + name).c_str(),
                                  BM_LensTraceScalar, std::string(file));

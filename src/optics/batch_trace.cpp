@@ -176,6 +176,11 @@ bool LensSystem::batchKernelAvailable(BatchKernel kernel) {
   return false;
 }
 
+LensSystem::BatchKernel LensSystem::autoBatchKernel() {
+  static const bool useAvx512 = cpuHasAvx512() && !std::getenv("LENSLAB_NO_AVX512");
+  return useAvx512 ? BatchKernel::Avx512 : cpuHasAvx2() ? BatchKernel::Avx2 : BatchKernel::Portable;
+}
+
 void LensSystem::traceFromFilmBatch(LensRayBatch& rays) const {
   traceFromFilmBatch(rays, BatchKernel::Auto);
 }
@@ -203,13 +208,7 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) cons
                   eta != 1.0,
                   flat};
   }
-  if (!batchKernelAvailable(kernel)) kernel = BatchKernel::Auto;
-  if (kernel == BatchKernel::Auto) {
-    static const bool useAvx512 = cpuHasAvx512() && !std::getenv("LENSLAB_NO_AVX512");
-    kernel = useAvx512      ? BatchKernel::Avx512
-             : cpuHasAvx2() ? BatchKernel::Avx2
-                            : BatchKernel::Portable;
-  }
+  if (!batchKernelAvailable(kernel) || kernel == BatchKernel::Auto) kernel = autoBatchKernel();
   if (kernel == BatchKernel::Avx512)
     traceAvx512(list, count, rays);
   else if (kernel == BatchKernel::Avx2)

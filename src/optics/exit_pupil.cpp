@@ -362,6 +362,27 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
       }
     }
   }
+  buildSamplingBins();
+}
+
+void ExitPupilTable::buildSamplingBins() {
+  samplingBins_.resize(bins_.size());
+  for (std::size_t j = 0; j < bins_.size(); ++j) {
+    const Bin& b = bins_[j];
+    SamplingBin& out = samplingBins_[j];
+    out.empty = b.empty;
+    out.centreXMm = static_cast<float>(b.centreXMm);
+    out.invAreaPerMm2 = static_cast<float>(b.invAreaPerMm2);
+    for (int k = 0; k < kSectors; ++k) {
+      out.slots[k] = {static_cast<float>(b.aliasProbability[k]),
+                      static_cast<float>(b.invAliasProbability[k]),
+                      static_cast<float>(b.invAliasComplement[k]), b.alias[k]};
+      const double ra = b.vertexRadiusMm[k], rb = b.vertexRadiusMm[(k + 1) % kSectors];
+      out.sectors[k] = {static_cast<float>(ra * cosAt_[k]), static_cast<float>(ra * sinAt_[k]),
+                        static_cast<float>(rb * cosAt_[k + 1]),
+                        static_cast<float>(rb * sinAt_[k + 1])};
+    }
+  }
 }
 
 double ExitPupilTable::binRadiusMm(int j) const {
@@ -481,27 +502,6 @@ std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u)
   double x = 0.0, y = 0.0, pdf = 0.0;
   if (!sampleInline(film.x, film.y, u.x, u.y, x, y, pdf)) return std::nullopt;
   return PupilSample{{x, y, planeZMm_}, pdf};
-}
-
-void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const float* u0,
-                                const float* u1, std::size_t n, LensRayBatch& rays,
-                                float* pdfPerMm2) const {
-  rays.resize(n);
-  const float planeZ = static_cast<float>(planeZMm_);
-  for (std::size_t i = 0; i < n; ++i) {
-    double x = 0.0, y = 0.0, pdf = 0.0;
-    const bool ok = sampleInline(filmX[i], filmY[i], u0[i], u1[i], x, y, pdf);
-    const float dx = static_cast<float>(x) - filmX[i], dy = static_cast<float>(y) - filmY[i];
-    const float invLength = 1.0f / std::sqrt(dx * dx + dy * dy + planeZ * planeZ);
-    rays.ox[i] = filmX[i];
-    rays.oy[i] = filmY[i];
-    rays.oz[i] = 0.0f;
-    rays.dx[i] = dx * invLength;
-    rays.dy[i] = dy * invLength;
-    rays.dz[i] = planeZ * invLength;
-    rays.alive[i] = ok ? 1 : 0;
-    pdfPerMm2[i] = ok ? static_cast<float>(pdf) : 0.0f;
-  }
 }
 
 }  // namespace lenslab::optics

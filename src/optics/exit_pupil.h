@@ -23,6 +23,7 @@
 // bound is the union of its neighbours'.
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -45,9 +46,10 @@ class ExitPupilTable {
                           int threads = 2);
 
   std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
-  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays).
+  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays), in
+  // single precision (exit_pupil_batch.cpp); 16 at a time with AVX-512 where `avx512`.
   void sampleRays(const float* filmX, const float* filmY, const float* u0, const float* u1,
-                  std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
+                  std::size_t n, LensRayBatch& rays, float* pdfPerMm2, bool avx512) const;
   // The density sample() has at a point of the plane (0 outside the sampled region), for tests
   // and for multiple importance sampling.
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
@@ -91,8 +93,27 @@ class ExitPupilTable {
   };
   Lookup lookup(double filmRadius) const;
 
+  // What sampleRays reads, per bin, in single precision and laid out for gathers: 16 bytes per
+  // alias slot and per sector, so that the AVX-512 kernel addresses it as one float array.
+  struct SamplingSlot {  // one alias-table slot
+    float keep = 1.0f, invKeep = 1.0f, invComplement = 0.0f;
+    std::int32_t alias = 0;
+  };
+  struct SamplingSector {  // triangle (centre, A, B): vertex offsets from the centre
+    float ax = 0.0f, ay = 0.0f, bx = 0.0f, by = 0.0f;
+  };
+  struct SamplingBin {
+    std::array<SamplingSlot, kSectors> slots{};
+    std::array<SamplingSector, kSectors> sectors{};
+    float centreXMm = 0.0f;
+    float invAreaPerMm2 = 0.0f;
+    std::int32_t empty = 1;  // an int, not a bool: vector code gathers it as a 32-bit lane
+  };
+  void buildSamplingBins();
+
   std::vector<Bin> bins_;
-  double binScale_ = 0.0;  // bins - 1
+  std::vector<SamplingBin> samplingBins_;  // bins_ in float
+  double binScale_ = 0.0;                  // bins - 1
   double filmRadiusMaxMm_ = 0.0;
   double invFilmRadiusMaxMm_ = 0.0;  // sampling multiplies: one division fewer per ray
   double imageCircleBoundMm_ = std::numeric_limits<double>::infinity();

@@ -210,8 +210,10 @@ double LensSystem::imageCircleBoundMm() const { return exitPupilTable().imageCir
 
 void LensSystem::sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
                                   const float* u1, std::size_t n, LensRayBatch& rays,
-                                  float* pdfPerMm2) const {
-  exitPupilTable().sampleRays(filmXMm, filmYMm, u0, u1, n, rays, pdfPerMm2);
+                                  float* pdfPerMm2, BatchKernel kernel) const {
+  if (kernel == BatchKernel::Auto) kernel = autoBatchKernel();
+  const bool avx512 = kernel == BatchKernel::Avx512 && batchKernelAvailable(kernel);
+  exitPupilTable().sampleRays(filmXMm, filmYMm, u0, u1, n, rays, pdfPerMm2, avx512);
 }
 
 std::optional<PupilSample> LensSystem::sampleExitPupil(glm::dvec2 filmPointMm, glm::dvec2 u) const {

@@ -144,6 +144,8 @@ class LensSystem {
   static bool batchKernelAvailable(BatchKernel kernel);
   // The same with a chosen kernel (tests, benchmarks); an unavailable one falls back to Auto.
   void traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) const;
+  // What Auto means on this machine.
+  static BatchKernel autoBatchKernel();
 
   // Samples a point on the plane z = rearVertexZ() through which a ray from the film point
   // (x, y, 0) likely passes the lens. u in [0,1)^2. pdfPerMm2 is the density per unit area on that
@@ -157,8 +159,11 @@ class LensSystem {
   // alive[i] = 0 (and pdfPerMm2[i] = 0) when there is no sample. Follow with
   // traceFromFilmBatch(rays) to get the rays leaving the lens. The Kolb weight of ray i is then
   // cos^4(theta) / (rearVertexZ()^2 pdfPerMm2[i]) with cos(theta) = dz.
+  // `kernel`: AVX-512 (16 rays at a time) or any other value for the portable loop; Auto is
+  // AVX-512 where traceFromFilmBatch would use it.
   void sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
-                        const float* u1, std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
+                        const float* u1, std::size_t n, LensRayBatch& rays, float* pdfPerMm2,
+                        BatchKernel kernel = BatchKernel::Auto) const;
   // No ray from a film point farther than this from the axis passes the lens (see
   // ExitPupilTable::imageCircleBoundMm; infinite when unknown).
   double imageCircleBoundMm() const;

@@ -291,20 +291,41 @@ TEST(ExitPupil, BatchCameraRaysMatchTheScalarSamples) {
     u0[i] = uniform(rng);
     u1[i] = uniform(rng);
   }
-  LensRayBatch rays;
-  lens->sampleCameraRays(fx.data(), fy.data(), u0.data(), u1.data(), n, rays, pdf.data());
-  ASSERT_EQ(rays.size(), n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto s = lens->sampleExitPupil({fx[i], fy[i]}, {u0[i], u1[i]});
-    ASSERT_EQ(static_cast<bool>(rays.alive[i]), s.has_value()) << i;
-    if (!s) continue;
-    EXPECT_NEAR(pdf[i], s->pdfPerMm2, 1e-5 * s->pdfPerMm2);
-    const glm::dvec3 d = glm::normalize(s->pointMm - glm::dvec3{fx[i], fy[i], 0.0});
-    EXPECT_NEAR(rays.dx[i], d.x, 1e-5);
-    EXPECT_NEAR(rays.dy[i], d.y, 1e-5);
-    EXPECT_NEAR(rays.dz[i], d.z, 1e-5);
-    EXPECT_EQ(rays.ox[i], fx[i]);
-    EXPECT_EQ(rays.oz[i], 0.0f);
+  // Both kernels (where the CPU has AVX-512), whole and in batches of 5 (a ray's result does
+  // not depend on its place in a batch).
+  using Kernel = LensSystem::BatchKernel;
+  for (const auto& [kernel, batchSize] :
+       {std::pair{Kernel::Portable, n}, std::pair{Kernel::Portable, std::size_t{5}},
+        std::pair{Kernel::Avx512, n}, std::pair{Kernel::Avx512, std::size_t{5}}}) {
+    SCOPED_TRACE(::testing::Message()
+                 << "kernel " << static_cast<int>(kernel) << ", batches of " << batchSize);
+    if (!LensSystem::batchKernelAvailable(kernel)) continue;
+    LensRayBatch rays;
+    for (std::size_t start = 0; start < n; start += batchSize) {
+      const std::size_t m = std::min(batchSize, n - start);
+      LensRayBatch part;
+      lens->sampleCameraRays(fx.data() + start, fy.data() + start, u0.data() + start,
+                             u1.data() + start, m, part, pdf.data() + start, kernel);
+      ASSERT_EQ(part.size(), m);
+      for (auto [all, some] : {std::pair{&rays.ox, &part.ox}, std::pair{&rays.oy, &part.oy},
+                               std::pair{&rays.oz, &part.oz}, std::pair{&rays.dx, &part.dx},
+                               std::pair{&rays.dy, &part.dy}, std::pair{&rays.dz, &part.dz}})
+        all->insert(all->end(), some->begin(), some->end());
+      rays.alive.insert(rays.alive.end(), part.alive.begin(), part.alive.end());
+    }
+    ASSERT_EQ(rays.size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto s = lens->sampleExitPupil({fx[i], fy[i]}, {u0[i], u1[i]});
+      ASSERT_EQ(static_cast<bool>(rays.alive[i]), s.has_value()) << i;
+      if (!s) continue;
+      EXPECT_NEAR(pdf[i], s->pdfPerMm2, 1e-5 * s->pdfPerMm2);
+      const glm::dvec3 d = glm::normalize(s->pointMm - glm::dvec3{fx[i], fy[i], 0.0});
+      EXPECT_NEAR(rays.dx[i], d.x, 1e-5);
+      EXPECT_NEAR(rays.dy[i], d.y, 1e-5);
+      EXPECT_NEAR(rays.dz[i], d.z, 1e-5);
+      EXPECT_EQ(rays.ox[i], fx[i]);
+      EXPECT_EQ(rays.oz[i], 0.0f);
+    }
   }
 }
 
