@@ -153,7 +153,7 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
     coarseReported_ = true;
   }
   if (!snapshot->coarse && !firstPassReported_) {
-    stats.firstPassShown(changeId_, ViewerStats::Clock::now());
+    stats.firstPassShown(changeId_, ViewerStats::Clock::now(), 1000.0 * snapshot->renderSeconds);
     firstPassReported_ = true;
   }
 }

@@ -49,9 +49,10 @@ void ViewerStats::firstPictureShown(std::uint64_t change, Clock::time_point now)
   pictureMeasured_ = true;
 }
 
-void ViewerStats::firstPassShown(std::uint64_t change, Clock::time_point now) {
+void ViewerStats::firstPassShown(std::uint64_t change, Clock::time_point now, double renderMs) {
   if (!pendingEdit_ || pendingEdit_->first != change) return;
   firstPassMs_.push_back(milliseconds(now - pendingEdit_->second));
+  firstPassRenderMs_.push_back(renderMs);
   pendingEdit_.reset();
 }
 
@@ -72,6 +73,7 @@ ViewerStats::Summary ViewerStats::summary() const {
   summary.firstPassMsMedian = percentile(firstPassMs_, 0.5);
   summary.firstPassMsMax =
       firstPassMs_.empty() ? 0 : *std::max_element(firstPassMs_.begin(), firstPassMs_.end());
+  summary.firstPassRenderMsMedian = percentile(firstPassRenderMs_, 0.5);
   summary.pictures = firstPictureMs_.size();
   summary.firstPictureMsMedian = percentile(firstPictureMs_, 0.5);
   summary.firstPictureMsMax =
@@ -96,6 +98,10 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       {"edit_to_first_pass_ms_median", s.firstPassMsMedian},
       {"edit_to_first_pass_ms_max", s.firstPassMsMax},
       {"edit_to_first_pass_ms", firstPassMs_},
+      // Of that, the renderer's part: job start to publication (exit-pupil table, coarse look,
+      // the pass itself).
+      {"first_pass_render_ms_median", s.firstPassRenderMsMedian},
+      {"first_pass_render_ms", firstPassRenderMs_},
       // The coarse first look (a quarter of the preview resolution per axis).
       {"edit_to_first_picture_ms_median", s.firstPictureMsMedian},
       {"edit_to_first_picture_ms_max", s.firstPictureMsMax},

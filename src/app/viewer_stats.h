@@ -26,8 +26,10 @@ class ViewerStats {
   void editSubmitted(std::uint64_t change, Clock::time_point now);
   // The change's coarse first look (reduced resolution) is on screen.
   void firstPictureShown(std::uint64_t change, Clock::time_point now);
-  // The change's first complete pass at the preview resolution is on screen.
-  void firstPassShown(std::uint64_t change, Clock::time_point now);
+  // The change's first complete pass at the preview resolution is on screen. `renderMs`: what
+  // of the wait the renderer took, from the job's start to the pass's publication (the rest is
+  // the UI: submitting the edit, and the frames drawn before it picked the pass up).
+  void firstPassShown(std::uint64_t change, Clock::time_point now, double renderMs);
 
   struct Summary {
     std::size_t frames = 0;
@@ -35,7 +37,7 @@ class ViewerStats {
     double workMsMedian = 0, workMsP95 = 0;
     double redrawnFraction = 0, redrawWorkMsMedian = 0;
     std::size_t edits = 0;
-    double firstPassMsMedian = 0, firstPassMsMax = 0;
+    double firstPassMsMedian = 0, firstPassMsMax = 0, firstPassRenderMsMedian = 0;
     std::size_t pictures = 0;
     double firstPictureMsMedian = 0, firstPictureMsMax = 0;
   };
@@ -51,7 +53,7 @@ class ViewerStats {
   std::vector<double> redrawWorkMs_;      // ... in those that were rasterized
   std::optional<std::pair<std::uint64_t, Clock::time_point>> pendingEdit_;
   bool pictureMeasured_ = false;
-  std::vector<double> firstPassMs_, firstPictureMs_;
+  std::vector<double> firstPassMs_, firstPassRenderMs_, firstPictureMs_;
 };
 
 }  // namespace lenslab::app

@@ -24,11 +24,12 @@ TEST(ViewerStats, FirstPassLatencyIsMeasuredFromTheLastEditOfItsGeneration) {
   ViewerStats::Clock::time_point t{};
   stats.editSubmitted(1, t);
   stats.editSubmitted(2, t += 20ms);
-  stats.firstPassShown(1, t += 5ms);  // stale generation: ignored
-  stats.firstPassShown(2, t += 40ms);
+  stats.firstPassShown(1, t += 5ms, 3.0);  // stale generation: ignored
+  stats.firstPassShown(2, t += 40ms, 31.0);
   const auto summary = stats.summary();
   EXPECT_EQ(summary.edits, 1u);
   EXPECT_NEAR(summary.firstPassMsMedian, 45.0, 1e-9);
+  EXPECT_NEAR(summary.firstPassRenderMsMedian, 31.0, 1e-9);  // the renderer's part of it
 }
 
 TEST(ViewerStats, TheCoarseFirstLookIsMeasuredSeparately) {
@@ -37,7 +38,7 @@ TEST(ViewerStats, TheCoarseFirstLookIsMeasuredSeparately) {
   stats.editSubmitted(7, t);
   stats.firstPictureShown(7, t += 12ms);
   stats.firstPictureShown(7, t += 5ms);  // a later coarse image of the same change: not counted
-  stats.firstPassShown(7, t += 80ms);
+  stats.firstPassShown(7, t += 80ms, 70.0);
   const auto summary = stats.summary();
   EXPECT_EQ(summary.pictures, 1u);
   EXPECT_NEAR(summary.firstPictureMsMedian, 12.0, 1e-9);
