@@ -137,15 +137,27 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
       pdfPerMm2[i] = pdf;
     }
   }
-  // Kolb's weight needs the direction toward the pupil, before the trace overwrites it.
+  // Kolb's weight needs the direction toward the pupil, before the trace overwrites it. Into an
+  // array of its own, and with a division on every ray (a zero pdf divides 1 and is then
+  // dropped), so that the loop vectorizes.
+  thread_local std::vector<float> weights;
+  weights.resize(count);
   const float invPlaneZSquared = static_cast<float>(1.0 / (planeZ * planeZ));
+  // (Plain pointers: thread_local vectors are re-checked for initialisation at every access.)
+  const float* __restrict dz = batch.dz.data();
+  const float* __restrict pdfs = pdfPerMm2.data();
+  float* __restrict weightOut = weights.data();
+  std::uint8_t* __restrict alive = batch.alive.data();
   for (std::size_t i = 0; i < count; ++i) {
-    const float cos2 = batch.dz[i] * batch.dz[i];
-    rays[i].weight = pdfPerMm2[i] > 0.0f ? cos2 * cos2 * invPlaneZSquared / pdfPerMm2[i] : 0.0f;
-    batch.alive[i] &= static_cast<std::uint8_t>(pdfPerMm2[i] > 0.0f);
+    const float cos2 = dz[i] * dz[i];
+    const float pdf = pdfs[i];
+    const float weight = cos2 * cos2 * invPlaneZSquared / (pdf > 0.0f ? pdf : 1.0f);
+    weightOut[i] = pdf > 0.0f ? weight : 0.0f;
+    alive[i] &= static_cast<std::uint8_t>(pdf > 0.0f);
   }
   lens_->traceFromFilmBatch(batch);
   for (std::size_t i = 0; i < count; ++i) {
+    rays[i].weight = weights[i];
     passed[i] = batch.alive[i];
     if (!passed[i]) continue;
     finishRay({batch.ox[i], batch.oy[i], batch.oz[i]}, {batch.dx[i], batch.dy[i], batch.dz[i]},
