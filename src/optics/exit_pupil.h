@@ -46,10 +46,12 @@ class ExitPupilTable {
                           int threads = 2);
 
   std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
-  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays), in
-  // single precision (exit_pupil_batch.cpp); 16 at a time with AVX-512 where `avx512`.
+  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays), mostly in
+  // single precision (exit_pupil_batch.cpp). The caller checks that the CPU has the kernel's
+  // instructions. Within one kernel a ray's result does not depend on its place in the batch.
+  enum class SampleKernel { Portable, Avx2, Avx512 };
   void sampleRays(const float* filmX, const float* filmY, const float* u0, const float* u1,
-                  std::size_t n, LensRayBatch& rays, float* pdfPerMm2, bool avx512) const;
+                  std::size_t n, LensRayBatch& rays, float* pdfPerMm2, SampleKernel kernel) const;
   // The density sample() has at a point of the plane (0 outside the sampled region), for tests
   // and for multiple importance sampling.
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;

@@ -1,6 +1,6 @@
 // ExitPupilTable::sampleRays: exit_pupil.cpp's sampler for a batch of camera rays, mostly in
-// single precision: 16 rays at a time with AVX-512 where the CPU has it, one at a time
-// otherwise. The renderer calls it for every camera ray.
+// single precision: 16 rays at a time with AVX-512, 8 with AVX2, one at a time otherwise (the
+// caller picks what the CPU has). The renderer calls it for every camera ray.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -243,11 +243,148 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma"))) void sampleBat
   }
 }
 
+// Lanes 0-3 (h = 0) or 4-7 (h = 1) of x.
+__attribute__((target("avx2,fma"))) inline __m128 halfOf(__m256 x, int h) {
+  return h == 0 ? _mm256_castps256_ps128(x) : _mm256_extractf128_ps(x, 1);
+}
+
+// table[at + offset], lane by lane.
+__attribute__((target("avx2,fma"))) inline __m256 gatherAt(const float* table, __m256i at,
+                                                           int offset) {
+  return _mm256_i32gather_ps(table, _mm256_add_epi32(at, _mm256_set1_epi32(offset)), 4);
+}
+
+// The AVX-512 kernel's computation with AVX2 and FMA, 8 rays at a time, for CPUs without
+// AVX-512 (most laptops). Masks are all-ones lanes instead of mask registers.
+template <class SamplingBin>
+__attribute__((target("avx2,fma"))) void sampleBatchAvx2(const BatchSamplingConstants& k,
+                                                         const SamplingBin* bins,
+                                                         const BatchSampling& io, std::size_t n) {
+  static_assert(sizeof(SamplingBin) % sizeof(float) == 0);
+  const float* table = reinterpret_cast<const float*>(bins);
+  const int* tableInts = reinterpret_cast<const int*>(bins);
+  constexpr int kBinStride = sizeof(SamplingBin) / sizeof(float);
+  constexpr int kSlots = offsetof(SamplingBin, slots) / sizeof(float);
+  constexpr int kSectorsAt = offsetof(SamplingBin, sectors) / sizeof(float);
+  constexpr int kCentre = offsetof(SamplingBin, centreXMm) / sizeof(float);
+  constexpr int kInvArea = offsetof(SamplingBin, invAreaPerMm2) / sizeof(float);
+  constexpr int kEmpty = offsetof(SamplingBin, empty) / sizeof(float);
+  const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
+  const __m256d oneD = _mm256_set1_pd(1.0), zeroD = _mm256_setzero_pd();
+  const __m256d invRadiusMax = _mm256_set1_pd(k.invRadiusMax);
+  const __m256d halfBinScale = _mm256_set1_pd(0.5 * k.binScale);
+  const __m128i lastPair = _mm_set1_epi32(k.lastPair);
+  const __m256 planeZ = _mm256_set1_ps(k.planeZ), planeZ2 = _mm256_set1_ps(k.planeZ * k.planeZ);
+  const __m256i binStride = _mm256_set1_epi32(kBinStride);
+  const __m256i laneIndex = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  for (std::size_t i = 0; i < n; i += 8) {
+    // The last group's missing lanes read zeros (which address bin 0, slot 0) and store nothing.
+    const int remaining = n - i >= 8 ? 8 : static_cast<int>(n - i);
+    const __m256i lanes = _mm256_cmpgt_epi32(_mm256_set1_epi32(remaining), laneIndex);
+    const __m256 fx = _mm256_maskload_ps(io.filmX + i, lanes);
+    const __m256 fy = _mm256_maskload_ps(io.filmY + i, lanes);
+    const __m256 u = _mm256_maskload_ps(io.u0 + i, lanes);
+    const __m256 v = _mm256_maskload_ps(io.u1 + i, lanes);
+    const __m256 r = _mm256_sqrt_ps(_mm256_fmadd_ps(fx, fx, _mm256_mul_ps(fy, fy)));
+    __m128i jHalf[2], secondHalf[2];
+    __m128 fHalf[2], uxHalf[2];
+    for (int h = 0; h < 2; ++h) {
+      const __m256d fxd = _mm256_cvtps_pd(halfOf(fx, h)), fyd = _mm256_cvtps_pd(halfOf(fy, h));
+      const __m256d ud = _mm256_cvtps_pd(halfOf(u, h));
+      const __m256d rd = _mm256_sqrt_pd(_mm256_fmadd_pd(fxd, fxd, _mm256_mul_pd(fyd, fyd)));
+      const __m256d x = _mm256_mul_pd(rd, invRadiusMax);
+      const __m256d t = _mm256_mul_pd(_mm256_fmadd_pd(x, x, x), halfBinScale);
+      const __m128i j = _mm_min_epi32(_mm256_cvttpd_epi32(t), lastPair);
+      const __m256d f =
+          _mm256_min_pd(_mm256_max_pd(_mm256_sub_pd(t, _mm256_cvtepi32_pd(j)), zeroD), oneD);
+      const __m256d oneMinusF = _mm256_sub_pd(oneD, f);
+      const __m256d second = _mm256_cmp_pd(ud, oneMinusF, _CMP_GE_OQ);
+      const __m256d numerator = _mm256_sub_pd(ud, _mm256_and_pd(second, oneMinusF));
+      const __m256d denominator = _mm256_blendv_pd(oneMinusF, f, second);
+      jHalf[h] = j;
+      fHalf[h] = _mm256_cvtpd_ps(f);
+      uxHalf[h] = _mm256_cvtpd_ps(_mm256_div_pd(numerator, denominator));
+      secondHalf[h] = _mm256_cvtpd_epi32(_mm256_and_pd(second, oneD));  // 1 or 0
+    }
+    const __m256i j = _mm256_set_m128i(jHalf[1], jHalf[0]);
+    const __m256 f = _mm256_set_m128(fHalf[1], fHalf[0]);
+    const __m256 ux = _mm256_set_m128(uxHalf[1], uxHalf[0]);
+    const __m256i second = _mm256_set_m128i(secondHalf[1], secondHalf[0]);
+    const __m256i bin0 = _mm256_mullo_epi32(j, binStride);
+    const __m256i chosen = _mm256_add_epi32(bin0, _mm256_mullo_epi32(second, binStride));
+
+    const __m256 scaled =
+        _mm256_mul_ps(_mm256_min_ps(ux, _mm256_set1_ps(0x1.fffffep-1f)), _mm256_set1_ps(32.0f));
+    const __m256i slot = _mm256_min_epi32(_mm256_cvttps_epi32(scaled), _mm256_set1_epi32(31));
+    const __m256 fraction = _mm256_sub_ps(scaled, _mm256_cvtepi32_ps(slot));
+    const __m256i slotAt = _mm256_add_epi32(_mm256_add_epi32(chosen, _mm256_set1_epi32(kSlots)),
+                                            _mm256_slli_epi32(slot, 2));  // 4 floats per slot
+    const __m256 keep = gatherAt(table, slotAt, 0);
+    const __m256 invKeep = gatherAt(table, slotAt, 1);
+    const __m256 invComplement = gatherAt(table, slotAt, 2);
+    const __m256i alias =
+        _mm256_i32gather_epi32(tableInts, _mm256_add_epi32(slotAt, _mm256_set1_epi32(3)), 4);
+    const __m256 stay = _mm256_cmp_ps(fraction, keep, _CMP_LT_OQ);
+    const __m256i sector = _mm256_blendv_epi8(alias, slot, _mm256_castps_si256(stay));
+    const __m256 w = _mm256_blendv_ps(_mm256_mul_ps(_mm256_sub_ps(fraction, keep), invComplement),
+                                      _mm256_mul_ps(fraction, invKeep), stay);
+    const __m256 s = _mm256_sqrt_ps(w);
+    const __m256i sectorAt = _mm256_add_epi32(
+        _mm256_add_epi32(chosen, _mm256_set1_epi32(kSectorsAt)), _mm256_slli_epi32(sector, 2));
+    const __m256 ax = gatherAt(table, sectorAt, 0), ay = gatherAt(table, sectorAt, 1);
+    const __m256 bx = gatherAt(table, sectorAt, 2), by = gatherAt(table, sectorAt, 3);
+    const __m256i bin1 = _mm256_add_epi32(bin0, binStride);
+    const __m256 centre0 = gatherAt(table, bin0, kCentre), centre1 = gatherAt(table, bin1, kCentre);
+    const __m256 invArea0 = gatherAt(table, bin0, kInvArea),
+                 invArea1 = gatherAt(table, bin1, kInvArea);
+    const __m256i empty =
+        _mm256_i32gather_epi32(tableInts, _mm256_add_epi32(chosen, _mm256_set1_epi32(kEmpty)), 4);
+
+    const __m256 oneMinusF = _mm256_sub_ps(one, f), oneMinusV = _mm256_sub_ps(one, v);
+    const __m256 lx =
+        _mm256_fmadd_ps(s, _mm256_fmadd_ps(oneMinusV, ax, _mm256_mul_ps(v, bx)),
+                        _mm256_fmadd_ps(oneMinusF, centre0, _mm256_mul_ps(f, centre1)));
+    const __m256 ly = _mm256_mul_ps(s, _mm256_fmadd_ps(oneMinusV, ay, _mm256_mul_ps(v, by)));
+    const __m256 positive = _mm256_cmp_ps(r, zero, _CMP_GT_OQ);
+    const __m256 invR = _mm256_and_ps(_mm256_div_ps(one, r), positive);  // 1/0 masked to 0
+    const __m256 c = _mm256_blendv_ps(one, _mm256_mul_ps(fx, invR), positive);
+    const __m256 sn = _mm256_mul_ps(fy, invR);
+    const __m256 inTable = _mm256_cmp_ps(r, _mm256_set1_ps(k.radiusMax), _CMP_LE_OQ);
+    const __m256 halfSide = _mm256_set1_ps(k.half);
+    const __m256 px =
+        _mm256_blendv_ps(_mm256_mul_ps(halfSide, _mm256_fmsub_ps(_mm256_set1_ps(2.0f), u, one)),
+                         _mm256_fmsub_ps(c, lx, _mm256_mul_ps(sn, ly)), inTable);
+    const __m256 py =
+        _mm256_blendv_ps(_mm256_mul_ps(halfSide, _mm256_fmsub_ps(_mm256_set1_ps(2.0f), v, one)),
+                         _mm256_fmadd_ps(sn, lx, _mm256_mul_ps(c, ly)), inTable);
+    const __m256 notEmpty = _mm256_castsi256_ps(_mm256_cmpeq_epi32(empty, _mm256_setzero_si256()));
+    const __m256 ok = _mm256_or_ps(_mm256_cmp_ps(r, _mm256_set1_ps(k.radiusMax), _CMP_NLE_UQ),
+                                   notEmpty);  // outside the table, or a bin with a region
+    const __m256 dx = _mm256_sub_ps(px, fx), dy = _mm256_sub_ps(py, fy);
+    const __m256 invLength = _mm256_div_ps(
+        one, _mm256_sqrt_ps(_mm256_fmadd_ps(dx, dx, _mm256_fmadd_ps(dy, dy, planeZ2))));
+    _mm256_maskstore_ps(io.ox + i, lanes, fx);
+    _mm256_maskstore_ps(io.oy + i, lanes, fy);
+    _mm256_maskstore_ps(io.oz + i, lanes, zero);
+    _mm256_maskstore_ps(io.dx + i, lanes, _mm256_mul_ps(dx, invLength));
+    _mm256_maskstore_ps(io.dy + i, lanes, _mm256_mul_ps(dy, invLength));
+    _mm256_maskstore_ps(io.dz + i, lanes, _mm256_mul_ps(planeZ, invLength));
+    const int okBits = _mm256_movemask_ps(ok);
+    for (int lane = 0; lane < remaining; ++lane) {
+      io.alive[i + lane] = static_cast<std::uint8_t>((okBits >> lane) & 1);
+    }
+    const __m256 pdf =
+        _mm256_blendv_ps(_mm256_set1_ps(k.fallbackPdf),
+                         _mm256_fmadd_ps(oneMinusF, invArea0, _mm256_mul_ps(f, invArea1)), inTable);
+    _mm256_maskstore_ps(io.pdf + i, lanes, _mm256_and_ps(pdf, ok));
+  }
+}
+
 }  // namespace
 
 void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const float* u0,
                                 const float* u1, std::size_t n, LensRayBatch& rays,
-                                float* pdfPerMm2, bool avx512) const {
+                                float* pdfPerMm2, SampleKernel kernel) const {
   rays.resize(n);
   const BatchSampling io{filmX,
                          filmY,
@@ -286,10 +423,17 @@ void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const fl
   k.invRadiusMax = invFilmRadiusMaxMm_;
   k.binScale = binScale_;
   k.lastPair = static_cast<int>(samplingBins_.size()) - 2;
-  if (avx512)
-    sampleBatchAvx512(k, samplingBins_.data(), io, n);
-  else
-    sampleBatchPortable(k, samplingBins_.data(), io, n);
+  switch (kernel) {
+    case SampleKernel::Avx512:
+      sampleBatchAvx512(k, samplingBins_.data(), io, n);
+      break;
+    case SampleKernel::Avx2:
+      sampleBatchAvx2(k, samplingBins_.data(), io, n);
+      break;
+    case SampleKernel::Portable:
+      sampleBatchPortable(k, samplingBins_.data(), io, n);
+      break;
+  }
 }
 
 }  // namespace lenslab::optics

@@ -211,9 +211,12 @@ double LensSystem::imageCircleBoundMm() const { return exitPupilTable().imageCir
 void LensSystem::sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
                                   const float* u1, std::size_t n, LensRayBatch& rays,
                                   float* pdfPerMm2, BatchKernel kernel) const {
-  if (kernel == BatchKernel::Auto) kernel = autoBatchKernel();
-  const bool avx512 = kernel == BatchKernel::Avx512 && batchKernelAvailable(kernel);
-  exitPupilTable().sampleRays(filmXMm, filmYMm, u0, u1, n, rays, pdfPerMm2, avx512);
+  if (kernel == BatchKernel::Auto || !batchKernelAvailable(kernel)) kernel = autoBatchKernel();
+  using Sample = ExitPupilTable::SampleKernel;
+  const Sample sampleKernel = kernel == BatchKernel::Avx512 ? Sample::Avx512
+                              : kernel == BatchKernel::Avx2 ? Sample::Avx2
+                                                            : Sample::Portable;
+  exitPupilTable().sampleRays(filmXMm, filmYMm, u0, u1, n, rays, pdfPerMm2, sampleKernel);
 }
 
 std::optional<PupilSample> LensSystem::sampleExitPupil(glm::dvec2 filmPointMm, glm::dvec2 u) const {

@@ -159,8 +159,8 @@ class LensSystem {
   // alive[i] = 0 (and pdfPerMm2[i] = 0) when there is no sample. Follow with
   // traceFromFilmBatch(rays) to get the rays leaving the lens. The Kolb weight of ray i is then
   // cos^4(theta) / (rearVertexZ()^2 pdfPerMm2[i]) with cos(theta) = dz.
-  // `kernel`: AVX-512 (16 rays at a time) or any other value for the portable loop; Auto is
-  // AVX-512 where traceFromFilmBatch would use it.
+  // `kernel`: as for traceFromFilmBatch (AVX-512: 16 rays at a time, AVX2: 8, portable: one);
+  // an unavailable one falls back to Auto.
   void sampleCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
                         const float* u1, std::size_t n, LensRayBatch& rays, float* pdfPerMm2,
                         BatchKernel kernel = BatchKernel::Auto) const;

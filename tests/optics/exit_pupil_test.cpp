@@ -291,11 +291,12 @@ TEST(ExitPupil, BatchCameraRaysMatchTheScalarSamples) {
     u0[i] = uniform(rng);
     u1[i] = uniform(rng);
   }
-  // Both kernels (where the CPU has AVX-512), whole and in batches of 5 (a ray's result does
-  // not depend on its place in a batch).
+  // Every kernel the CPU has, whole and in batches of 5 (a ray's result does not depend on its
+  // place in a batch).
   using Kernel = LensSystem::BatchKernel;
   for (const auto& [kernel, batchSize] :
        {std::pair{Kernel::Portable, n}, std::pair{Kernel::Portable, std::size_t{5}},
+        std::pair{Kernel::Avx2, n}, std::pair{Kernel::Avx2, std::size_t{5}},
         std::pair{Kernel::Avx512, n}, std::pair{Kernel::Avx512, std::size_t{5}}}) {
     SCOPED_TRACE(::testing::Message()
                  << "kernel " << static_cast<int>(kernel) << ", batches of " << batchSize);
