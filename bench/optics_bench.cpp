@@ -48,27 +48,45 @@ CameraSamples makeSamples(std::size_t n) {
   return s;
 }
 
-void BM_LensTrace(benchmark::State& state, const std::string& lensFile) {
-  const auto lens = loadBundled(lensFile);
+// The bundled lens with its exit-pupil table built (outside the timed loop); null, and the
+// benchmark skipped, when it cannot be loaded.
+std::shared_ptr<const LensSystem> loadWithTable(benchmark::State& state, const std::string& name) {
+  auto lens = loadBundled(name);
   if (!lens) {
     state.SkipWithError("cannot load lens");
-    return;
+    return nullptr;
   }
-  lens->exitPupilTable();  // build the table outside the timed loop
+  lens->exitPupilTable();
+  return lens;
+}
+
+// makeSamples' batch as the float arrays LensSystem::sampleCameraRays takes.
+struct FloatCameraSamples {
+  std::vector<float> filmX, filmY, u0, u1, pdf;
+  explicit FloatCameraSamples(std::size_t n) : filmX(n), filmY(n), u0(n), u1(n), pdf(n) {
+    const CameraSamples samples = makeSamples(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      filmX[i] = static_cast<float>(samples.film[i].x);
+      filmY[i] = static_cast<float>(samples.film[i].y);
+      u0[i] = static_cast<float>(samples.u[i].x);
+      u1[i] = static_cast<float>(samples.u[i].y);
+    }
+  }
+  void sample(const LensSystem& lens, LensRayBatch& batch) {
+    lens.sampleCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), filmX.size(), batch,
+                          pdf.data());
+  }
+};
+
+void BM_LensTrace(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadWithTable(state, lensFile);
+  if (!lens) return;
   constexpr std::size_t kBatch = 4096;
-  const CameraSamples samples = makeSamples(kBatch);
-  std::vector<float> filmX(kBatch), filmY(kBatch), u0(kBatch), u1(kBatch), pdf(kBatch);
-  for (std::size_t i = 0; i < kBatch; ++i) {
-    filmX[i] = static_cast<float>(samples.film[i].x);
-    filmY[i] = static_cast<float>(samples.film[i].y);
-    u0[i] = static_cast<float>(samples.u[i].x);
-    u1[i] = static_cast<float>(samples.u[i].y);
-  }
+  FloatCameraSamples samples(kBatch);
   LensRayBatch batch;
   std::size_t passed = 0, total = 0;
   for (auto _ : state) {
-    lens->sampleCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), kBatch, batch,
-                           pdf.data());
+    samples.sample(*lens, batch);
     lens->traceFromFilmBatch(batch);
     for (std::size_t i = 0; i < kBatch; ++i) passed += batch.alive[i];
     total += kBatch;
@@ -79,12 +97,8 @@ void BM_LensTrace(benchmark::State& state, const std::string& lensFile) {
 }
 
 void BM_LensTraceScalar(benchmark::State& state, const std::string& lensFile) {
-  const auto lens = loadBundled(lensFile);
-  if (!lens) {
-    state.SkipWithError("cannot load lens");
-    return;
-  }
-  lens->exitPupilTable();  // build the table outside the timed loop
+  const auto lens = loadWithTable(state, lensFile);
+  if (!lens) return;
   constexpr std::size_t kBatch = 4096;
   const CameraSamples samples = makeSamples(kBatch);
   std::size_t passed = 0, total = 0;
@@ -106,25 +120,13 @@ void BM_LensTraceScalar(benchmark::State& state, const std::string& lensFile) {
 // The exit-pupil sampling alone (LensSystem::sampleCameraRays), per camera ray: the part of
 // BM_LensTrace before the trace.
 void BM_PupilSample(benchmark::State& state, const std::string& lensFile) {
-  const auto lens = loadBundled(lensFile);
-  if (!lens) {
-    state.SkipWithError("cannot load lens");
-    return;
-  }
-  lens->exitPupilTable();  // build the table outside the timed loop
+  const auto lens = loadWithTable(state, lensFile);
+  if (!lens) return;
   constexpr std::size_t kBatch = 4096;
-  const CameraSamples samples = makeSamples(kBatch);
-  std::vector<float> filmX(kBatch), filmY(kBatch), u0(kBatch), u1(kBatch), pdf(kBatch);
-  for (std::size_t i = 0; i < kBatch; ++i) {
-    filmX[i] = static_cast<float>(samples.film[i].x);
-    filmY[i] = static_cast<float>(samples.film[i].y);
-    u0[i] = static_cast<float>(samples.u[i].x);
-    u1[i] = static_cast<float>(samples.u[i].y);
-  }
+  FloatCameraSamples samples(kBatch);
   LensRayBatch batch;
   for (auto _ : state) {
-    lens->sampleCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), kBatch, batch,
-                           pdf.data());
+    samples.sample(*lens, batch);
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kBatch));

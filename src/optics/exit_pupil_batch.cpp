@@ -100,25 +100,33 @@ void sampleBatchPortable(const BatchSamplingConstants& k, const SamplingBin* bin
   }
 }
 
+// The vector kernels address the table as one float array: a bin's fields as offsets in floats.
+template <class SamplingBin>
+struct TableLayout {
+  static_assert(sizeof(SamplingBin) % sizeof(float) == 0);
+  static constexpr int kBinStride = sizeof(SamplingBin) / sizeof(float);
+  static constexpr int kSlots = offsetof(SamplingBin, slots) / sizeof(float);
+  static constexpr int kSectors = offsetof(SamplingBin, sectors) / sizeof(float);
+  static constexpr int kCentre = offsetof(SamplingBin, centreXMm) / sizeof(float);
+  static constexpr int kInvArea = offsetof(SamplingBin, invAreaPerMm2) / sizeof(float);
+  static constexpr int kEmpty = offsetof(SamplingBin, empty) / sizeof(float);
+};
+
 // The same computation for AVX-512, 16 rays at a time, branch-free: which bin, the alias slot or
 // its alias, inside or outside the table are masks (beyond the table, lanes still read the last
-// two bins, then take the fallback square). The film radius, the
-// bin weight and the stretched u run in double, eight lanes at a time, as above. Every ray, the
-// last group's too, goes through the same lane code: a ray's result must not depend on where it
-// sits in a batch (the renderer's image is the same for any tiling and thread count).
+// two bins, then take the fallback square). The film radius, the bin weight and the stretched u
+// run in double, eight lanes at a time, as above. Every ray, the last group's too, goes through
+// the same lane code: a ray's result must not depend on where it sits in a batch (the
+// renderer's image is the same for any tiling and thread count).
 template <class SamplingBin>
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma"))) void sampleBatchAvx512(
     const BatchSamplingConstants& k, const SamplingBin* bins, const BatchSampling& io,
     std::size_t n) {
-  static_assert(sizeof(SamplingBin) % sizeof(float) == 0);
   const float* table = reinterpret_cast<const float*>(bins);
-  // Offsets in floats: gathers address the table as one float array.
-  constexpr int kBinStride = sizeof(SamplingBin) / sizeof(float);
-  constexpr int kSlots = offsetof(SamplingBin, slots) / sizeof(float);
-  constexpr int kSectorsAt = offsetof(SamplingBin, sectors) / sizeof(float);
-  constexpr int kCentre = offsetof(SamplingBin, centreXMm) / sizeof(float);
-  constexpr int kInvArea = offsetof(SamplingBin, invAreaPerMm2) / sizeof(float);
-  constexpr int kEmpty = offsetof(SamplingBin, empty) / sizeof(float);
+  using Layout = TableLayout<SamplingBin>;
+  constexpr int kBinStride = Layout::kBinStride, kSlots = Layout::kSlots;
+  constexpr int kSectorsAt = Layout::kSectors, kCentre = Layout::kCentre;
+  constexpr int kInvArea = Layout::kInvArea, kEmpty = Layout::kEmpty;
   const __m512 one = _mm512_set1_ps(1.0f), zero = _mm512_setzero_ps();
   const __m512d oneD = _mm512_set1_pd(1.0), zeroD = _mm512_setzero_pd();
   const __m512d invRadiusMax = _mm512_set1_pd(k.invRadiusMax);
@@ -260,15 +268,12 @@ template <class SamplingBin>
 __attribute__((target("avx2,fma"))) void sampleBatchAvx2(const BatchSamplingConstants& k,
                                                          const SamplingBin* bins,
                                                          const BatchSampling& io, std::size_t n) {
-  static_assert(sizeof(SamplingBin) % sizeof(float) == 0);
   const float* table = reinterpret_cast<const float*>(bins);
   const int* tableInts = reinterpret_cast<const int*>(bins);
-  constexpr int kBinStride = sizeof(SamplingBin) / sizeof(float);
-  constexpr int kSlots = offsetof(SamplingBin, slots) / sizeof(float);
-  constexpr int kSectorsAt = offsetof(SamplingBin, sectors) / sizeof(float);
-  constexpr int kCentre = offsetof(SamplingBin, centreXMm) / sizeof(float);
-  constexpr int kInvArea = offsetof(SamplingBin, invAreaPerMm2) / sizeof(float);
-  constexpr int kEmpty = offsetof(SamplingBin, empty) / sizeof(float);
+  using Layout = TableLayout<SamplingBin>;
+  constexpr int kBinStride = Layout::kBinStride, kSlots = Layout::kSlots;
+  constexpr int kSectorsAt = Layout::kSectors, kCentre = Layout::kCentre;
+  constexpr int kInvArea = Layout::kInvArea, kEmpty = Layout::kEmpty;
   const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
   const __m256d oneD = _mm256_set1_pd(1.0), zeroD = _mm256_setzero_pd();
   const __m256d invRadiusMax = _mm256_set1_pd(k.invRadiusMax);
