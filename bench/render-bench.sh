@@ -1,6 +1,6 @@
 #!/bin/sh
-# Times the renderer on the issue's benchmark scenes, whole process, and prints wall time and
-# peak memory of each run (GNU time) plus the renderer's own stats JSON.
+# Times the renderer on the issue's benchmark scenes, whole process, and prints wall time, CPU
+# time and peak memory of each run (GNU time) plus the renderer's own stats JSON.
 #
 #   bench/render-bench.sh [BUILD_DIR] [SHARED_DIR] [RUNS]
 #
@@ -22,10 +22,13 @@ run() {  # name, then lenslab render arguments
   name=$1; shift
   i=1
   while [ "$i" -le "$runs" ]; do
-    /usr/bin/time -f "%e %M" -o "$out/time" "$lenslab" render "$@" --quiet \
+    /usr/bin/time -f "%e %U %S %M" -o "$out/time" "$lenslab" render "$@" --quiet \
       --out "$out/$name.exr" --stats-json "$out/$name.json" >/dev/null
-    read -r wall kb < "$out/time"
-    printf '%-22s run %d  wall %6.2f s  peak %5d MB  %s\n' "$name" "$i" "$wall" $((kb / 1024)) \
+    read -r wall user system kb < "$out/time"
+    # CPU seconds (user + system) beside the wall time: on a shared machine the wall time also
+    # carries the time other tenants held the cores.
+    printf '%-22s run %d  wall %6.2f s  cpu %6.2f s  peak %5d MB  %s\n' "$name" "$i" "$wall" \
+      "$(awk -v u="$user" -v s="$system" 'BEGIN { print u + s }')" $((kb / 1024)) \
       "$(tr -d '\n ' < "$out/$name.json" | sed 's/"output":"[^"]*",\{0,1\}//')"
     i=$((i + 1))
   done
