@@ -149,11 +149,11 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   shownExposure_ = exposureStops;
   if (snapshot->generation != generation_) return;
   if (!coarseReported_) {  // the coarse look, or the first pass if it came first
-    stats.firstPictureShown(changeId_, ViewerStats::Clock::now());
+    stats.firstPictureArrived(changeId_);
     coarseReported_ = true;
   }
   if (!snapshot->coarse && !firstPassReported_) {
-    stats.firstPassShown(changeId_, ViewerStats::Clock::now(), 1000.0 * snapshot->renderSeconds);
+    stats.firstPassArrived(changeId_, 1000.0 * snapshot->renderSeconds);
     firstPassReported_ = true;
   }
 }

@@ -226,6 +226,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
           std::chrono::duration<double>(ViewerStats::Clock::now() - started).count();
       if (spp && *spp < 1 && waited < kScreenshotPreviewWaitSeconds) {
         if (drawnThisFrame_) window_.swapBuffers();
+        stats_.framePresented(ViewerStats::Clock::now());
         continue;
       }
       if (const auto error = saveWindowScreenshot(*options.screenshotPath)) {
@@ -235,6 +236,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
       break;
     }
     if (drawnThisFrame_) window_.swapBuffers();
+    stats_.framePresented(ViewerStats::Clock::now());
     stats_.frameWork(ViewerStats::Clock::now() - workStarted, rendering, drawnThisFrame_);
   }
   return exitCode_;

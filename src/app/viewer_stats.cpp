@@ -43,17 +43,32 @@ void ViewerStats::editSubmitted(std::uint64_t change, Clock::time_point now) {
   pictureMeasured_ = false;
 }
 
-void ViewerStats::firstPictureShown(std::uint64_t change, Clock::time_point now) {
+void ViewerStats::firstPictureArrived(std::uint64_t change) {
   if (!pendingEdit_ || pendingEdit_->first != change || pictureMeasured_) return;
-  firstPictureMs_.push_back(milliseconds(now - pendingEdit_->second));
-  pictureMeasured_ = true;
+  pictureArrived_ = change;
 }
 
-void ViewerStats::firstPassShown(std::uint64_t change, Clock::time_point now, double renderMs) {
+void ViewerStats::firstPassArrived(std::uint64_t change, double renderMs) {
   if (!pendingEdit_ || pendingEdit_->first != change) return;
-  firstPassMs_.push_back(milliseconds(now - pendingEdit_->second));
-  firstPassRenderMs_.push_back(renderMs);
-  pendingEdit_.reset();
+  passArrived_ = {change, renderMs};
+}
+
+void ViewerStats::framePresented(Clock::time_point now) {
+  // An edit made while the frame was built supersedes what arrived for the one before it.
+  const auto current = [&](std::uint64_t change) {
+    return pendingEdit_ && pendingEdit_->first == change;
+  };
+  if (pictureArrived_ && current(*pictureArrived_)) {
+    firstPictureMs_.push_back(milliseconds(now - pendingEdit_->second));
+    pictureMeasured_ = true;
+  }
+  pictureArrived_.reset();
+  if (passArrived_ && current(passArrived_->first)) {
+    firstPassMs_.push_back(milliseconds(now - pendingEdit_->second));
+    firstPassRenderMs_.push_back(passArrived_->second);
+    pendingEdit_.reset();
+  }
+  passArrived_.reset();
 }
 
 ViewerStats::Summary ViewerStats::summary() const {

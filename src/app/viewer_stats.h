@@ -24,12 +24,14 @@ class ViewerStats {
   void frameWork(Clock::duration work, bool rendering, bool redrawn);
   // An edit changed what the preview shows; `change` identifies it.
   void editSubmitted(std::uint64_t change, Clock::time_point now);
-  // The change's coarse first look (reduced resolution) is on screen.
-  void firstPictureShown(std::uint64_t change, Clock::time_point now);
-  // The change's first complete pass at the preview resolution is on screen. `renderMs`: what
-  // of the wait the renderer took, from the job's start to the pass's publication (the rest is
-  // the UI: submitting the edit, and the frames drawn before it picked the pass up).
-  void firstPassShown(std::uint64_t change, Clock::time_point now, double renderMs);
+  // The UI took up the change's coarse first look (reduced resolution): this frame shows it.
+  void firstPictureArrived(std::uint64_t change);
+  // The UI took up the change's first complete pass at the preview resolution: this frame shows
+  // it. `renderMs`: what of the wait the renderer took, from the job's start to the pass's
+  // publication (the rest is the UI's: the frames before it took the pass up, and this one).
+  void firstPassArrived(std::uint64_t change, double renderMs);
+  // The frame is on screen (its buffers swapped): what arrived for it is measured to `now`.
+  void framePresented(Clock::time_point now);
 
   struct Summary {
     std::size_t frames = 0;
@@ -53,6 +55,8 @@ class ViewerStats {
   std::vector<double> redrawWorkMs_;      // ... in those that were rasterized
   std::optional<std::pair<std::uint64_t, Clock::time_point>> pendingEdit_;
   bool pictureMeasured_ = false;
+  std::optional<std::uint64_t> pictureArrived_;                  // change, awaiting its frame
+  std::optional<std::pair<std::uint64_t, double>> passArrived_;  // change, render ms
   std::vector<double> firstPassMs_, firstPassRenderMs_, firstPictureMs_;
 };
 
