@@ -6,11 +6,14 @@
 // this is a lower bound of their cost there.
 // BM_SamplerArrays: direct lighting's arrays: 2 camera points, then two 4-point arrays (one
 // area light with 4 samples, as the course scenes ask).
+// BM_LeadingPoints/<vectorized>: the tile loop's camera points, leadingPoints() for a pixel's 16
+// samples of a wave; items_per_second is camera samples (two points each) per second.
 
 #include <benchmark/benchmark.h>
 
 #include <cstdint>
 
+#include "render/leading_points.h"
 #include "render/sampler.h"
 
 namespace {
@@ -52,5 +55,20 @@ void BM_SamplerArrays(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kPoints);
 }
 BENCHMARK(BM_SamplerArrays);
+
+void BM_LeadingPoints(benchmark::State& state) {
+  constexpr std::uint32_t kSamples = 16;
+  const bool vectorized = state.range(0) != 0;
+  glm::vec2 film[kSamples], lens[kSamples];
+  std::uint32_t pixel = 0;
+  for (auto _ : state) {
+    const lenslab::render::PixelSeeds seeds(pixel++, 7u);
+    lenslab::render::leadingPoints(seeds, 16u, kSamples, film, lens, vectorized);
+    benchmark::DoNotOptimize(film);
+    benchmark::DoNotOptimize(lens);
+  }
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK(BM_LeadingPoints)->Arg(0)->Arg(1);
 
 }  // namespace

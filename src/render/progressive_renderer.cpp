@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 
+#include "render/leading_points.h"
 #include "render/thread_priority.h"
 
 namespace lenslab::render {
@@ -88,12 +89,15 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     for (int p = 0; p < pixels; ++p) {
       const int x = visible[first + p].x, y = visible[first + p].y;
       const PixelSeeds pixelSeeds(static_cast<std::uint32_t>(y * width + x), job.settings.seed);
+      const std::size_t base = samplers.size();
+      // The film offsets in the pixel go to rasterPoints, and become raster points below.
+      leadingPoints(pixelSeeds, static_cast<std::uint32_t>(firstSample),
+                    static_cast<std::uint32_t>(count), &rasterPoints[base], &lensSamples[base]);
       for (int s = 0; s < count; ++s) {
-        const std::size_t i = samplers.size();
         samplers.emplace_back(pixelSeeds, static_cast<std::uint32_t>(firstSample + s));
-        rasterPoints[i] =
-            (glm::vec2(x, y) + samplers[i].nextLeading2D(pixelSeeds)) * wave.rasterScale;
-        lensSamples[i] = samplers[i].nextLeading2D(pixelSeeds);
+        samplers.back().skipLeadingPairs();
+        glm::vec2& raster = rasterPoints[base + static_cast<std::size_t>(s)];
+        raster = (glm::vec2(x, y) + raster) * wave.rasterScale;
       }
     }
     camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());

@@ -176,6 +176,12 @@ class PixelSampler {
     assert(dimensionPair_ < PixelSeeds::kLeadingPairs);
     return pointOfPair(pixel.leadingPairs[dimensionPair_++]);
   }
+  // Moves past the leading pairs when they were computed elsewhere (leadingPoints, a batch
+  // form that gives the same points).
+  void skipLeadingPairs() {
+    assert(dimensionPair_ == 0);
+    dimensionPair_ = PixelSeeds::kLeadingPairs;
+  }
 
   // Bit reversals are a large part of the sampler's cost (x86 has no instruction for them), so
   // each owenScramble(v) = reverseBits(laineKarras(reverseBits(v))) below is written with the

@@ -3,6 +3,8 @@
 
 #include "render/sampler.h"
 
+#include "render/leading_points.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -55,6 +57,30 @@ TEST(PixelSampler, PixelSeedsGiveTheSamePointsAsAFreshSampler) {
         EXPECT_EQ(shared.nextLeading2D(seeds), fresh.next2D()) << "pair " << pair;
       }
       for (int pair = 0; pair < 3; ++pair) EXPECT_EQ(shared.next2D(), fresh.next2D());
+    }
+  }
+}
+
+// The batch form of the first two pairs, vectorized or not, gives the samplers' points bit for
+// bit, for runs that start anywhere and end mid-vector, and the samplers then go on as if they
+// had drawn those pairs themselves.
+TEST(PixelSampler, LeadingPointsInBatchesEqualTheSamplersPoints) {
+  for (std::uint32_t pixel : {0u, 4242u, 0xFFFFFFu}) {
+    const PixelSeeds seeds(pixel, 3u);
+    for (const auto& [first, count] : {std::pair{0u, 1u}, std::pair{0u, 8u}, std::pair{1u, 13u},
+                                       std::pair{64u, 64u}, std::pair{0x7FFFFFF0u, 37u}}) {
+      for (bool vectorized : {false, true}) {
+        std::vector<glm::vec2> film(count), lens(count);
+        leadingPoints(seeds, first, count, film.data(), lens.data(), vectorized);
+        for (std::uint32_t s = 0; s < count; ++s) {
+          PixelSampler reference(seeds, first + s);
+          ASSERT_EQ(film[s], reference.nextLeading2D(seeds)) << first + s << " " << vectorized;
+          ASSERT_EQ(lens[s], reference.nextLeading2D(seeds)) << first + s << " " << vectorized;
+          PixelSampler skipped(seeds, first + s);
+          skipped.skipLeadingPairs();
+          EXPECT_EQ(skipped.next2D(), reference.next2D());
+        }
+      }
     }
   }
 }

@@ -1,0 +1,111 @@
+#include "render/leading_points.h"
+
+#include <immintrin.h>
+
+#include <algorithm>
+
+namespace lenslab::render {
+
+namespace {
+
+static_assert(PixelSeeds::kLeadingPairs == 2, "leadingPoints fills two pairs");
+
+void leadingPointsPortable(const PixelSeeds& pixel, std::uint32_t firstSample, std::uint32_t count,
+                           glm::vec2* film, glm::vec2* lens) {
+  for (std::uint32_t s = 0; s < count; ++s) {
+    PixelSampler sampler(pixel, firstSample + s);
+    film[s] = sampler.nextLeading2D(pixel);
+    lens[s] = sampler.nextLeading2D(pixel);
+  }
+}
+
+// sampler_detail's scalar steps, eight lanes at a time.
+__attribute__((target("avx2"))) inline __m256i reverseBits8(__m256i x) {
+  // Each byte's bits reversed through a nibble table, then the bytes of each lane swapped.
+  const __m256i nibbleReversed =
+      _mm256_setr_epi8(0, 8, 4, 12, 2, 10, 6, 14, 1, 9, 5, 13, 3, 11, 7, 15, 0, 8, 4, 12, 2, 10, 6,
+                       14, 1, 9, 5, 13, 3, 11, 7, 15);
+  const __m256i lowNibbles = _mm256_set1_epi8(0x0F);
+  const __m256i low = _mm256_and_si256(x, lowNibbles);
+  const __m256i high = _mm256_and_si256(_mm256_srli_epi16(x, 4), lowNibbles);
+  const __m256i bytesReversed =
+      _mm256_or_si256(_mm256_slli_epi16(_mm256_shuffle_epi8(nibbleReversed, low), 4),
+                      _mm256_shuffle_epi8(nibbleReversed, high));
+  const __m256i swapBytes = _mm256_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12,
+                                             3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12);
+  return _mm256_shuffle_epi8(bytesReversed, swapBytes);
+}
+
+__attribute__((target("avx2"))) inline __m256i laineKarras8(__m256i x, std::uint32_t seed) {
+  x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x3d20adea)));
+  x = _mm256_add_epi32(x, _mm256_set1_epi32(static_cast<int>(seed)));
+  x = _mm256_mullo_epi32(x, _mm256_set1_epi32(static_cast<int>((seed >> 16) | 1u)));
+  x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x05526c56)));
+  x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x53a22864)));
+  return x;
+}
+
+__attribute__((target("avx2"))) inline __m256 toUnitFloat8(__m256i bits) {
+  return _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(bits, 8)), _mm256_set1_ps(0x1p-24f));
+}
+
+// One pair for the reversed sample indices in `reversedIndex` (PixelSampler::pointOfPair).
+__attribute__((target("avx2"))) void pairPoints8(__m256i reversedIndex,
+                                                 const sampler_detail::PairSeeds& seeds, float* xs,
+                                                 float* ys) {
+  using sampler_detail::kSobolPairFromReversedIndex;
+  const __m256i shuffled = laineKarras8(reversedIndex, seeds.shuffle);
+  // kSobolPairFromReversedIndex(shuffled): its low word is the bit reversal of `shuffled`, its
+  // high word the Sobol second dimension, read here as four 32-bit gathers of the high words.
+  const __m256i xReversed = reverseBits8(shuffled);
+  const int* highWords =
+      reinterpret_cast<const int*>(&kSobolPairFromReversedIndex.byByte[0][0]) + 1;
+  const __m256i byteMask = _mm256_set1_epi32(0xFF);
+  __m256i yReversed = _mm256_setzero_si256();
+  for (int table = 0; table < 4; ++table) {
+    const __m256i byte = _mm256_and_si256(_mm256_srli_epi32(shuffled, 8 * table), byteMask);
+    // 64-bit entries: the high word of entry (table, byte) is int number 2 (256 table + byte) + 1.
+    const __m256i at = _mm256_slli_epi32(_mm256_add_epi32(byte, _mm256_set1_epi32(256 * table)), 1);
+    yReversed = _mm256_xor_si256(yReversed, _mm256_i32gather_epi32(highWords, at, 4));
+  }
+  _mm256_storeu_ps(xs, toUnitFloat8(reverseBits8(laineKarras8(xReversed, seeds.x))));
+  _mm256_storeu_ps(ys, toUnitFloat8(reverseBits8(laineKarras8(yReversed, seeds.y))));
+}
+
+__attribute__((target("avx2"))) void leadingPointsAvx2(const PixelSeeds& pixel,
+                                                       std::uint32_t firstSample,
+                                                       std::uint32_t count, glm::vec2* film,
+                                                       glm::vec2* lens) {
+  const __m256i laneOffsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  for (std::uint32_t s = 0; s < count; s += 8) {
+    const __m256i index =
+        _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(firstSample + s)), laneOffsets);
+    const __m256i reversedIndex = reverseBits8(index);
+    alignas(32) float filmX[8], filmY[8], lensX[8], lensY[8];
+    pairPoints8(reversedIndex, pixel.leadingPairs[0], filmX, filmY);
+    pairPoints8(reversedIndex, pixel.leadingPairs[1], lensX, lensY);
+    const std::uint32_t lanes = std::min(8u, count - s);
+    for (std::uint32_t k = 0; k < lanes; ++k) {
+      film[s + k] = {filmX[k], filmY[k]};
+      lens[s + k] = {lensX[k], lensY[k]};
+    }
+  }
+}
+
+bool cpuHasAvx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+
+}  // namespace
+
+void leadingPoints(const PixelSeeds& pixel, std::uint32_t firstSample, std::uint32_t count,
+                   glm::vec2* film, glm::vec2* lens, bool vectorized) {
+  if (vectorized && cpuHasAvx2() && count >= 4) {
+    leadingPointsAvx2(pixel, firstSample, count, film, lens);
+  } else {
+    leadingPointsPortable(pixel, firstSample, count, film, lens);
+  }
+}
+
+}  // namespace lenslab::render
