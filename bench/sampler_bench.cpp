@@ -5,7 +5,7 @@
 // here overlap in the pipeline; in a render, the tracing between them keeps them apart, so
 // this is a lower bound of their cost there.
 // BM_SamplerArrays: direct lighting's arrays: 2 camera points, then two 4-point arrays (one
-// area light with 4 samples, as the course scenes ask).
+// area light with 4 samples, as the course scenes ask), drawn together as the renderer does.
 // BM_LeadingPoints/<vectorized>: the tile loop's camera points, leadingPoints() for a pixel's 16
 // samples of a wave; items_per_second is camera samples (two points each) per second.
 
@@ -13,8 +13,8 @@
 
 #include <cstdint>
 
-#include "render/leading_points.h"
 #include "render/sampler.h"
+#include "render/sampler_batch.h"
 
 namespace {
 
@@ -43,8 +43,7 @@ void BM_SamplerArrays(benchmark::State& state) {
     PixelSampler sampler(pixel, sample, 7u);
     benchmark::DoNotOptimize(sampler.next2D());
     benchmark::DoNotOptimize(sampler.next2D());
-    sampler.next2DArray(4, lights);
-    sampler.next2DArray(4, bsdfs);
+    sampler.next2DArrays(4, lights, bsdfs);
     benchmark::DoNotOptimize(lights);
     benchmark::DoNotOptimize(bsdfs);
     if (++sample == 512u) {

@@ -166,8 +166,7 @@ glm::vec3 directLighting(const Scene& scene, glm::vec3 origin, glm::vec3 directi
         const int count = lights[l].samples;
         uLights.resize(static_cast<std::size_t>(count));
         uBsdfs.resize(static_cast<std::size_t>(count));
-        sampler.next2DArray(static_cast<std::uint32_t>(count), uLights.data());
-        sampler.next2DArray(static_cast<std::uint32_t>(count), uBsdfs.data());
+        sampler.next2DArrays(static_cast<std::uint32_t>(count), uLights.data(), uBsdfs.data());
         glm::vec3 sum(0.0f);
         for (int s = 0; s < count; ++s) {
           directTerms(scene, hit, bsdf, wo, static_cast<int>(l), uLights[s], uBsdfs[s], 1.0f, terms,

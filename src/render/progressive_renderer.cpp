@@ -9,7 +9,7 @@
 #include <functional>
 #include <optional>
 
-#include "render/leading_points.h"
+#include "render/sampler_batch.h"
 #include "render/thread_priority.h"
 
 namespace lenslab::render {

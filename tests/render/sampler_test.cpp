@@ -3,7 +3,7 @@
 
 #include "render/sampler.h"
 
-#include "render/leading_points.h"
+#include "render/sampler_batch.h"
 
 #include <gtest/gtest.h>
 
@@ -81,6 +81,24 @@ TEST(PixelSampler, LeadingPointsInBatchesEqualTheSamplersPoints) {
           EXPECT_EQ(skipped.next2D(), reference.next2D());
         }
       }
+    }
+  }
+}
+
+// Two arrays drawn together are the two arrays drawn one after the other, bit for bit.
+TEST(PixelSampler, TwoArraysTogetherEqualTwoArraysInTurn) {
+  for (std::uint32_t count : {1u, 2u, 3u, 4u, 8u}) {
+    for (std::uint32_t sample : {0u, 5u, 1000u, 0xFFFFFFFEu}) {
+      PixelSampler together(77u, sample, 9u), inTurn(77u, sample, 9u);
+      together.next2D();  // a leading pair first, as in a render
+      inTurn.next2D();
+      std::vector<glm::vec2> a(count), b(count), c(count), d(count);
+      together.next2DArrays(count, a.data(), b.data());
+      inTurn.next2DArray(count, c.data());
+      inTurn.next2DArray(count, d.data());
+      EXPECT_EQ(a, c) << count << " " << sample;
+      EXPECT_EQ(b, d) << count << " " << sample;
+      EXPECT_EQ(together.next2D(), inTurn.next2D());  // and both go on with the same pair
     }
   }
 }

@@ -1,6 +1,9 @@
 #pragma once
-// The leading dimension pairs of a run of one pixel's samples (film position, then lens
-// position): what PixelSampler::nextLeading2D gives, bit for bit, eight samples at a time with
+// Batch forms of the sampler's points (render/sampler.h), computed several at a time with AVX2
+// where the CPU has it, bit for bit the same as one at a time.
+//
+// leadingPoints: the leading dimension pairs of a run of one pixel's samples (film position, then
+// lens position): what PixelSampler::nextLeading2D gives, bit for bit, eight samples at a time with
 // AVX2 where the CPU has it. The tile loop asks for them for every camera sample; one at a time
 // they cost about 35 ns per sample, a tenth of a course-scene sample.
 

@@ -1,4 +1,5 @@
-#include "render/leading_points.h"
+#include "render/sampler_batch.h"
+// Also PixelSampler::next2DArrays (render/sampler.h).
 
 #include <immintrin.h>
 
@@ -36,13 +37,18 @@ __attribute__((target("avx2"))) inline __m256i reverseBits8(__m256i x) {
   return _mm256_shuffle_epi8(bytesReversed, swapBytes);
 }
 
-__attribute__((target("avx2"))) inline __m256i laineKarras8(__m256i x, std::uint32_t seed) {
+// With a seed per lane.
+__attribute__((target("avx2"))) inline __m256i laineKarras8(__m256i x, __m256i seed) {
   x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x3d20adea)));
-  x = _mm256_add_epi32(x, _mm256_set1_epi32(static_cast<int>(seed)));
-  x = _mm256_mullo_epi32(x, _mm256_set1_epi32(static_cast<int>((seed >> 16) | 1u)));
+  x = _mm256_add_epi32(x, seed);
+  x = _mm256_mullo_epi32(x, _mm256_or_si256(_mm256_srli_epi32(seed, 16), _mm256_set1_epi32(1)));
   x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x05526c56)));
   x = _mm256_xor_si256(x, _mm256_mullo_epi32(x, _mm256_set1_epi32(0x53a22864)));
   return x;
+}
+
+__attribute__((target("avx2"))) inline __m256i laineKarras8(__m256i x, std::uint32_t seed) {
+  return laineKarras8(x, _mm256_set1_epi32(static_cast<int>(seed)));
 }
 
 __attribute__((target("avx2"))) inline __m256 toUnitFloat8(__m256i bits) {
@@ -92,12 +98,57 @@ __attribute__((target("avx2"))) void leadingPointsAvx2(const PixelSeeds& pixel,
   }
 }
 
+// `low` in lanes 0-3, `high` in lanes 4-7.
+__attribute__((target("avx2"))) inline __m256i halves(std::uint32_t low, std::uint32_t high) {
+  const __m128i lowLanes = _mm_set1_epi32(static_cast<int>(low));
+  return _mm256_inserti128_si256(_mm256_castsi128_si256(lowLanes),
+                                 _mm_set1_epi32(static_cast<int>(high)), 1);
+}
+
+// Two 4-point arrays (PixelSampler::next2DArray's power-of-two branch) in one pass: lanes 0-3
+// are array `a`'s points, lanes 4-7 array `b`'s. `first*` is the array's first index,
+// `second*` the Sobol second dimension of it (reversed).
+__attribute__((target("avx2"))) void twoArraysOfFour(std::uint32_t firstA, std::uint32_t secondA,
+                                                     const sampler_detail::PairSeeds& seedsA,
+                                                     std::uint32_t firstB, std::uint32_t secondB,
+                                                     const sampler_detail::PairSeeds& seedsB,
+                                                     glm::vec2* a, glm::vec2* b) {
+  const auto& row = sampler_detail::kSobolSecondReversed.byByte[0];
+  const auto word = [](std::uint32_t value) { return static_cast<int>(value); };
+  const __m256i k = _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3);
+  const __m256i rowOfK = _mm256_setr_epi32(word(row[0]), word(row[1]), word(row[2]), word(row[3]),
+                                           word(row[0]), word(row[1]), word(row[2]), word(row[3]));
+  const __m256i xReversed = _mm256_or_si256(halves(firstA, firstB), k);
+  const __m256i yReversed = _mm256_xor_si256(halves(secondA, secondB), rowOfK);
+  const __m256 xs = toUnitFloat8(reverseBits8(laineKarras8(xReversed, halves(seedsA.x, seedsB.x))));
+  const __m256 ys = toUnitFloat8(reverseBits8(laineKarras8(yReversed, halves(seedsA.y, seedsB.y))));
+  // Interleave into (x, y) pairs: points 0-3 of a, then of b.
+  const __m256 low = _mm256_unpacklo_ps(xs, ys), high = _mm256_unpackhi_ps(xs, ys);
+  _mm256_storeu_ps(reinterpret_cast<float*>(a), _mm256_permute2f128_ps(low, high, 0x20));
+  _mm256_storeu_ps(reinterpret_cast<float*>(b), _mm256_permute2f128_ps(low, high, 0x31));
+}
+
 bool cpuHasAvx2() {
   static const bool has = __builtin_cpu_supports("avx2");
   return has;
 }
 
 }  // namespace
+
+void PixelSampler::next2DArrays(std::uint32_t count, glm::vec2* first, glm::vec2* second) {
+  if (count != 4 || !cpuHasAvx2()) {
+    next2DArray(count, first);
+    next2DArray(count, second);
+    return;
+  }
+  using namespace sampler_detail;
+  const PairSeeds seedsA = pairSeeds(pixelSeed_, dimensionPair_++);
+  const PairSeeds seedsB = pairSeeds(pixelSeed_, dimensionPair_++);
+  const std::uint32_t firstA = shuffledIndex(seedsA) * count;
+  const std::uint32_t firstB = shuffledIndex(seedsB) * count;
+  twoArraysOfFour(firstA, kSobolSecondReversed(firstA), seedsA, firstB,
+                  kSobolSecondReversed(firstB), seedsB, first, second);
+}
 
 void leadingPoints(const PixelSeeds& pixel, std::uint32_t firstSample, std::uint32_t count,
                    glm::vec2* film, glm::vec2* lens, bool vectorized) {
