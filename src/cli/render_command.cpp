@@ -123,8 +123,9 @@ int runRenderCommand(const RenderArguments& arguments) {
   printDiagnostics(cameraDiagnostics);
   if (!camera) return kFailure;
   // The exit-pupil table is set-up, as pbrt's is. It and the scene (image textures, Embree's
-  // BVH) are independent, so they are built side by side.
-  std::thread preparingCamera([&camera] { camera->prepare(); });
+  // BVH) are independent, so they are built side by side (a jthread joins even if the scene's
+  // build throws).
+  std::jthread preparingCamera([&camera] { camera->prepare(); });
   render::BuildResult built = render::buildScene(description);
   preparingCamera.join();
   printDiagnostics(built.diagnostics);
