@@ -226,9 +226,8 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
     const float footprint = depth == 0 ? cameraFootprint(hit, direction, spread) : 0.0f;
     const Bsdf bsdf(scene.material(hit.material), scene.textures(), hit.uv, hit.shadingNormal,
                     footprint);
-    const glm::vec2 uChoose = sampler.next2D();
-    const glm::vec2 uLight = sampler.next2D();
-    const glm::vec2 uBsdf = sampler.next2D();
+    glm::vec2 uChoose, uLight, uBsdf;
+    sampler.next2DTriple(uChoose, uLight, uBsdf);
     if (!bsdf.isSpecular() && !lights.empty()) {
       // Next-event estimation toward one light chosen uniformly.
       const int index =

@@ -215,6 +215,9 @@ class PixelSampler {
   // next2DArray(count, first), then next2DArray(count, second): the same points, computed
   // together, eight at a time with AVX2 when count is 4 (sampler_batch.cpp).
   void next2DArrays(std::uint32_t count, glm::vec2* first, glm::vec2* second);
+  // next2D() three times (a path tracer's bounce): the same points, computed together with AVX2
+  // where the CPU has it (sampler_batch.cpp).
+  void next2DTriple(glm::vec2& first, glm::vec2& second, glm::vec2& third);
   float next1D() { return next2D().x; }
 
  private:

@@ -1,5 +1,5 @@
 #include "render/sampler_batch.h"
-// Also PixelSampler::next2DArrays (render/sampler.h).
+// Also PixelSampler::next2DArrays and next2DTriple (render/sampler.h).
 
 #include <immintrin.h>
 
@@ -55,25 +55,30 @@ __attribute__((target("avx2"))) inline __m256 toUnitFloat8(__m256i bits) {
   return _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(bits, 8)), _mm256_set1_ps(0x1p-24f));
 }
 
-// One pair for the reversed sample indices in `reversedIndex` (PixelSampler::pointOfPair).
-__attribute__((target("avx2"))) void pairPoints8(__m256i reversedIndex,
-                                                 const sampler_detail::PairSeeds& seeds, float* xs,
-                                                 float* ys) {
-  using sampler_detail::kSobolPairFromReversedIndex;
-  const __m256i shuffled = laineKarras8(reversedIndex, seeds.shuffle);
-  // kSobolPairFromReversedIndex(shuffled): its low word is the bit reversal of `shuffled`, its
-  // high word the Sobol second dimension, read here as four 32-bit gathers of the high words.
-  const __m256i xReversed = reverseBits8(shuffled);
+// The high words of kSobolPairFromReversedIndex(shuffled) (the Sobol second dimension, reversed),
+// as four 32-bit gathers.
+__attribute__((target("avx2"))) inline __m256i sobolSecondReversed8(__m256i shuffled) {
   const int* highWords =
-      reinterpret_cast<const int*>(&kSobolPairFromReversedIndex.byByte[0][0]) + 1;
+      reinterpret_cast<const int*>(&sampler_detail::kSobolPairFromReversedIndex.byByte[0][0]) + 1;
   const __m256i byteMask = _mm256_set1_epi32(0xFF);
-  __m256i yReversed = _mm256_setzero_si256();
+  __m256i second = _mm256_setzero_si256();
   for (int table = 0; table < 4; ++table) {
     const __m256i byte = _mm256_and_si256(_mm256_srli_epi32(shuffled, 8 * table), byteMask);
     // 64-bit entries: the high word of entry (table, byte) is int number 2 (256 table + byte) + 1.
     const __m256i at = _mm256_slli_epi32(_mm256_add_epi32(byte, _mm256_set1_epi32(256 * table)), 1);
-    yReversed = _mm256_xor_si256(yReversed, _mm256_i32gather_epi32(highWords, at, 4));
+    second = _mm256_xor_si256(second, _mm256_i32gather_epi32(highWords, at, 4));
   }
+  return second;
+}
+
+// One pair for the reversed sample indices in `reversedIndex` (PixelSampler::pointOfPair).
+__attribute__((target("avx2"))) void pairPoints8(__m256i reversedIndex,
+                                                 const sampler_detail::PairSeeds& seeds, float* xs,
+                                                 float* ys) {
+  const __m256i shuffled = laineKarras8(reversedIndex, seeds.shuffle);
+  // kSobolPairFromReversedIndex(shuffled): its low word is the bit reversal of `shuffled`.
+  const __m256i xReversed = reverseBits8(shuffled);
+  const __m256i yReversed = sobolSecondReversed8(shuffled);
   _mm256_storeu_ps(xs, toUnitFloat8(reverseBits8(laineKarras8(xReversed, seeds.x))));
   _mm256_storeu_ps(ys, toUnitFloat8(reverseBits8(laineKarras8(yReversed, seeds.y))));
 }
@@ -128,6 +133,28 @@ __attribute__((target("avx2"))) void twoArraysOfFour(std::uint32_t firstA, std::
   _mm256_storeu_ps(reinterpret_cast<float*>(b), _mm256_permute2f128_ps(low, high, 0x31));
 }
 
+// Three pairs' points for one sample (PixelSampler::pointOfPair three times): the index
+// shuffles in lanes 0-2, then the x scrambles in lanes 0-2 and the y scrambles in lanes 4-6 of
+// one vector.
+__attribute__((target("avx2"))) void threePairs(std::uint32_t reversedSampleIndex,
+                                                const sampler_detail::PairSeeds* seeds,
+                                                glm::vec2* points) {
+  const auto word = [](std::uint32_t value) { return static_cast<int>(value); };
+  const __m256i shuffleSeeds = _mm256_setr_epi32(word(seeds[0].shuffle), word(seeds[1].shuffle),
+                                                 word(seeds[2].shuffle), 0, 0, 0, 0, 0);
+  const __m256i shuffled =
+      laineKarras8(_mm256_set1_epi32(static_cast<int>(reversedSampleIndex)), shuffleSeeds);
+  const __m256i xReversed = reverseBits8(shuffled);
+  const __m256i yReversed = sobolSecondReversed8(shuffled);
+  const __m256i both = _mm256_inserti128_si256(xReversed, _mm256_castsi256_si128(yReversed), 1);
+  const __m256i scrambleSeeds =
+      _mm256_setr_epi32(word(seeds[0].x), word(seeds[1].x), word(seeds[2].x), 0, word(seeds[0].y),
+                        word(seeds[1].y), word(seeds[2].y), 0);
+  alignas(32) float values[8];
+  _mm256_store_ps(values, toUnitFloat8(reverseBits8(laineKarras8(both, scrambleSeeds))));
+  for (int pair = 0; pair < 3; ++pair) points[pair] = {values[pair], values[4 + pair]};
+}
+
 bool cpuHasAvx2() {
   static const bool has = __builtin_cpu_supports("avx2");
   return has;
@@ -148,6 +175,25 @@ void PixelSampler::next2DArrays(std::uint32_t count, glm::vec2* first, glm::vec2
   const std::uint32_t firstB = shuffledIndex(seedsB) * count;
   twoArraysOfFour(firstA, kSobolSecondReversed(firstA), seedsA, firstB,
                   kSobolSecondReversed(firstB), seedsB, first, second);
+}
+
+void PixelSampler::next2DTriple(glm::vec2& first, glm::vec2& second, glm::vec2& third) {
+  if (!cpuHasAvx2()) {
+    first = next2D();
+    second = next2D();
+    third = next2D();
+    return;
+  }
+  const sampler_detail::PairSeeds seeds[3] = {
+      sampler_detail::pairSeeds(pixelSeed_, dimensionPair_),
+      sampler_detail::pairSeeds(pixelSeed_, dimensionPair_ + 1),
+      sampler_detail::pairSeeds(pixelSeed_, dimensionPair_ + 2)};
+  dimensionPair_ += 3;
+  glm::vec2 points[3];
+  threePairs(reversedSampleIndex_, seeds, points);
+  first = points[0];
+  second = points[1];
+  third = points[2];
 }
 
 void leadingPoints(const PixelSeeds& pixel, std::uint32_t firstSample, std::uint32_t count,

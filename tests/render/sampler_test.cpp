@@ -103,6 +103,23 @@ TEST(PixelSampler, TwoArraysTogetherEqualTwoArraysInTurn) {
   }
 }
 
+// Three pairs drawn together are three next2D() calls, bit for bit.
+TEST(PixelSampler, ATripleEqualsThreePairsInTurn) {
+  for (std::uint32_t pixel : {1u, 99999u}) {
+    for (std::uint32_t sample : {0u, 3u, 511u, 0xFFFFFFFFu}) {
+      PixelSampler together(pixel, sample, 4u), inTurn(pixel, sample, 4u);
+      for (int bounce = 0; bounce < 4; ++bounce) {
+        glm::vec2 a, b, c;
+        together.next2DTriple(a, b, c);
+        EXPECT_EQ(a, inTurn.next2D()) << pixel << " " << sample << " " << bounce;
+        EXPECT_EQ(b, inTurn.next2D());
+        EXPECT_EQ(c, inTurn.next2D());
+      }
+      EXPECT_EQ(together.next1D(), inTurn.next1D());
+    }
+  }
+}
+
 TEST(PixelSampler, IsDeterministicAndDependsOnPixelSampleAndSeed) {
   EXPECT_EQ(PixelSampler(5, 3, 1).next2D(), PixelSampler(5, 3, 1).next2D());
   EXPECT_NE(PixelSampler(5, 3, 1).next2D(), PixelSampler(6, 3, 1).next2D());
