@@ -504,4 +504,24 @@ std::optional<PupilSample> ExitPupilTable::sample(glm::dvec2 film, glm::dvec2 u)
   return PupilSample{{x, y, planeZMm_}, pdf};
 }
 
+void ExitPupilTable::sampleRaysOneByOne(const float* filmX, const float* filmY, const float* u0,
+                                        const float* u1, std::size_t n, LensRayBatch& rays,
+                                        float* pdfPerMm2) const {
+  const float planeZ = static_cast<float>(planeZMm_);
+  for (std::size_t i = 0; i < n; ++i) {
+    double x = 0.0, y = 0.0, pdf = 0.0;
+    const bool ok = sampleInline(filmX[i], filmY[i], u0[i], u1[i], x, y, pdf);
+    const float dx = static_cast<float>(x) - filmX[i], dy = static_cast<float>(y) - filmY[i];
+    const float invLength = 1.0f / std::sqrt(dx * dx + dy * dy + planeZ * planeZ);
+    rays.ox[i] = filmX[i];
+    rays.oy[i] = filmY[i];
+    rays.oz[i] = 0.0f;
+    rays.dx[i] = dx * invLength;
+    rays.dy[i] = dy * invLength;
+    rays.dz[i] = planeZ * invLength;
+    rays.alive[i] = ok ? 1 : 0;
+    pdfPerMm2[i] = ok ? static_cast<float>(pdf) : 0.0f;
+  }
+}
+
 }  // namespace lenslab::optics

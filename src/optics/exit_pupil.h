@@ -46,9 +46,10 @@ class ExitPupilTable {
                           int threads = 2);
 
   std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
-  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays), mostly in
-  // single precision (exit_pupil_batch.cpp). The caller checks that the CPU has the kernel's
-  // instructions. Within one kernel a ray's result does not depend on its place in the batch.
+  // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays): with AVX2
+  // or AVX-512, mostly in single precision (exit_pupil_batch.cpp); Portable is sample()'s double
+  // routine ray by ray. The caller checks that the CPU has the kernel's instructions. Within one
+  // kernel a ray's result does not depend on its place in the batch.
   enum class SampleKernel { Portable, Avx2, Avx512 };
   void sampleRays(const float* filmX, const float* filmY, const float* u0, const float* u1,
                   std::size_t n, LensRayBatch& rays, float* pdfPerMm2, SampleKernel kernel) const;
@@ -88,6 +89,9 @@ class ExitPupilTable {
  private:
   bool sampleInline(double filmX, double filmY, double u0, double u1, double& pointX,
                     double& pointY, double& pdf) const;
+  // sampleRays' portable path and the one without a table; `rays` has n entries.
+  void sampleRaysOneByOne(const float* filmX, const float* filmY, const float* u0, const float* u1,
+                          std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
   bool inside(const Bin& b, double centreX, double x, double y) const;
   struct Lookup {
     int j = 0;

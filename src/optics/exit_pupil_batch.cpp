@@ -1,8 +1,7 @@
 // ExitPupilTable::sampleRays: exit_pupil.cpp's sampler for a batch of camera rays, mostly in
-// single precision: 16 rays at a time with AVX-512, 8 with AVX2, one at a time otherwise (the
-// caller picks what the CPU has). The renderer calls it for every camera ray.
-#include <algorithm>
-#include <cmath>
+// single precision, 16 rays at a time with AVX-512 or 8 with AVX2 (the caller picks what the CPU
+// has; without either, exit_pupil.cpp samples ray by ray in double). The renderer calls it for
+// every camera ray.
 #include <cstddef>
 #include <cstdint>
 
@@ -42,63 +41,6 @@ struct BatchSamplingConstants {
   double invRadiusMax = 0.0, binScale = 0.0;
   int lastPair = 0;
 };
-
-// The table half of ExitPupilTable::sampleInline, one ray at a time. (A template so that it can
-// take the table's private bin type.)
-template <class SamplingBin>
-void sampleBatchPortable(const BatchSamplingConstants& k, const SamplingBin* bins,
-                         const BatchSampling& io, std::size_t n) {
-  constexpr int kSectors = ExitPupilTable::kSectors;
-  for (std::size_t i = 0; i < n; ++i) {
-    const float fx = io.filmX[i], fy = io.filmY[i], u = io.u0[i], v = io.u1[i];
-    const float r = std::sqrt(fx * fx + fy * fy);
-    float px = k.half * (2.0f * u - 1.0f), py = k.half * (2.0f * v - 1.0f);  // beyond the table
-    float pdf = k.fallbackPdf;
-    bool ok = true;
-    if (r <= k.radiusMax) {
-      // The film radius, the bin weight f and the stretched u in double: where f or 1 - f is
-      // small, stretching divides by it and would magnify float rounding in f.
-      const double x =
-          std::sqrt(static_cast<double>(fx) * fx + static_cast<double>(fy) * fy) * k.invRadiusMax;
-      const double t = 0.5 * (x + x * x) * k.binScale;
-      const int j = std::min(static_cast<int>(t), k.lastPair);
-      const double f = std::clamp(t - j, 0.0, 1.0);
-      const bool second = u >= 1.0 - f;
-      const SamplingBin& chosen = bins[j + (second ? 1 : 0)];
-      const auto ux = static_cast<float>(second ? (u - (1.0 - f)) / f : u / (1.0 - f));
-      const float scaled = std::min(ux, 0x1.fffffep-1f) * kSectors;
-      const int slot = std::min(static_cast<int>(scaled), kSectors - 1);
-      const float fraction = scaled - static_cast<float>(slot);
-      const auto& alias = chosen.slots[slot];
-      const bool stay = fraction < alias.keep;
-      const auto& e = chosen.sectors[stay ? slot : alias.alias];
-      const float s = std::sqrt(stay ? fraction * alias.invKeep
-                                     : (fraction - alias.keep) * alias.invComplement);
-      const auto fFloat = static_cast<float>(f);
-      const float lx = (1.0f - fFloat) * bins[j].centreXMm + fFloat * bins[j + 1].centreXMm +
-                       s * ((1.0f - v) * e.ax + v * e.bx);
-      const float ly = s * ((1.0f - v) * e.ay + v * e.by);
-      // Rotate from the bin frame (film point on +x) to the film point's azimuth.
-      const float invR = r > 0.0f ? 1.0f / r : 0.0f;
-      const float c = r > 0.0f ? fx * invR : 1.0f;
-      const float sn = fy * invR;
-      px = c * lx - sn * ly;
-      py = sn * lx + c * ly;
-      pdf = (1.0f - fFloat) * bins[j].invAreaPerMm2 + fFloat * bins[j + 1].invAreaPerMm2;
-      ok = chosen.empty == 0;
-    }
-    const float dx = px - fx, dy = py - fy;
-    const float invLength = 1.0f / std::sqrt(dx * dx + dy * dy + k.planeZ * k.planeZ);
-    io.ox[i] = fx;
-    io.oy[i] = fy;
-    io.oz[i] = 0.0f;
-    io.dx[i] = dx * invLength;
-    io.dy[i] = dy * invLength;
-    io.dz[i] = k.planeZ * invLength;
-    io.alive[i] = ok ? 1 : 0;
-    io.pdf[i] = ok ? pdf : 0.0f;
-  }
-}
 
 // The vector kernels address the table as one float array: a bin's fields as offsets in floats.
 template <class SamplingBin>
@@ -391,6 +333,11 @@ void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const fl
                                 const float* u1, std::size_t n, LensRayBatch& rays,
                                 float* pdfPerMm2, SampleKernel kernel) const {
   rays.resize(n);
+  // Without a table (nothing to gather) or vector instructions: sampleInline, ray by ray.
+  if (samplingBins_.empty() || kernel == SampleKernel::Portable) {
+    sampleRaysOneByOne(filmX, filmY, u0, u1, n, rays, pdfPerMm2);
+    return;
+  }
   const BatchSampling io{filmX,
                          filmY,
                          u0,
@@ -407,23 +354,6 @@ void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const fl
   k.planeZ = static_cast<float>(planeZMm_);
   k.half = static_cast<float>(fallbackRadiusMm_);
   k.fallbackPdf = static_cast<float>(1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_));
-  if (samplingBins_.empty()) {  // no table: uniform over the square (see sampleInline)
-    const bool noSamples = filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const float px = k.half * (2.0f * u0[i] - 1.0f), py = k.half * (2.0f * u1[i] - 1.0f);
-      const float dx = px - filmX[i], dy = py - filmY[i];
-      const float invLength = 1.0f / std::sqrt(dx * dx + dy * dy + k.planeZ * k.planeZ);
-      io.ox[i] = filmX[i];
-      io.oy[i] = filmY[i];
-      io.oz[i] = 0.0f;
-      io.dx[i] = dx * invLength;
-      io.dy[i] = dy * invLength;
-      io.dz[i] = k.planeZ * invLength;
-      io.alive[i] = noSamples ? 0 : 1;
-      io.pdf[i] = noSamples ? 0.0f : k.fallbackPdf;
-    }
-    return;
-  }
   k.radiusMax = static_cast<float>(filmRadiusMaxMm_);
   k.invRadiusMax = invFilmRadiusMaxMm_;
   k.binScale = binScale_;
@@ -436,8 +366,7 @@ void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const fl
       sampleBatchAvx2(k, samplingBins_.data(), io, n);
       break;
     case SampleKernel::Portable:
-      sampleBatchPortable(k, samplingBins_.data(), io, n);
-      break;
+      break;  // above
   }
 }
 
