@@ -1,0 +1,118 @@
+// The renderer's part of the viewer's first preview pass after an edit (issue 5: on screen within
+// 100 ms), without a window. The default scene at the viewer's preview size (600 x 400), its lens
+// at a new film distance each iteration (a new LensSystem, so its exit-pupil table is built again,
+// as after a film-distance edit), and the job as PreviewController makes it: all hardware
+// threads at low priority on a ProgressiveRenderer that lives across jobs, a coarse look at 1/4
+// resolution, then one sample per pixel. Wall time.
+//
+// BM_PreviewFirstPass: edit to the first full pass (table + coarse look + pass).
+// BM_PreviewTable: the exit-pupil table of the edited lens alone (2 threads).
+// BM_PreviewPass: the 1-spp pass alone (table built before, no coarse look).
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "optics/lens_system.h"
+#include "render/camera_factory.h"
+#include "render/pbrt_parser.h"
+#include "render/progressive_renderer.h"
+#include "render/realistic_camera.h"
+#include "render/scene_builder.h"
+
+namespace {
+
+using lenslab::optics::LensSystem;
+namespace render = lenslab::render;
+
+constexpr int kPreviewWidth = 600, kPreviewHeight = 400;  // the viewer's at 1400 x 850
+constexpr int kCoarseDivisor = 4;                         // PreviewController::kCoarseDivisor
+
+struct DefaultScene {
+  std::shared_ptr<const render::SceneDescription> description;
+  std::shared_ptr<const render::Scene> scene;
+  std::shared_ptr<const LensSystem> lens;
+};
+
+// Parsed and built once for all benchmarks; null members when the scene cannot be loaded.
+const DefaultScene& defaultScene() {
+  static const DefaultScene loaded = [] {
+    DefaultScene out;
+    render::ParseResult parsed =
+        render::parsePbrtFile(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
+    if (!parsed.scene) return out;
+    render::BuildResult built = render::buildScene(*parsed.scene);
+    if (!built.scene) return out;
+    render::Diagnostics diagnostics;
+    const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
+    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
+    if (!realistic) return out;
+    const LensSystem& lens = realistic->lens();
+    out.lens = lens.withFilmDistance(lens.filmDistanceMm());  // a shared copy
+    out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
+    out.scene = std::move(built.scene);
+    return out;
+  }();
+  return loaded;
+}
+
+render::RenderJob previewJob(const DefaultScene& loaded, std::shared_ptr<const LensSystem> lens,
+                             int coarseDivisor) {
+  render::RenderJob job;
+  job.camera =
+      render::makeLensCamera(*loaded.description, std::move(lens), kPreviewWidth, kPreviewHeight);
+  job.scene = loaded.scene;
+  job.settings.samplesPerPixel = 1;
+  job.settings.integrator.kind = loaded.description->integrator.kind;
+  job.settings.integrator.maxDepth = loaded.description->integrator.maxDepth;
+  job.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  job.settings.lowPriority = true;
+  job.settings.coarseDivisor = coarseDivisor;
+  return job;
+}
+
+// The edit: alternately 0.2 mm behind and in front of the scene's film distance.
+std::shared_ptr<const LensSystem> editedLens(const LensSystem& lens, std::int64_t iteration) {
+  return lens.withFilmDistance(lens.filmDistanceMm() + (iteration % 2 ? -0.2 : 0.2));
+}
+
+void BM_PreviewFirstPass(benchmark::State& state) {
+  const DefaultScene& loaded = defaultScene();
+  if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");
+  render::ProgressiveRenderer renderer;
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    const auto generation =
+        renderer.start(previewJob(loaded, editedLens(*loaded.lens, iteration++), kCoarseDivisor));
+    if (!renderer.waitForCompletion(generation, 60.0)) return state.SkipWithError("no pass");
+  }
+}
+BENCHMARK(BM_PreviewFirstPass)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PreviewTable(benchmark::State& state) {
+  const DefaultScene& loaded = defaultScene();
+  if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    const auto lens = editedLens(*loaded.lens, iteration++);
+    benchmark::DoNotOptimize(lens->imageCircleBoundMm());  // builds the table
+  }
+}
+BENCHMARK(BM_PreviewTable)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_PreviewPass(benchmark::State& state) {
+  const DefaultScene& loaded = defaultScene();
+  if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");
+  const auto lens = editedLens(*loaded.lens, 0);
+  lens->imageCircleBoundMm();
+  render::ProgressiveRenderer renderer;
+  for (auto _ : state) {
+    const auto generation = renderer.start(previewJob(loaded, lens, 1));
+    if (!renderer.waitForCompletion(generation, 60.0)) return state.SkipWithError("no pass");
+  }
+}
+BENCHMARK(BM_PreviewPass)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
