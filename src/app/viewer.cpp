@@ -157,9 +157,30 @@ void Viewer::takeCaptures() {
 
 void Viewer::ensureDrawn() {
   if (drawnThisFrame_) return;
-  window_.drawFrame();
+  // With partial repaints the back buffer holds the last drawn frame, so the damage is all that
+  // needs painting (nothing, for a frame that changed nothing).
+  window_.drawRegions(damage_);
   drawnThisFrame_ = true;
-  drawnSignature_ = frameSignature_;
+  const double windowPixels = static_cast<double>(window_.framebufferWidth()) *
+                              static_cast<double>(window_.framebufferHeight());
+  double repainted = 1.0;
+  if (window_.repaintsRegionsOnly() && windowPixels > 0) {
+    long long pixels = 0;
+    for (const PixelRect& region : damage_) pixels += region.area();
+    repainted = static_cast<double>(pixels) / windowPixels;
+  }
+  stats_.frameRepainted(repainted, window_.repaintsRegionsOnly());
+}
+
+void Viewer::findDamage() {
+  // The preview texture's pixels change without a change in the draw commands.
+  const ImTextureID preview = state_.preview.texture.imguiId();
+  const bool newPreview = state_.preview.uploads != damageUploads_;
+  damageUploads_ = state_.preview.uploads;
+  const int width = window_.framebufferWidth(), height = window_.framebufferHeight();
+  damage_ = frameDamage_.compare(*ImGui::GetDrawData(), width, height,
+                                 newPreview ? std::span(&preview, 1) : std::span<ImTextureID>());
+  if (window_.takeRefreshRequest()) damage_ = {PixelRect{0, 0, width, height}};
 }
 
 void Viewer::updateWindowTitle() {
@@ -209,8 +230,8 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     // Xvfb, or any machine without a GPU driver) spends tens of milliseconds of CPU on every
     // redraw, which the render workers need. Captures draw the frame when it was skipped.
     drawnThisFrame_ = false;
-    frameSignature_ = window_.frameSignature() ^ (state_.preview.uploads * 0x9E3779B97F4A7C15ull);
-    if (frameSignature_ != drawnSignature_ || window_.takeRefreshRequest()) ensureDrawn();
+    findDamage();
+    if (!damage_.empty()) ensureDrawn();
     updateWindowTitle();
     const bool rendering = preview_.busy();
     stats_.frameDrawn(ViewerStats::Clock::now(), rendering);

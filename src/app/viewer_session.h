@@ -6,7 +6,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "app/frame_damage.h"
 #include "app/preview_controller.h"
 #include "app/script.h"
 #include "app/ui_dump.h"
@@ -97,8 +99,11 @@ class Viewer final : public ScriptHost {
   void takeCaptures();
   void updateWindowTitle();
   // Draws this frame into the back buffer unless it already is (frames equal to the last drawn
-  // one are skipped; what reads the back buffer calls this first).
+  // one are skipped, and a software rasterizer repaints only what changed: damage_; what reads
+  // the back buffer calls this first).
   void ensureDrawn();
+  // Sets damage_: where this frame differs from the last drawn one.
+  void findDamage();
   void askForPath(FileRequest::Kind kind);
   std::optional<std::string> perform(const FileRequest& request);
 
@@ -108,7 +113,9 @@ class Viewer final : public ScriptHost {
   ViewerStats stats_;
   int exitCode_ = 0;
   std::string shownTitle_;
-  std::uint64_t frameSignature_ = 0, drawnSignature_ = 0;
+  FrameDamage frameDamage_;
+  std::vector<PixelRect> damage_;    // this frame's, against the last drawn one
+  std::uint64_t damageUploads_ = 0;  // preview uploads the last damage took into account
   bool drawnThisFrame_ = false;
 
  public:

@@ -37,6 +37,11 @@ void ViewerStats::frameWork(Clock::duration work, bool rendering, bool redrawn) 
   if (redrawn) redrawWorkMs_.push_back(milliseconds(work));
 }
 
+void ViewerStats::frameRepainted(double fraction, bool partial) {
+  repaintedFractions_.push_back(fraction);
+  partialRepaint_ = partial;
+}
+
 void ViewerStats::editSubmitted(std::uint64_t change, Clock::time_point now) {
   // A burst of edits (a drag) counts from its last one: that is the picture the user waits for.
   pendingEdit_ = {change, now};
@@ -84,6 +89,8 @@ ViewerStats::Summary ViewerStats::summary() const {
                                 : static_cast<double>(redrawWorkMs_.size()) /
                                       static_cast<double>(renderingWorkMs_.size());
   summary.redrawWorkMsMedian = percentile(redrawWorkMs_, 0.5);
+  summary.partialRepaint = partialRepaint_;
+  summary.repaintedFractionMedian = percentile(repaintedFractions_, 0.5);
   summary.edits = firstPassMs_.size();
   summary.firstPassMsMedian = percentile(firstPassMs_, 0.5);
   summary.firstPassMsMax =
@@ -109,6 +116,9 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       // Frames whose pixels changed are rasterized; the others only run the UI.
       {"frames_redrawn_fraction", s.redrawnFraction},
       {"redrawn_frame_work_ms_median", s.redrawWorkMsMedian},
+      // A software rasterizer repaints only the regions that changed (partial_repaint.h).
+      {"partial_repaint", s.partialRepaint},
+      {"repainted_fraction_median", s.repaintedFractionMedian},
       {"edits_measured", s.edits},
       {"edit_to_first_pass_ms_median", s.firstPassMsMedian},
       {"edit_to_first_pass_ms_max", s.firstPassMsMax},

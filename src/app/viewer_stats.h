@@ -22,6 +22,9 @@ class ViewerStats {
   // frame rate would be if nothing else competed for the core.
   // `redrawn`: the frame was rasterized (frames equal to the last one are not).
   void frameWork(Clock::duration work, bool rendering, bool redrawn);
+  // A frame was rasterized over `fraction` of the window's pixels (1 for a full redraw; less
+  // where a software rasterizer repaints only what changed, `partial`).
+  void frameRepainted(double fraction, bool partial);
   // An edit changed what the preview shows; `change` identifies it.
   void editSubmitted(std::uint64_t change, Clock::time_point now);
   // The UI took up the change's coarse first look (reduced resolution): this frame shows it.
@@ -38,6 +41,8 @@ class ViewerStats {
     double frameMsMedian = 0, frameMsP95 = 0, framesPerSecondMedian = 0;
     double workMsMedian = 0, workMsP95 = 0;
     double redrawnFraction = 0, redrawWorkMsMedian = 0;
+    bool partialRepaint = false;
+    double repaintedFractionMedian = 0;  // of the window, over rasterized frames
     std::size_t edits = 0;
     double firstPassMsMedian = 0, firstPassMsMax = 0, firstPassRenderMsMedian = 0;
     std::size_t pictures = 0;
@@ -53,6 +58,8 @@ class ViewerStats {
   std::vector<double> renderingFrameMs_;  // frame intervals while the renderer worked
   std::vector<double> renderingWorkMs_;   // the UI thread's work in those frames
   std::vector<double> redrawWorkMs_;      // ... in those that were rasterized
+  std::vector<double> repaintedFractions_;
+  bool partialRepaint_ = false;
   std::optional<std::pair<std::uint64_t, Clock::time_point>> pendingEdit_;
   bool pictureMeasured_ = false;
   std::optional<std::uint64_t> pictureArrived_;                  // change, awaiting its frame

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "app/partial_repaint.h"
 #include "app/ui_scale.h"
 
 namespace lenslab::app {
@@ -109,6 +110,7 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   ImGui_ImplGlfw_InitForOpenGL(window->window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
   window->imguiReady_ = true;
+  window->partial_ = PartialRepaint::detect(window->window_);
   return window;
 }
 
@@ -228,56 +230,31 @@ void Window::beginFrame() {
 
 void Window::endFrame() { ImGui::Render(); }
 
-std::uint64_t Window::frameSignature() const {
-  // A word-at-a-time multiplicative hash: about a millisecond for a busy frame's megabyte of
-  // vertices, against tens of milliseconds to rasterize it in software.
-  std::uint64_t hash = 0x9E3779B97F4A7C15ull;
-  const auto mix = [&hash](std::uint64_t word) {
-    hash = (hash ^ word) * 0xBF58476D1CE4E5B9ull;
-    hash ^= hash >> 31;
-  };
-  const auto mixBytes = [&mix](const void* data, std::size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    std::size_t i = 0;
-    for (; i + 8 <= size; i += 8) {
-      std::uint64_t word;
-      std::memcpy(&word, bytes + i, 8);
-      mix(word);
-    }
-    std::uint64_t tail = 0;
-    std::memcpy(&tail, bytes + i, size - i);
-    mix(tail ^ (static_cast<std::uint64_t>(size) << 56));
-  };
-  mix(static_cast<std::uint64_t>(framebufferWidth()) << 32 |
-      static_cast<std::uint32_t>(framebufferHeight()));
-  const ImDrawData* data = ImGui::GetDrawData();
-  if (data == nullptr) return hash;
-  mixBytes(&data->DisplayPos, sizeof data->DisplayPos);
-  mixBytes(&data->DisplaySize, sizeof data->DisplaySize);
-  for (int n = 0; n < data->CmdListsCount; ++n) {
-    const ImDrawList* list = data->CmdLists[n];
-    mixBytes(list->VtxBuffer.Data,
-             static_cast<std::size_t>(list->VtxBuffer.Size) * sizeof(ImDrawVert));
-    mixBytes(list->IdxBuffer.Data,
-             static_cast<std::size_t>(list->IdxBuffer.Size) * sizeof(ImDrawIdx));
-    for (const ImDrawCmd& command : list->CmdBuffer) {
-      mixBytes(&command.ClipRect, sizeof command.ClipRect);
-      mix(reinterpret_cast<std::uintptr_t>(command.TextureId));
-      mix(static_cast<std::uint64_t>(command.VtxOffset) << 32 | command.IdxOffset);
-      mix(command.ElemCount);
-    }
-  }
-  return hash;
+namespace {
+constexpr float kClearColor[4] = {0.10f, 0.10f, 0.12f, 1.0f};
 }
 
 void Window::drawFrame() {
+  if (partial_) {
+    const PixelRect whole{0, 0, framebufferWidth(), framebufferHeight()};
+    partial_->paint({&whole, 1}, whole.x1, whole.y1, kClearColor);
+    return;
+  }
   glViewport(0, 0, framebufferWidth(), framebufferHeight());
-  glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
+  glClearColor(kClearColor[0], kClearColor[1], kClearColor[2], kClearColor[3]);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-void Window::swapBuffers() { glfwSwapBuffers(window_); }
+void Window::drawRegions(std::span<const PixelRect> regions) {
+  if (!partial_) return drawFrame();
+  partial_->paint(regions, framebufferWidth(), framebufferHeight(), kClearColor);
+}
+
+void Window::swapBuffers() {
+  if (partial_) return partial_->present(framebufferHeight());
+  glfwSwapBuffers(window_);
+}
 
 int Window::width() const {
   int w = 0, h = 0;

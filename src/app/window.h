@@ -4,13 +4,18 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "app/pixel_rect.h"
+
 struct GLFWwindow;
 
 namespace lenslab::app {
+
+class PartialRepaint;
 
 class Window {
  public:
@@ -34,12 +39,16 @@ class Window {
   void beginFrame();
   // Ends the ImGui frame: its draw data is ready (nothing is drawn yet).
   void endFrame();
-  // A fingerprint of what the frame would draw: ImGui's vertices, indices, commands and the
-  // framebuffer size. Equal fingerprints (and unchanged textures) mean equal pixels.
-  std::uint64_t frameSignature() const;
   // Draws the ended frame into the back buffer (GL: a software rasterizer spends tens of
   // milliseconds of CPU here on a large window).
   void drawFrame();
+  // With a software rasterizer (partial_repaint.h) repaints only `regions`, which must hold
+  // every pixel that differs from the last drawn frame (FrameDamage); otherwise drawFrame().
+  void drawRegions(std::span<const PixelRect> regions);
+  bool repaintsRegionsOnly() const { return partial_ != nullptr; }
+  // Partial repaint figures; null without partial repaints.
+  const PartialRepaint* partialRepaint() const { return partial_.get(); }
+  // Shows what was drawn: swaps the buffers, or copies the repainted regions to the window.
   void swapBuffers();
   // The window system asked for a redraw (exposed, resized) since the last call.
   bool takeRefreshRequest() { return std::exchange(refreshRequested_, false); }
@@ -71,6 +80,7 @@ class Window {
   void holdTappedKeys();
 
   GLFWwindow* window_ = nullptr;
+  std::unique_ptr<PartialRepaint> partial_;
   bool imguiReady_ = false;
   float contentScale_ = 1.0f;
   float pendingContentScale_ = 0.0f;  // set by the callback, applied before the next frame

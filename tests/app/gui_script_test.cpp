@@ -20,12 +20,14 @@ namespace {
 
 class ScriptedViewer : public ::testing::Test {
  protected:
-  // `prefix` runs in the same shell first (ulimit, environment).
-  testing::ProcessResult runScript(const std::string& script, const std::string& prefix = "") {
+  // `prefix` runs in the same shell first (ulimit, environment); `arguments` follow lenslab's.
+  testing::ProcessResult runScript(const std::string& script, const std::string& prefix = "",
+                                   const std::string& arguments = "") {
     const auto path = scratch / "commands.script";
     std::ofstream(path) << script;
     return testing::runProcess(prefix + "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY +
-                                   "' --size 1280x800 --script '" + path.string() + "'",
+                                   "' --size 1280x800 --script '" + path.string() + "' " +
+                                   arguments,
                                scratch);
   }
   nlohmann::json json(const std::string& name) {
@@ -349,6 +351,44 @@ TEST_F(ScriptedViewer, UnwritableScreenshotPathIsAnErrorNotACrash) {
   const auto result = runScript("wait-frames 1\nscreenshot /no/such/dir/x.png\n");
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_NE(result.err.find("/no/such/dir/x.png"), std::string::npos) << result.err;
+}
+
+// Under Xvfb the GL is llvmpipe, so the viewer repaints only what changed (partial_repaint.h).
+// LENSLAB_CHECK_REPAINT=1 follows every partial repaint with a full one and reports any pixel
+// that differs: edits of every kind, new preview passes, the exposure, the camera, undo.
+constexpr const char* kRepaintScript =
+    "wait-spp 2\n"
+    "set surface 3 radius 40\n"
+    "wait-spp 2\n"
+    "set film-distance 37\n"
+    "wait-spp 1\n"
+    "set exposure 1\n"
+    "wait-frames 3\n"
+    "set camera pinhole\n"
+    "wait-spp 1\n"
+    "set blocked-rays hide\n"
+    "undo\n"
+    "undo\n"
+    "wait-spp 4\n"
+    "quit\n";
+
+TEST_F(ScriptedViewer, PartialRepaintsEqualFullRepaints) {
+  const auto result =
+      runScript(kRepaintScript, "export LENSLAB_CHECK_REPAINT=1; ", "--stats-json stats.json");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_EQ(result.err.find("repaint check"), std::string::npos) << result.err;
+  // And partial repaints did happen: most redrawn frames were new preview passes, which repaint
+  // the preview panel alone.
+  const nlohmann::json stats = json("stats.json");
+  EXPECT_TRUE(stats["partial_repaint"].get<bool>()) << stats.dump();
+  EXPECT_LT(stats["repainted_fraction_median"].get<double>(), 0.6) << stats.dump();
+}
+
+TEST_F(ScriptedViewer, TheRepaintCheckCatchesAMissedRegion) {
+  // LENSLAB_CHECK_REPAINT=shrink repaints only the left half of each damaged region.
+  const auto result = runScript(kRepaintScript, "export LENSLAB_CHECK_REPAINT=shrink; ");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.err.find("repaint check"), std::string::npos) << result.err;
 }
 
 }  // namespace

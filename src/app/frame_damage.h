@@ -1,0 +1,61 @@
+#pragma once
+// Which pixels of the window a new ImGui frame changes.
+//
+// A software rasterizer (Mesa's llvmpipe: a machine without a GPU driver, a VM, Xvfb) spends
+// tens of milliseconds of CPU on every full redraw of a large window, and the preview's render
+// threads need that CPU: under Xvfb a 1400 x 850 redraw took 25-42 ms of llvmpipe's two threads.
+// Its cost is mostly per pixel, so repainting only what changed pays in proportion: a new preview
+// pass changes the image (a fifth of the window), an edit the table row, the cross-section and a
+// few numbers.
+//
+// FrameDamage compares each ImGui draw list (one per window, in drawing order) with the previous
+// frame's: a list whose vertices, indices or commands differ damages the pixels it covered before
+// and those it covers now; a command drawn with a texture whose contents changed (the preview)
+// damages the pixels it covers. Every other pixel is the same blend of the same primitives, so
+// it is unchanged.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <imgui.h>
+
+#include "app/pixel_rect.h"
+
+namespace lenslab::app {
+
+// Where ImGui's OpenGL 3 backend lets a command draw: its scissor box, computed as the backend
+// computes it (truncating float to int), in top-left framebuffer pixels.
+PixelRect scissorOf(const ImDrawCmd& command, const ImDrawData& data, int framebufferHeight);
+
+class FrameDamage {
+ public:
+  // Each region is painted separately (all draw commands are submitted again for each), so a few
+  // large ones beat many small ones.
+  static constexpr int kMaxRegions = 4;
+  // Above this fraction of the framebuffer, one full repaint is as cheap.
+  static constexpr double kFullRepaintFraction = 0.6;
+
+  // Compares the frame in `data` with the frame of the previous call and returns the regions
+  // whose pixels may differ: empty when nothing changed; the whole framebuffer after reset(), on
+  // the first call, when the framebuffer's size, the windows or their order changed, or when the
+  // damage covers most of it anyway. `changedTextures` are textures whose contents were replaced
+  // since the previous call.
+  std::vector<PixelRect> compare(const ImDrawData& data, int framebufferWidth,
+                                 int framebufferHeight,
+                                 std::span<const ImTextureID> changedTextures);
+  // The next compare() returns the whole framebuffer.
+  void reset() { valid_ = false; }
+
+ private:
+  struct ListRecord {
+    std::uint64_t owner = 0;    // hash of the owning window's name
+    std::uint64_t content = 0;  // hash of vertices, indices and commands
+    PixelRect covered;          // bounding rect of what it draws, inside its scissor boxes
+  };
+  std::vector<ListRecord> lists_;
+  int width_ = 0, height_ = 0;
+  bool valid_ = false;
+};
+
+}  // namespace lenslab::app
