@@ -37,13 +37,32 @@ std::vector<Tile> makeTiles(int width, int height, int size) {
 // single rays).
 constexpr std::size_t kCameraBatchRays = 1024;
 
-// One wave over an image: which samples, and at what resolution.
+// Which pixels of the image a wave renders. A coarse first look (RenderSettings::coarseDivisor d)
+// is the first wave's sample of one pixel per d x d block, the block's centre: the first wave
+// then renders the other pixels only, so the look costs no extra samples.
+enum class WavePixels { All, BlockCentres, AllButBlockCentres };
+
+// The block centre's coordinate for a pixel coordinate (the block's middle, or the image's last
+// pixel in a partial block at the edge).
+int blockCentre(int coordinate, int blockSize, int extent) {
+  return std::min(coordinate / blockSize * blockSize + blockSize / 2, extent - 1);
+}
+
+// One wave over an image: which samples of which pixels.
 struct Wave {
   int firstSample = 0;
   int count = 1;
-  int width = 0;          // of the image the tiles cover
-  float rasterScale = 1;  // camera raster units per image pixel (the coarse pass's divisor)
+  int width = 0, height = 0;
+  WavePixels pixels = WavePixels::All;
+  int blockSize = 1;  // of WavePixels other than All
   IntegratorSettings integrator;
+
+  bool renders(int x, int y) const {
+    if (pixels == WavePixels::All) return true;
+    const bool centre =
+        x == blockCentre(x, blockSize, width) && y == blockCentre(y, blockSize, height);
+    return centre == (pixels == WavePixels::BlockCentres);
+  }
 };
 
 // Renders the wave's samples of every pixel in the tile and adds their sum to `sums`. Returns
@@ -66,16 +85,15 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   // lens's image circle) stay black, and their samples are counted without being taken.
   thread_local std::vector<glm::ivec2> visible;
   visible.clear();
+  std::size_t wavePixels = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x) {
-      if (camera.maySeeScene(glm::vec2(x, y) * wave.rasterScale,
-                             glm::vec2(x + 1, y + 1) * wave.rasterScale)) {
-        visible.push_back({x, y});
-      }
+      if (!wave.renders(x, y)) continue;
+      ++wavePixels;
+      if (camera.maySeeScene(glm::vec2(x, y), glm::vec2(x + 1, y + 1))) visible.push_back({x, y});
     }
   }
-  const int tilePixels = (tile.x1 - tile.x0) * (tile.y1 - tile.y0);
-  statistics.cameraSamples += (tilePixels - visible.size()) * samplesPerPixel;
+  statistics.cameraSamples += (wavePixels - visible.size()) * samplesPerPixel;
   const int visibleCount = static_cast<int>(visible.size());
   for (int first = 0; first < visibleCount; first += pixelsPerBatch) {
     if (cancelled()) return false;
@@ -97,7 +115,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         samplers.emplace_back(pixelSeeds, static_cast<std::uint32_t>(firstSample + s));
         samplers.back().skipLeadingPairs();
         glm::vec2& raster = rasterPoints[base + static_cast<std::size_t>(s)];
-        raster = (glm::vec2(x, y) + raster) * wave.rasterScale;
+        raster += glm::vec2(x, y);
       }
     }
     camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());
@@ -176,24 +194,31 @@ std::shared_ptr<RenderSnapshot> makeSnapshot(int width, int height, const std::v
   return snapshot;
 }
 
-// Renders one coarse sample per pixel at 1/divisor of the resolution and publishes it. False
+// The coarse first look: the first wave's sample of each divisor x divisor block's centre pixel,
+// added to `sums` (the full image's) and published as an image of one pixel per block. False
 // when cancelled.
-bool renderCoarsePass(tbb::task_arena& arena, const RenderJob& job, int divisor,
-                      std::uint64_t generation, Clock::time_point started,
-                      const std::function<bool()>& cancelled,
+bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
+                      const std::vector<Tile>& tiles, std::vector<double>& sums,
+                      std::vector<RenderStatistics>& tileStatistics, std::uint64_t generation,
+                      Clock::time_point started, const std::function<bool()>& cancelled,
                       const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
-  Wave wave;
-  wave.width = (job.camera->width() + divisor - 1) / divisor;
-  const int height = (job.camera->height() + divisor - 1) / divisor;
-  wave.rasterScale = static_cast<float>(divisor);
-  wave.integrator = job.settings.integrator;
-  // A coarse pixel covers divisor^2 full pixels: so does its texture footprint.
-  wave.integrator.cameraSpreadRadians = job.camera->pixelSpreadRadians() * divisor;
-  const std::vector<Tile> tiles = makeTiles(wave.width, height, std::max(4, job.settings.tileSize));
-  std::vector<double> sums(static_cast<std::size_t>(wave.width) * height * 3, 0.0);
-  std::vector<RenderStatistics> tileStatistics(tiles.size());
+  wave.pixels = WavePixels::BlockCentres;
   if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return false;
-  auto snapshot = makeSnapshot(wave.width, height, sums, 1, generation);
+  const int divisor = wave.blockSize;
+  const int width = (wave.width + divisor - 1) / divisor;
+  const int height = (wave.height + divisor - 1) / divisor;
+  std::vector<double> centres(static_cast<std::size_t>(width) * height * 3);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const int fullX = blockCentre(x * divisor, divisor, wave.width);
+      const int fullY = blockCentre(y * divisor, divisor, wave.height);
+      for (int c = 0; c < 3; ++c) {
+        centres[3 * (static_cast<std::size_t>(y) * width + x) + c] =
+            sums[3 * (static_cast<std::size_t>(fullY) * wave.width + fullX) + c];
+      }
+    }
+  }
+  auto snapshot = makeSnapshot(width, height, centres, 1, generation);
   snapshot->samplesPerPixel = 0;
   snapshot->coarse = true;
   snapshot->statistics = total(tileStatistics);
@@ -209,8 +234,11 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
                  const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
   const Clock::time_point started = Clock::now();
   job.camera->prepare();  // here, on the job's thread: not on a viewer's UI thread, not in a wave
+  const int width = job.camera->width();
+  const int height = job.camera->height();
   Wave wave;
-  wave.width = job.camera->width();
+  wave.width = width;
+  wave.height = height;
   wave.integrator = job.settings.integrator;
   if (wave.integrator.cameraSpreadRadians == 0.0f) {
     // pbrt shrinks a pixel's footprint by 1/sqrt(spp): more samples, sharper texture lookups.
@@ -218,13 +246,6 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     wave.integrator.cameraSpreadRadians =
         job.camera->pixelSpreadRadians() / std::sqrt(static_cast<float>(spp));
   }
-  if (job.settings.coarseDivisor > 1 &&
-      !renderCoarsePass(arena, job, job.settings.coarseDivisor, generation, started, cancelled,
-                        publish)) {
-    return;
-  }
-  const int width = job.camera->width();
-  const int height = job.camera->height();
   const std::vector<Tile> tiles = makeTiles(width, height, std::max(4, job.settings.tileSize));
   std::vector<double> sums(static_cast<std::size_t>(width) * height * 3, 0.0);
   std::vector<RenderStatistics> tileStatistics(tiles.size());
@@ -236,6 +257,15 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     if (target > 0) count = std::min(count, target - done);
     wave.firstSample = done;
     wave.count = count;
+    wave.pixels = WavePixels::All;
+    if (index == 0 && job.settings.coarseDivisor > 1) {
+      wave.blockSize = job.settings.coarseDivisor;
+      if (!renderCoarseLook(arena, job, wave, tiles, sums, tileStatistics, generation, started,
+                            cancelled, publish)) {
+        return;
+      }
+      wave.pixels = WavePixels::AllButBlockCentres;
+    }
     if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return;
     done += count;
     auto snapshot = makeSnapshot(width, height, sums, done, generation);

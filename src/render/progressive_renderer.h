@@ -27,9 +27,11 @@ struct RenderSettings {
   int tileSize = 16;
   // Run the workers at a lower priority than other threads of the process (the viewer's UI).
   bool lowPriority = false;
-  // Above 1: before the first full-resolution wave, render one sample per pixel at
-  // 1/coarseDivisor of the resolution per axis and publish it as a coarse snapshot, so that an
-  // interactive view has a picture after a small fraction of a full pass.
+  // Above 1: the first wave begins with one pixel per coarseDivisor x coarseDivisor block (its
+  // centre) and publishes those as a coarse snapshot of 1/coarseDivisor of the resolution per
+  // axis, so that an interactive view has a picture after a small fraction of a full pass. The
+  // rest of the wave then renders the other pixels: the look costs no samples of its own, and
+  // the image is the same as without it.
   int coarseDivisor = 1;
 };
 
@@ -54,7 +56,8 @@ struct RenderSnapshot {
   std::uint64_t generation = 0;  // the start() call this belongs to
   bool complete = false;         // all requested samples are in
   // The coarse first look (RenderSettings::coarseDivisor): width and height are the reduced
-  // ones, one sample per pixel, and samplesPerPixel is 0 (no full-resolution sample yet).
+  // ones, each pixel a block centre's first sample, and samplesPerPixel is 0 (no complete
+  // full-resolution wave yet).
   bool coarse = false;
   double renderSeconds = 0.0;
   RenderStatistics statistics;

@@ -257,9 +257,25 @@ TEST(Renderer, ACoarseFirstLookComesBeforeTheFullWavesAndEachPublicationIsAnnoun
     EXPECT_EQ(seen[i]->samplesPerPixel, 1 << (i - 1));
   }
   EXPECT_TRUE(seen.back()->complete);
-  // The coarse pass changes nothing in the final image: it equals a job without one.
+  // The look is the first wave's own samples of the blocks' centre pixels: no extra work.
+  const RenderSnapshot& first = *seen[1];
+  for (int y = 0; y < coarse.height; ++y) {
+    for (int x = 0; x < coarse.width; ++x) {
+      const int fullX = std::min(4 * x + 2, first.width - 1);
+      const int fullY = std::min(4 * y + 2, first.height - 1);
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(coarse.rgb[3 * (y * coarse.width + x) + c],
+                  first.rgb[3 * (fullY * first.width + fullX) + c])
+            << x << "," << y;
+      }
+    }
+  }
+  EXPECT_EQ(first.statistics.cameraSamples, static_cast<std::uint64_t>(first.width) * first.height);
+  // The coarse look changes nothing in the images: they equal a job's without one.
   job.settings.coarseDivisor = 1;
   EXPECT_EQ(renderToCompletion(job)->rgb, seen.back()->rgb);
+  job.settings.samplesPerPixel = 1;
+  EXPECT_EQ(renderToCompletion(job)->rgb, first.rgb);
 }
 
 // A camera that delegates to another and records where and when it was prepared.
