@@ -1,11 +1,13 @@
 // The renderer's part of the viewer's first preview pass after an edit (issue 5: on screen within
-// 100 ms), without a window. The default scene at the viewer's preview size (600 x 400), its lens
+// 100 ms), without a window. The default scene at the viewer's preview size in a 1400 x 850
+// window (512 x 341: the 600 x 400 film fitted to the panel, in 64-pixel steps), its lens
 // at a new film distance each iteration (a new LensSystem, so its exit-pupil table is built again,
 // as after a film-distance edit), and the job as PreviewController makes it: all hardware
 // threads at low priority on a ProgressiveRenderer that lives across jobs, a coarse look at 1/4
 // resolution, then one sample per pixel. Wall time.
 //
-// BM_PreviewFirstPass: edit to the first full pass (table + coarse look + pass).
+// BM_PreviewFirstPass/coarse:4: edit to the first full pass (table + coarse look + pass), as the
+// viewer renders it; coarse:1 without the coarse look.
 // BM_PreviewTable: the exit-pupil table of the edited lens alone (2 threads).
 // BM_PreviewPass: the 1-spp pass alone (table built before, no coarse look).
 
@@ -27,7 +29,7 @@ namespace {
 using lenslab::optics::LensSystem;
 namespace render = lenslab::render;
 
-constexpr int kPreviewWidth = 600, kPreviewHeight = 400;  // the viewer's at 1400 x 850
+constexpr int kPreviewWidth = 512, kPreviewHeight = 341;  // the viewer's at 1400 x 850
 constexpr int kCoarseDivisor = 4;                         // PreviewController::kCoarseDivisor
 
 struct DefaultScene {
@@ -84,12 +86,17 @@ void BM_PreviewFirstPass(benchmark::State& state) {
   render::ProgressiveRenderer renderer;
   std::int64_t iteration = 0;
   for (auto _ : state) {
-    const auto generation =
-        renderer.start(previewJob(loaded, editedLens(*loaded.lens, iteration++), kCoarseDivisor));
+    const auto generation = renderer.start(previewJob(loaded, editedLens(*loaded.lens, iteration++),
+                                                      static_cast<int>(state.range(0))));
     if (!renderer.waitForCompletion(generation, 60.0)) return state.SkipWithError("no pass");
   }
 }
-BENCHMARK(BM_PreviewFirstPass)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PreviewFirstPass)
+    ->Arg(kCoarseDivisor)
+    ->Arg(1)
+    ->ArgName("coarse")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_PreviewTable(benchmark::State& state) {
   const DefaultScene& loaded = defaultScene();
