@@ -60,28 +60,11 @@ std::uint64_t contentHash(const ImDrawList& list) {
   return hash.value();
 }
 
-// The pixels a command can change: the bounding box of its triangles (one pixel wider on each
-// side for rasterization rounding), inside its scissor box.
-PixelRect commandRect(const ImDrawList& list, const ImDrawCmd& command, const ImDrawData& data,
-                      int framebufferHeight) {
-  const PixelRect scissor = scissorOf(command, data, framebufferHeight);
-  if (scissor.empty()) return {};
-  if (command.UserCallback != nullptr) {
-    // ImGui's render-state reset draws nothing; another callback may draw anywhere it may.
-    return command.UserCallback == ImDrawCallback_ResetRenderState ? PixelRect{} : scissor;
-  }
-  float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
-  const ImDrawIdx* indices = list.IdxBuffer.Data + command.IdxOffset;
-  const ImDrawVert* vertices = list.VtxBuffer.Data + command.VtxOffset;
-  for (unsigned i = 0; i < command.ElemCount; ++i) {
-    const ImVec2 p = vertices[indices[i]].pos;
-    minX = std::min(minX, p.x);
-    minY = std::min(minY, p.y);
-    maxX = std::max(maxX, p.x);
-    maxY = std::max(maxY, p.y);
-  }
-  if (!(minX <= maxX) || !(minY <= maxY)) return {};
-  const ImVec2 offset = data.DisplayPos, scale = data.FramebufferScale;
+// The pixels a bounding box of triangles (in ImGui's coordinates) can change: one pixel wider
+// on each side for rasterization rounding, inside the command's scissor box.
+PixelRect boxToPixels(float minX, float minY, float maxX, float maxY, const PixelRect& scissor,
+                      ImVec2 offset, ImVec2 scale) {
+  if (scissor.empty() || !(minX <= maxX) || !(minY <= maxY)) return {};
   // Clamped before the conversion: a vertex far off screen must not overflow an int.
   const auto toPixel = [](float value) {
     return static_cast<int>(std::clamp(value, -1.0e6f, 1.0e6f));
@@ -93,11 +76,27 @@ PixelRect commandRect(const ImDrawList& list, const ImDrawCmd& command, const Im
   return intersect(box, scissor);
 }
 
+// The pixels a command's triangles can change.
+PixelRect commandPixels(const ImDrawList& list, const ImDrawCmd& command, const PixelRect& scissor,
+                        ImVec2 offset, ImVec2 scale) {
+  float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+  const ImDrawIdx* indices = list.IdxBuffer.Data + command.IdxOffset;
+  const ImDrawVert* vertices = list.VtxBuffer.Data + command.VtxOffset;
+  for (unsigned i = 0; i < command.ElemCount; ++i) {
+    const ImVec2 p = vertices[indices[i]].pos;
+    minX = std::min(minX, p.x);
+    minY = std::min(minY, p.y);
+    maxX = std::max(maxX, p.x);
+    maxY = std::max(maxY, p.y);
+  }
+  return boxToPixels(minX, minY, maxX, maxY, scissor, offset, scale);
+}
+
 bool nearEnoughToMerge(const PixelRect& a, const PixelRect& b) {
-  // When their bounding rect is hardly larger than the two (overlapping, or side by side), one
-  // region costs less than two. Not merely touching: two panels meeting at a corner span the
+  // When their bounding rect is hardly (10%) larger than the two (overlapping, or side by side),
+  // one region costs less than two. Not merely touching: two panels meeting at a corner span the
   // window.
-  return unite(a, b).area() <= (a.area() + b.area()) * 5 / 4;
+  return unite(a, b).area() <= (a.area() + b.area()) * 11 / 10;
 }
 
 std::vector<PixelRect> merged(std::vector<PixelRect> rects, const PixelRect& whole) {
@@ -114,10 +113,23 @@ std::vector<PixelRect> merged(std::vector<PixelRect> rects, const PixelRect& who
       }
     }
   }
-  if (rects.size() > static_cast<std::size_t>(FrameDamage::kMaxRegions)) {
-    PixelRect bounds;
-    for (const PixelRect& r : rects) bounds = unite(bounds, r);
-    rects = {bounds};
+  // Too many: merge the two whose bounding rect adds the fewest pixels, until few enough.
+  while (rects.size() > static_cast<std::size_t>(FrameDamage::kMaxRegions)) {
+    std::size_t bestI = 0, bestJ = 1;
+    long long bestGrowth = -1;
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+      for (std::size_t j = i + 1; j < rects.size(); ++j) {
+        const long long growth =
+            unite(rects[i], rects[j]).area() - rects[i].area() - rects[j].area();
+        if (bestGrowth < 0 || growth < bestGrowth) {
+          bestGrowth = growth;
+          bestI = i;
+          bestJ = j;
+        }
+      }
+    }
+    rects[bestI] = unite(rects[bestI], rects[bestJ]);
+    rects.erase(rects.begin() + static_cast<std::ptrdiff_t>(bestJ));
   }
   long long area = 0;
   for (const PixelRect& r : rects) area += r.area();
@@ -159,6 +171,86 @@ PixelRect scissorOf(const ImDrawCmd& command, const ImDrawData& data, int frameb
   return {x, top, x + width, top + height};
 }
 
+namespace {
+
+// A list's triangles in drawing order, across its commands (ImGui splits a window's drawing into
+// commands wherever the clip rect or texture changes, so an edit can change their number).
+struct TriangleRef {
+  const ImDrawVert* corners[3];
+  const FrameDamageCommand* command;
+};
+
+}  // namespace
+
+PixelRect FrameDamage::changedPart(const ListRecord& before, const ListRecord& now) {
+  const PixelRect everything = unite(before.covered, now.covered);
+  const auto triangles = [](const ListRecord& list, std::vector<TriangleRef>& out) {
+    out.clear();
+    for (const CommandRecord& command : list.commands) {
+      if (command.callback == ImDrawCallback_ResetRenderState) continue;  // draws nothing
+      if (command.callback != nullptr) return false;  // draws anything: not comparable
+      const ImDrawIdx* indices = list.indices.data() + command.indexOffset;
+      const ImDrawVert* vertices = list.vertices.data() + command.vertexOffset;
+      for (unsigned i = 0; i + 3 <= command.indexCount; i += 3) {
+        out.push_back(
+            {{&vertices[indices[i]], &vertices[indices[i + 1]], &vertices[indices[i + 2]]},
+             &command});
+      }
+    }
+    return true;
+  };
+  std::vector<TriangleRef> a, b;
+  if (!triangles(before, a) || !triangles(now, b)) return everything;
+  const auto same = [](const TriangleRef& x, const TriangleRef& y) {
+    if (x.command->texture != y.command->texture ||
+        std::memcmp(&x.command->clipRect, &y.command->clipRect, sizeof(ImVec4)) != 0) {
+      return false;
+    }
+    for (int corner = 0; corner < 3; ++corner) {
+      if (std::memcmp(x.corners[corner], y.corners[corner], sizeof(ImDrawVert)) != 0) return false;
+    }
+    return true;
+  };
+  const std::size_t shorter = std::min(a.size(), b.size());
+  std::size_t prefix = 0;
+  while (prefix < shorter && same(a[prefix], b[prefix])) ++prefix;
+  std::size_t suffix = 0;
+  while (suffix < shorter - prefix && same(a[a.size() - 1 - suffix], b[b.size() - 1 - suffix])) {
+    ++suffix;
+  }
+  // The triangles between the equal prefix and suffix, before and now, each inside its
+  // command's scissor box.
+  const auto middle = [&](const std::vector<TriangleRef>& list, std::size_t end,
+                          const ListRecord& record) {
+    PixelRect rect;
+    float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    const FrameDamageCommand* command = nullptr;
+    const auto flush = [&] {
+      if (command != nullptr) {
+        rect = unite(rect, boxToPixels(minX, minY, maxX, maxY, command->scissor, record.offset,
+                                       record.scale));
+      }
+      minX = minY = INFINITY;
+      maxX = maxY = -INFINITY;
+    };
+    for (std::size_t t = prefix; t < end; ++t) {
+      if (list[t].command != command) {
+        flush();
+        command = list[t].command;
+      }
+      for (const ImDrawVert* corner : list[t].corners) {
+        minX = std::min(minX, corner->pos.x);
+        minY = std::min(minY, corner->pos.y);
+        maxX = std::max(maxX, corner->pos.x);
+        maxY = std::max(maxY, corner->pos.y);
+      }
+    }
+    flush();
+    return rect;
+  };
+  return unite(middle(a, a.size() - suffix, before), middle(b, b.size() - suffix, now));
+}
+
 std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebufferWidth,
                                             int framebufferHeight,
                                             std::span<const ImTextureID> changedTextures) {
@@ -173,23 +265,41 @@ std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebuf
     ListRecord& record = now[n];
     record.owner = ownerHash(list);
     record.content = contentHash(list);
+    record.offset = data.DisplayPos;
+    record.scale = data.FramebufferScale;
+    record.vertices.assign(list.VtxBuffer.begin(), list.VtxBuffer.end());
+    record.indices.assign(list.IdxBuffer.begin(), list.IdxBuffer.end());
     for (const ImDrawCmd& command : list.CmdBuffer) {
-      const PixelRect rect = commandRect(list, command, data, framebufferHeight);
-      record.covered = unite(record.covered, rect);
-      if (std::find(changedTextures.begin(), changedTextures.end(), command.TextureId) !=
-          changedTextures.end()) {
-        damage.push_back(rect);
+      CommandRecord c;
+      c.clipRect = command.ClipRect;
+      c.texture = command.TextureId;
+      c.callback = command.UserCallback;
+      c.vertexOffset = command.VtxOffset;
+      c.indexOffset = command.IdxOffset;
+      c.indexCount = command.ElemCount;
+      c.scissor = scissorOf(command, data, framebufferHeight);
+      if (c.callback != nullptr) {
+        // ImGui's render-state reset draws nothing; another callback may draw anywhere it may.
+        c.covered = c.callback == ImDrawCallback_ResetRenderState ? PixelRect{} : c.scissor;
+      } else {
+        c.covered = commandPixels(list, command, c.scissor, data.DisplayPos, data.FramebufferScale);
       }
+      record.covered = unite(record.covered, c.covered);
+      if (std::find(changedTextures.begin(), changedTextures.end(), c.texture) !=
+          changedTextures.end()) {
+        damage.push_back(c.covered);
+      }
+      record.commands.push_back(c);
     }
     if (wholeFrame) continue;
     const ListRecord& before = lists_[n];
     if (record.owner != before.owner) {
       wholeFrame = true;  // windows appeared, closed or changed order
     } else if (record.content != before.content) {
-      damage.push_back(before.covered);
-      damage.push_back(record.covered);
+      damage.push_back(changedPart(before, record));
     }
   }
+
   lists_ = std::move(now);
   width_ = framebufferWidth;
   height_ = framebufferHeight;

@@ -9,10 +9,13 @@
 // few numbers.
 //
 // FrameDamage compares each ImGui draw list (one per window, in drawing order) with the previous
-// frame's: a list whose vertices, indices or commands differ damages the pixels it covered before
-// and those it covers now; a command drawn with a texture whose contents changed (the preview)
-// damages the pixels it covers. Every other pixel is the same blend of the same primitives, so
-// it is unchanged.
+// frame's. In a list that changed, its triangles (with their command's clip rect and texture) are
+// compared in drawing order from the front and from the back: only the triangles between the
+// equal prefix and the equal suffix, before and now, damage pixels (a new number in a table cell
+// damages the cell, not the panel).
+// A command drawn with a texture whose contents changed (the preview) damages the pixels it
+// covers. Every other pixel is the same blend of the same triangles in the same order, so it is
+// unchanged.
 
 #include <cstdint>
 #include <span>
@@ -28,13 +31,23 @@ namespace lenslab::app {
 // computes it (truncating float to int), in top-left framebuffer pixels.
 PixelRect scissorOf(const ImDrawCmd& command, const ImDrawData& data, int framebufferHeight);
 
+// What FrameDamage keeps of a draw command.
+struct FrameDamageCommand {
+  ImVec4 clipRect;
+  ImTextureID texture = nullptr;
+  ImDrawCallback callback = nullptr;
+  unsigned vertexOffset = 0, indexOffset = 0, indexCount = 0;
+  PixelRect scissor, covered;
+};
+
 class FrameDamage {
  public:
   // Each region is painted separately (all draw commands are submitted again for each), so a few
   // large ones beat many small ones.
   static constexpr int kMaxRegions = 4;
-  // Above this fraction of the framebuffer, one full repaint is as cheap.
-  static constexpr double kFullRepaintFraction = 0.6;
+  // Above this fraction of the framebuffer, one full repaint is about as cheap (the cost is per
+  // pixel; each region adds only the walk over the draw commands that it clips away).
+  static constexpr double kFullRepaintFraction = 0.85;
 
   // Compares the frame in `data` with the frame of the previous call and returns the regions
   // whose pixels may differ: empty when nothing changed; the whole framebuffer after reset(), on
@@ -48,11 +61,19 @@ class FrameDamage {
   void reset() { valid_ = false; }
 
  private:
+  using CommandRecord = FrameDamageCommand;
   struct ListRecord {
     std::uint64_t owner = 0;    // hash of the owning window's name
     std::uint64_t content = 0;  // hash of vertices, indices and commands
     PixelRect covered;          // bounding rect of what it draws, inside its scissor boxes
+    // A copy of the list, to find what changed inside a changed list.
+    ImVec2 offset, scale;  // the frame's DisplayPos and FramebufferScale
+    std::vector<ImDrawVert> vertices;
+    std::vector<ImDrawIdx> indices;
+    std::vector<CommandRecord> commands;
   };
+  // Where a changed list's pixels may differ from `before`'s.
+  static PixelRect changedPart(const ListRecord& before, const ListRecord& now);
   std::vector<ListRecord> lists_;
   int width_ = 0, height_ = 0;
   bool valid_ = false;

@@ -87,6 +87,21 @@ TEST_F(FrameDamageTest, AChangedWindowIsDamagedAndTheOtherIsNot) {
       intersect(regions[0], {right.x0 + 8, right.y0 + 20, right.x0 + 60, right.y0 + 40}).empty());
 }
 
+TEST_F(FrameDamageTest, InAChangedWindowOnlyTheChangedLineIsDamaged) {
+  const std::string before = "first line\nsecond line\nthird line";
+  for (int i = 0; i < 3; ++i) frame("a", before);
+  damage.compare(frame("a", before), kWidth, kHeight, {});
+  const auto regions =
+      damage.compare(frame("a", "first line\nsecond LINE!\nthird line"), kWidth, kHeight, {});
+  ASSERT_EQ(regions.size(), 1u);
+  const PixelRect& r = regions[0];
+  EXPECT_TRUE(inside(r, right)) << r.x0 << "," << r.y0 << " " << r.x1 << "," << r.y1;
+  // One line of text of a 15-pixel font (and a pixel of rounding on each side), not the window,
+  // and the line's changed end, not its unchanged start.
+  EXPECT_LE(r.y1 - r.y0, 20);
+  EXPECT_GT(r.x0, right.x0 + 30);
+}
+
 TEST_F(FrameDamageTest, ATextureWithNewPixelsDamagesWhereItIsDrawn) {
   settle();
   const ImTextureID changed[] = {reinterpret_cast<ImTextureID>(std::intptr_t{7})};
@@ -128,7 +143,7 @@ TEST_F(FrameDamageTest, TwoDistantChangesAreTwoRegionsAndMostOfTheWindowIsAll) {
   const auto two = damage.compare(frame("c", "d", 500.0f), kWidth, kHeight, {});
   ASSERT_EQ(two.size(), 2u);
   EXPECT_TRUE(intersect(two[0], two[1]).empty());
-  // Both windows moved and grew past 60% of the framebuffer between them: one full repaint.
+  // Both windows moved and grew past 85% of the framebuffer between them: one full repaint.
   ImGui::NewFrame();
   for (const char* name : {"Left", "Right"}) {
     ImGui::SetNextWindowPos(ImVec2(name[0] == 'L' ? 0.0f : 400.0f, 0));
