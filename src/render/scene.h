@@ -83,6 +83,10 @@ class Scene {
   const TextureSet& textures() const { return textures_; }
   float radius() const { return radius_; }
   glm::vec3 center() const { return center_; }
+  // Object instances built as copies of their shapes in the top-level scene (see
+  // SceneBuilder: small objects), and those kept as Embree instances.
+  std::size_t flattenedInstances() const { return flattenedInstances_; }
+  std::size_t embreeInstances() const { return embreeInstances_; }
 
  private:
   friend class SceneBuilder;
@@ -99,6 +103,7 @@ class Scene {
   std::vector<int> infiniteLights_;
   glm::vec3 center_{0.0f};
   float radius_ = 1.0f;
+  std::size_t flattenedInstances_ = 0, embreeInstances_ = 0;
 };
 
 }  // namespace lenslab::render

@@ -151,12 +151,29 @@ class SceneBuilder {
       rtcCommitScene(scene_->objectScenes_[object]);
     }
     scene_->top_ = rtcNewScene(scene_->device_);
-    std::size_t topCount = description_.shapes.size() + description_.instances.size();
-    scene_->topRecords_.reserve(topCount);
+    const std::vector<bool> flatten = instancesToFlatten();
+    std::size_t topCount = description_.shapes.size();
+    for (std::size_t i = 0; i < description_.instances.size(); ++i) {
+      topCount += flatten[i] ? objectOf(description_.instances[i]).shapes.size() : 1;
+    }
+    scene_->topRecords_.reserve(topCount);  // final: quadric records are pointed to
     for (const ShapeDescription& shape : description_.shapes) {
       addShape(scene_->top_, scene_->topRecords_, shape, true);
     }
-    for (const InstanceDescription& instance : description_.instances) addInstance(instance);
+    for (std::size_t i = 0; i < description_.instances.size(); ++i) {
+      const InstanceDescription& instance = description_.instances[i];
+      if (!flatten[i]) {
+        addInstance(instance);
+        ++scene_->embreeInstances_;
+        continue;
+      }
+      for (ShapeDescription shape : objectOf(instance).shapes) {
+        shape.worldFromObject = instance.worldFromInstance * shape.worldFromObject;
+        // As inside an Embree instance: no emission (the object loop above warned).
+        addShape(scene_->top_, scene_->topRecords_, shape, false, false);
+      }
+      ++scene_->flattenedInstances_;
+    }
     rtcCommitScene(scene_->top_);
     scene_->packets8_ =
         rtcGetDeviceProperty(scene_->device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
@@ -322,8 +339,10 @@ class SceneBuilder {
   }
 
   // ---- geometry ----
+  // `reportProblems` false for the copies of a flattened instance: the object's own pass
+  // reported them once.
   void addShape(RTCScene target, std::vector<GeometryRecord>& records,
-                const ShapeDescription& shape, bool allowEmission) {
+                const ShapeDescription& shape, bool allowEmission, bool reportProblems = true) {
     GeometryRecord record;
     record.material = shape.materialIndex;
     const ParamSet& params = shape.params;
@@ -380,7 +399,9 @@ class SceneBuilder {
         q.height = params.getFloat("height", 1.0);
       }
       if (!(q.radius > 0.0) || (q.kind == QuadricKind::Cone && !(q.height > 0.0))) {
-        diagnostics_.warning(shape.location, "degenerate " + shape.type + "; it is left out");
+        if (reportProblems) {
+          diagnostics_.warning(shape.location, "degenerate " + shape.type + "; it is left out");
+        }
         return;
       }
       record.quadric.place(shape.worldFromObject, shape.reverseOrientation);
@@ -405,6 +426,39 @@ class SceneBuilder {
     if (id != records.size() - 1) {
       diagnostics_.error(shape.location, "internal: Embree geometry ids out of step");
     }
+  }
+
+  // ---- instances ----
+  const ObjectDescription& objectOf(const InstanceDescription& instance) const {
+    return description_.objects[static_cast<std::size_t>(instance.objectIndex)];
+  }
+
+  // Which instances become copies of their object's shapes in the top-level scene. Embree's
+  // instances cost a second traversal and a transform per ray that reaches them, which for a
+  // small object is most of its cost (the default scene's seven posts, a cylinder and a disk
+  // each: 13% of the render time at one sample per pixel). Copies of a big object would cost
+  // memory instead, so only objects of at most kFlattenPrimitives primitives are copied, and at
+  // most kFlattenBudget primitives in all, in the file's order.
+  static constexpr std::size_t kFlattenPrimitives = 64;
+  static constexpr std::size_t kFlattenBudget = std::size_t{1} << 18;
+  std::vector<bool> instancesToFlatten() const {
+    std::vector<std::size_t> primitives(description_.objects.size(), 0);
+    for (std::size_t o = 0; o < description_.objects.size(); ++o) {
+      for (const ShapeDescription& shape : description_.objects[o].shapes) {
+        primitives[o] += shape.type == "trianglemesh" ? shape.mesh.indices.size() / 3 : 1;
+      }
+    }
+    std::vector<bool> flatten(description_.instances.size(), false);
+    std::size_t spent = 0;
+    for (std::size_t i = 0; i < description_.instances.size(); ++i) {
+      const auto object = static_cast<std::size_t>(description_.instances[i].objectIndex);
+      if (primitives[object] <= kFlattenPrimitives &&
+          spent + primitives[object] <= kFlattenBudget) {
+        flatten[i] = true;
+        spent += primitives[object];
+      }
+    }
+    return flatten;
   }
 
   void addInstance(const InstanceDescription& instance) {

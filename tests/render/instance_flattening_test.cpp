@@ -1,0 +1,156 @@
+// Small object instances become copies of their shapes in the top-level scene (SceneBuilder's
+// instancesToFlatten); big ones stay Embree instances. Neither changes the picture, nor what is a
+// light.
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "render/camera_factory.h"
+#include "render/image_compare.h"
+#include "render/pbrt_parser.h"
+#include "render/progressive_renderer.h"
+#include "render/scene_builder.h"
+
+namespace lenslab::render {
+namespace {
+
+// A strip of `triangles` triangles along x, 1 unit long and 0.3 high, in the z = 0 plane.
+std::string strip(int triangles) {
+  std::ostringstream points, indices;
+  const int columns = triangles / 2 + 1;
+  for (int c = 0; c < columns; ++c) {
+    const double x = static_cast<double>(c) / (columns - 1);
+    points << x << " 0 0 " << x << " 0.3 0 ";
+  }
+  for (int c = 0; c + 1 < columns; ++c) {
+    const int a = 2 * c;
+    indices << a << ' ' << a + 2 << ' ' << a + 1 << ' ' << a + 1 << ' ' << a + 2 << ' ' << a + 3
+            << ' ';
+  }
+  return "Shape \"trianglemesh\" \"integer indices\" [" + indices.str() + "] \"point P\" [" +
+         points.str() + "]\n";
+}
+
+const std::string kHeader =
+    "LookAt 0 1.5 4  0 0.4 0  0 1 0\n"
+    "Camera \"perspective\" \"float fov\" [40]\n"
+    "Film \"image\" \"integer xresolution\" [64] \"integer yresolution\" [48]\n"
+    "Integrator \"path\" \"integer maxdepth\" [3]\n"
+    "WorldBegin\n"
+    "LightSource \"infinite\" \"rgb L\" [0.6 0.6 0.7]\n"
+    "LightSource \"distant\" \"point from\" [-2 5 3] \"point to\" [0 0 0] \"rgb L\" [3 3 3]\n"
+    "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
+    "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]\n"
+    "  \"point P\" [-5 0 -5  5 0 -5  5 0 5  -5 0 5]\n";
+
+// The post: a cylinder, a disk on top, a small plate. `place` transforms come before it.
+const std::string kPost =
+    "Material \"plastic\" \"rgb Kd\" [0.7 0.2 0.1] \"rgb Ks\" [0.3 0.3 0.3]\n"
+    "Rotate -90 1 0 0\n"
+    "Shape \"cylinder\" \"float radius\" [0.1] \"float zmin\" [0] \"float zmax\" [0.8]\n"
+    "Translate 0 0 0.8\n"
+    "Shape \"disk\" \"float radius\" [0.1]\n" +
+    strip(4);
+const char* kPlaces[] = {"Translate -1 0 0\n", "Translate 0 0 -0.5 Rotate 30 0 1 0\n",
+                         "Translate 1 0 0.3 Scale 1.2 0.8 1.2\n"};
+
+std::string instancedScene(int bigTriangles) {
+  std::string text = kHeader + "ObjectBegin \"post\"\n" + kPost + "ObjectEnd\n";
+  text += "ObjectBegin \"big\"\nMaterial \"matte\" \"rgb Kd\" [0.2 0.6 0.2]\n" +
+          strip(bigTriangles) + "ObjectEnd\n";
+  for (const char* place : kPlaces) {
+    text += std::string("AttributeBegin\n") + place + "ObjectInstance \"post\"\nAttributeEnd\n";
+  }
+  text += "AttributeBegin\nTranslate -0.5 0.2 1\nObjectInstance \"big\"\nAttributeEnd\n";
+  return text + "WorldEnd\n";
+}
+
+std::string writtenOutScene(int bigTriangles) {
+  std::string text = kHeader;
+  for (const char* place : kPlaces) {
+    text += std::string("AttributeBegin\n") + place + kPost + "AttributeEnd\n";
+  }
+  text += "AttributeBegin\nTranslate -0.5 0.2 1\nMaterial \"matte\" \"rgb Kd\" [0.2 0.6 0.2]\n" +
+          strip(bigTriangles) + "AttributeEnd\n";
+  return text + "WorldEnd\n";
+}
+
+struct Built {
+  std::optional<SceneDescription> description;
+  std::shared_ptr<const Scene> scene;
+  std::string messages;
+};
+
+Built build(const std::string& text) {
+  Built out;
+  ParseResult parsed = parsePbrtText(text, "test.pbrt", ".");
+  out.messages = parsed.diagnostics.formatAll();
+  if (!parsed.scene) return out;
+  BuildResult built = buildScene(*parsed.scene);
+  out.messages += built.diagnostics.formatAll();
+  out.scene = built.scene;
+  out.description = std::move(parsed.scene);
+  return out;
+}
+
+FloatImage render(const Built& built) {
+  RenderJob job;
+  Diagnostics diagnostics;
+  job.camera = makeCamera(*built.description, {}, diagnostics);
+  job.scene = built.scene;
+  job.settings.samplesPerPixel = 16;
+  job.settings.threads = 2;
+  job.settings.integrator.kind = built.description->integrator.kind;
+  job.settings.integrator.maxDepth = built.description->integrator.maxDepth;
+  const auto snapshot = renderToCompletion(job);
+  return {snapshot->width, snapshot->height, snapshot->rgb};
+}
+
+TEST(InstanceFlattening, SmallObjectsAreCopiedAndBigOnesStayInstances) {
+  const Built built = build(instancedScene(100));  // the big strip: 100 triangles, above 64
+  ASSERT_TRUE(built.scene) << built.messages;
+  EXPECT_EQ(built.scene->flattenedInstances(), 3u);
+  EXPECT_EQ(built.scene->embreeInstances(), 1u);
+  const Built small = build(instancedScene(8));
+  ASSERT_TRUE(small.scene) << small.messages;
+  EXPECT_EQ(small.scene->flattenedInstances(), 4u);
+  EXPECT_EQ(small.scene->embreeInstances(), 0u);
+}
+
+TEST(InstanceFlattening, ThePictureIsTheSceneWrittenOut) {
+  const Built instanced = build(instancedScene(100));
+  const Built writtenOut = build(writtenOutScene(100));
+  ASSERT_TRUE(instanced.scene && writtenOut.scene) << instanced.messages << writtenOut.messages;
+  const FloatImage a = render(instanced), b = render(writtenOut);
+  // Same samples, same surfaces; only rounding differs (the instance transform is composed with
+  // the shape's in another order, and Embree applies the big strip's in single precision).
+  const ImageComparison comparison = compareImages(a, b);
+  EXPECT_LT(comparison.relativeRmse, 1e-3);
+  EXPECT_NEAR(comparison.bestScale, 1.0, 1e-3);
+  // And the posts are in it: without them the picture differs.
+  const std::string noPosts = kHeader + "WorldEnd\n";
+  const Built empty = build(noPosts);
+  ASSERT_TRUE(empty.scene);
+  EXPECT_GT(compareImages(render(empty), b).relativeRmse, 0.05);
+}
+
+TEST(InstanceFlattening, AnEmitterInAFlattenedObjectIsNoLightAndSaysSo) {
+  const std::string text =
+      kHeader +
+      "ObjectBegin \"lamp\"\nAreaLightSource \"diffuse\" \"rgb L\" [5 5 5]\n"
+      "Shape \"sphere\" \"float radius\" [0.1]\nObjectEnd\n"
+      "AttributeBegin\nTranslate 0 1 0\nObjectInstance \"lamp\"\nAttributeEnd\n"
+      "AttributeBegin\nTranslate 1 1 0\nObjectInstance \"lamp\"\nAttributeEnd\nWorldEnd\n";
+  const Built built = build(text);
+  ASSERT_TRUE(built.scene) << built.messages;
+  EXPECT_EQ(built.scene->flattenedInstances(), 2u);
+  EXPECT_EQ(built.scene->lights().size(), 2u);  // the sky and the sun only
+  EXPECT_NE(built.messages.find("area lights inside object instances are not supported"),
+            std::string::npos)
+      << built.messages;
+}
+
+}  // namespace
+}  // namespace lenslab::render
