@@ -198,13 +198,19 @@ std::shared_ptr<RenderSnapshot> makeSnapshot(int width, int height, const std::v
 // added to `sums` (the full image's) and published as an image of one pixel per block. False
 // when cancelled.
 bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
-                      const std::vector<Tile>& tiles, std::vector<double>& sums,
-                      std::vector<RenderStatistics>& tileStatistics, std::uint64_t generation,
-                      Clock::time_point started, const std::function<bool()>& cancelled,
+                      std::vector<double>& sums, RenderStatistics& statistics,
+                      std::uint64_t generation, Clock::time_point started,
+                      const std::function<bool()>& cancelled,
                       const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
   wave.pixels = WavePixels::BlockCentres;
-  if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return false;
   const int divisor = wave.blockSize;
+  // Tiles divisor times larger per axis, so that each holds as many rendered pixels as a full
+  // wave's tile: fewer tasks, and camera batches as wide.
+  const std::vector<Tile> tiles =
+      makeTiles(wave.width, wave.height, std::max(4, job.settings.tileSize) * divisor);
+  std::vector<RenderStatistics> tileStatistics(tiles.size());
+  if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return false;
+  statistics = total(tileStatistics);
   const int width = (wave.width + divisor - 1) / divisor;
   const int height = (wave.height + divisor - 1) / divisor;
   std::vector<double> centres(static_cast<std::size_t>(width) * height * 3);
@@ -221,7 +227,7 @@ bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
   auto snapshot = makeSnapshot(width, height, centres, 1, generation);
   snapshot->samplesPerPixel = 0;
   snapshot->coarse = true;
-  snapshot->statistics = total(tileStatistics);
+  snapshot->statistics = statistics;
   snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
   publish(std::move(snapshot));
   return true;
@@ -249,6 +255,7 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
   const std::vector<Tile> tiles = makeTiles(width, height, std::max(4, job.settings.tileSize));
   std::vector<double> sums(static_cast<std::size_t>(width) * height * 3, 0.0);
   std::vector<RenderStatistics> tileStatistics(tiles.size());
+  RenderStatistics coarseStatistics;  // the coarse look's part of the first wave
   const int target = job.settings.samplesPerPixel;
   int done = 0;
   for (int index = 0; target == 0 || done < target; ++index) {
@@ -260,7 +267,7 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     wave.pixels = WavePixels::All;
     if (index == 0 && job.settings.coarseDivisor > 1) {
       wave.blockSize = job.settings.coarseDivisor;
-      if (!renderCoarseLook(arena, job, wave, tiles, sums, tileStatistics, generation, started,
+      if (!renderCoarseLook(arena, job, wave, sums, coarseStatistics, generation, started,
                             cancelled, publish)) {
         return;
       }
@@ -272,6 +279,9 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     snapshot->samplesPerPixel = done;
     snapshot->complete = target > 0 && done >= target;
     snapshot->statistics = total(tileStatistics);
+    snapshot->statistics.cameraSamples += coarseStatistics.cameraSamples;
+    snapshot->statistics.lensPassed += coarseStatistics.lensPassed;
+    snapshot->statistics.discardedSamples += coarseStatistics.discardedSamples;
     snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
     publish(std::move(snapshot));
   }
