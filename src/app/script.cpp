@@ -33,6 +33,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"screenshot-render", {1, 1}},
       {"screenshot-cross-section", {1, 1}},
       {"dump-ui", {1, 1}},
+      {"check-window", {0, 0}},
       {"quit", {0, 1}},
       {"zoom-cross-section", {1, 1}},
       {"drop", {1, 1}},
@@ -249,7 +250,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   };
   const std::string& verb = command.verb;
   const bool isCapture = verb == "screenshot" || verb == "screenshot-render" ||
-                         verb == "screenshot-cross-section" || verb == "dump-ui";
+                         verb == "screenshot-cross-section" || verb == "dump-ui" ||
+                         verb == "check-window";
   if (isCapture && changedThisStep_) return false;  // let a frame show the change first
   const bool isWait = verb.rfind("wait-", 0) == 0;
   if (!isCapture && !isWait) changedThisStep_ = true;
@@ -316,6 +318,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "screenshot-render") return check(host.saveRender(a[0]));
   if (verb == "screenshot-cross-section") return check(host.saveCrossSection(a[0]));
   if (verb == "dump-ui") return check(host.dumpUi(a[0]));
+  if (verb == "check-window") return check(host.checkWindow());
   if (verb == "quit") {
     host.quit(a.empty() ? 0 : static_cast<int>(*parseInteger(a[0])));
     next_ = commands_.size();

@@ -83,6 +83,10 @@ class ScriptHost {
   virtual std::optional<std::string> drop(const std::string& path) {
     return "cannot drop " + path + " here";
   }
+  // After this frame is on screen, compares what the display shows of the window with the frame
+  // the viewer drew (partial repaints: every change must reach the screen); a difference fails
+  // the script.
+  virtual std::optional<std::string> checkWindow() { return "there is no window to check"; }
   virtual void zoomCrossSection(double /*factor*/) {}
   virtual void showBlockedRays(bool /*show*/) {}
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}

@@ -19,6 +19,7 @@
 #include "app/screenshot.h"
 #include "app/ui_scale.h"
 #include "app/viewer_session.h"
+#include "app/window_pixels.h"
 #include "render/image_io.h"
 
 namespace lenslab::app {
@@ -183,6 +184,32 @@ void Viewer::findDamage() {
   if (window_.takeRefreshRequest()) damage_ = {PixelRect{0, 0, width, height}};
 }
 
+std::optional<std::string> Viewer::checkWindow() {
+  if (!window_.repaintsRegionsOnly()) {
+    return std::string("the window is redrawn whole and swapped (no partial repaints)");
+  }
+  windowCheckPending_ = true;
+  return std::nullopt;
+}
+
+void Viewer::checkWindowPixels() {
+  windowCheckPending_ = false;
+  std::string error;
+  const auto shown = readWindowFromDisplay(window_.handle(), &error);
+  if (shown) {
+    // With partial repaints the back buffer holds the whole frame just presented.
+    error = describeDifference(
+        *shown, readFramebuffer(window_.framebufferWidth(), window_.framebufferHeight()));
+  }
+  if (error.empty()) {
+    state_.log.info("check-window: the window shows the drawn frame");
+    return;
+  }
+  state_.log.error("check-window: " + error);
+  exitCode_ = 1;
+  state_.quitRequested = true;
+}
+
 void Viewer::updateWindowTitle() {
   const std::string& path = state_.lens.path();
   std::string title = "lenslab - ";
@@ -258,6 +285,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     }
     if (drawnThisFrame_) window_.swapBuffers();
     stats_.framePresented(ViewerStats::Clock::now());
+    if (windowCheckPending_) checkWindowPixels();
     stats_.frameWork(ViewerStats::Clock::now() - workStarted, rendering, drawnThisFrame_);
   }
   return exitCode_;

@@ -78,6 +78,7 @@ class Viewer final : public ScriptHost {
     window_.simulateDrop({path});
     return std::nullopt;
   }
+  std::optional<std::string> checkWindow() override;
   void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
   void setLayout(double lensTable, double preview, double log) override {
@@ -116,6 +117,8 @@ class Viewer final : public ScriptHost {
   FrameDamage frameDamage_;
   std::vector<PixelRect> damage_;    // this frame's, against the last drawn one
   std::uint64_t damageUploads_ = 0;  // preview uploads the last damage took into account
+  bool windowCheckPending_ = false;  // check-window, after this frame's present
+  void checkWindowPixels();
   bool drawnThisFrame_ = false;
 
  public:
