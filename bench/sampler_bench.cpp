@@ -11,6 +11,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <vector>
+
 #include <cstdint>
 
 #include "render/sampler.h"
@@ -69,5 +71,24 @@ void BM_LeadingPoints(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kSamples);
 }
 BENCHMARK(BM_LeadingPoints)->Arg(0)->Arg(1);
+
+// A first pass's form: one sample of each of 64 pixels (their seeds made as the tile loop makes
+// them), one pixel at a time (0) or eight side by side with AVX2 (1).
+void BM_LeadingPointsOfPixels(benchmark::State& state) {
+  constexpr std::size_t kPixels = 64;
+  const bool vectorized = state.range(0) != 0;
+  std::vector<lenslab::render::PixelSeeds> seeds;
+  glm::vec2 film[kPixels], lens[kPixels];
+  std::uint32_t pixel = 0;
+  for (auto _ : state) {
+    seeds.clear();
+    for (std::size_t i = 0; i < kPixels; ++i) seeds.emplace_back(pixel++, 7u);
+    lenslab::render::leadingPointsOfPixels(seeds.data(), kPixels, 0u, film, lens, 1, vectorized);
+    benchmark::DoNotOptimize(film);
+    benchmark::DoNotOptimize(lens);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kPixels));
+}
+BENCHMARK(BM_LeadingPointsOfPixels)->Arg(0)->Arg(1);
 
 }  // namespace

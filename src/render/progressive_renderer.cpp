@@ -81,6 +81,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   thread_local std::vector<glm::vec2> rasterPoints, lensSamples;
   thread_local std::vector<CameraRay> rays;
   thread_local std::vector<std::uint8_t> passed;
+  thread_local std::vector<PixelSeeds> seeds;
   // The tile's pixels that some camera ray can leave the lens from; the others (outside a
   // lens's image circle) stay black, and their samples are counted without being taken.
   thread_local std::vector<glm::ivec2> visible;
@@ -104,18 +105,32 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     lensSamples.resize(n);
     rays.resize(n);
     passed.resize(n);
+    seeds.clear();
     for (int p = 0; p < pixels; ++p) {
       const int x = visible[first + p].x, y = visible[first + p].y;
-      const PixelSeeds pixelSeeds(static_cast<std::uint32_t>(y * width + x), job.settings.seed);
-      const std::size_t base = samplers.size();
-      // The film offsets in the pixel go to rasterPoints, and become raster points below.
-      leadingPoints(pixelSeeds, static_cast<std::uint32_t>(firstSample),
-                    static_cast<std::uint32_t>(count), &rasterPoints[base], &lensSamples[base]);
+      seeds.emplace_back(static_cast<std::uint32_t>(y * width + x), job.settings.seed);
+    }
+    // The film offsets in the pixel go to rasterPoints, and become raster points below. Eight
+    // samples side by side: of one pixel when a wave has enough of them, else of eight pixels.
+    if (count >= 4) {
+      for (int p = 0; p < pixels; ++p) {
+        const std::size_t base = static_cast<std::size_t>(p) * samplesPerPixel;
+        leadingPoints(seeds[p], static_cast<std::uint32_t>(firstSample),
+                      static_cast<std::uint32_t>(count), &rasterPoints[base], &lensSamples[base]);
+      }
+    } else {
       for (int s = 0; s < count; ++s) {
-        samplers.emplace_back(pixelSeeds, static_cast<std::uint32_t>(firstSample + s));
+        leadingPointsOfPixels(seeds.data(), seeds.size(),
+                              static_cast<std::uint32_t>(firstSample + s), &rasterPoints[s],
+                              &lensSamples[s], samplesPerPixel);
+      }
+    }
+    for (int p = 0; p < pixels; ++p) {
+      const int x = visible[first + p].x, y = visible[first + p].y;
+      for (int s = 0; s < count; ++s) {
+        samplers.emplace_back(seeds[p], static_cast<std::uint32_t>(firstSample + s));
         samplers.back().skipLeadingPairs();
-        glm::vec2& raster = rasterPoints[base + static_cast<std::size_t>(s)];
-        raster += glm::vec2(x, y);
+        rasterPoints[static_cast<std::size_t>(p) * samplesPerPixel + s] += glm::vec2(x, y);
       }
     }
     camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());

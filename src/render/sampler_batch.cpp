@@ -103,6 +103,35 @@ __attribute__((target("avx2"))) void leadingPointsAvx2(const PixelSeeds& pixel,
   }
 }
 
+// One sample's two leading pairs for eight pixels: lane k is pixels[k].
+__attribute__((target("avx2"))) void leadingPointsOfEightPixels(const PixelSeeds* pixels,
+                                                                std::uint32_t sample,
+                                                                glm::vec2* film, glm::vec2* lens,
+                                                                std::size_t stride) {
+  const auto word = [](std::uint32_t value) { return static_cast<int>(value); };
+  const __m256i reversedIndex = _mm256_set1_epi32(word(sampler_detail::reverseBits(sample)));
+  for (std::uint32_t pair = 0; pair < PixelSeeds::kLeadingPairs; ++pair) {
+    alignas(32) int shuffleSeeds[8], xSeeds[8], ySeeds[8];
+    for (int k = 0; k < 8; ++k) {
+      const sampler_detail::PairSeeds& seeds = pixels[k].leadingPairs[pair];
+      shuffleSeeds[k] = word(seeds.shuffle);
+      xSeeds[k] = word(seeds.x);
+      ySeeds[k] = word(seeds.y);
+    }
+    const __m256i shuffled = laineKarras8(
+        reversedIndex, _mm256_load_si256(reinterpret_cast<const __m256i*>(shuffleSeeds)));
+    const __m256i xReversed = reverseBits8(shuffled);
+    const __m256i yReversed = sobolSecondReversed8(shuffled);
+    alignas(32) float xs[8], ys[8];
+    const __m256i xScramble = _mm256_load_si256(reinterpret_cast<const __m256i*>(xSeeds));
+    const __m256i yScramble = _mm256_load_si256(reinterpret_cast<const __m256i*>(ySeeds));
+    _mm256_store_ps(xs, toUnitFloat8(reverseBits8(laineKarras8(xReversed, xScramble))));
+    _mm256_store_ps(ys, toUnitFloat8(reverseBits8(laineKarras8(yReversed, yScramble))));
+    glm::vec2* out = pair == 0 ? film : lens;
+    for (int k = 0; k < 8; ++k) out[static_cast<std::size_t>(k) * stride] = {xs[k], ys[k]};
+  }
+}
+
 // `low` in lanes 0-3, `high` in lanes 4-7.
 __attribute__((target("avx2"))) inline __m256i halves(std::uint32_t low, std::uint32_t high) {
   const __m128i lowLanes = _mm_set1_epi32(static_cast<int>(low));
@@ -202,6 +231,19 @@ void leadingPoints(const PixelSeeds& pixel, std::uint32_t firstSample, std::uint
     leadingPointsAvx2(pixel, firstSample, count, film, lens);
   } else {
     leadingPointsPortable(pixel, firstSample, count, film, lens);
+  }
+}
+
+void leadingPointsOfPixels(const PixelSeeds* pixels, std::size_t pixelCount, std::uint32_t sample,
+                           glm::vec2* film, glm::vec2* lens, std::size_t stride, bool vectorized) {
+  std::size_t i = 0;
+  if (vectorized && cpuHasAvx2()) {
+    for (; i + 8 <= pixelCount; i += 8) {
+      leadingPointsOfEightPixels(pixels + i, sample, film + i * stride, lens + i * stride, stride);
+    }
+  }
+  for (; i < pixelCount; ++i) {
+    leadingPointsPortable(pixels[i], sample, 1, film + i * stride, lens + i * stride);
   }
 }
 

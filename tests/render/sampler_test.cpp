@@ -85,6 +85,26 @@ TEST(PixelSampler, LeadingPointsInBatchesEqualTheSamplersPoints) {
   }
 }
 
+// One sample's leading points for many pixels at once (the first passes' form) are each pixel's
+// own, bit for bit, whether eight pixels go side by side or one at a time (the leftover ones).
+TEST(PixelSampler, LeadingPointsOfManyPixelsEqualEachPixelsOwn) {
+  std::vector<PixelSeeds> pixels;
+  for (std::uint32_t pixel = 0; pixel < 29; ++pixel) pixels.emplace_back(pixel * 7919u, 5u);
+  constexpr std::size_t kStride = 3;
+  for (std::uint32_t sample : {0u, 1u, 2u, 77u, 0xFFFFFFFEu}) {
+    for (bool vectorized : {false, true}) {
+      std::vector<glm::vec2> film(pixels.size() * kStride), lens(pixels.size() * kStride);
+      leadingPointsOfPixels(pixels.data(), pixels.size(), sample, film.data(), lens.data(), kStride,
+                            vectorized);
+      for (std::size_t i = 0; i < pixels.size(); ++i) {
+        PixelSampler reference(pixels[i], sample);
+        ASSERT_EQ(film[i * kStride], reference.nextLeading2D(pixels[i])) << i << " " << sample;
+        ASSERT_EQ(lens[i * kStride], reference.nextLeading2D(pixels[i])) << i << " " << sample;
+      }
+    }
+  }
+}
+
 // Two arrays drawn together are the two arrays drawn one after the other, bit for bit.
 TEST(PixelSampler, TwoArraysTogetherEqualTwoArraysInTurn) {
   for (std::uint32_t count : {1u, 2u, 3u, 4u, 8u}) {
