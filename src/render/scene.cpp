@@ -92,7 +92,14 @@ bool Scene::intersect(glm::vec3 origin, glm::vec3 direction, float tMax, Surface
     fillShadingFromRecord(
         objectRecords_[static_cast<std::size_t>(instanceRecord.object)][rayHit.hit.geomID],
         rayHit.hit, hit);
-    hit.geometricNormal = glm::normalize(instanceRecord.normalToWorld * hit.geometricNormal);
+    const glm::vec3 normal = instanceRecord.normalToWorld * hit.geometricNormal;
+    if (hit.uvPerWorldUnit > 0.0f) {
+      // A triangle's world area is |det| |normalToWorld n| times its area in the object's space
+      // (n its unit normal there): the texture rate per world unit, as a top-level copy of the
+      // mesh would have it, is the object-space rate over the square root of that.
+      hit.uvPerWorldUnit /= std::sqrt(instanceRecord.instanceDeterminant * glm::length(normal));
+    }
+    hit.geometricNormal = glm::normalize(normal);
     hit.shadingNormal = glm::normalize(instanceRecord.normalToWorld * hit.shadingNormal);
     hit.light = -1;  // emitters inside instances are not lights (a warning said so)
   }

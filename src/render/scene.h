@@ -52,6 +52,7 @@ struct GeometryRecord {
   int object = -1;
   glm::mat4 worldFromInstance{1.0f};
   glm::mat3 normalToWorld{1.0f};
+  float instanceDeterminant = 1.0f;  // |det| of worldFromInstance's linear part
 };
 
 // A shadow ray: does anything lie on origin + t * direction for t in (0, tMax)?

@@ -468,6 +468,8 @@ class SceneBuilder {
     record.worldFromInstance = glm::mat4(instance.worldFromInstance);
     record.normalToWorld =
         glm::mat3(glm::transpose(glm::inverse(glm::dmat3(instance.worldFromInstance))));
+    record.instanceDeterminant =
+        static_cast<float>(std::abs(glm::determinant(glm::dmat3(instance.worldFromInstance))));
     RTCGeometry geometry = rtcNewGeometry(scene_->device_, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geometry,
                                  scene_->objectScenes_[static_cast<std::size_t>(record.object)]);

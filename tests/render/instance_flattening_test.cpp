@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "render/camera_factory.h"
 #include "render/image_compare.h"
 #include "render/pbrt_parser.h"
@@ -16,13 +18,15 @@
 namespace lenslab::render {
 namespace {
 
-// A strip of `triangles` triangles along x, 1 unit long and 0.3 high, in the z = 0 plane.
-std::string strip(int triangles) {
-  std::ostringstream points, indices;
+// A strip of `triangles` triangles along x, 1 unit long and 0.3 high, in the z = 0 plane; with
+// `withUv`, u runs 0..1 along it and v 0..1 across.
+std::string strip(int triangles, bool withUv = false) {
+  std::ostringstream points, indices, uvs;
   const int columns = triangles / 2 + 1;
   for (int c = 0; c < columns; ++c) {
     const double x = static_cast<double>(c) / (columns - 1);
     points << x << " 0 0 " << x << " 0.3 0 ";
+    uvs << x << " 0 " << x << " 1 ";
   }
   for (int c = 0; c + 1 < columns; ++c) {
     const int a = 2 * c;
@@ -30,7 +34,7 @@ std::string strip(int triangles) {
             << ' ';
   }
   return "Shape \"trianglemesh\" \"integer indices\" [" + indices.str() + "] \"point P\" [" +
-         points.str() + "]\n";
+         points.str() + "]" + (withUv ? " \"float uv\" [" + uvs.str() + "]" : std::string()) + "\n";
 }
 
 const std::string kHeader =
@@ -150,6 +154,49 @@ TEST(InstanceFlattening, AnEmitterInAFlattenedObjectIsNoLightAndSaysSo) {
   EXPECT_NE(built.messages.find("area lights inside object instances are not supported"),
             std::string::npos)
       << built.messages;
+}
+
+TEST(InstanceFlattening, AScaledInstanceFiltersTexturesAsItsWrittenOutCopy) {
+  // The texture rate per world unit sets the mip level. An instance kept in Embree (100
+  // triangles) gets it from its object's own space, so the instance's scale must be counted.
+  struct Place {
+    const char* text;
+    glm::mat4 worldFromStrip;
+  };
+  const glm::mat4 identity(1.0f);
+  const glm::mat4 moved = glm::translate(identity, glm::vec3(-0.5f, 0.2f, 1.0f));
+  const glm::mat4 turned = glm::rotate(identity, glm::radians(20.0f), glm::vec3(0, 1, 0));
+  const glm::mat4 stretched = glm::scale(identity, glm::vec3(3, 2, 1));
+  const Place places[] = {
+      {"Translate -0.5 0.2 1\n", moved},
+      {"Scale 3 2 1\n", stretched},
+      {"Rotate 20 0 1 0 Scale 3 2 1\n", turned * stretched},
+      {"Translate -0.5 0.2 1 Scale 3 2 1\n", moved * stretched},
+      {"Translate -0.5 0.2 1 Rotate 20 0 1 0\n", moved * turned},
+      {"Translate -0.5 0.2 1 Rotate 20 0 1 0 Scale 3 2 1\n", moved * turned * stretched},
+  };
+  for (const Place& place : places) {
+    SCOPED_TRACE(place.text);
+    const std::string instanced = kHeader + "ObjectBegin \"big\"\n" + strip(100, true) +
+                                  "ObjectEnd\nAttributeBegin\n" + place.text +
+                                  "ObjectInstance \"big\"\nAttributeEnd\nWorldEnd\n";
+    const std::string writtenOut =
+        kHeader + "AttributeBegin\n" + place.text + strip(100, true) + "AttributeEnd\nWorldEnd\n";
+    const Built a = build(instanced), b = build(writtenOut);
+    ASSERT_TRUE(a.scene && b.scene) << a.messages << b.messages;
+    ASSERT_EQ(a.scene->embreeInstances(), 1u);
+    // The strip spans x 0..1, y 0..0.3 in its own space: aim inside one triangle near its
+    // middle (not at an edge, where Embree's fast triangle test may let the ray through).
+    const glm::vec3 origin(0.0f, 1.5f, 4.0f);
+    const glm::vec3 target = glm::vec3(place.worldFromStrip * glm::vec4(0.47f, 0.1f, 0.0f, 1.0f));
+    SurfaceHit hitA, hitB;
+    ASSERT_TRUE(a.scene->intersect(origin, glm::normalize(target - origin), 1e30f, hitA));
+    ASSERT_TRUE(b.scene->intersect(origin, glm::normalize(target - origin), 1e30f, hitB));
+    EXPECT_NEAR(hitB.t, glm::length(target - origin), 1e-4f);
+    EXPECT_NEAR(hitA.t, hitB.t, 1e-4f);
+    ASSERT_GT(hitB.uvPerWorldUnit, 0.0f);
+    EXPECT_NEAR(hitA.uvPerWorldUnit / hitB.uvPerWorldUnit, 1.0f, 1e-4f);
+  }
 }
 
 }  // namespace
