@@ -5,6 +5,8 @@
 #include <cstring>
 #include <string_view>
 
+#include "app/sequence_diff.h"
+
 namespace lenslab::app {
 
 namespace {
@@ -182,7 +184,7 @@ struct TriangleRef {
 
 }  // namespace
 
-PixelRect FrameDamage::changedPart(const ListRecord& before, const ListRecord& now) {
+std::vector<PixelRect> FrameDamage::changedPart(const ListRecord& before, const ListRecord& now) {
   const PixelRect everything = unite(before.covered, now.covered);
   const auto triangles = [](const ListRecord& list, std::vector<TriangleRef>& out) {
     out.clear();
@@ -200,7 +202,7 @@ PixelRect FrameDamage::changedPart(const ListRecord& before, const ListRecord& n
     return true;
   };
   std::vector<TriangleRef> a, b;
-  if (!triangles(before, a) || !triangles(now, b)) return everything;
+  if (!triangles(before, a) || !triangles(now, b)) return {everything};
   const auto same = [](const TriangleRef& x, const TriangleRef& y) {
     if (x.command->texture != y.command->texture ||
         std::memcmp(&x.command->clipRect, &y.command->clipRect, sizeof(ImVec4)) != 0) {
@@ -218,22 +220,29 @@ PixelRect FrameDamage::changedPart(const ListRecord& before, const ListRecord& n
   while (suffix < shorter - prefix && same(a[a.size() - 1 - suffix], b[b.size() - 1 - suffix])) {
     ++suffix;
   }
-  // The triangles between the equal prefix and suffix, before and now, each inside its
-  // command's scissor box.
-  const auto middle = [&](const std::vector<TriangleRef>& list, std::size_t end,
-                          const ListRecord& record) {
-    PixelRect rect;
+  const std::span<const TriangleRef> middleA(a.data() + prefix, a.size() - suffix - prefix);
+  const std::span<const TriangleRef> middleB(b.data() + prefix, b.size() - suffix - prefix);
+
+  // The boxes of runs of triangles (consecutive, of one command) that `changed` marks, or of all
+  // of them, each inside its command's scissor box.
+  const auto boxesOfRuns = [](std::span<const TriangleRef> list, const std::vector<bool>* changed,
+                              const ListRecord& record, std::vector<PixelRect>& out) {
     float minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
     const FrameDamageCommand* command = nullptr;
     const auto flush = [&] {
       if (command != nullptr) {
-        rect = unite(rect, boxToPixels(minX, minY, maxX, maxY, command->scissor, record.offset,
-                                       record.scale));
+        out.push_back(
+            boxToPixels(minX, minY, maxX, maxY, command->scissor, record.offset, record.scale));
       }
+      command = nullptr;
       minX = minY = INFINITY;
       maxX = maxY = -INFINITY;
     };
-    for (std::size_t t = prefix; t < end; ++t) {
+    for (std::size_t t = 0; t < list.size(); ++t) {
+      if (changed != nullptr && !(*changed)[t]) {
+        flush();
+        continue;
+      }
       if (list[t].command != command) {
         flush();
         command = list[t].command;
@@ -246,9 +255,46 @@ PixelRect FrameDamage::changedPart(const ListRecord& before, const ListRecord& n
       }
     }
     flush();
-    return rect;
   };
-  return unite(middle(a, a.size() - suffix, before), middle(b, b.size() - suffix, now));
+  const auto unionOf = [](const std::vector<PixelRect>& rects) {
+    PixelRect all;
+    for (const PixelRect& rect : rects) all = unite(all, rect);
+    return all;
+  };
+
+  // Between the prefix and the suffix, unchanged triangles can sit among changed ones (the
+  // preview's background between its status line and its image). The triangles that a shortest
+  // edit script keeps are drawn alike and in the same order before and now, so only the others
+  // damage pixels: any pixel outside their boxes is covered by the same triangles, blended in
+  // the same order. Past kMaxEdits (a cross-section whose rays all moved) the whole middles.
+  const auto keysOf = [](std::span<const TriangleRef> list) {
+    std::vector<std::uint64_t> keys;
+    keys.reserve(list.size());
+    for (const TriangleRef& triangle : list) {
+      Hash hash;
+      hash.mix(reinterpret_cast<std::uintptr_t>(triangle.command->texture));
+      hash.mixBytes(&triangle.command->clipRect, sizeof(ImVec4));
+      for (const ImDrawVert* corner : triangle.corners) hash.mixBytes(corner, sizeof(ImDrawVert));
+      keys.push_back(hash.value());
+    }
+    return keys;
+  };
+  std::vector<bool> changedA, changedB;
+  std::vector<PixelRect> rects;
+  if (markUnmatched(
+          keysOf(middleA), keysOf(middleB),
+          [&](std::size_t i, std::size_t j) { return same(middleA[i], middleB[j]); }, kMaxEdits,
+          changedA, changedB)) {
+    boxesOfRuns(middleA, &changedA, before, rects);
+    boxesOfRuns(middleB, &changedB, now, rects);
+    std::erase_if(rects, [](const PixelRect& r) { return r.empty(); });
+    // Many scattered runs: their merging would cost more than it saves.
+    if (rects.size() > kMaxRuns) rects = {unionOf(rects)};
+    return rects;
+  }
+  boxesOfRuns(middleA, nullptr, before, rects);
+  boxesOfRuns(middleB, nullptr, now, rects);
+  return {unionOf(rects)};
 }
 
 std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebufferWidth,
@@ -296,7 +342,7 @@ std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebuf
     if (record.owner != before.owner) {
       wholeFrame = true;  // windows appeared, closed or changed order
     } else if (record.content != before.content) {
-      damage.push_back(changedPart(before, record));
+      for (const PixelRect& rect : changedPart(before, record)) damage.push_back(rect);
     }
   }
 

@@ -10,9 +10,10 @@
 //
 // FrameDamage compares each ImGui draw list (one per window, in drawing order) with the previous
 // frame's. In a list that changed, its triangles (with their command's clip rect and texture) are
-// compared in drawing order from the front and from the back: only the triangles between the
-// equal prefix and the equal suffix, before and now, damage pixels (a new number in a table cell
-// damages the cell, not the panel).
+// compared in drawing order from the front and from the back, and between the equal prefix and
+// suffix by a shortest edit script: only the triangles it inserts or deletes damage pixels (a
+// new number in a table cell damages the cell, not the panel; a new status line and a badge over
+// an image damage the two, not the image between them).
 // A command drawn with a texture whose contents changed (the preview) damages the pixels it
 // covers. Every other pixel is the same blend of the same triangles in the same order, so it is
 // unchanged.
@@ -72,8 +73,14 @@ class FrameDamage {
     std::vector<ImDrawIdx> indices;
     std::vector<CommandRecord> commands;
   };
+  // Between a changed list's equal prefix and suffix, at most this many triangles inserted or
+  // removed are told apart from those kept (a changed status line and a new badge are a few
+  // hundred); beyond it, everything between them is damaged.
+  static constexpr int kMaxEdits = 400;
+  // At most this many separate regions from one list (runs of changed triangles).
+  static constexpr std::size_t kMaxRuns = 16;
   // Where a changed list's pixels may differ from `before`'s.
-  static PixelRect changedPart(const ListRecord& before, const ListRecord& now);
+  static std::vector<PixelRect> changedPart(const ListRecord& before, const ListRecord& now);
   std::vector<ListRecord> lists_;
   int width_ = 0, height_ = 0;
   bool valid_ = false;

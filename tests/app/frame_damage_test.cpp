@@ -156,6 +156,54 @@ TEST_F(FrameDamageTest, TwoDistantChangesAreTwoRegionsAndMostOfTheWindowIsAll) {
             std::vector<PixelRect>{whole});
 }
 
+TEST_F(FrameDamageTest, UnchangedDrawingBetweenChangesIsNotDamaged) {
+  // Like the render preview: a status line, a black background, an image on it and, while the
+  // image is out of date, a badge over its corner. The status and the badge change; the
+  // background and the image between them (in drawing order) do not.
+  const auto preview = [&](const std::string& status, bool badge) -> const ImDrawData& {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(20, 20));
+    ImGui::SetNextWindowSize(ImVec2(500, 500));
+    ImGui::Begin("Preview", nullptr, ImGuiWindowFlags_NoSavedSettings);
+    ImGui::TextUnformatted(status.c_str());
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(ImVec2(30, 100), ImVec2(510, 510), IM_COL32(0, 0, 0, 255));
+    ImGui::SetCursorScreenPos(ImVec2(70, 250));
+    ImGui::Image(reinterpret_cast<ImTextureID>(std::intptr_t{7}), ImVec2(400, 200));
+    if (badge) {
+      draw->AddRectFilled(ImVec2(78, 258), ImVec2(180, 280), IM_COL32(0, 0, 0, 190));
+      draw->AddText(ImVec2(84, 262), IM_COL32(255, 205, 90, 255), "rendering...");
+    }
+    ImGui::End();
+    ImGui::Render();
+    return *ImGui::GetDrawData();
+  };
+  for (int i = 0; i < 3; ++i) preview("4 spp   2.1 M rays/s", false);
+  damage.compare(preview("4 spp   2.1 M rays/s", false), kWidth, kHeight, {});
+  const auto regions = damage.compare(preview("rendering the edit...", true), kWidth, kHeight, {});
+  ASSERT_FALSE(regions.empty());
+  PixelRect all;
+  long long pixels = 0;
+  for (const PixelRect& r : regions) {
+    all = unite(all, r);
+    pixels += r.area();
+  }
+  // The status line and the badge are damaged...
+  EXPECT_TRUE(inside({30, 50, 120, 60}, all));
+  EXPECT_TRUE(inside({78, 258, 180, 280}, all));
+  // ...the background between them and the rest of the image are not: two small regions, not
+  // the 480 x 410 panel.
+  for (const PixelRect& r : regions) {
+    EXPECT_TRUE(intersect(r, {40, 120, 60, 240}).empty()) << r.x0 << "," << r.y0;
+    EXPECT_TRUE(intersect(r, {200, 300, 460, 440}).empty()) << r.x0 << "," << r.y0;
+  }
+  EXPECT_LT(pixels, 20000);
+  // Back again: the same places.
+  const auto back = damage.compare(preview("4 spp   2.1 M rays/s", false), kWidth, kHeight, {});
+  ASSERT_FALSE(back.empty());
+  for (const PixelRect& r : back) EXPECT_TRUE(intersect(r, {200, 300, 460, 440}).empty());
+}
+
 TEST(ScissorOf, TruncatesAsTheOpenGl3BackendDoes) {
   ImDrawData data;
   data.DisplayPos = ImVec2(0, 0);
