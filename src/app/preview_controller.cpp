@@ -126,10 +126,14 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   preview.rendering = busy();
   // The image on screen belongs to an earlier change until this change's first image arrives.
   preview.stale = submitted_ && (!snapshot || snapshot->generation < generation_);
+  preview.dimmed = staleDimming_.update(preview.stale, std::chrono::steady_clock::now());
   if (!snapshot) return;
   const bool fresh =
       snapshot->generation != shownGeneration_ || snapshot->samplesPerPixel != shownSpp_;
   if (!fresh && exposureStops == shownExposure_) return;
+  // A pass of a job already replaced (finished as the change came in) is out of date too: the
+  // image shown stays until the change's own first look, without an encode and a repaint.
+  if (preview.stale && !preview.texture.empty() && exposureStops == shownExposure_) return;
   // Only here, on a new snapshot or exposure: encoding and the texture upload are not per frame.
   render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
   preview.texture.upload(snapshot->width, snapshot->height,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/preview_state.h"
+#include "app/stale_dimming.h"
 #include "app/viewer_stats.h"
 #include "optics/lens_system.h"
 #include "render/progressive_renderer.h"
@@ -52,6 +53,9 @@ class PreviewController {
   static constexpr int kCoarseDivisor = 4;
   // The preview keeps refining to this many samples per pixel, then the workers rest.
   static constexpr int kMaxPreviewSpp = 1024;
+  // An image from before the latest change is dimmed once it has been out of date this long
+  // (StaleDimming); the change's first look usually replaces it 40-70 ms after the edit.
+  static constexpr double kDimStaleAfterSeconds = 0.25;
 
   void setScene(const LoadedScene& loaded);
   bool hasScene() const { return description_ != nullptr; }
@@ -107,6 +111,7 @@ class PreviewController {
   int shownSpp_ = -1;
   double shownExposure_ = 0;
   bool coarseReported_ = false, firstPassReported_ = false;
+  StaleDimming staleDimming_{kDimStaleAfterSeconds};
 };
 
 }  // namespace lenslab::app

@@ -20,6 +20,7 @@ struct PreviewState {
   bool reducedResolution = false;  // a value is being dragged
   bool coarse = false;             // the image is the coarse first look of the latest change
   bool stale = false;         // the image is from before the latest change (its render is starting)
+  bool dimmed = false;        // stale for a while (PreviewController::kDimStaleAfterSeconds)
   std::uint64_t uploads = 0;  // texture uploads so far (one per new snapshot)
   // The panel's room for the image, in framebuffer pixels (0 before the panel is first drawn):
   // the preview renders at the size it is shown, not more.

@@ -75,8 +75,9 @@ void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
       }
       const ImVec2 topLeft(origin.x + (size.x - width) * 0.5f, origin.y + (size.y - height) * 0.5f);
       ImGui::SetCursorScreenPos(topLeft);
-      // The previous change's image, dimmed, until this change's first look replaces it.
-      const ImVec4 tint = preview.stale ? ImVec4(0.55f, 0.55f, 0.55f, 1.0f) : ImVec4(1, 1, 1, 1);
+      // The previous change's image until this change's first look replaces it: badged at once,
+      // dimmed if that takes a while.
+      const ImVec4 tint = preview.dimmed ? ImVec4(0.55f, 0.55f, 0.55f, 1.0f) : ImVec4(1, 1, 1, 1);
       ImGui::Image(preview.texture.imguiId(), ImVec2(width, height), ImVec2(0, 0), ImVec2(1, 1),
                    tint);
       if (preview.stale) {
