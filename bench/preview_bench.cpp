@@ -1,6 +1,6 @@
 // The renderer's part of the viewer's first preview pass after an edit (issue 5: on screen within
 // 100 ms), without a window. The default scene at the viewer's preview size in a 1400 x 850
-// window (512 x 341: the 600 x 400 film fitted to the panel, in 64-pixel steps), its lens
+// window (488 x 325: the 600 x 400 film fitted to the panel, pixel for pixel), its lens
 // at a new film distance each iteration (a new LensSystem, so its exit-pupil table is built again,
 // as after a film-distance edit), and the job as PreviewController makes it: all hardware
 // threads at low priority on a ProgressiveRenderer that lives across jobs, a coarse look at 1/4
@@ -29,7 +29,7 @@ namespace {
 using lenslab::optics::LensSystem;
 namespace render = lenslab::render;
 
-constexpr int kPreviewWidth = 512, kPreviewHeight = 341;  // the viewer's at 1400 x 850
+constexpr int kPreviewWidth = 488, kPreviewHeight = 325;  // the viewer's at 1400 x 850
 constexpr int kCoarseDivisor = 4;                         // PreviewController::kCoarseDivisor
 
 struct DefaultScene {

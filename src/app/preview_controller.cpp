@@ -50,9 +50,18 @@ void PreviewController::setScene(const LoadedScene& loaded) {
   ++sceneVersion_;
 }
 
-void PreviewController::setDisplayRegion(float widthPx, float heightPx) {
-  regionWidthPx_ = widthPx;
-  regionHeightPx_ = heightPx;
+void PreviewController::setDisplayRegion(float widthPx, float heightPx,
+                                         std::chrono::steady_clock::time_point now) {
+  if (widthPx != latestWidthPx_ || heightPx != latestHeightPx_) {
+    latestWidthPx_ = widthPx;
+    latestHeightPx_ = heightPx;
+    latestSince_ = now;
+  }
+  const bool known = regionWidthPx_ >= 1.0f && regionHeightPx_ >= 1.0f;
+  if (!known || std::chrono::duration<double>(now - latestSince_).count() >= kResizeSettleSeconds) {
+    regionWidthPx_ = latestWidthPx_;
+    regionHeightPx_ = latestHeightPx_;
+  }
 }
 
 std::pair<int, int> PreviewController::previewSize(bool draft) const {
@@ -60,17 +69,18 @@ std::pair<int, int> PreviewController::previewSize(bool draft) const {
   const int filmWidth = std::max(1, description_->film.xResolution);
   const int filmHeight = std::max(1, description_->film.yResolution);
   const int filmExtent = std::max(filmWidth, filmHeight);
-  // The longer side of the film fitted into the panel's region, in whole steps.
+  // The longer side of the film as the panel shows it (fitted into its region).
   int extent = kDefaultExtentPx;
   if (regionWidthPx_ >= 1.0f && regionHeightPx_ >= 1.0f) {
-    const double fit = std::min(regionWidthPx_ / filmWidth, regionHeightPx_ / filmHeight);
-    const int shown = static_cast<int>(std::ceil(fit * filmExtent));
-    extent = std::max(kExtentStepPx, (shown + kExtentStepPx - 1) / kExtentStepPx * kExtentStepPx);
+    const double fit = std::min(static_cast<double>(regionWidthPx_) / filmWidth,
+                                static_cast<double>(regionHeightPx_) / filmHeight);
+    // Rounded to whole pixels, as the panel draws it; at least a few.
+    extent = std::max(kMinPreviewExtent, static_cast<int>(std::lround(fit * filmExtent)));
   }
   extent = std::min({extent, kMaxPreviewExtent, filmExtent});
   const double scale = static_cast<double>(extent) / filmExtent * (draft ? 0.5 : 1.0);
-  return {std::max(1, static_cast<int>(filmWidth * scale)),
-          std::max(1, static_cast<int>(filmHeight * scale))};
+  return {std::max(1, static_cast<int>(std::lround(filmWidth * scale))),
+          std::max(1, static_cast<int>(std::lround(filmHeight * scale)))};
 }
 
 render::RenderJob PreviewController::makeJob(int width, int height, int samplesPerPixel) const {

@@ -3,6 +3,7 @@
 // lens, the camera choice or the draft state changes, and turns published snapshots into the
 // preview texture. Never waits for rendering: the UI thread only starts jobs and reads snapshots.
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -42,13 +43,15 @@ class PreviewController {
   // an empty event so that its loop, asleep until the next frame, shows it at once).
   explicit PreviewController(std::function<void()> wake = {});
 
-  // The preview renders at the size the panel shows it (at most the scene's film resolution,
-  // and at most this many pixels on the longer side), rounded up to a multiple of
-  // kExtentStepPx so that small panel resizes do not restart it; drafts (while dragging) at half
-  // that. Before the panel's size is known: kDefaultExtentPx.
+  // The preview renders at the size the panel shows it, one image pixel per screen pixel (at
+  // most the scene's film resolution, and at most this many pixels on the longer side); drafts
+  // (while dragging) at half that. Before the panel's size is known: kDefaultExtentPx.
   static constexpr int kMaxPreviewExtent = 2048;
-  static constexpr int kExtentStepPx = 64;
+  static constexpr int kMinPreviewExtent = 16;
   static constexpr int kDefaultExtentPx = 640;
+  // A new panel size is taken once it has held this long, so that dragging a splitter or the
+  // window's edge does not restart the render every frame (the image is scaled meanwhile).
+  static constexpr double kResizeSettleSeconds = 0.15;
   // The coarse first look divides each side by this.
   static constexpr int kCoarseDivisor = 4;
   // The preview keeps refining to this many samples per pixel, then the workers rest.
@@ -70,8 +73,11 @@ class PreviewController {
   // when it does.
   std::optional<std::uint64_t> update(const std::shared_ptr<const optics::LensSystem>& lens,
                                       bool pinhole, bool draft);
-  // The room the panel has for the image, in framebuffer pixels (see PreviewState).
-  void setDisplayRegion(float widthPx, float heightPx);
+  // The room the panel has for the image, in framebuffer pixels (see PreviewState), this frame.
+  // The first size is taken at once, later ones when they have settled (kResizeSettleSeconds).
+  void setDisplayRegion(
+      float widthPx, float heightPx,
+      std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
   // Reads the newest snapshot into `preview` when there is a new one (re-encoding on an exposure
   // change; otherwise no work) and tells `stats` when the change's coarse image and its first
   // full pass appear.
@@ -88,7 +94,10 @@ class PreviewController {
   std::shared_ptr<const render::SceneDescription> description_;
   std::shared_ptr<const render::Scene> scene_;
   std::uint64_t sceneVersion_ = 0;
-  float regionWidthPx_ = 0, regionHeightPx_ = 0;
+  float regionWidthPx_ = 0, regionHeightPx_ = 0;  // the size the preview renders for
+  // The panel's latest size, and since when it has had it.
+  float latestWidthPx_ = 0, latestHeightPx_ = 0;
+  std::chrono::steady_clock::time_point latestSince_;
 
   // What the preview is being rendered for.
   struct Submitted {

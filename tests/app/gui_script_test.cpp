@@ -72,6 +72,7 @@ TEST_F(ScriptedViewer, AnEditChangesThePreviewAndUndoRestoresIt) {
   const auto result = runScript(
       "wait-spp 2\n"
       "screenshot-render before.png\n"
+      "dump-ui before.json\n"
       "set stop-diameter 3.5\n"  // f/2.5 to about f/10: two stops darker
       "wait-spp 2\n"
       "screenshot-render stopped-down.png\n"
@@ -83,10 +84,13 @@ TEST_F(ScriptedViewer, AnEditChangesThePreviewAndUndoRestoresIt) {
   const auto before = image("before.png"), stopped = image("stopped-down.png"),
              undone = image("undone.png");
   ASSERT_TRUE(before.valid() && stopped.valid() && undone.valid());
-  // The preview renders at the size the panel shows it: at most the default scene's 600x400
-  // film, in whole 64-pixel steps, with the film's aspect ratio.
+  // The preview renders at the size the panel shows it, pixel for pixel (at most the default
+  // scene's 600x400 film), with the film's aspect ratio.
+  const auto shown = json("before.json")["widgets"]["preview/image"];
+  ASSERT_TRUE(shown.is_object()) << shown;
   EXPECT_LE(before.width, 600);
-  EXPECT_EQ(before.width % 64, 0);
+  EXPECT_NEAR(before.width, shown["width"].get<double>(), 1.0);
+  EXPECT_NEAR(before.height, shown["height"].get<double>(), 1.0);
   EXPECT_NEAR(static_cast<double>(before.width) / before.height, 1.5, 0.01);
   const double bright = testing::meanBrightness(before);
   EXPECT_GT(bright, 40.0);  // a picture, not a black frame
