@@ -6,6 +6,7 @@
 // this is a lower bound of their cost there.
 // BM_SamplerArrays: direct lighting's arrays: 2 camera points, then two 4-point arrays (one
 // area light with 4 samples, as the course scenes ask), drawn together as the renderer does.
+// BM_SamplerTriples: a path's bounce points, three at a time (next2DTriple).
 // BM_LeadingPoints/<vectorized>: the tile loop's camera points, leadingPoints() for a pixel's 16
 // samples of a wave; items_per_second is camera samples (two points each) per second.
 
@@ -56,6 +57,30 @@ void BM_SamplerArrays(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kPoints);
 }
 BENCHMARK(BM_SamplerArrays);
+
+// A path's bounces: after the camera's two points, three bounces of three points each, drawn
+// three at a time (next2DTriple) as the path integrator draws them. items_per_second is points.
+void BM_SamplerTriples(benchmark::State& state) {
+  constexpr int kBounces = 3;
+  std::uint32_t pixel = 0, sample = 0;
+  glm::vec2 first, second, third;
+  for (auto _ : state) {
+    PixelSampler sampler(pixel, sample, 7u);
+    sampler.skipLeadingPairs();
+    for (int bounce = 0; bounce < kBounces; ++bounce) {
+      sampler.next2DTriple(first, second, third);
+      benchmark::DoNotOptimize(first);
+      benchmark::DoNotOptimize(second);
+      benchmark::DoNotOptimize(third);
+    }
+    if (++sample == 32u) {
+      sample = 0;
+      ++pixel;
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * kBounces * 3);
+}
+BENCHMARK(BM_SamplerTriples);
 
 void BM_LeadingPoints(benchmark::State& state) {
   constexpr std::uint32_t kSamples = 16;
