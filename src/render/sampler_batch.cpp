@@ -55,18 +55,33 @@ __attribute__((target("avx2"))) inline __m256 toUnitFloat8(__m256i bits) {
   return _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_srli_epi32(bits, 8)), _mm256_set1_ps(0x1p-24f));
 }
 
-// The high words of kSobolPairFromReversedIndex(shuffled) (the Sobol second dimension, reversed),
-// as four 32-bit gathers.
+// The high words of kSobolPairFromReversedIndex(shuffled) (the Sobol second dimension,
+// reversed), as four 32-bit gathers. 64-bit entries: the high word of entry (table, byte) is int
+// number 2 (256 table + byte) + 1 from here.
+inline const int* sobolHighWords() {
+  return reinterpret_cast<const int*>(&sampler_detail::kSobolPairFromReversedIndex.byByte[0][0]) +
+         1;
+}
+
 __attribute__((target("avx2"))) inline __m256i sobolSecondReversed8(__m256i shuffled) {
-  const int* highWords =
-      reinterpret_cast<const int*>(&sampler_detail::kSobolPairFromReversedIndex.byByte[0][0]) + 1;
   const __m256i byteMask = _mm256_set1_epi32(0xFF);
   __m256i second = _mm256_setzero_si256();
   for (int table = 0; table < 4; ++table) {
     const __m256i byte = _mm256_and_si256(_mm256_srli_epi32(shuffled, 8 * table), byteMask);
-    // 64-bit entries: the high word of entry (table, byte) is int number 2 (256 table + byte) + 1.
     const __m256i at = _mm256_slli_epi32(_mm256_add_epi32(byte, _mm256_set1_epi32(256 * table)), 1);
-    second = _mm256_xor_si256(second, _mm256_i32gather_epi32(highWords, at, 4));
+    second = _mm256_xor_si256(second, _mm256_i32gather_epi32(sobolHighWords(), at, 4));
+  }
+  return second;
+}
+
+// The same for four lanes: a gather's cost is per lane, and threePairs needs only three.
+__attribute__((target("avx2"))) inline __m128i sobolSecondReversed4(__m128i shuffled) {
+  const __m128i byteMask = _mm_set1_epi32(0xFF);
+  __m128i second = _mm_setzero_si128();
+  for (int table = 0; table < 4; ++table) {
+    const __m128i byte = _mm_and_si128(_mm_srli_epi32(shuffled, 8 * table), byteMask);
+    const __m128i at = _mm_slli_epi32(_mm_add_epi32(byte, _mm_set1_epi32(256 * table)), 1);
+    second = _mm_xor_si128(second, _mm_i32gather_epi32(sobolHighWords(), at, 4));
   }
   return second;
 }
@@ -162,55 +177,19 @@ __attribute__((target("avx2"))) void twoArraysOfFour(std::uint32_t firstA, std::
   _mm256_storeu_ps(reinterpret_cast<float*>(b), _mm256_permute2f128_ps(low, high, 0x31));
 }
 
-// The 128-bit forms of the steps above, for threePairs' four lanes.
-__attribute__((target("avx2"))) inline __m128i reverseBits4(__m128i x) {
-  const __m128i nibbleReversed =
-      _mm_setr_epi8(0, 8, 4, 12, 2, 10, 6, 14, 1, 9, 5, 13, 3, 11, 7, 15);
-  const __m128i lowNibbles = _mm_set1_epi8(0x0F);
-  const __m128i low = _mm_and_si128(x, lowNibbles);
-  const __m128i high = _mm_and_si128(_mm_srli_epi16(x, 4), lowNibbles);
-  const __m128i bytesReversed =
-      _mm_or_si128(_mm_slli_epi16(_mm_shuffle_epi8(nibbleReversed, low), 4),
-                   _mm_shuffle_epi8(nibbleReversed, high));
-  return _mm_shuffle_epi8(bytesReversed,
-                          _mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
-}
-
-__attribute__((target("avx2"))) inline __m128i laineKarras4(__m128i x, __m128i seed) {
-  x = _mm_xor_si128(x, _mm_mullo_epi32(x, _mm_set1_epi32(0x3d20adea)));
-  x = _mm_add_epi32(x, seed);
-  x = _mm_mullo_epi32(x, _mm_or_si128(_mm_srli_epi32(seed, 16), _mm_set1_epi32(1)));
-  x = _mm_xor_si128(x, _mm_mullo_epi32(x, _mm_set1_epi32(0x05526c56)));
-  x = _mm_xor_si128(x, _mm_mullo_epi32(x, _mm_set1_epi32(0x53a22864)));
-  return x;
-}
-
-__attribute__((target("avx2"))) inline __m128i sobolSecondReversed4(__m128i shuffled) {
-  const int* highWords =
-      reinterpret_cast<const int*>(&sampler_detail::kSobolPairFromReversedIndex.byByte[0][0]) + 1;
-  const __m128i byteMask = _mm_set1_epi32(0xFF);
-  __m128i second = _mm_setzero_si128();
-  for (int table = 0; table < 4; ++table) {
-    const __m128i byte = _mm_and_si128(_mm_srli_epi32(shuffled, 8 * table), byteMask);
-    const __m128i at = _mm_slli_epi32(_mm_add_epi32(byte, _mm_set1_epi32(256 * table)), 1);
-    second = _mm_xor_si128(second, _mm_i32gather_epi32(highWords, at, 4));
-  }
-  return second;
-}
-
 // Three pairs' points for one sample (PixelSampler::pointOfPair three times): the index
-// shuffles in lanes 0-2 of four (four-lane gathers cost about half of eight-lane ones), then the
-// x scrambles in lanes 0-2 and the y scrambles in lanes 4-6 of one eight-lane vector.
+// shuffles in lanes 0-2 (their Sobol lookups gather four lanes, not eight), then the x
+// scrambles in lanes 0-2 and the y scrambles in lanes 4-6 of one vector.
 __attribute__((target("avx2"))) void threePairs(std::uint32_t reversedSampleIndex,
                                                 const sampler_detail::PairSeeds* seeds,
                                                 glm::vec2* points) {
   const auto word = [](std::uint32_t value) { return static_cast<int>(value); };
-  const __m128i shuffleSeeds =
-      _mm_setr_epi32(word(seeds[0].shuffle), word(seeds[1].shuffle), word(seeds[2].shuffle), 0);
-  const __m128i shuffled =
-      laineKarras4(_mm_set1_epi32(static_cast<int>(reversedSampleIndex)), shuffleSeeds);
-  const __m256i both = _mm256_inserti128_si256(_mm256_castsi128_si256(reverseBits4(shuffled)),
-                                               sobolSecondReversed4(shuffled), 1);
+  const __m256i shuffleSeeds = _mm256_setr_epi32(word(seeds[0].shuffle), word(seeds[1].shuffle),
+                                                 word(seeds[2].shuffle), 0, 0, 0, 0, 0);
+  const __m256i shuffled =
+      laineKarras8(_mm256_set1_epi32(static_cast<int>(reversedSampleIndex)), shuffleSeeds);
+  const __m256i both = _mm256_inserti128_si256(
+      reverseBits8(shuffled), sobolSecondReversed4(_mm256_castsi256_si128(shuffled)), 1);
   const __m256i scrambleSeeds =
       _mm256_setr_epi32(word(seeds[0].x), word(seeds[1].x), word(seeds[2].x), 0, word(seeds[0].y),
                         word(seeds[1].y), word(seeds[2].y), 0);
