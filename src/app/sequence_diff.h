@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <span>
 #include <vector>
 
@@ -24,6 +25,9 @@ bool markUnmatched(std::span<const std::uint64_t> a, std::span<const std::uint64
   const auto n = static_cast<std::ptrdiff_t>(a.size());
   const auto m = static_cast<std::ptrdiff_t>(b.size());
   const std::ptrdiff_t limit = std::min<std::ptrdiff_t>(maxEdits, n + m);
+  // Every script inserts or deletes at least the difference in length: no search needed (a
+  // cross-section whose rays all moved would otherwise search to the limit first).
+  if (std::abs(n - m) > limit) return false;
   // frontier[d][k + d]: the furthest x reached on diagonal k = x - y with d edits.
   std::vector<std::vector<std::ptrdiff_t>> frontier;
   std::vector<std::ptrdiff_t> furthest(static_cast<std::size_t>(2 * limit + 3), 0);

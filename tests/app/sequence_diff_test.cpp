@@ -81,6 +81,12 @@ TEST(SequenceDiff, TheExactComparisonDecidesAndTooManyEditsFail) {
       markUnmatched<decltype(kAlwaysEqual)>(c, d, kAlwaysEqual, 6, unmatchedA, unmatchedB));
   ASSERT_TRUE(markUnmatched<decltype(kAlwaysEqual)>(c, d, kAlwaysEqual, 7, unmatchedA, unmatchedB));
   EXPECT_EQ(std::count(unmatchedA.begin(), unmatchedA.end(), true), 4);
+  // Lengths further apart than the limit fail at once.
+  EXPECT_FALSE(
+      markUnmatched<decltype(kAlwaysEqual)>(c, Keys{1}, kAlwaysEqual, 2, unmatchedA, unmatchedB));
+  ASSERT_TRUE(
+      markUnmatched<decltype(kAlwaysEqual)>(c, Keys{1}, kAlwaysEqual, 3, unmatchedA, unmatchedB));
+  EXPECT_EQ(std::count(unmatchedA.begin(), unmatchedA.end(), true), 3);
   // Empty sequences.
   ASSERT_TRUE(
       markUnmatched<decltype(kAlwaysEqual)>(Keys{}, c, kAlwaysEqual, 7, unmatchedA, unmatchedB));
