@@ -9,7 +9,8 @@
 // BM_PreviewFirstPass/coarse:4: edit to the first full pass (table + coarse look + pass), as the
 // viewer renders it; coarse:1 without the coarse look.
 // BM_PreviewTable: the exit-pupil table of the edited lens alone (2 threads).
-// BM_PreviewPass: the 1-spp pass alone (table built before, no coarse look).
+// BM_PreviewPass/embree:0: the 1-spp pass alone (table built before, no coarse look);
+// embree:1 the same with the scene's ray queries through Embree's BVH instead of FlatPrimitives.
 
 #include <benchmark/benchmark.h>
 
@@ -38,26 +39,31 @@ struct DefaultScene {
   std::shared_ptr<const LensSystem> lens;
 };
 
+DefaultScene loadDefaultScene(const render::BuildOptions& options) {
+  DefaultScene out;
+  render::ParseResult parsed =
+      render::parsePbrtFile(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
+  if (!parsed.scene) return out;
+  render::BuildResult built = render::buildScene(*parsed.scene, options);
+  if (!built.scene) return out;
+  render::Diagnostics diagnostics;
+  const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
+  const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
+  if (!realistic) return out;
+  const LensSystem& lens = realistic->lens();
+  out.lens = lens.withFilmDistance(lens.filmDistanceMm());  // a shared copy
+  out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
+  out.scene = std::move(built.scene);
+  return out;
+}
+
 // Parsed and built once for all benchmarks; null members when the scene cannot be loaded.
-const DefaultScene& defaultScene() {
-  static const DefaultScene loaded = [] {
-    DefaultScene out;
-    render::ParseResult parsed =
-        render::parsePbrtFile(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
-    if (!parsed.scene) return out;
-    render::BuildResult built = render::buildScene(*parsed.scene);
-    if (!built.scene) return out;
-    render::Diagnostics diagnostics;
-    const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
-    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
-    if (!realistic) return out;
-    const LensSystem& lens = realistic->lens();
-    out.lens = lens.withFilmDistance(lens.filmDistanceMm());  // a shared copy
-    out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
-    out.scene = std::move(built.scene);
-    return out;
-  }();
-  return loaded;
+// `embree`: ray queries through Embree's BVH even though the scene is small enough to go
+// without (render::FlatPrimitives), to compare the two.
+const DefaultScene& defaultScene(bool embree = false) {
+  static const DefaultScene flat = loadDefaultScene({});
+  static const DefaultScene bvh = loadDefaultScene({.flatPrimitiveLimit = 0});
+  return embree ? bvh : flat;
 }
 
 render::RenderJob previewJob(const DefaultScene& loaded, std::shared_ptr<const LensSystem> lens,
@@ -110,7 +116,7 @@ void BM_PreviewTable(benchmark::State& state) {
 BENCHMARK(BM_PreviewTable)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_PreviewPass(benchmark::State& state) {
-  const DefaultScene& loaded = defaultScene();
+  const DefaultScene& loaded = defaultScene(state.range(0) != 0);
   if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");
   const auto lens = editedLens(*loaded.lens, 0);
   lens->imageCircleBoundMm();
@@ -120,6 +126,11 @@ void BM_PreviewPass(benchmark::State& state) {
     if (!renderer.waitForCompletion(generation, 60.0)) return state.SkipWithError("no pass");
   }
 }
-BENCHMARK(BM_PreviewPass)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PreviewPass)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("embree")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <limits>
 
 #include "render/sampling.h"
 
@@ -193,6 +194,33 @@ void PlacedQuadric::place(const glm::dmat4& transform, bool reverseOrientation) 
   // The inverse transpose keeps normals outward even under a mirroring transform, so only
   // ReverseOrientation turns them inward.
   flipNormal = reverseOrientation;
+}
+
+std::optional<QuadricHit> PlacedQuadric::intersect(glm::dvec3 origin, glm::dvec3 direction,
+                                                   double tMin, double tMax, bool withUv) const {
+  const glm::dvec3 o(objectFromParent * glm::dvec4(origin, 1.0));
+  const glm::dvec3 d(objectFromParent * glm::dvec4(direction, 0.0));
+  std::optional<QuadricHit> hit = quadric.intersect(o, d, tMin, tMax, withUv);
+  if (hit) hit->normal = normalToParent * hit->normal;
+  return hit;
+}
+
+void PlacedQuadric::parentBounds(glm::dvec3& lower, glm::dvec3& upper) const {
+  glm::dvec3 objectLower(0.0), objectUpper(0.0);
+  quadric.bounds(objectLower, objectUpper);
+  lower = glm::dvec3(std::numeric_limits<double>::infinity());
+  upper = -lower;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? objectUpper.x : objectLower.x,
+                       (corner & 2) ? objectUpper.y : objectLower.y,
+                       (corner & 4) ? objectUpper.z : objectLower.z);
+    const glm::dvec3 q(parentFromObject * glm::dvec4(p, 1.0));
+    lower = glm::min(lower, q);
+    upper = glm::max(upper, q);
+  }
+  const glm::dvec3 pad = 1e-6 * (glm::abs(lower) + glm::abs(upper)) + 1e-9;
+  lower -= pad;
+  upper += pad;
 }
 
 }  // namespace lenslab::render

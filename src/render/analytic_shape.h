@@ -47,6 +47,13 @@ struct PlacedQuadric {
   bool flipNormal = false;         // ReverseOrientation
 
   void place(const glm::dmat4& transform, bool reverseOrientation);
+  // Nearest hit of a parent-space ray with t in (tMin, tMax); the hit's normal is in parent
+  // space (outward before flipNormal, not normalised). An affine map keeps the ray parameter t,
+  // so the direction is not renormalised.
+  std::optional<QuadricHit> intersect(glm::dvec3 origin, glm::dvec3 direction, double tMin,
+                                      double tMax, bool withUv = true) const;
+  // Parent-space bounding box, padded so that float rounding does not clip a hit.
+  void parentBounds(glm::dvec3& lower, glm::dvec3& upper) const;
 };
 
 }  // namespace lenslab::render

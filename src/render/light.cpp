@@ -97,13 +97,11 @@ bool Emitter::intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t,
     normal = disk.normal;
     return disk.intersect(origin, direction, t);
   }
-  const glm::dvec3 o(quadric.objectFromParent * glm::dvec4(glm::dvec3(origin), 1.0));
-  const glm::dvec3 d(quadric.objectFromParent * glm::dvec4(glm::dvec3(direction), 0.0));
-  const auto hit =
-      quadric.quadric.intersect(o, d, 0.0, std::numeric_limits<double>::infinity(), false);
+  const auto hit = quadric.intersect(glm::dvec3(origin), glm::dvec3(direction), 0.0,
+                                     std::numeric_limits<double>::infinity(), false);
   if (!hit) return false;
   t = static_cast<float>(hit->t);
-  normal = glm::vec3(glm::normalize(quadric.normalToParent * hit->normal));
+  normal = glm::vec3(glm::normalize(hit->normal));
   if (flipNormal) normal = -normal;
   return true;
 }

@@ -77,6 +77,22 @@ RTCRayHit makeRayHit(glm::vec3 origin, glm::vec3 direction, float tMax) {
 }  // namespace
 
 bool Scene::intersect(glm::vec3 origin, glm::vec3 direction, float tMax, SurfaceHit& hit) const {
+  if (!flat_.empty()) {
+    FlatHit flatHit;
+    if (!flat_.intersect(topRecords_, origin, direction, tMax, flatHit)) return false;
+    hit.t = flatHit.t;
+    hit.point = origin + hit.t * direction;
+    RTCHit asEmbree;
+    asEmbree.Ng_x = flatHit.normal.x;
+    asEmbree.Ng_y = flatHit.normal.y;
+    asEmbree.Ng_z = flatHit.normal.z;
+    asEmbree.u = flatHit.u;
+    asEmbree.v = flatHit.v;
+    asEmbree.primID = flatHit.primitive;
+    asEmbree.geomID = flatHit.record;
+    fillShadingFromRecord(topRecords_[flatHit.record], asEmbree, hit);
+    return true;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit = makeRayHit(origin, direction, tMax);
@@ -107,7 +123,7 @@ bool Scene::intersect(glm::vec3 origin, glm::vec3 direction, float tMax, Surface
 }
 
 void Scene::occluded(const ShadowRay* rays, std::size_t count, std::uint8_t* blocked) const {
-  if (!packets8_) {
+  if (!packets8_ || !flat_.empty()) {
     for (std::size_t i = 0; i < count; ++i) {
       blocked[i] = occluded(rays[i].origin, rays[i].direction, rays[i].tMax) ? 1 : 0;
     }
@@ -145,6 +161,7 @@ void Scene::occluded(const ShadowRay* rays, std::size_t count, std::uint8_t* blo
 }
 
 bool Scene::occluded(glm::vec3 origin, glm::vec3 direction, float tMax) const {
+  if (!flat_.empty()) return flat_.occluded(topRecords_, origin, direction, tMax);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray = makeRayHit(origin, direction, tMax).ray;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "render/analytic_shape.h"
+#include "render/flat_primitives.h"
 #include "render/light.h"
 #include "render/material.h"
 #include "render/texture.h"
@@ -88,6 +89,8 @@ class Scene {
   // SceneBuilder: small objects), and those kept as Embree instances.
   std::size_t flattenedInstances() const { return flattenedInstances_; }
   std::size_t embreeInstances() const { return embreeInstances_; }
+  // Whether ray queries test the few primitives directly (FlatPrimitives) instead of Embree.
+  bool queriesWithoutBvh() const { return !flat_.empty(); }
 
  private:
   friend class SceneBuilder;
@@ -96,6 +99,7 @@ class Scene {
   RTCScene top_ = nullptr;
   bool packets8_ = false;  // Embree traces 8-ray packets natively on this CPU
   std::vector<GeometryRecord> topRecords_;
+  FlatPrimitives flat_;  // empty unless the scene is small enough (SceneBuilder decides)
   std::vector<RTCScene> objectScenes_;
   std::vector<std::vector<GeometryRecord>> objectRecords_;
   std::vector<Material> materials_;

@@ -20,26 +20,13 @@ namespace {
 void quadricBounds(const RTCBoundsFunctionArguments* args) {
   const auto* record = static_cast<const GeometryRecord*>(args->geometryUserPtr);
   glm::dvec3 lower, upper;
-  record->quadric.quadric.bounds(lower, upper);
-  glm::dvec3 worldLower(std::numeric_limits<double>::infinity());
-  glm::dvec3 worldUpper(-std::numeric_limits<double>::infinity());
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 p((corner & 1) ? upper.x : lower.x, (corner & 2) ? upper.y : lower.y,
-                       (corner & 4) ? upper.z : lower.z);
-    const glm::dvec3 q = glm::dvec3(record->quadric.parentFromObject * glm::dvec4(p, 1.0));
-    worldLower = glm::min(worldLower, q);
-    worldUpper = glm::max(worldUpper, q);
-  }
-  // Pad by a relative epsilon: the box must not clip a hit that float rounding moves outside.
-  const glm::dvec3 pad = 1e-6 * (glm::abs(worldLower) + glm::abs(worldUpper)) + 1e-9;
-  worldLower -= pad;
-  worldUpper += pad;
-  args->bounds_o->lower_x = static_cast<float>(worldLower.x);
-  args->bounds_o->lower_y = static_cast<float>(worldLower.y);
-  args->bounds_o->lower_z = static_cast<float>(worldLower.z);
-  args->bounds_o->upper_x = static_cast<float>(worldUpper.x);
-  args->bounds_o->upper_y = static_cast<float>(worldUpper.y);
-  args->bounds_o->upper_z = static_cast<float>(worldUpper.z);
+  record->quadric.parentBounds(lower, upper);
+  args->bounds_o->lower_x = static_cast<float>(lower.x);
+  args->bounds_o->lower_y = static_cast<float>(lower.y);
+  args->bounds_o->lower_z = static_cast<float>(lower.z);
+  args->bounds_o->upper_x = static_cast<float>(upper.x);
+  args->bounds_o->upper_y = static_cast<float>(upper.y);
+  args->bounds_o->upper_z = static_cast<float>(upper.z);
 }
 
 template <typename Args>
@@ -50,11 +37,8 @@ std::optional<QuadricHit> quadricHitFor(const Args* args, unsigned i, RTCRayN* r
                           RTCRayN_org_z(ray, n, i));
   const glm::dvec3 direction(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i),
                              RTCRayN_dir_z(ray, n, i));
-  const PlacedQuadric& placed = record->quadric;
-  // An affine map keeps the ray parameter t: no renormalisation of the direction.
-  const glm::dvec3 o = glm::dvec3(placed.objectFromParent * glm::dvec4(origin, 1.0));
-  const glm::dvec3 d = glm::dvec3(placed.objectFromParent * glm::dvec4(direction, 0.0));
-  return placed.quadric.intersect(o, d, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i), withUv);
+  return record->quadric.intersect(origin, direction, RTCRayN_tnear(ray, n, i),
+                                   RTCRayN_tfar(ray, n, i), withUv);
 }
 
 void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -65,7 +49,7 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
     if (args->valid[i] != -1) continue;
     const auto found = quadricHitFor(args, i, ray, record->quadricNeedsUv);
     if (!found) continue;
-    const glm::dvec3 normal = record->quadric.normalToParent * found->normal;
+    const glm::dvec3 normal = found->normal;
     const unsigned n = args->N;
     RTCRayN_tfar(ray, n, i) = static_cast<float>(found->t);
     RTCHitN_Ng_x(hit, n, i) = static_cast<float>(normal.x);
@@ -120,8 +104,12 @@ std::vector<glm::vec4> triangleFrames(const GeometryRecord& record) {
 
 class SceneBuilder {
  public:
-  SceneBuilder(const SceneDescription& description, Diagnostics& diagnostics)
-      : description_(description), diagnostics_(diagnostics), scene_(std::make_shared<Scene>()) {}
+  SceneBuilder(const SceneDescription& description, const BuildOptions& options,
+               Diagnostics& diagnostics)
+      : description_(description),
+        options_(options),
+        diagnostics_(diagnostics),
+        scene_(std::make_shared<Scene>()) {}
 
   std::shared_ptr<const Scene> build() {
     scene_->device_ = rtcNewDevice(nullptr);
@@ -175,6 +163,9 @@ class SceneBuilder {
       ++scene_->flattenedInstances_;
     }
     rtcCommitScene(scene_->top_);
+    if (scene_->embreeInstances_ == 0 && options_.flatPrimitiveLimit > 0) {
+      scene_->flat_.build(scene_->topRecords_, options_.flatPrimitiveLimit);
+    }
     scene_->packets8_ =
         rtcGetDeviceProperty(scene_->device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
     RTCBounds bounds;
@@ -585,15 +576,16 @@ class SceneBuilder {
   }
 
   const SceneDescription& description_;
+  const BuildOptions options_;
   Diagnostics& diagnostics_;
   std::shared_ptr<Scene> scene_;
   std::map<std::string, int> textureIndex_;
   std::map<std::string, std::shared_ptr<const FloatImage>> images_;
 };
 
-BuildResult buildScene(const SceneDescription& description) {
+BuildResult buildScene(const SceneDescription& description, const BuildOptions& options) {
   BuildResult result;
-  SceneBuilder builder(description, result.diagnostics);
+  SceneBuilder builder(description, options, result.diagnostics);
   result.scene = builder.build();
   return result;
 }

@@ -15,6 +15,12 @@ struct BuildResult {
   Diagnostics diagnostics;
 };
 
-BuildResult buildScene(const SceneDescription& description);
+struct BuildOptions {
+  // Scenes of at most this many primitives, with no Embree instances, are queried without a
+  // BVH (FlatPrimitives); 0 always uses Embree (tests compare the two).
+  std::size_t flatPrimitiveLimit = FlatPrimitives::kMaxPrimitives;
+};
+
+BuildResult buildScene(const SceneDescription& description, const BuildOptions& options = {});
 
 }  // namespace lenslab::render

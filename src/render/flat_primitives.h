@@ -1,0 +1,69 @@
+#pragma once
+// The ray queries of a scene of few primitives, without a BVH: every primitive's bounding box is
+// tested at once (eight at a time with AVX2), and only the primitives whose boxes the ray enters
+// are tested exactly. For a few dozen primitives this costs a fraction of Embree's traversal,
+// whose fixed cost per ray and per user-geometry callback dominates when there is so little to
+// cull: on the default scene's 22 primitives (4 triangles, 4 spheres, 7 cylinders, 7 disks),
+// BM_SceneIntersect/camera took 147 ns per ray through Embree (see bench/README.md for the flat
+// figure). Larger scenes, and scenes with Embree instances, keep Embree.
+//
+// Quadrics are tested by the same double-precision code as Embree's callbacks
+// (PlacedQuadric::intersect); triangles by the Moller-Trumbore test (Moller and Trumbore, "Fast,
+// Minimum Storage Ray-Triangle Intersection", 1997), whose barycentrics are Embree's u and v.
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace lenslab::render {
+
+struct GeometryRecord;
+
+// A hit found by FlatPrimitives, in the terms of an Embree hit.
+struct FlatHit {
+  unsigned record = 0;     // index of the primitive's GeometryRecord (its Embree geomID)
+  unsigned primitive = 0;  // the triangle's index in its mesh (primID); 0 for a quadric
+  float t = 0.0f;
+  float u = 0.0f, v = 0.0f;  // a triangle's barycentrics of vertices 1 and 2; a quadric's (u, v)
+  glm::vec3 normal{0.0f};    // a quadric's parent-space normal (not normalised); unset for meshes
+};
+
+class FlatPrimitives {
+ public:
+  // Beyond this many primitives a BVH pays for itself (see bench/README.md, BM_SceneIntersect).
+  static constexpr std::size_t kMaxPrimitives = 64;
+
+  // Takes the primitives of `records` (meshes and quadrics). False, leaving this empty, when
+  // they are more than `limit` (at most kMaxPrimitives) or include an instance.
+  bool build(const std::vector<GeometryRecord>& records, std::size_t limit = kMaxPrimitives);
+  bool empty() const { return primitives_.empty(); }
+  std::size_t size() const { return primitives_.size(); }
+
+  // Nearest hit along origin + t * direction for t in (0, tMax); `records` are the ones built
+  // from.
+  bool intersect(const std::vector<GeometryRecord>& records, glm::vec3 origin, glm::vec3 direction,
+                 float tMax, FlatHit& hit) const;
+  // Whether anything lies on the segment (0, tMax).
+  bool occluded(const std::vector<GeometryRecord>& records, glm::vec3 origin, glm::vec3 direction,
+                float tMax) const;
+
+  // For tests: the box test without SIMD, which CPUs without AVX2 use.
+  static void forcePortableBoxTest(bool portable);
+
+ private:
+  struct Primitive {
+    unsigned record = 0;
+    unsigned triangle = 0;
+    bool isTriangle = false;
+    glm::vec3 vertex0{0.0f}, edge1{0.0f}, edge2{0.0f};  // triangles
+  };
+  // The bits of the primitives whose boxes the ray enters within (0, tMax), and each box's entry
+  // distance in `entry`.
+  std::uint64_t boxesEntered(glm::vec3 origin, glm::vec3 direction, float tMax, float* entry) const;
+
+  std::vector<Primitive> primitives_;
+  // Bounding boxes, one array per bound and axis, padded to a multiple of 8 entries.
+  std::vector<float> lower_[3], upper_[3];
+};
+
+}  // namespace lenslab::render
