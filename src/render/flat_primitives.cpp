@@ -2,6 +2,12 @@
 
 #include <immintrin.h>
 
+// GCC 12's AVX-512 intrinsics start from _mm512_undefined_* values, which -Wmaybe-uninitialized
+// reports in every caller (GCC bug 105593, fixed in GCC 13).
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ < 13
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -21,18 +27,23 @@ constexpr float kExitSlack = 1.0f + 1.0f / (1 << 20);
 // 1 / d per axis, with |d| kept at least 1e-20 so that (bound - origin) / d stays finite: a
 // direction along a box face then gives +-huge instead of 0 * inf = NaN.
 glm::vec3 safeInverse(glm::vec3 direction) {
-  glm::vec3 inverse;
-  for (int axis = 0; axis < 3; ++axis) {
-    const float d = direction[axis];
-    inverse[axis] = 1.0f / (std::abs(d) < 1e-20f ? std::copysign(1e-20f, d) : d);
-  }
-  return inverse;
+  // One SSE division for the three axes (SSE is part of x86-64).
+  const __m128 d = _mm_setr_ps(direction.x, direction.y, direction.z, 1.0f);
+  const __m128 signBit = _mm_set1_ps(-0.0f);
+  const __m128 magnitude = _mm_max_ps(_mm_andnot_ps(signBit, d), _mm_set1_ps(1e-20f));
+  const __m128 inverse =
+      _mm_div_ps(_mm_set1_ps(1.0f), _mm_or_ps(magnitude, _mm_and_ps(signBit, d)));
+  alignas(16) float lanes[4];
+  _mm_store_ps(lanes, inverse);
+  return {lanes[0], lanes[1], lanes[2]};
 }
 
+// The boxes' six bounds, each an array of `padded` floats: lower x, y, z, then upper x, y, z.
 struct BoxArrays {
-  const float* lower[3];
-  const float* upper[3];
-  std::size_t padded;  // a multiple of 8
+  const float* bounds;
+  std::size_t padded;  // a multiple of 16
+  const float* lower(int axis) const { return bounds + axis * padded; }
+  const float* upper(int axis) const { return bounds + (3 + axis) * padded; }
 };
 
 std::uint64_t boxesEnteredPortable(const BoxArrays& boxes, glm::vec3 origin, glm::vec3 inverse,
@@ -41,8 +52,8 @@ std::uint64_t boxesEnteredPortable(const BoxArrays& boxes, glm::vec3 origin, glm
   for (std::size_t i = 0; i < boxes.padded; ++i) {
     float near = 0.0f, far = tMax;
     for (int axis = 0; axis < 3; ++axis) {
-      const float t0 = (boxes.lower[axis][i] - origin[axis]) * inverse[axis];
-      const float t1 = (boxes.upper[axis][i] - origin[axis]) * inverse[axis];
+      const float t0 = (boxes.lower(axis)[i] - origin[axis]) * inverse[axis];
+      const float t1 = (boxes.upper(axis)[i] - origin[axis]) * inverse[axis];
       near = std::max(near, std::min(t0, t1));
       far = std::min(far, std::max(t0, t1));
     }
@@ -52,6 +63,7 @@ std::uint64_t boxesEnteredPortable(const BoxArrays& boxes, glm::vec3 origin, glm
   return entered;
 }
 
+// The same, eight boxes at a time.
 __attribute__((target("avx2"))) std::uint64_t boxesEnteredAvx2(const BoxArrays& boxes,
                                                                glm::vec3 origin, glm::vec3 inverse,
                                                                float tMax, float* entry) {
@@ -63,9 +75,9 @@ __attribute__((target("avx2"))) std::uint64_t boxesEnteredAvx2(const BoxArrays& 
       const __m256 o = _mm256_set1_ps(origin[axis]);
       const __m256 inv = _mm256_set1_ps(inverse[axis]);
       const __m256 t0 =
-          _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(boxes.lower[axis] + first), o), inv);
+          _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(boxes.lower(axis) + first), o), inv);
       const __m256 t1 =
-          _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(boxes.upper[axis] + first), o), inv);
+          _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(boxes.upper(axis) + first), o), inv);
       near = _mm256_max_ps(near, _mm256_min_ps(t0, t1));
       far = _mm256_min_ps(far, _mm256_max_ps(t0, t1));
     }
@@ -76,11 +88,49 @@ __attribute__((target("avx2"))) std::uint64_t boxesEnteredAvx2(const BoxArrays& 
   return entered;
 }
 
-std::atomic<bool> portableForced{false};
+// The same, sixteen boxes at a time: the default scene's 22 primitives take two steps, not three.
+__attribute__((target("avx512f"))) std::uint64_t boxesEnteredAvx512(const BoxArrays& boxes,
+                                                                    glm::vec3 origin,
+                                                                    glm::vec3 inverse, float tMax,
+                                                                    float* entry) {
+  const __m512 slack = _mm512_set1_ps(kExitSlack);
+  std::uint64_t entered = 0;
+  for (std::size_t first = 0; first < boxes.padded; first += 16) {
+    __m512 near = _mm512_setzero_ps(), far = _mm512_set1_ps(tMax);
+    for (int axis = 0; axis < 3; ++axis) {
+      const __m512 o = _mm512_set1_ps(origin[axis]);
+      const __m512 inv = _mm512_set1_ps(inverse[axis]);
+      const __m512 t0 =
+          _mm512_mul_ps(_mm512_sub_ps(_mm512_loadu_ps(boxes.lower(axis) + first), o), inv);
+      const __m512 t1 =
+          _mm512_mul_ps(_mm512_sub_ps(_mm512_loadu_ps(boxes.upper(axis) + first), o), inv);
+      near = _mm512_max_ps(near, _mm512_min_ps(t0, t1));
+      far = _mm512_min_ps(far, _mm512_max_ps(t0, t1));
+    }
+    _mm512_storeu_ps(entry + first, near);
+    const __mmask16 in = _mm512_cmp_ps_mask(near, _mm512_mul_ps(far, slack), _CMP_LE_OQ);
+    entered |= static_cast<std::uint64_t>(in) << first;
+  }
+  return entered;
+}
 
-bool useAvx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has && !portableForced.load(std::memory_order_relaxed);
+using BoxTest = std::uint64_t (*)(const BoxArrays&, glm::vec3, glm::vec3, float, float*);
+
+std::atomic<FlatPrimitives::BoxTestKind> boxTestKind{FlatPrimitives::BoxTestKind::Fastest};
+
+BoxTest boxTest() {
+  static const BoxTest fastest = __builtin_cpu_supports("avx512f") ? boxesEnteredAvx512
+                                 : __builtin_cpu_supports("avx2")  ? boxesEnteredAvx2
+                                                                   : boxesEnteredPortable;
+  switch (boxTestKind.load(std::memory_order_relaxed)) {
+    case FlatPrimitives::BoxTestKind::Fastest:
+      return fastest;
+    case FlatPrimitives::BoxTestKind::Avx2:
+      return boxesEnteredAvx2;
+    case FlatPrimitives::BoxTestKind::Portable:
+      return boxesEnteredPortable;
+  }
+  return fastest;
 }
 
 // Moller-Trumbore: the hit's t in (0, tMax) and barycentrics (u, v) of vertices 1 and 2.
@@ -102,12 +152,16 @@ bool intersectTriangle(glm::vec3 vertex0, glm::vec3 edge1, glm::vec3 edge2, glm:
 
 }  // namespace
 
-void FlatPrimitives::forcePortableBoxTest(bool portable) { portableForced.store(portable); }
+bool FlatPrimitives::useBoxTest(BoxTestKind kind) {
+  if (kind == BoxTestKind::Avx2 && !__builtin_cpu_supports("avx2")) return false;
+  boxTestKind.store(kind);
+  return true;
+}
 
 bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size_t limit) {
   primitives_.clear();
-  for (auto& bounds : lower_) bounds.clear();
-  for (auto& bounds : upper_) bounds.clear();
+  bounds_.clear();
+  padded_ = 0;
   limit = std::min(limit, kMaxPrimitives);
   std::size_t count = 0;
   for (const GeometryRecord& record : records) {
@@ -115,11 +169,10 @@ bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size
     count += record.kind == GeometryRecord::Kind::Mesh ? record.indices.size() / 3 : 1;
   }
   if (count == 0 || count > limit) return false;
-  const auto addBox = [this](glm::dvec3 lower, glm::dvec3 upper) {
-    for (int axis = 0; axis < 3; ++axis) {
-      lower_[axis].push_back(static_cast<float>(lower[axis]));
-      upper_[axis].push_back(static_cast<float>(upper[axis]));
-    }
+  std::vector<glm::vec3> lowers, uppers;
+  const auto addBox = [&](glm::dvec3 lower, glm::dvec3 upper) {
+    lowers.push_back(glm::vec3(lower));
+    uppers.push_back(glm::vec3(upper));
   };
   for (std::size_t r = 0; r < records.size(); ++r) {
     const GeometryRecord& record = records[r];
@@ -151,12 +204,13 @@ bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size
       addBox(lower - pad, upper + pad);
     }
   }
-  // Padding to whole groups of eight; boxesEntered masks these lanes off.
-  const std::size_t padded = (primitives_.size() + 7) / 8 * 8;
-  while (lower_[0].size() < padded) {
+  // Padded to whole groups of sixteen with NaN boxes, which boxesEntered masks off.
+  padded_ = (primitives_.size() + 15) / 16 * 16;
+  bounds_.assign(6 * padded_, std::nanf(""));
+  for (std::size_t i = 0; i < primitives_.size(); ++i) {
     for (int axis = 0; axis < 3; ++axis) {
-      lower_[axis].push_back(std::nanf(""));
-      upper_[axis].push_back(std::nanf(""));
+      bounds_[axis * padded_ + i] = lowers[i][axis];
+      bounds_[(3 + axis) * padded_ + i] = uppers[i][axis];
     }
   }
   return true;
@@ -164,15 +218,10 @@ bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size
 
 std::uint64_t FlatPrimitives::boxesEntered(glm::vec3 origin, glm::vec3 direction, float tMax,
                                            float* entry) const {
-  const BoxArrays boxes{{lower_[0].data(), lower_[1].data(), lower_[2].data()},
-                        {upper_[0].data(), upper_[1].data(), upper_[2].data()},
-                        lower_[0].size()};
-  const glm::vec3 inverse = safeInverse(direction);
-  const std::uint64_t entered = useAvx2()
-                                    ? boxesEnteredAvx2(boxes, origin, inverse, tMax, entry)
-                                    : boxesEnteredPortable(boxes, origin, inverse, tMax, entry);
-  // The padding's NaN boxes fail the AVX2 comparison, but std::min and std::max skip a NaN:
-  // mask them off.
+  const std::uint64_t entered =
+      boxTest()({bounds_.data(), padded_}, origin, safeInverse(direction), tMax, entry);
+  // The NaN boxes of the padding fail the SIMD comparisons, but std::min and std::max skip a
+  // NaN: mask them off.
   const std::size_t count = primitives_.size();
   return count == 64 ? entered : entered & ((std::uint64_t{1} << count) - 1);
 }

@@ -1,11 +1,11 @@
 #pragma once
 // The ray queries of a scene of few primitives, without a BVH: every primitive's bounding box is
-// tested at once (eight at a time with AVX2), and only the primitives whose boxes the ray enters
-// are tested exactly. For a few dozen primitives this costs a fraction of Embree's traversal,
-// whose fixed cost per ray and per user-geometry callback dominates when there is so little to
-// cull: on the default scene's 22 primitives (4 triangles, 4 spheres, 7 cylinders, 7 disks),
-// BM_SceneIntersect/camera took 147 ns per ray through Embree (see bench/README.md for the flat
-// figure). Larger scenes, and scenes with Embree instances, keep Embree.
+// tested at once (sixteen at a time with AVX-512, eight with AVX2), and only the primitives whose
+// boxes the ray enters are tested exactly. For a few dozen primitives this costs a fraction of
+// Embree's traversal, whose fixed cost per ray and per user-geometry callback dominates when there
+// is so little to cull: on the default scene's 22 primitives (4 triangles, 4 spheres, 7 cylinders,
+// 7 disks), BM_SceneIntersect/camera took 147 ns per ray through Embree (see bench/README.md for
+// the flat figure). Larger scenes, and scenes with Embree instances, keep Embree.
 //
 // Quadrics are tested by the same double-precision code as Embree's callbacks
 // (PlacedQuadric::intersect); triangles by the Moller-Trumbore test (Moller and Trumbore, "Fast,
@@ -47,8 +47,10 @@ class FlatPrimitives {
   bool occluded(const std::vector<GeometryRecord>& records, glm::vec3 origin, glm::vec3 direction,
                 float tMax) const;
 
-  // For tests: the box test without SIMD, which CPUs without AVX2 use.
-  static void forcePortableBoxTest(bool portable);
+  // For tests: which box test every FlatPrimitives uses. Fastest is AVX-512 where the CPU has
+  // it, else AVX2, else the portable loop. False (and no change) when the CPU lacks AVX2.
+  enum class BoxTestKind { Fastest, Avx2, Portable };
+  static bool useBoxTest(BoxTestKind kind);
 
  private:
   struct Primitive {
@@ -62,8 +64,10 @@ class FlatPrimitives {
   std::uint64_t boxesEntered(glm::vec3 origin, glm::vec3 direction, float tMax, float* entry) const;
 
   std::vector<Primitive> primitives_;
-  // Bounding boxes, one array per bound and axis, padded to a multiple of 8 entries.
-  std::vector<float> lower_[3], upper_[3];
+  // Bounding boxes: six arrays of padded_ floats (lower x, y, z, upper x, y, z), padded_ the
+  // primitive count rounded up to a multiple of 16.
+  std::vector<float> bounds_;
+  std::size_t padded_ = 0;
 };
 
 }  // namespace lenslab::render

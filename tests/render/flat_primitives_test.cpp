@@ -180,16 +180,31 @@ TEST(FlatPrimitives, AnswersAsEmbreeDoesForEveryKindOfPrimitive) {
   EXPECT_GT(seen.surfaceRays, 1500);
 }
 
-TEST(FlatPrimitives, AnswersAsEmbreeDoesWithoutSimd) {
+// The other box tests than the CPU's fastest: AVX2 (where AVX-512 is the fastest) and the
+// portable loop of CPUs without AVX2.
+class FlatPrimitivesBoxTest : public testing::TestWithParam<FlatPrimitives::BoxTestKind> {
+ protected:
+  void TearDown() override { FlatPrimitives::useBoxTest(FlatPrimitives::BoxTestKind::Fastest); }
+};
+
+TEST_P(FlatPrimitivesBoxTest, AnswersAsEmbreeDoes) {
+  if (!FlatPrimitives::useBoxTest(GetParam())) GTEST_SKIP() << "this CPU lacks AVX2";
   std::vector<glm::vec3> centres;
   const auto flat = build(mixedScene(&centres));
   const auto embree = build(mixedScene(), {.flatPrimitiveLimit = 0});
   ASSERT_TRUE(flat && embree);
-  FlatPrimitives::forcePortableBoxTest(true);
   const Comparison seen = compareQueries(*flat, *embree, 4.0f, centres, 1000);
-  FlatPrimitives::forcePortableBoxTest(false);
   EXPECT_GT(seen.hits, 500);
 }
+
+std::string boxTestName(const testing::TestParamInfo<FlatPrimitives::BoxTestKind>& kind) {
+  return kind.param == FlatPrimitives::BoxTestKind::Avx2 ? "Avx2" : "Portable";
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, FlatPrimitivesBoxTest,
+                         testing::Values(FlatPrimitives::BoxTestKind::Avx2,
+                                         FlatPrimitives::BoxTestKind::Portable),
+                         boxTestName);
 
 TEST(FlatPrimitives, AnswersAsEmbreeDoesForRaysAlongAndAcrossFlatBoxes) {
   // A flat axis-aligned quad and disk: their boxes have no thickness but their padding. Rays
