@@ -6,6 +6,9 @@
 // BM_SceneOccluded/sun: Scene::occluded, one ray at a time (the path tracer's shadow rays).
 // items_per_second is rays per second. The /embree variants query through Embree's BVH instead
 // of render::FlatPrimitives, which the default scene is small enough to use.
+// BM_ScatteredSpheres/<spheres>/<embree>: Scene::intersect on that many spheres scattered in a
+// cube, rays from outside toward its middle: where the flat path stops paying
+// (FlatPrimitives::kMaxPrimitives).
 
 #include <benchmark/benchmark.h>
 
@@ -16,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include <sstream>
 #include "render/pbrt_parser.h"
 #include "render/scene_builder.h"
 
@@ -129,5 +133,46 @@ void BM_SceneOccluded(benchmark::State& state, RayList which, bool embree) {
 }
 BENCHMARK_CAPTURE(BM_SceneOccluded, sun, &SceneRays::shadow, false);
 BENCHMARK_CAPTURE(BM_SceneOccluded, sun / embree, &SceneRays::shadow, true);
+
+void BM_ScatteredSpheres(benchmark::State& state) {
+  const auto spheres = static_cast<int>(state.range(0));
+  const bool embree = state.range(1) != 0;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::ostringstream text;
+  text << "Camera \"perspective\"\nWorldBegin\n";
+  for (int i = 0; i < spheres; ++i) {
+    text << "AttributeBegin\nTranslate " << 10.0f * unit(random) - 5.0f << ' '
+         << 10.0f * unit(random) - 5.0f << ' ' << 10.0f * unit(random) - 5.0f
+         << "\nShape \"sphere\" \"float radius\" [" << 0.3f + 0.7f * unit(random)
+         << "]\nAttributeEnd\n";
+  }
+  render::ParseResult parsed = render::parsePbrtText(text.str(), "spheres.pbrt", ".");
+  if (!parsed.scene) return state.SkipWithError("cannot parse the spheres");
+  render::BuildOptions options;
+  if (embree) options.flatPrimitiveLimit = 0;
+  const auto scene = render::buildScene(*parsed.scene, options).scene;
+  if (!scene || scene->queriesWithoutBvh() == embree) return state.SkipWithError("not built");
+  std::vector<BenchRay> rays;
+  for (int i = 0; i < 4096; ++i) {
+    const glm::vec3 origin =
+        12.0f * cosineDirection(glm::vec3(0, 0, 1), unit(random), unit(random));
+    const glm::vec3 target(4.0f * unit(random) - 2.0f, 4.0f * unit(random) - 2.0f,
+                           4.0f * unit(random) - 2.0f);
+    rays.push_back({origin, glm::normalize(target - origin)});
+  }
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const BenchRay& ray = rays[next];
+    next = next + 1 == rays.size() ? 0 : next + 1;
+    render::SurfaceHit hit;
+    benchmark::DoNotOptimize(scene->intersect(ray.origin, ray.direction, INFINITY, hit));
+    benchmark::DoNotOptimize(hit);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ScatteredSpheres)
+    ->ArgsProduct({{8, 16, 32, 64}, {0, 1}})
+    ->ArgNames({"spheres", "embree"});
 
 }  // namespace
