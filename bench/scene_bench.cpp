@@ -16,10 +16,10 @@
 #include <glm/geometric.hpp>
 #include <memory>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include <sstream>
 #include "render/pbrt_parser.h"
 #include "render/scene_builder.h"
 
@@ -92,23 +92,35 @@ const SceneRays& sceneRays() {
 
 using RayList = const std::vector<BenchRay> SceneRays::*;
 
-void BM_SceneIntersect(benchmark::State& state, RayList which, bool embree) {
-  const SceneRays& rays = sceneRays();
-  if (!rays.scene || !rays.embreeScene) {
-    state.SkipWithError("cannot load scenes/default.pbrt");
-    return;
-  }
-  const render::Scene& scene = embree ? *rays.embreeScene : *rays.scene;
-  const std::vector<BenchRay>& list = rays.*which;
+// Scene::intersect for the rays, one per iteration, round and round.
+void intersectOneByOne(benchmark::State& state, const render::Scene& scene,
+                       const std::vector<BenchRay>& rays) {
   std::size_t next = 0;
   for (auto _ : state) {
-    const BenchRay& ray = list[next];
-    next = next + 1 == list.size() ? 0 : next + 1;
+    const BenchRay& ray = rays[next];
+    next = next + 1 == rays.size() ? 0 : next + 1;
     render::SurfaceHit hit;
     benchmark::DoNotOptimize(scene.intersect(ray.origin, ray.direction, INFINITY, hit));
     benchmark::DoNotOptimize(hit);
   }
   state.SetItemsProcessed(state.iterations());
+}
+
+// The default scene, queried flat or through Embree; null (the benchmark skipped) when it cannot
+// be loaded.
+const render::Scene* defaultScene(benchmark::State& state, bool embree) {
+  const SceneRays& rays = sceneRays();
+  if (!rays.scene || !rays.embreeScene) {
+    state.SkipWithError("cannot load scenes/default.pbrt");
+    return nullptr;
+  }
+  return embree ? rays.embreeScene.get() : rays.scene.get();
+}
+
+void BM_SceneIntersect(benchmark::State& state, RayList which, bool embree) {
+  if (const render::Scene* scene = defaultScene(state, embree)) {
+    intersectOneByOne(state, *scene, sceneRays().*which);
+  }
 }
 BENCHMARK_CAPTURE(BM_SceneIntersect, camera, &SceneRays::camera, false);
 BENCHMARK_CAPTURE(BM_SceneIntersect, camera / embree, &SceneRays::camera, true);
@@ -116,18 +128,14 @@ BENCHMARK_CAPTURE(BM_SceneIntersect, bounce, &SceneRays::bounce, false);
 BENCHMARK_CAPTURE(BM_SceneIntersect, bounce / embree, &SceneRays::bounce, true);
 
 void BM_SceneOccluded(benchmark::State& state, RayList which, bool embree) {
-  const SceneRays& rays = sceneRays();
-  if (!rays.scene || !rays.embreeScene) {
-    state.SkipWithError("cannot load scenes/default.pbrt");
-    return;
-  }
-  const render::Scene& scene = embree ? *rays.embreeScene : *rays.scene;
-  const std::vector<BenchRay>& list = rays.*which;
+  const render::Scene* scene = defaultScene(state, embree);
+  if (!scene) return;
+  const std::vector<BenchRay>& rays = sceneRays().*which;
   std::size_t next = 0;
   for (auto _ : state) {
-    const BenchRay& ray = list[next];
-    next = next + 1 == list.size() ? 0 : next + 1;
-    benchmark::DoNotOptimize(scene.occluded(ray.origin, ray.direction, INFINITY));
+    const BenchRay& ray = rays[next];
+    next = next + 1 == rays.size() ? 0 : next + 1;
+    benchmark::DoNotOptimize(scene->occluded(ray.origin, ray.direction, INFINITY));
   }
   state.SetItemsProcessed(state.iterations());
 }
@@ -161,15 +169,7 @@ void BM_ScatteredSpheres(benchmark::State& state) {
                            4.0f * unit(random) - 2.0f);
     rays.push_back({origin, glm::normalize(target - origin)});
   }
-  std::size_t next = 0;
-  for (auto _ : state) {
-    const BenchRay& ray = rays[next];
-    next = next + 1 == rays.size() ? 0 : next + 1;
-    render::SurfaceHit hit;
-    benchmark::DoNotOptimize(scene->intersect(ray.origin, ray.direction, INFINITY, hit));
-    benchmark::DoNotOptimize(hit);
-  }
-  state.SetItemsProcessed(state.iterations());
+  intersectOneByOne(state, *scene, rays);
 }
 BENCHMARK(BM_ScatteredSpheres)
     ->ArgsProduct({{8, 16, 32, 64}, {0, 1}})
