@@ -1,7 +1,8 @@
 #pragma once
 // A built, immutable scene: Embree BVHs (triangle meshes as Embree triangles, quadrics as user
 // geometry with exact intersection, object instances as Embree instances), materials,
-// textures and lights. Safe to share between threads once built.
+// textures and lights. Safe to share between threads once built. A scene of few primitives
+// answers ray queries without the BVH (FlatPrimitives), with the same results.
 
 #include <embree3/rtcore.h>
 
@@ -76,7 +77,7 @@ class Scene {
   bool occluded(glm::vec3 origin, glm::vec3 direction, float tMax) const;
   // The same for many rays: blocked[i] = 1 when ray i is blocked. Traced as Embree packets of 8
   // where the CPU supports them, which costs far less per ray than one at a time (shadow rays
-  // from one shading point toward one light travel together).
+  // from one shading point toward one light travel together); one at a time without the BVH.
   void occluded(const ShadowRay* rays, std::size_t count, std::uint8_t* blocked) const;
 
   const std::vector<Light>& lights() const { return lights_; }
