@@ -218,6 +218,10 @@ void PlacedQuadric::parentBounds(glm::dvec3& lower, glm::dvec3& upper) const {
     lower = glm::min(lower, q);
     upper = glm::max(upper, q);
   }
+  padForFloatRounding(lower, upper);
+}
+
+void padForFloatRounding(glm::dvec3& lower, glm::dvec3& upper) {
   const glm::dvec3 pad = 1e-6 * (glm::abs(lower) + glm::abs(upper)) + 1e-9;
   lower -= pad;
   upper += pad;

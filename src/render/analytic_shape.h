@@ -52,8 +52,13 @@ struct PlacedQuadric {
   // so the direction is not renormalised.
   std::optional<QuadricHit> intersect(glm::dvec3 origin, glm::dvec3 direction, double tMin,
                                       double tMax, bool withUv = true) const;
-  // Parent-space bounding box, padded so that float rounding does not clip a hit.
+  // Parent-space bounding box, padded (padForFloatRounding).
   void parentBounds(glm::dvec3& lower, glm::dvec3& upper) const;
 };
+
+// Widens a bounding box by a relative epsilon (and a tiny absolute one), so that boxes tested in
+// single precision do not clip a hit that rounding moves outside, and a flat box has some
+// thickness.
+void padForFloatRounding(glm::dvec3& lower, glm::dvec3& upper);
 
 }  // namespace lenslab::render

@@ -169,10 +169,15 @@ bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size
     count += record.kind == GeometryRecord::Kind::Mesh ? record.indices.size() / 3 : 1;
   }
   if (count == 0 || count > limit) return false;
-  std::vector<glm::vec3> lowers, uppers;
-  const auto addBox = [&](glm::dvec3 lower, glm::dvec3 upper) {
-    lowers.push_back(glm::vec3(lower));
-    uppers.push_back(glm::vec3(upper));
+  // Padded to whole groups of sixteen with NaN boxes, which boxesEntered masks off.
+  padded_ = (count + 15) / 16 * 16;
+  bounds_.assign(6 * padded_, std::nanf(""));
+  const auto addBox = [this](glm::dvec3 lower, glm::dvec3 upper) {
+    const std::size_t i = primitives_.size() - 1;
+    for (int axis = 0; axis < 3; ++axis) {
+      bounds_[axis * padded_ + i] = static_cast<float>(lower[axis]);
+      bounds_[(3 + axis) * padded_ + i] = static_cast<float>(upper[axis]);
+    }
   };
   for (std::size_t r = 0; r < records.size(); ++r) {
     const GeometryRecord& record = records[r];
@@ -197,20 +202,10 @@ bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size
       primitive.edge1 = p1 - p0;
       primitive.edge2 = p2 - p0;
       primitives_.push_back(primitive);
-      // Padded as quadric boxes are, so that a flat triangle's box has some thickness.
       glm::dvec3 lower = glm::min(glm::dvec3(p0), glm::min(glm::dvec3(p1), glm::dvec3(p2)));
       glm::dvec3 upper = glm::max(glm::dvec3(p0), glm::max(glm::dvec3(p1), glm::dvec3(p2)));
-      const glm::dvec3 pad = 1e-6 * (glm::abs(lower) + glm::abs(upper)) + 1e-9;
-      addBox(lower - pad, upper + pad);
-    }
-  }
-  // Padded to whole groups of sixteen with NaN boxes, which boxesEntered masks off.
-  padded_ = (primitives_.size() + 15) / 16 * 16;
-  bounds_.assign(6 * padded_, std::nanf(""));
-  for (std::size_t i = 0; i < primitives_.size(); ++i) {
-    for (int axis = 0; axis < 3; ++axis) {
-      bounds_[axis * padded_ + i] = lowers[i][axis];
-      bounds_[(3 + axis) * padded_ + i] = uppers[i][axis];
+      padForFloatRounding(lower, upper);  // as quadric boxes are
+      addBox(lower, upper);
     }
   }
   return true;
@@ -226,6 +221,32 @@ std::uint64_t FlatPrimitives::boxesEntered(glm::vec3 origin, glm::vec3 direction
   return count == 64 ? entered : entered & ((std::uint64_t{1} << count) - 1);
 }
 
+bool FlatPrimitives::hits(const std::vector<GeometryRecord>& records, const Primitive& primitive,
+                          glm::vec3 origin, glm::vec3 direction, float tMax, FlatHit* hit) const {
+  if (primitive.isTriangle) {
+    float t, u, v;
+    if (!intersectTriangle(primitive.vertex0, primitive.edge1, primitive.edge2, origin, direction,
+                           tMax, t, u, v)) {
+      return false;
+    }
+    if (hit) *hit = {primitive.record, primitive.triangle, t, u, v, glm::vec3(0.0f)};
+    return true;
+  }
+  const GeometryRecord& record = records[primitive.record];
+  const auto quadricHit = record.quadric.intersect(glm::dvec3(origin), glm::dvec3(direction), 0.0,
+                                                   tMax, hit && record.quadricNeedsUv);
+  if (!quadricHit) return false;
+  if (hit) {
+    *hit = {primitive.record,
+            0,
+            static_cast<float>(quadricHit->t),
+            static_cast<float>(quadricHit->uv.x),
+            static_cast<float>(quadricHit->uv.y),
+            glm::vec3(quadricHit->normal)};
+  }
+  return true;
+}
+
 bool FlatPrimitives::intersect(const std::vector<GeometryRecord>& records, glm::vec3 origin,
                                glm::vec3 direction, float tMax, FlatHit& hit) const {
   float entry[kMaxPrimitives];
@@ -236,30 +257,10 @@ bool FlatPrimitives::intersect(const std::vector<GeometryRecord>& records, glm::
     entered &= entered - 1;
     // A box entered beyond the nearest hit so far holds no nearer hit.
     if (entry[i] > tMax * kExitSlack) continue;
-    const Primitive& primitive = primitives_[static_cast<std::size_t>(i)];
-    if (primitive.isTriangle) {
-      float t, u, v;
-      if (!intersectTriangle(primitive.vertex0, primitive.edge1, primitive.edge2, origin, direction,
-                             tMax, t, u, v)) {
-        continue;
-      }
-      tMax = t;
-      hit = {primitive.record, primitive.triangle, t, u, v, glm::vec3(0.0f)};
+    if (hits(records, primitives_[static_cast<std::size_t>(i)], origin, direction, tMax, &hit)) {
+      tMax = hit.t;
       found = true;
-      continue;
     }
-    const GeometryRecord& record = records[primitive.record];
-    const auto quadricHit = record.quadric.intersect(glm::dvec3(origin), glm::dvec3(direction), 0.0,
-                                                     tMax, record.quadricNeedsUv);
-    if (!quadricHit) continue;
-    tMax = static_cast<float>(quadricHit->t);
-    hit = {primitive.record,
-           0,
-           tMax,
-           static_cast<float>(quadricHit->uv.x),
-           static_cast<float>(quadricHit->uv.y),
-           glm::vec3(quadricHit->normal)};
-    found = true;
   }
   return found;
 }
@@ -271,17 +272,7 @@ bool FlatPrimitives::occluded(const std::vector<GeometryRecord>& records, glm::v
   while (entered != 0) {
     const int i = __builtin_ctzll(entered);
     entered &= entered - 1;
-    const Primitive& primitive = primitives_[static_cast<std::size_t>(i)];
-    if (primitive.isTriangle) {
-      float t, u, v;
-      if (intersectTriangle(primitive.vertex0, primitive.edge1, primitive.edge2, origin, direction,
-                            tMax, t, u, v)) {
-        return true;
-      }
-      continue;
-    }
-    const GeometryRecord& record = records[primitive.record];
-    if (record.quadric.intersect(glm::dvec3(origin), glm::dvec3(direction), 0.0, tMax, false)) {
+    if (hits(records, primitives_[static_cast<std::size_t>(i)], origin, direction, tMax, nullptr)) {
       return true;
     }
   }

@@ -64,6 +64,9 @@ class FlatPrimitives {
   // The bits of the primitives whose boxes the ray enters within (0, tMax), and each box's entry
   // distance in `entry`.
   std::uint64_t boxesEntered(glm::vec3 origin, glm::vec3 direction, float tMax, float* entry) const;
+  // The exact test of one primitive for t in (0, tMax); with `hit`, its shading data too.
+  bool hits(const std::vector<GeometryRecord>& records, const Primitive& primitive,
+            glm::vec3 origin, glm::vec3 direction, float tMax, FlatHit* hit) const;
 
   std::vector<Primitive> primitives_;
   // Bounding boxes: six arrays of padded_ floats (lower x, y, z, upper x, y, z), padded_ the
