@@ -4,7 +4,8 @@
 // boxes the ray enters are tested exactly. For a few dozen primitives this is cheaper than
 // Embree's traversal, whose fixed cost per ray and per user-geometry callback dominates when there
 // is so little to cull: on the default scene's 22 primitives (4 triangles, 4 spheres, 7 cylinders,
-// 7 disks) a 1-spp preview pass (BM_PreviewPass) takes about 0.7-0.8 of its time through Embree.
+// 7 disks) a ray costs 0.53-0.90 of Embree's time, and a 1-spp preview pass (BM_PreviewPass)
+// 0.70-1.0 of it, depending on the machine's load (bench/README.md).
 // Larger scenes, and scenes with Embree instances, keep Embree.
 //
 // Quadrics are tested by the same double-precision code as Embree's callbacks
