@@ -50,10 +50,11 @@ class FlatPrimitives {
   bool occluded(const std::vector<GeometryRecord>& records, glm::vec3 origin, glm::vec3 direction,
                 float tMax) const;
 
-  // For tests: which box test every FlatPrimitives uses. Fastest is AVX-512 where the CPU has
-  // it, else AVX2, else the portable loop. False (and no change) when the CPU lacks AVX2.
-  enum class BoxTestKind { Fastest, Avx2, Portable };
-  static bool useBoxTest(BoxTestKind kind);
+  // For tests: which vector kernels (the box test and the triangle test) every FlatPrimitives
+  // uses. Fastest is AVX-512 where the CPU has it, else AVX2, else the portable scalar loops.
+  // False (and no change) when the CPU lacks AVX2.
+  enum class KernelKind { Fastest, Avx2, Portable };
+  static bool useKernels(KernelKind kind);
 
  private:
   struct Primitive {
@@ -64,16 +65,25 @@ class FlatPrimitives {
   };
   // The bits of the primitives whose boxes the ray enters within (0, tMax), and each box's entry
   // distance in `entry`.
-  std::uint64_t boxesEntered(glm::vec3 origin, glm::vec3 direction, float tMax, float* entry) const;
+  std::uint64_t boxesEntered(KernelKind kernels, glm::vec3 origin, glm::vec3 direction, float tMax,
+                             float* entry) const;
+  // Of the triangles whose bits are in `candidates`, the bits of those hit within (0, tMax), and
+  // their t, u and v at their indices in the arrays.
+  std::uint64_t trianglesHit(KernelKind kernels, std::uint64_t candidates, glm::vec3 origin,
+                             glm::vec3 direction, float tMax, float* t, float* u, float* v) const;
   // The exact test of one primitive for t in (0, tMax); with `hit`, its shading data too.
   bool hits(const std::vector<GeometryRecord>& records, const Primitive& primitive,
             glm::vec3 origin, glm::vec3 direction, float tMax, FlatHit* hit) const;
 
-  std::vector<Primitive> primitives_;
+  std::vector<Primitive> primitives_;  // the triangles first, then the quadrics
   // Bounding boxes: six arrays of padded_ floats (lower x, y, z, upper x, y, z), padded_ the
   // primitive count rounded up to a multiple of 16.
   std::vector<float> bounds_;
   std::size_t padded_ = 0;
+  // The triangles again, for the vector test: nine arrays of padded_ floats (vertex 0, edge 1,
+  // edge 2; x, y, z each), zero beyond the last triangle. Their bits: triangleBits_.
+  std::vector<float> triangles_;
+  std::uint64_t triangleBits_ = 0;
 };
 
 }  // namespace lenslab::render

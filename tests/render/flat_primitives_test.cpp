@@ -180,15 +180,15 @@ TEST(FlatPrimitives, AnswersAsEmbreeDoesForEveryKindOfPrimitive) {
   EXPECT_GT(seen.surfaceRays, 1500);
 }
 
-// The other box tests than the CPU's fastest: AVX2 (where AVX-512 is the fastest) and the
-// portable loop of CPUs without AVX2.
-class FlatPrimitivesBoxTest : public testing::TestWithParam<FlatPrimitives::BoxTestKind> {
+// The other kernels (box and triangle tests) than the CPU's fastest: AVX2 (where AVX-512 is the
+// fastest) and the portable loops of CPUs without AVX2.
+class FlatPrimitivesKernels : public testing::TestWithParam<FlatPrimitives::KernelKind> {
  protected:
-  void TearDown() override { FlatPrimitives::useBoxTest(FlatPrimitives::BoxTestKind::Fastest); }
+  void TearDown() override { FlatPrimitives::useKernels(FlatPrimitives::KernelKind::Fastest); }
 };
 
-TEST_P(FlatPrimitivesBoxTest, AnswersAsEmbreeDoes) {
-  if (!FlatPrimitives::useBoxTest(GetParam())) GTEST_SKIP() << "this CPU lacks AVX2";
+TEST_P(FlatPrimitivesKernels, AnswersAsEmbreeDoes) {
+  if (!FlatPrimitives::useKernels(GetParam())) GTEST_SKIP() << "this CPU lacks AVX2";
   std::vector<glm::vec3> centres;
   const auto flat = build(mixedScene(&centres));
   const auto embree = build(mixedScene(), {.flatPrimitiveLimit = 0});
@@ -197,14 +197,66 @@ TEST_P(FlatPrimitivesBoxTest, AnswersAsEmbreeDoes) {
   EXPECT_GT(seen.hits, 500);
 }
 
-std::string boxTestName(const testing::TestParamInfo<FlatPrimitives::BoxTestKind>& kind) {
-  return kind.param == FlatPrimitives::BoxTestKind::Avx2 ? "Avx2" : "Portable";
+std::string kernelsName(const testing::TestParamInfo<FlatPrimitives::KernelKind>& kind) {
+  return kind.param == FlatPrimitives::KernelKind::Avx2 ? "Avx2" : "Portable";
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, FlatPrimitivesBoxTest,
-                         testing::Values(FlatPrimitives::BoxTestKind::Avx2,
-                                         FlatPrimitives::BoxTestKind::Portable),
-                         boxTestName);
+INSTANTIATE_TEST_SUITE_P(Kinds, FlatPrimitivesKernels,
+                         testing::Values(FlatPrimitives::KernelKind::Avx2,
+                                         FlatPrimitives::KernelKind::Portable),
+                         kernelsName);
+
+// The vector triangle test repeats the scalar one's operations lane by lane: its answers must be
+// the same to the bit. A folded strip of 40 triangles fills three groups of sixteen lanes.
+TEST(FlatPrimitives, VectorKernelsAnswerExactlyAsTheScalarLoopsDo) {
+  std::ostringstream strip;
+  strip << "Camera \"perspective\"\nWorldBegin\nShape \"trianglemesh\" \"integer indices\" [";
+  for (int t = 0; t < 40; ++t) strip << t << ' ' << t + 1 << ' ' << t + 2 << ' ';
+  strip << "] \"point P\" [";
+  for (int v = 0; v < 42; ++v)
+    strip << -2.0 + 0.1 * v << ' ' << (v % 2) * 0.8 << ' ' << (v % 3) * 0.3 << ' ';
+  strip << "] \"float uv\" [";
+  for (int v = 0; v < 42; ++v) strip << v / 41.0 << ' ' << v % 2 << ' ';
+  strip << "]\nTranslate 0 0.4 1\nShape \"sphere\" \"float radius\" [0.3]\n";
+  const auto scene = build(strip.str());
+  ASSERT_TRUE(scene);
+  ASSERT_TRUE(scene->queriesWithoutBvh());
+  struct Answer {
+    bool found = false, blocked = false;
+    SurfaceHit hit;
+  };
+  const auto ask = [&](FlatPrimitives::KernelKind kind, glm::vec3 origin, glm::vec3 direction) {
+    EXPECT_TRUE(FlatPrimitives::useKernels(kind));
+    Answer answer;
+    answer.found = scene->intersect(origin, direction, kInfinity, answer.hit);
+    answer.blocked = scene->occluded(origin, direction, 2.5f);
+    return answer;
+  };
+  std::mt19937 random(17);
+  std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f);
+  for (const auto kind : {FlatPrimitives::KernelKind::Fastest, FlatPrimitives::KernelKind::Avx2}) {
+    if (kind == FlatPrimitives::KernelKind::Avx2 && !FlatPrimitives::useKernels(kind)) continue;
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+      SCOPED_TRACE(testing::Message() << "ray " << i);
+      const glm::vec3 origin(coordinate(random), coordinate(random), coordinate(random));
+      const glm::vec3 target(0.5f * coordinate(random), 0.4f + 0.2f * coordinate(random), 0.3f);
+      const glm::vec3 direction = glm::normalize(target - origin);
+      const Answer vector = ask(kind, origin, direction);
+      const Answer scalar = ask(FlatPrimitives::KernelKind::Portable, origin, direction);
+      ASSERT_EQ(vector.found, scalar.found);
+      ASSERT_EQ(vector.blocked, scalar.blocked);
+      if (!vector.found) continue;
+      ++hits;
+      ASSERT_EQ(vector.hit.t, scalar.hit.t);
+      ASSERT_EQ(vector.hit.uv.x, scalar.hit.uv.x);
+      ASSERT_EQ(vector.hit.uv.y, scalar.hit.uv.y);
+      ASSERT_EQ(vector.hit.geometricNormal, scalar.hit.geometricNormal);
+    }
+    EXPECT_GT(hits, 1500);
+  }
+  FlatPrimitives::useKernels(FlatPrimitives::KernelKind::Fastest);
+}
 
 TEST(FlatPrimitives, AnswersAsEmbreeDoesForRaysAlongAndAcrossFlatBoxes) {
   // A flat axis-aligned quad and disk: their boxes have no thickness but their padding. Rays
