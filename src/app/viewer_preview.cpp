@@ -18,7 +18,14 @@ void Viewer::updatePreview() {
   preview_.setDisplayRegion(state_.preview.regionWidthPx, state_.preview.regionHeightPx);
   if (const auto change =
           preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
-    stats_.editSubmitted(*change, ViewerStats::Clock::now());
+    // The first render shows what the session opened with; every later one follows an edit (or
+    // a file opened, a resize).
+    if (openingSubmitted_) {
+      stats_.editSubmitted(*change, ViewerStats::Clock::now());
+    } else {
+      stats_.openingSubmitted(*change, ViewerStats::Clock::now());
+      openingSubmitted_ = true;
+    }
   }
 }
 

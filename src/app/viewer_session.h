@@ -112,6 +112,7 @@ class Viewer final : public ScriptHost {
   ViewerState& state_;
   PreviewController preview_;
   ViewerStats stats_;
+  bool openingSubmitted_ = false;  // the session's first render job has been started
   int exitCode_ = 0;
   std::string shownTitle_;
   FrameDamage frameDamage_;

@@ -45,7 +45,13 @@ void ViewerStats::frameRepainted(double fraction, bool partial) {
 void ViewerStats::editSubmitted(std::uint64_t change, Clock::time_point now) {
   // A burst of edits (a drag) counts from its last one: that is the picture the user waits for.
   pendingEdit_ = {change, now};
+  pendingIsOpening_ = false;
   pictureMeasured_ = false;
+}
+
+void ViewerStats::openingSubmitted(std::uint64_t change, Clock::time_point now) {
+  editSubmitted(change, now);
+  pendingIsOpening_ = true;
 }
 
 void ViewerStats::firstPictureArrived(std::uint64_t change) {
@@ -64,13 +70,18 @@ void ViewerStats::framePresented(Clock::time_point now) {
     return pendingEdit_ && pendingEdit_->first == change;
   };
   if (pictureArrived_ && current(*pictureArrived_)) {
-    firstPictureMs_.push_back(milliseconds(now - pendingEdit_->second));
+    if (!pendingIsOpening_) firstPictureMs_.push_back(milliseconds(now - pendingEdit_->second));
     pictureMeasured_ = true;
   }
   pictureArrived_.reset();
   if (passArrived_ && current(passArrived_->first)) {
-    firstPassMs_.push_back(milliseconds(now - pendingEdit_->second));
-    firstPassRenderMs_.push_back(passArrived_->second);
+    const double waitedMs = milliseconds(now - pendingEdit_->second);
+    if (pendingIsOpening_) {
+      openingFirstPassMs_ = waitedMs;
+    } else {
+      firstPassMs_.push_back(waitedMs);
+      firstPassRenderMs_.push_back(passArrived_->second);
+    }
     pendingEdit_.reset();
   }
   passArrived_.reset();
@@ -101,6 +112,7 @@ ViewerStats::Summary ViewerStats::summary() const {
   summary.firstPictureMsMax =
       firstPictureMs_.empty() ? 0
                               : *std::max_element(firstPictureMs_.begin(), firstPictureMs_.end());
+  summary.openingFirstPassMs = openingFirstPassMs_;
   return summary;
 }
 
@@ -131,6 +143,10 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       {"edit_to_first_picture_ms_median", s.firstPictureMsMedian},
       {"edit_to_first_picture_ms_max", s.firstPictureMsMax},
       {"edit_to_first_picture_ms", firstPictureMs_},
+      // The session's first render (the lens and scene it opened with), not an edit: null if it
+      // never showed.
+      {"open_to_first_pass_ms",
+       s.openingFirstPassMs ? nlohmann::json(*s.openingFirstPassMs) : nlohmann::json(nullptr)},
   };
   return writeFileAtomically(path, json.dump(2) + '\n');
 }

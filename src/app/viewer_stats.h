@@ -27,6 +27,10 @@ class ViewerStats {
   void frameRepainted(double fraction, bool partial);
   // An edit changed what the preview shows; `change` identifies it.
   void editSubmitted(std::uint64_t change, Clock::time_point now);
+  // The session's first render, of the lens and scene it opened with: measured on its own
+  // (openingFirstPassMs), not as an edit. It races the window's first full redraw and its
+  // texture uploads, which no edit does.
+  void openingSubmitted(std::uint64_t change, Clock::time_point now);
   // The UI took up the change's coarse first look (reduced resolution): this frame shows it.
   void firstPictureArrived(std::uint64_t change);
   // The UI took up the change's first complete pass at the preview resolution: this frame shows
@@ -47,6 +51,7 @@ class ViewerStats {
     double firstPassMsMedian = 0, firstPassMsMax = 0, firstPassRenderMsMedian = 0;
     std::size_t pictures = 0;
     double firstPictureMsMedian = 0, firstPictureMsMax = 0;
+    std::optional<double> openingFirstPassMs;  // from openingSubmitted to its first pass on screen
   };
   Summary summary() const;
 
@@ -61,6 +66,8 @@ class ViewerStats {
   std::vector<double> repaintedFractions_;
   bool partialRepaint_ = false;
   std::optional<std::pair<std::uint64_t, Clock::time_point>> pendingEdit_;
+  bool pendingIsOpening_ = false;  // pendingEdit_ is the opening's render, not an edit
+  std::optional<double> openingFirstPassMs_;
   bool pictureMeasured_ = false;
   std::optional<std::uint64_t> pictureArrived_;                  // change, awaiting its frame
   std::optional<std::pair<std::uint64_t, double>> passArrived_;  // change, render ms

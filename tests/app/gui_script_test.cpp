@@ -394,6 +394,31 @@ TEST_F(ScriptedViewer, PartialRepaintsEqualFullRepaints) {
   EXPECT_LT(stats["repainted_fraction_median"].get<double>(), 0.6) << stats.dump();
 }
 
+// --stats-json reports the feel figures of issue 5: two edits make two measured edits, each
+// with its renderer's part no longer than the whole wait, and the opening render apart.
+TEST_F(ScriptedViewer, StatsJsonMeasuresTheEditsAndTheOpeningApart) {
+  // (A few frames after each pass: an edit in the frame that shows its predecessor's pass
+  // would supersede that pass before it counted; ViewerStats' tests.)
+  const auto result = runScript(
+      "wait-spp 1\nwait-frames 3\nset film-distance 37\nwait-spp 1\nwait-frames 3\n"
+      "set film-distance 37.2\nwait-spp 1\nwait-frames 3\nquit\n",
+      "", "--stats-json stats.json");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const nlohmann::json stats = json("stats.json");
+  ASSERT_EQ(stats["edits_measured"].get<int>(), 2) << stats.dump();
+  const auto waits = stats["edit_to_first_pass_ms"].get<std::vector<double>>();
+  const auto renders = stats["first_pass_render_ms"].get<std::vector<double>>();
+  ASSERT_EQ(waits.size(), 2u);
+  ASSERT_EQ(renders.size(), 2u);
+  for (std::size_t i = 0; i < waits.size(); ++i) {
+    EXPECT_GT(renders[i], 0.0);
+    EXPECT_LE(renders[i], waits[i]);
+  }
+  ASSERT_TRUE(stats["open_to_first_pass_ms"].is_number()) << stats.dump();
+  EXPECT_GT(stats["open_to_first_pass_ms"].get<double>(), 0.0);
+  EXPECT_GT(stats["fps_median"].get<double>(), 0.0);
+}
+
 TEST_F(ScriptedViewer, TheRepaintChecksCatchAMissedRegion) {
   // LENSLAB_CHECK_REPAINT=shrink repaints only the left half of each damaged region: the
   // comparison with a full repaint says so, and the window on screen lacks the other halves.

@@ -79,5 +79,31 @@ TEST(ViewerStats, TheCoarseFirstLookIsMeasuredSeparately) {
   EXPECT_NEAR(summary.firstPassMsMedian, 97.0, 1e-9);
 }
 
+// The session's first render races the window's first full redraw: it is reported on its own, and
+// the edits' figures are those of the edits alone.
+TEST(ViewerStats, TheOpeningRenderIsNotAnEdit) {
+  ViewerStats stats;
+  ViewerStats::Clock::time_point t{};
+  EXPECT_FALSE(stats.summary().openingFirstPassMs.has_value());
+  stats.openingSubmitted(1, t);
+  stats.firstPictureArrived(1);
+  stats.framePresented(t += 30ms);
+  stats.firstPassArrived(1, 120.0);
+  stats.framePresented(t += 110ms);
+  stats.editSubmitted(2, t += 1s);
+  stats.firstPictureArrived(2);
+  stats.framePresented(t += 20ms);
+  stats.firstPassArrived(2, 60.0);
+  stats.framePresented(t += 50ms);
+  const auto summary = stats.summary();
+  ASSERT_TRUE(summary.openingFirstPassMs.has_value());
+  EXPECT_NEAR(*summary.openingFirstPassMs, 140.0, 1e-9);
+  EXPECT_EQ(summary.edits, 1u);
+  EXPECT_NEAR(summary.firstPassMsMax, 70.0, 1e-9);
+  EXPECT_NEAR(summary.firstPassRenderMsMedian, 60.0, 1e-9);
+  EXPECT_EQ(summary.pictures, 1u);
+  EXPECT_NEAR(summary.firstPictureMsMax, 20.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace lenslab::app
