@@ -252,7 +252,8 @@ bool cpuHasAvx2() {
   return has;
 }
 
-// The kernels in use: AVX-512 or AVX2 (null triangle test: the portable, scalar one).
+// The kernels to use: the kind useKernels chose, with Fastest resolved to the CPU's best. After
+// this, Fastest means the AVX-512 kernels (boxTest and triangleTest below).
 FlatPrimitives::KernelKind kernelsInUse() {
   FlatPrimitives::KernelKind kind = kernelKind.load(std::memory_order_relaxed);
   if (kind == FlatPrimitives::KernelKind::Fastest) {
