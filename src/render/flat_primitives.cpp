@@ -347,18 +347,15 @@ bool FlatPrimitives::build(const std::vector<GeometryRecord>& records, std::size
       Primitive primitive;
       primitive.record = static_cast<unsigned>(r);
       primitive.triangle = static_cast<unsigned>(t / 3);
-      primitive.isTriangle = true;
       const glm::vec3 p0 = record.positions[record.indices[t]];
       const glm::vec3 p1 = record.positions[record.indices[t + 1]];
       const glm::vec3 p2 = record.positions[record.indices[t + 2]];
-      primitive.vertex0 = p0;
-      primitive.edge1 = p1 - p0;
-      primitive.edge2 = p2 - p0;
+      const glm::vec3 edge1 = p1 - p0, edge2 = p2 - p0;
       const std::size_t lane = primitives_.size();
       for (int axis = 0; axis < 3; ++axis) {
-        triangles_[axis * padded_ + lane] = primitive.vertex0[axis];
-        triangles_[(3 + axis) * padded_ + lane] = primitive.edge1[axis];
-        triangles_[(6 + axis) * padded_ + lane] = primitive.edge2[axis];
+        triangles_[axis * padded_ + lane] = p0[axis];
+        triangles_[(3 + axis) * padded_ + lane] = edge1[axis];
+        triangles_[(6 + axis) * padded_ + lane] = edge2[axis];
       }
       primitives_.push_back(primitive);
       glm::dvec3 lower = glm::min(glm::dvec3(p0), glm::min(glm::dvec3(p1), glm::dvec3(p2)));
@@ -390,23 +387,15 @@ std::uint64_t FlatPrimitives::boxesEntered(KernelKind kernels, glm::vec3 origin,
   return count == 64 ? entered : entered & ((std::uint64_t{1} << count) - 1);
 }
 
-bool FlatPrimitives::hits(const std::vector<GeometryRecord>& records, const Primitive& primitive,
-                          glm::vec3 origin, glm::vec3 direction, float tMax, FlatHit* hit) const {
-  if (primitive.isTriangle) {
-    float t, u, v;
-    if (!intersectTriangle(primitive.vertex0, primitive.edge1, primitive.edge2, origin, direction,
-                           tMax, t, u, v)) {
-      return false;
-    }
-    if (hit) *hit = {primitive.record, primitive.triangle, t, u, v, glm::vec3(0.0f)};
-    return true;
-  }
-  const GeometryRecord& record = records[primitive.record];
+bool FlatPrimitives::quadricHits(const std::vector<GeometryRecord>& records,
+                                 const Primitive& quadric, glm::vec3 origin, glm::vec3 direction,
+                                 float tMax, FlatHit* hit) const {
+  const GeometryRecord& record = records[quadric.record];
   const auto quadricHit = record.quadric.intersect(glm::dvec3(origin), glm::dvec3(direction), 0.0,
                                                    tMax, hit && record.quadricNeedsUv);
   if (!quadricHit) return false;
   if (hit) {
-    *hit = {primitive.record,
+    *hit = {quadric.record,
             0,
             static_cast<float>(quadricHit->t),
             static_cast<float>(quadricHit->uv.x),
@@ -439,9 +428,12 @@ std::uint64_t FlatPrimitives::trianglesHit(KernelKind kernels, std::uint64_t can
   std::uint64_t hit = 0;
   for (std::uint64_t left = candidates; left != 0; left &= left - 1) {
     const int i = __builtin_ctzll(left);
-    const Primitive& triangle = primitives_[static_cast<std::size_t>(i)];
-    if (intersectTriangle(triangle.vertex0, triangle.edge1, triangle.edge2, origin, direction, tMax,
-                          t[i], u[i], v[i])) {
+    const auto at = [&](int component) {
+      return triangles_[static_cast<std::size_t>(component) * padded_ +
+                        static_cast<std::size_t>(i)];
+    };
+    if (intersectTriangle({at(0), at(1), at(2)}, {at(3), at(4), at(5)}, {at(6), at(7), at(8)},
+                          origin, direction, tMax, t[i], u[i], v[i])) {
       hit |= std::uint64_t{1} << i;
     }
   }
@@ -475,7 +467,8 @@ bool FlatPrimitives::intersect(const std::vector<GeometryRecord>& records, glm::
     entered &= entered - 1;
     // A box entered beyond the nearest hit so far holds no nearer hit.
     if (entry[i] > tMax * kExitSlack) continue;
-    if (hits(records, primitives_[static_cast<std::size_t>(i)], origin, direction, tMax, &hit)) {
+    if (quadricHits(records, primitives_[static_cast<std::size_t>(i)], origin, direction, tMax,
+                    &hit)) {
       tMax = hit.t;
       found = true;
     }
@@ -498,7 +491,8 @@ bool FlatPrimitives::occluded(const std::vector<GeometryRecord>& records, glm::v
   while (entered != 0) {
     const int i = __builtin_ctzll(entered);
     entered &= entered - 1;
-    if (hits(records, primitives_[static_cast<std::size_t>(i)], origin, direction, tMax, nullptr)) {
+    if (quadricHits(records, primitives_[static_cast<std::size_t>(i)], origin, direction, tMax,
+                    nullptr)) {
       return true;
     }
   }

@@ -62,9 +62,7 @@ class FlatPrimitives {
  private:
   struct Primitive {
     unsigned record = 0;
-    unsigned triangle = 0;
-    bool isTriangle = false;
-    glm::vec3 vertex0{0.0f}, edge1{0.0f}, edge2{0.0f};  // triangles
+    unsigned triangle = 0;  // a triangle's index in its mesh (the triangles' own data: triangles_)
   };
   // The bits of the primitives whose boxes the ray enters within (0, tMax), and each box's entry
   // distance in `entry`.
@@ -74,17 +72,17 @@ class FlatPrimitives {
   // their t, u and v at their indices in the arrays.
   std::uint64_t trianglesHit(KernelKind kernels, std::uint64_t candidates, glm::vec3 origin,
                              glm::vec3 direction, float tMax, float* t, float* u, float* v) const;
-  // The exact test of one primitive for t in (0, tMax); with `hit`, its shading data too.
-  bool hits(const std::vector<GeometryRecord>& records, const Primitive& primitive,
-            glm::vec3 origin, glm::vec3 direction, float tMax, FlatHit* hit) const;
+  // The exact test of one quadric for t in (0, tMax); with `hit`, its shading data too.
+  bool quadricHits(const std::vector<GeometryRecord>& records, const Primitive& quadric,
+                   glm::vec3 origin, glm::vec3 direction, float tMax, FlatHit* hit) const;
 
   std::vector<Primitive> primitives_;  // the triangles first, then the quadrics
   // Bounding boxes: six arrays of padded_ floats (lower x, y, z, upper x, y, z), padded_ the
   // primitive count rounded up to a multiple of 16.
   std::vector<float> bounds_;
   std::size_t padded_ = 0;
-  // The triangles again, for the vector test: nine arrays of padded_ floats (vertex 0, edge 1,
-  // edge 2; x, y, z each), zero beyond the last triangle. Their bits: triangleBits_.
+  // The triangles, for the vector and scalar tests: nine arrays of padded_ floats (vertex 0, edge
+  // 1, edge 2; x, y, z each), zero beyond the last triangle. Their bits: triangleBits_.
   std::vector<float> triangles_;
   std::uint64_t triangleBits_ = 0;
 };
