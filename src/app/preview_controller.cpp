@@ -149,8 +149,10 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   preview.texture.upload(snapshot->width, snapshot->height,
                          render::encodeSrgbRgba8(image, exposureStops));
   ++preview.uploads;
-  preview.imageWidth = snapshot->width;
-  preview.imageHeight = snapshot->height;
+  // A coarse look is shown in the full image's place and shape, so that the image's rectangle
+  // stays put when the first pass replaces it (and only the image is repainted).
+  preview.imageWidth = snapshot->fullWidth;
+  preview.imageHeight = snapshot->fullHeight;
   preview.coarse = snapshot->coarse;
   preview.samplesPerPixel = snapshot->samplesPerPixel;
   preview.seconds = snapshot->renderSeconds;

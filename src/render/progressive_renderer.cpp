@@ -198,8 +198,8 @@ RenderStatistics total(const std::vector<RenderStatistics>& parts) {
 std::shared_ptr<RenderSnapshot> makeSnapshot(int width, int height, const std::vector<double>& sums,
                                              int samples, std::uint64_t generation) {
   auto snapshot = std::make_shared<RenderSnapshot>();
-  snapshot->width = width;
-  snapshot->height = height;
+  snapshot->width = snapshot->fullWidth = width;
+  snapshot->height = snapshot->fullHeight = height;
   snapshot->generation = generation;
   snapshot->rgb.resize(sums.size());
   const double scale = 1.0 / samples;
@@ -242,6 +242,8 @@ bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
   auto snapshot = makeSnapshot(width, height, centres, 1, generation);
   snapshot->samplesPerPixel = 0;
   snapshot->coarse = true;
+  snapshot->fullWidth = wave.width;
+  snapshot->fullHeight = wave.height;
   snapshot->statistics = statistics;
   snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
   publish(std::move(snapshot));

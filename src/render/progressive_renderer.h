@@ -59,6 +59,10 @@ struct RenderSnapshot {
   // ones, each pixel a block centre's first sample, and samplesPerPixel is 0 (no complete
   // full-resolution wave yet).
   bool coarse = false;
+  // The full-resolution image's size, which a coarse look stands for (else width and height): a
+  // viewer shows the look in that image's place, with its shape.
+  int fullWidth = 0;
+  int fullHeight = 0;
   double renderSeconds = 0.0;
   RenderStatistics statistics;
 };

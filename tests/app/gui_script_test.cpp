@@ -98,6 +98,52 @@ TEST_F(ScriptedViewer, AnEditChangesThePreviewAndUndoRestoresIt) {
   EXPECT_NEAR(testing::meanBrightness(undone), bright, 0.03 * bright);
 }
 
+// The cross-section and the preview paint their canvases edge to edge, so ImGui draws no window
+// background under them (beginCanvasPanel): their frames, padding and the preview's black bars
+// must still look like every other panel's.
+TEST_F(ScriptedViewer, TheCanvasPanelsAreFramedLikeTheOthers) {
+  const auto result =
+      runScript("wait-spp 1\nwait-frames 2\ndump-ui ui.json\nscreenshot window.png\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto window = image("window.png");
+  ASSERT_TRUE(window.valid());
+  const nlohmann::json widgets = json("ui.json")["widgets"];
+  const auto edge = [&](const char* name, const char* field) {
+    return static_cast<int>(std::floor(widgets[name][field].get<double>()));
+  };
+  const int canvasX = edge("cross-section/canvas", "x"),
+            canvasY = edge("cross-section/canvas", "y");
+  const int canvasBottom = canvasY + edge("cross-section/canvas", "height");
+  const int y = canvasY + edge("cross-section/canvas", "height") / 2;
+  // The lens panel, an ordinary window, starts at x = 0: its border, then its padding.
+  const testing::Rgb border = window.at(0, y), background = window.at(3, y);
+  ASSERT_GT(border.maxDifference(background), 20);
+  // The cross-section's window lies between the two splitters.
+  const int crossLeft =
+      static_cast<int>(std::floor(widgets["layout/left-splitter"]["x"].get<double>() +
+                                  widgets["layout/left-splitter"]["width"].get<double>()));
+  const int crossRight = edge("layout/right-splitter", "x") - 1;
+  EXPECT_EQ(window.at(crossLeft, y).maxDifference(border), 0);
+  EXPECT_EQ(window.at(crossLeft + 3, y).maxDifference(background), 0);
+  EXPECT_EQ(window.at(crossRight, y).maxDifference(border), 0);
+  EXPECT_EQ(window.at(canvasX + 10, canvasBottom + 3).maxDifference(background), 0);
+  EXPECT_GT(window.at(canvasX + 10, canvasBottom - 3).maxDifference(background), 0);  // the canvas
+  // The preview's window: from the right splitter to the window's right edge.
+  const int previewLeft =
+      static_cast<int>(std::floor(widgets["layout/right-splitter"]["x"].get<double>() +
+                                  widgets["layout/right-splitter"]["width"].get<double>()));
+  EXPECT_EQ(window.at(previewLeft, y).maxDifference(border), 0);
+  EXPECT_EQ(window.at(previewLeft + 3, y).maxDifference(background), 0);
+  EXPECT_EQ(window.at(window.width - 2, y).maxDifference(border), 0);
+  // Black bars above and below the image (the film is wider than the panel's shape).
+  const int imageX = edge("preview/image", "x"), imageY = edge("preview/image", "y");
+  const int imageBottom = imageY + edge("preview/image", "height");
+  EXPECT_EQ(window.at(imageX + 50, imageY - 3).brightness(), 0);
+  EXPECT_EQ(window.at(imageX + 50, imageBottom + 3).brightness(), 0);
+  EXPECT_LT(window.fractionNear(imageX, imageY, imageX + 100, imageBottom, {0, 0, 0}, 2),
+            0.5);  // the picture, not a bar
+}
+
 TEST_F(ScriptedViewer, AnInvalidValueIsFlaggedAndTheLastValidLensKeepsRendering) {
   const auto result = runScript(
       "wait-spp 1\n"

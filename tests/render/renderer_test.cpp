@@ -247,6 +247,9 @@ TEST(Renderer, ACoarseFirstLookComesBeforeTheFullWavesAndEachPublicationIsAnnoun
   EXPECT_EQ(coarse.samplesPerPixel, 0);
   EXPECT_EQ(coarse.width, (job.camera->width() + 3) / 4);
   EXPECT_EQ(coarse.height, (job.camera->height() + 3) / 4);
+  // It stands for the full image, whose place a viewer shows it in.
+  EXPECT_EQ(coarse.fullWidth, job.camera->width());
+  EXPECT_EQ(coarse.fullHeight, job.camera->height());
   EXPECT_FALSE(coarse.complete);
   double coarseSum = 0;
   for (float value : coarse.rgb) coarseSum += value;
@@ -254,6 +257,8 @@ TEST(Renderer, ACoarseFirstLookComesBeforeTheFullWavesAndEachPublicationIsAnnoun
   for (std::size_t i = 1; i < seen.size(); ++i) {
     EXPECT_FALSE(seen[i]->coarse);
     EXPECT_EQ(seen[i]->width, job.camera->width());
+    EXPECT_EQ(seen[i]->fullWidth, seen[i]->width);
+    EXPECT_EQ(seen[i]->fullHeight, seen[i]->height);
     EXPECT_EQ(seen[i]->samplesPerPixel, 1 << (i - 1));
   }
   EXPECT_TRUE(seen.back()->complete);

@@ -151,7 +151,7 @@ void drawFanControls(ViewerState& state) {
 }  // namespace
 
 void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
-  if (!beginPanel("Cross-section", rect, ImGuiWindowFlags_NoScrollbar)) {
+  if (!beginCanvasPanel("Cross-section", rect, ImGuiWindowFlags_NoScrollbar)) {
     ImGui::End();
     return;
   }
@@ -160,9 +160,11 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
   if (size.x < 2 || size.y < 2) {
+    fillPanelBackgroundAround(origin, origin);
     ImGui::End();
     return;
   }
+  fillPanelBackgroundAround(origin, ImVec2(origin.x + size.x, origin.y + size.y));
   state.uiRects["cross-section/canvas"] = {origin.x, origin.y, size.x, size.y};
   state.crossSectionCanvasSize = {size.x, size.y};
   const PixelPoint centre{origin.x + size.x * 0.5f, origin.y + size.y * 0.5f};

@@ -1,6 +1,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -10,6 +11,19 @@
 namespace lenslab::app {
 
 namespace {
+
+// Black over [areaMin, areaMax) except [holeMin, holeMax) (which lies inside it).
+void fillBlackAround(ImDrawList* draw, ImVec2 areaMin, ImVec2 areaMax, ImVec2 holeMin,
+                     ImVec2 holeMax) {
+  const ImU32 black = IM_COL32(0, 0, 0, 255);
+  const auto fill = [&](float x0, float y0, float x1, float y1) {
+    if (x1 > x0 && y1 > y0) draw->AddRectFilled(ImVec2(x0, y0), ImVec2(x1, y1), black);
+  };
+  fill(areaMin.x, areaMin.y, areaMax.x, holeMin.y);
+  fill(areaMin.x, holeMax.y, areaMax.x, areaMax.y);
+  fill(areaMin.x, holeMin.y, holeMin.x, holeMax.y);
+  fill(holeMax.x, holeMin.y, areaMax.x, holeMax.y);
+}
 
 void drawControls(ViewerState& state) {
   PreviewState& preview = state.preview;
@@ -50,7 +64,7 @@ void drawControls(ViewerState& state) {
 }  // namespace
 
 void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
-  if (!beginPanel("Render preview", rect, ImGuiWindowFlags_NoScrollbar)) {
+  if (!beginCanvasPanel("Render preview", rect, ImGuiWindowFlags_NoScrollbar)) {
     ImGui::End();
     return;
   }
@@ -61,19 +75,31 @@ void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
   const ImVec2 framebufferScale = ImGui::GetIO().DisplayFramebufferScale;
   preview.regionWidthPx = std::max(0.0f, size.x) * framebufferScale.x;
   preview.regionHeightPx = std::max(0.0f, size.y) * framebufferScale.y;
-  if (size.x > 1 && size.y > 1) {
+  const ImVec2 end(origin.x + std::max(0.0f, size.x), origin.y + std::max(0.0f, size.y));
+  const bool hasCanvas = size.x > 1 && size.y > 1;
+  fillPanelBackgroundAround(origin, hasCanvas ? end : origin);
+  if (hasCanvas) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
-                        IM_COL32(0, 0, 0, 255));
     if (!preview.texture.empty() && preview.imageWidth > 0 && preview.imageHeight > 0) {
-      // Fit the image into the panel, keeping its aspect ratio, centred.
+      // Fit the image into the panel, keeping its aspect ratio, centred, on whole framebuffer
+      // pixels: the black bars around it then meet its edges exactly, and are all that is
+      // painted besides it (one layer per pixel; see beginCanvasPanel).
       const float aspect = static_cast<float>(preview.imageWidth) / preview.imageHeight;
       float width = size.x, height = size.x / aspect;
       if (height > size.y) {
         height = size.y;
         width = size.y * aspect;
       }
-      const ImVec2 topLeft(origin.x + (size.x - width) * 0.5f, origin.y + (size.y - height) * 0.5f);
+      const auto snap = [](float logical, float scale) {
+        return std::round(logical * scale) / scale;
+      };
+      const ImVec2 topLeft(snap(origin.x + (size.x - width) * 0.5f, framebufferScale.x),
+                           snap(origin.y + (size.y - height) * 0.5f, framebufferScale.y));
+      const ImVec2 bottomRight(std::min(end.x, snap(topLeft.x + width, framebufferScale.x)),
+                               std::min(end.y, snap(topLeft.y + height, framebufferScale.y)));
+      width = bottomRight.x - topLeft.x;
+      height = bottomRight.y - topLeft.y;
+      fillBlackAround(draw, origin, end, topLeft, bottomRight);
       ImGui::SetCursorScreenPos(topLeft);
       // The previous change's image until this change's first look replaces it: badged at once,
       // dimmed if that takes a while.
@@ -99,6 +125,7 @@ void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
         }
       }
     } else {
+      draw->AddRectFilled(origin, end, IM_COL32(0, 0, 0, 255));
       ImGui::InvisibleButton("preview", size);
     }
   }
