@@ -42,6 +42,7 @@ struct CrossSectionDrawing {
 };
 
 namespace palette {
+// The canvas's background, and the window's clear colour (window.cpp).
 inline constexpr Colour kBackground{18, 20, 26, 255};
 inline constexpr Colour kGlassFill{92, 140, 200, 90};
 inline constexpr Colour kGlassEdge{170, 200, 240, 255};

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "app/cross_section_drawing.h"
 #include "app/partial_repaint.h"
 #include "app/ui_scale.h"
 
@@ -231,8 +232,12 @@ void Window::beginFrame() {
 void Window::endFrame() { ImGui::Render(); }
 
 namespace {
-constexpr float kClearColor[4] = {0.10f, 0.10f, 0.12f, 1.0f};
-}
+// The cross-section's background: its canvas is left to the clear that every repaint does
+// anyway, one fill fewer per pixel for a software rasterizer (cross_section_panel.cpp). The same
+// colour shows in the gaps between the panels.
+constexpr float kClearColor[4] = {palette::kBackground.r / 255.0f, palette::kBackground.g / 255.0f,
+                                  palette::kBackground.b / 255.0f, 1.0f};
+}  // namespace
 
 void Window::drawFrame() {
   if (partial_) {

@@ -253,7 +253,8 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->PushClipRect(origin, end, true);
-  draw->AddRectFilled(origin, end, toImColour(palette::kBackground));
+  // No fill: the canvas's background, palette::kBackground, is the colour the window is cleared
+  // to before ImGui draws (window.cpp), and nothing else is drawn under the canvas.
   paint(draw, shown.drawing, view, centre, {origin.x, origin.y, end.x, end.y});
   if (!state.lensSystemIsCurrent) {
     const float margin = px(8.0f);

@@ -4,6 +4,25 @@
 
 namespace lenslab::app {
 
+bool beginCanvasPanel(const char* title, const Rect& rect, ImGuiWindowFlags extraFlags) {
+  if (!beginPanel(title, rect, extraFlags | ImGuiWindowFlags_NoBackground)) return false;
+  // ImGui draws no border around a window without a background either: the panel's border, as
+  // ImGui's own (the window's rectangle, stroked inside), unclipped by the window's content
+  // rect. First in the window's draw list, as ImGui's would be, so that a change in the panel's
+  // content does not reach it (FrameDamage compares lists from the front and the back).
+  const float borderSize = ImGui::GetStyle().WindowBorderSize;
+  if (borderSize > 0.0f) {
+    const ImVec2 position = ImGui::GetWindowPos();
+    const ImVec2 end(position.x + ImGui::GetWindowSize().x, position.y + ImGui::GetWindowSize().y);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(position, end, false);
+    draw->AddRect(position, end, ImGui::GetColorU32(ImGuiCol_Border),
+                  ImGui::GetStyle().WindowRounding, 0, borderSize);
+    draw->PopClipRect();
+  }
+  return true;
+}
+
 void fillPanelBackgroundAround(ImVec2 canvasMin, ImVec2 canvasMax) {
   const ImVec2 position = ImGui::GetWindowPos();
   const ImVec2 size = ImGui::GetWindowSize();
@@ -25,16 +44,6 @@ void fillPanelBackgroundAround(ImVec2 canvasMin, ImVec2 canvasMax) {
   fill(left, canvasBottom, right, bottom);
   fill(left, canvasTop, canvasLeft, canvasBottom);
   fill(canvasRight, canvasTop, right, canvasBottom);
-  // ImGui draws no border around a window without a background either: the panel's border, as
-  // ImGui's own (the window's rectangle, stroked inside), unclipped by the window's content rect.
-  const float borderSize = ImGui::GetStyle().WindowBorderSize;
-  if (borderSize > 0.0f) {
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->PushClipRect(position, ImVec2(right, bottom), false);
-    draw->AddRect(position, ImVec2(right, bottom), ImGui::GetColorU32(ImGuiCol_Border),
-                  ImGui::GetStyle().WindowRounding, 0, borderSize);
-    draw->PopClipRect();
-  }
 }
 
 }  // namespace lenslab::app

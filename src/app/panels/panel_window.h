@@ -21,15 +21,12 @@ inline bool beginPanel(const char* title, const Rect& rect, ImGuiWindowFlags ext
 // (llvmpipe) spends as long on each layer of a pixel as on the next: under the canvas that fill
 // is hidden, and cost the cross-section's and the preview's redraws a third and a half of their
 // rasterizer time. So the window gets no background from ImGui, and the panel calls
-// fillPanelBackgroundAround once it knows where its canvas is.
-inline bool beginCanvasPanel(const char* title, const Rect& rect, ImGuiWindowFlags extraFlags = 0) {
-  return beginPanel(title, rect, extraFlags | ImGuiWindowFlags_NoBackground);
-}
+// fillPanelBackgroundAround once it knows where its canvas is. The border is drawn here.
+bool beginCanvasPanel(const char* title, const Rect& rect, ImGuiWindowFlags extraFlags = 0);
 
 // Fills the current panel's window below its title bar, except the canvas rectangle
-// [canvasMin, canvasMax), with the window background colour, and draws the window's border. The
-// fill goes to the background draw list, which is drawn under every window, so it may be added
-// after the panel's widgets.
+// [canvasMin, canvasMax), with the window background colour. The fill goes to the background draw
+// list, which is drawn under every window, so it may be added after the panel's widgets.
 void fillPanelBackgroundAround(ImVec2 canvasMin, ImVec2 canvasMax);
 
 }  // namespace lenslab::app
