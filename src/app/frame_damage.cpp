@@ -46,20 +46,21 @@ std::uint64_t ownerHash(const ImDrawList& list) {
   return hash.value();
 }
 
-std::uint64_t contentHash(const ImDrawList& list) {
-  Hash hash;
-  hash.mixBytes(list.VtxBuffer.Data,
-                static_cast<std::size_t>(list.VtxBuffer.Size) * sizeof(ImDrawVert));
-  hash.mixBytes(list.IdxBuffer.Data,
-                static_cast<std::size_t>(list.IdxBuffer.Size) * sizeof(ImDrawIdx));
-  for (const ImDrawCmd& command : list.CmdBuffer) {
-    hash.mixBytes(&command.ClipRect, sizeof command.ClipRect);
-    hash.mix(reinterpret_cast<std::uintptr_t>(command.TextureId));
-    hash.mix(static_cast<std::uint64_t>(command.VtxOffset) << 32 | command.IdxOffset);
-    hash.mix(command.ElemCount);
-    hash.mix(reinterpret_cast<std::uintptr_t>(command.UserCallback));
+// Whether `list` draws exactly what `before` recorded: the same vertices, indices and commands,
+// at the same display offset and scale.
+bool sameCommands(const ImDrawList& list, const std::vector<FrameDamageCommand>& before) {
+  if (static_cast<std::size_t>(list.CmdBuffer.Size) != before.size()) return false;
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    const ImDrawCmd& command = list.CmdBuffer[static_cast<int>(i)];
+    const FrameDamageCommand& c = before[i];
+    if (std::memcmp(&command.ClipRect, &c.clipRect, sizeof c.clipRect) != 0 ||
+        command.TextureId != c.texture || command.UserCallback != c.callback ||
+        command.VtxOffset != c.vertexOffset || command.IdxOffset != c.indexOffset ||
+        command.ElemCount != c.indexCount) {
+      return false;
+    }
   }
-  return hash.value();
+  return true;
 }
 
 // The pixels a bounding box of triangles (in ImGui's coordinates) can change: one pixel wider
@@ -297,6 +298,18 @@ std::vector<PixelRect> FrameDamage::changedPart(const ListRecord& before, const 
   return {unionOf(rects)};
 }
 
+bool FrameDamage::sameAs(const ImDrawList& list, const ImDrawData& data, const ListRecord& before) {
+  const auto sameBytes = [](const auto& vector, const auto& copy) {
+    return static_cast<std::size_t>(vector.Size) == copy.size() &&
+           (copy.empty() ||
+            std::memcmp(vector.Data, copy.data(), copy.size() * sizeof copy[0]) == 0);
+  };
+  return data.DisplayPos.x == before.offset.x && data.DisplayPos.y == before.offset.y &&
+         data.FramebufferScale.x == before.scale.x && data.FramebufferScale.y == before.scale.y &&
+         sameCommands(list, before.commands) && sameBytes(list.IdxBuffer, before.indices) &&
+         sameBytes(list.VtxBuffer, before.vertices);
+}
+
 std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebufferWidth,
                                             int framebufferHeight,
                                             std::span<const ImTextureID> changedTextures) {
@@ -306,11 +319,26 @@ std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebuf
   const bool comparable = valid_ && framebufferWidth == width_ && framebufferHeight == height_ &&
                           now.size() == lists_.size();
   bool wholeFrame = !comparable;
+  const auto damageByChangedTextures = [&](const ListRecord& record) {
+    for (const CommandRecord& c : record.commands) {
+      if (std::find(changedTextures.begin(), changedTextures.end(), c.texture) !=
+          changedTextures.end()) {
+        damage.push_back(c.covered);
+      }
+    }
+  };
   for (std::size_t n = 0; n < now.size(); ++n) {
     const ImDrawList& list = *data.CmdLists[n];
     ListRecord& record = now[n];
     record.owner = ownerHash(list);
-    record.content = contentHash(list);
+    // Most lists are the same as in the previous frame (every list, in a frame that only waits
+    // for the renderer): compared with the copy kept of them, they are taken over without a new
+    // copy or a new walk over their triangles.
+    if (comparable && record.owner == lists_[n].owner && sameAs(list, data, lists_[n])) {
+      record = std::move(lists_[n]);
+      damageByChangedTextures(record);
+      continue;
+    }
     record.offset = data.DisplayPos;
     record.scale = data.FramebufferScale;
     record.vertices.assign(list.VtxBuffer.begin(), list.VtxBuffer.end());
@@ -331,18 +359,14 @@ std::vector<PixelRect> FrameDamage::compare(const ImDrawData& data, int framebuf
         c.covered = commandPixels(list, command, c.scissor, data.DisplayPos, data.FramebufferScale);
       }
       record.covered = unite(record.covered, c.covered);
-      if (std::find(changedTextures.begin(), changedTextures.end(), c.texture) !=
-          changedTextures.end()) {
-        damage.push_back(c.covered);
-      }
       record.commands.push_back(c);
     }
+    damageByChangedTextures(record);
     if (wholeFrame) continue;
-    const ListRecord& before = lists_[n];
-    if (record.owner != before.owner) {
+    if (record.owner != lists_[n].owner) {
       wholeFrame = true;  // windows appeared, closed or changed order
-    } else if (record.content != before.content) {
-      for (const PixelRect& rect : changedPart(before, record)) damage.push_back(rect);
+    } else {
+      for (const PixelRect& rect : changedPart(lists_[n], record)) damage.push_back(rect);
     }
   }
 

@@ -64,10 +64,10 @@ class FrameDamage {
  private:
   using CommandRecord = FrameDamageCommand;
   struct ListRecord {
-    std::uint64_t owner = 0;    // hash of the owning window's name
-    std::uint64_t content = 0;  // hash of vertices, indices and commands
-    PixelRect covered;          // bounding rect of what it draws, inside its scissor boxes
-    // A copy of the list, to find what changed inside a changed list.
+    std::uint64_t owner = 0;  // hash of the owning window's name
+    PixelRect covered;        // bounding rect of what it draws, inside its scissor boxes
+    // A copy of the list: to tell whether the next frame's list is the same, and to find what
+    // changed inside a changed one.
     ImVec2 offset, scale;  // the frame's DisplayPos and FramebufferScale
     std::vector<ImDrawVert> vertices;
     std::vector<ImDrawIdx> indices;
@@ -79,6 +79,8 @@ class FrameDamage {
   static constexpr int kMaxEdits = 400;
   // At most this many separate regions from one list (runs of changed triangles).
   static constexpr std::size_t kMaxRuns = 16;
+  // Whether `list`, in `data`, draws exactly what `before` recorded.
+  static bool sameAs(const ImDrawList& list, const ImDrawData& data, const ListRecord& before);
   // Where a changed list's pixels may differ from `before`'s.
   static std::vector<PixelRect> changedPart(const ListRecord& before, const ListRecord& now);
   std::vector<ListRecord> lists_;
