@@ -35,12 +35,24 @@ void paint(ImDrawList* draw, const CrossSectionDrawing& drawing, const CrossSect
     return view.toCanvas(point, centre);
   };
   const CanvasRect clip = visible.expanded(px(8.0f));
+  // Clipping is for the views where the drawing reaches far beyond the canvas; a shape wholly
+  // inside it (every shape, at the usual zoom) goes to ImGui as it is. The cross-section is
+  // drawn every frame, and clipping each of its quads cost a third of an idle frame's drawing.
+  const auto insideClip = [&](const CanvasPoint& p) {
+    return p.x >= clip.x0 && p.x <= clip.x1 && p.y >= clip.y0 && p.y <= clip.y1;
+  };
   std::vector<CanvasPoint> corners;
   for (const FilledQuads& fill : drawing.fills) {
     const ImU32 colour = toImColour(fill.colour);
     for (std::size_t i = 0; i + 3 < fill.corners.size(); i += 4) {
       corners.clear();
       for (std::size_t k = 0; k < 4; ++k) corners.push_back(toCanvas(fill.corners[i + k]));
+      if (std::all_of(corners.begin(), corners.end(), insideClip)) {
+        const ImVec2 quad[4] = {toImVec(corners[0]), toImVec(corners[1]), toImVec(corners[2]),
+                                toImVec(corners[3])};
+        draw->AddConvexPolyFilled(quad, 4, colour);
+        continue;
+      }
       const std::vector<CanvasPoint> shown = clipPolygon(corners, clip);
       if (shown.size() < 3) continue;
       std::vector<ImVec2> points;
@@ -63,6 +75,12 @@ void paint(ImDrawList* draw, const CrossSectionDrawing& drawing, const CrossSect
           draw->AddLine(toImVec(dash.a), toImVec(dash.b), colour, width);
         }
       }
+      continue;
+    }
+    if (std::all_of(points.begin(), points.end(), insideClip)) {
+      run.clear();
+      for (const CanvasPoint& p : points) run.push_back(toImVec(p));
+      draw->AddPolyline(run.data(), static_cast<int>(run.size()), colour, ImDrawFlags_None, width);
       continue;
     }
     for (const std::vector<CanvasPoint>& visiblePart : clipPolyline(points, clip)) {
