@@ -46,8 +46,8 @@ std::uint64_t ownerHash(const ImDrawList& list) {
   return hash.value();
 }
 
-// Whether `list` draws exactly what `before` recorded: the same vertices, indices and commands,
-// at the same display offset and scale.
+// Whether `list`'s commands are the ones recorded in `before`: clip rects, textures, callbacks
+// and the ranges of vertices and indices they draw.
 bool sameCommands(const ImDrawList& list, const std::vector<FrameDamageCommand>& before) {
   if (static_cast<std::size_t>(list.CmdBuffer.Size) != before.size()) return false;
   for (std::size_t i = 0; i < before.size(); ++i) {
