@@ -23,27 +23,31 @@ bool beginCanvasPanel(const char* title, const Rect& rect, ImGuiWindowFlags extr
   return true;
 }
 
+void fillAround(ImDrawList* draw, ImVec2 areaMin, ImVec2 areaMax, ImVec2 holeMin, ImVec2 holeMax,
+                ImU32 colour) {
+  const auto fill = [&](float x0, float y0, float x1, float y1) {
+    if (x1 > x0 && y1 > y0) draw->AddRectFilled(ImVec2(x0, y0), ImVec2(x1, y1), colour);
+  };
+  // The hole clamped to the area, then the bands above and below it and the two beside it.
+  const float holeTop = std::clamp(holeMin.y, areaMin.y, areaMax.y);
+  const float holeBottom = std::clamp(holeMax.y, holeTop, areaMax.y);
+  const float holeLeft = std::clamp(holeMin.x, areaMin.x, areaMax.x);
+  const float holeRight = std::clamp(holeMax.x, holeLeft, areaMax.x);
+  fill(areaMin.x, areaMin.y, areaMax.x, holeTop);
+  fill(areaMin.x, holeBottom, areaMax.x, areaMax.y);
+  fill(areaMin.x, holeTop, holeLeft, holeBottom);
+  fill(holeRight, holeTop, areaMax.x, holeBottom);
+}
+
 void fillPanelBackgroundAround(ImVec2 canvasMin, ImVec2 canvasMax) {
   const ImVec2 position = ImGui::GetWindowPos();
   const ImVec2 size = ImGui::GetWindowSize();
   // Below the title bar, whose height is the frame height (the font size plus the frame padding
   // above and below: ImGui's TitleBarHeight).
-  const float top = position.y + ImGui::GetFrameHeight();
-  const float left = position.x, right = position.x + size.x, bottom = position.y + size.y;
-  const ImU32 colour = ImGui::GetColorU32(ImGuiCol_WindowBg);
-  ImDrawList* background = ImGui::GetBackgroundDrawList();
-  const auto fill = [&](float x0, float y0, float x1, float y1) {
-    if (x1 > x0 && y1 > y0) background->AddRectFilled(ImVec2(x0, y0), ImVec2(x1, y1), colour);
-  };
-  // The canvas clamped to the window, then the bands above and below it and the two beside it.
-  const float canvasTop = std::clamp(canvasMin.y, top, bottom);
-  const float canvasBottom = std::clamp(canvasMax.y, canvasTop, bottom);
-  const float canvasLeft = std::clamp(canvasMin.x, left, right);
-  const float canvasRight = std::clamp(canvasMax.x, canvasLeft, right);
-  fill(left, top, right, canvasTop);
-  fill(left, canvasBottom, right, bottom);
-  fill(left, canvasTop, canvasLeft, canvasBottom);
-  fill(canvasRight, canvasTop, right, canvasBottom);
+  const ImVec2 belowTitle(position.x, position.y + ImGui::GetFrameHeight());
+  fillAround(ImGui::GetBackgroundDrawList(), belowTitle,
+             ImVec2(position.x + size.x, position.y + size.y), canvasMin, canvasMax,
+             ImGui::GetColorU32(ImGuiCol_WindowBg));
 }
 
 }  // namespace lenslab::app

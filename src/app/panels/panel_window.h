@@ -29,4 +29,9 @@ bool beginCanvasPanel(const char* title, const Rect& rect, ImGuiWindowFlags extr
 // list, which is drawn under every window, so it may be added after the panel's widgets.
 void fillPanelBackgroundAround(ImVec2 canvasMin, ImVec2 canvasMax);
 
+// Fills [areaMin, areaMax) with `colour` except the hole [holeMin, holeMax) (clamped into the
+// area), in at most four rectangles: one layer of pixels, none under the hole.
+void fillAround(ImDrawList* draw, ImVec2 areaMin, ImVec2 areaMax, ImVec2 holeMin, ImVec2 holeMax,
+                ImU32 colour);
+
 }  // namespace lenslab::app

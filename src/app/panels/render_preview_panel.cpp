@@ -12,19 +12,6 @@ namespace lenslab::app {
 
 namespace {
 
-// Black over [areaMin, areaMax) except [holeMin, holeMax) (which lies inside it).
-void fillBlackAround(ImDrawList* draw, ImVec2 areaMin, ImVec2 areaMax, ImVec2 holeMin,
-                     ImVec2 holeMax) {
-  const ImU32 black = IM_COL32(0, 0, 0, 255);
-  const auto fill = [&](float x0, float y0, float x1, float y1) {
-    if (x1 > x0 && y1 > y0) draw->AddRectFilled(ImVec2(x0, y0), ImVec2(x1, y1), black);
-  };
-  fill(areaMin.x, areaMin.y, areaMax.x, holeMin.y);
-  fill(areaMin.x, holeMax.y, areaMax.x, areaMax.y);
-  fill(areaMin.x, holeMin.y, holeMin.x, holeMax.y);
-  fill(holeMax.x, holeMin.y, areaMax.x, holeMax.y);
-}
-
 void drawControls(ViewerState& state) {
   PreviewState& preview = state.preview;
   float exposure = static_cast<float>(state.exposureStops);
@@ -99,7 +86,7 @@ void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
                                std::min(end.y, snap(topLeft.y + height, framebufferScale.y)));
       width = bottomRight.x - topLeft.x;
       height = bottomRight.y - topLeft.y;
-      fillBlackAround(draw, origin, end, topLeft, bottomRight);
+      fillAround(draw, origin, end, topLeft, bottomRight, IM_COL32(0, 0, 0, 255));
       ImGui::SetCursorScreenPos(topLeft);
       // The previous change's image until this change's first look replaces it: badged at once,
       // dimmed if that takes a while.
