@@ -26,6 +26,12 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
                                                                 : "info"},
                    {"text", entry.text}});
   }
+  // The lens's film distance and stop, and the cross-section's view, for tests that drag them.
+  const optics::Prescription& lens = state.lens.prescription();
+  nlohmann::json filmDistance = nullptr, stopDiameter = nullptr;
+  if (!lens.surfaces.empty()) filmDistance = lens.surfaces.back().thicknessMm;
+  if (const auto stop = lens.stopIndex()) stopDiameter = lens.surfaces[*stop].apertureDiameterMm;
+  const CrossSectionView& view = state.crossSectionView;
   const nlohmann::json about = {
       {"lens_path", state.lens.path()},
       {"lens_modified", state.lens.modified()},
@@ -38,6 +44,12 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"preview_width", state.settings.layout.previewWidth},
         {"log_height", state.settings.layout.logHeight}}},
       {"log", log},
+      {"film_distance_mm", filmDistance},
+      {"stop_diameter_mm", stopDiameter},
+      {"cross_section_view",
+       {{"pixels_per_mm", view.pixelsPerMm},
+        {"centre_z_mm", view.centreZMm},
+        {"centre_y_mm", view.centreYMm}}},
   };
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
                                {"widgets", widgets},

@@ -8,8 +8,11 @@
 
 namespace lenslab::app {
 
-// JSON: {"window": {"width", "height"}, "widgets": {"name": {"x", "y", "width", "height"}}},
-// in window coordinates (xdotool's, relative to the window). Returns an error or "".
+// JSON: {"window": {"width", "height"}, "widgets": {"name": {"x", "y", "width", "height"}},
+// "state": {...}}, positions in window coordinates (xdotool's, relative to the window). "state"
+// holds what tests check after driving the window: the lens file and its flags, the film
+// distance and stop diameter, the cross-section's view, the file browser, the layout and the log.
+// Returns an error or "".
 std::string writeUiDump(const std::filesystem::path& path, const ViewerState& state,
                         int windowWidth, int windowHeight);
 

@@ -5,41 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <thread>
 
 #include "support/background_process.h"
 #include "support/png_image.h"
 #include "support/run_process.h"
+#include "support/xdotool_session.h"
 
 namespace lenslab {
 namespace {
 
-// The viewer's window: its title is "lenslab - LENS" (with "*" when the lens is modified).
-const std::string kFindWindow =
-    "$(xdotool search --sync --onlyvisible --name '^lenslab - ' | head -n1)";
-
-nlohmann::json readJson(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  return nlohmann::json::parse(file, nullptr, false);
-}
-
-// Centre of a widget from a dump-ui file, as "X Y".
-std::string centreOf(const nlohmann::json& ui, const std::string& widget) {
-  const auto& rect = ui["widgets"][widget];
-  const int x = static_cast<int>(rect["x"].get<double>() + rect["width"].get<double>() / 2);
-  const int y = static_cast<int>(rect["y"].get<double>() + rect["height"].get<double>() / 2);
-  return std::to_string(x) + " " + std::to_string(y);
-}
-
-bool waitForFile(const std::filesystem::path& path, std::chrono::seconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!std::filesystem::exists(path)) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  return true;
-}
+using testing::centreOf;
+using testing::readJson;
+using testing::waitForFile;
 
 TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
   const auto scratch = testing::makeTestDirectory("xdotool");
@@ -54,19 +31,11 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
   testing::BackgroundProcess viewer("cd '" + scratch.string() + "' && exec '" + LENSLAB_BINARY +
                                     "' --size 1280x800 --script commands.script 2>stderr.txt");
   ASSERT_TRUE(waitForFile(scratch / "ui.json", std::chrono::seconds(30)));
-  std::ifstream uiFile(scratch / "ui.json");
-  const nlohmann::json ui = nlohmann::json::parse(uiFile);
+  const nlohmann::json ui = readJson(scratch / "ui.json");
   ASSERT_TRUE(ui["widgets"].contains("lens-table/1/radius")) << ui.dump();
-  const auto& cell = ui["widgets"]["lens-table/1/radius"];
-  const int x = static_cast<int>(cell["x"].get<double>() + cell["width"].get<double>() / 2);
-  const int y = static_cast<int>(cell["y"].get<double>() + cell["height"].get<double>() / 2);
 
-  // Under Xvfb there is no window manager to give the window focus, and GLFW reports the cursor
-  // only to a focused window: focus it explicitly, then move relative to it.
-  const std::string window = kFindWindow;
-  const std::string input = "W=" + window +
-                            " && xdotool windowfocus --sync $W && xdotool mousemove --window $W " +
-                            std::to_string(x) + " " + std::to_string(y) +
+  const std::string input = testing::kFocusViewerWindow + "xdotool mousemove --window $W " +
+                            centreOf(ui, "lens-table/1/radius") +
                             " && sleep 0.2 && xdotool click 1 && sleep 0.3 && "
                             "xdotool type --delay 30 '24.5' && "
                             "sleep 0.1 && xdotool key Return";
@@ -116,7 +85,7 @@ TEST(XdotoolInput, CtrlOAndCtrlSOpenTheFileBrowserAndTheTitleMarksChanges) {
   EXPECT_EQ(modifiedTitle.exitCode, 0) << "no window titled 'lenslab - dgauss-50mm.dat*'";
   EXPECT_EQ(readJson(scratch / "ui0.json")["state"]["file_browser"], "");
 
-  const std::string focus = "W=" + kFindWindow + " && xdotool windowfocus --sync $W && sleep 0.2";
+  const std::string focus = testing::kFocusViewerWindow + "sleep 0.2";
   // Ctrl+O as xdotool's "key ctrl+o" sends it (Ctrl released before O), with the Ctrl release
   // arriving in the same frame as the O press: the viewer is stopped while both are sent. ImGui
   // alone would see O pressed without Ctrl (this test failed one run in thirty under load).
@@ -165,7 +134,7 @@ TEST(XdotoolInput, AWindowScreenshotFromTheMenuDoesNotShowTheMenu) {
   ASSERT_TRUE(waitForFile(scratch / "ui0.json", std::chrono::seconds(30)));
   const nlohmann::json ui0 = readJson(scratch / "ui0.json");
   ASSERT_TRUE(ui0["widgets"].contains("menu/File")) << ui0["widgets"];
-  const std::string window = "W=" + kFindWindow + " && xdotool windowfocus --sync $W && ";
+  const std::string& window = testing::kFocusViewerWindow;
   auto clicked =
       testing::runProcess(window + "xdotool mousemove --window $W " + centreOf(ui0, "menu/File") +
                               " && sleep 0.2 && xdotool click 1",

@@ -166,6 +166,25 @@ void drawFanControls(ViewerState& state) {
   ImGui::PopTextWrapPos();
 }
 
+// Where the drag handles are after this frame's edits, for `dump-ui` (tests drag them for real):
+// the film plane's line and the stop's upper inner edge, each as wide as the grab distance.
+void recordHandles(ViewerState& state, const CrossSectionCache& shown, PixelPoint centre) {
+  const CrossSectionView& view = state.crossSectionView;
+  const float grab = px(kGrabDistancePx);
+  const double filmHalfMm = 0.5 * state.filmDiagonalMm;
+  const PixelPoint filmTop = view.toPixels({0.0, filmHalfMm}, centre);
+  const PixelPoint filmBottom = view.toPixels({0.0, -filmHalfMm}, centre);
+  state.uiRects["cross-section/film"] = {filmTop.x - grab, filmTop.y, 2 * grab,
+                                         filmBottom.y - filmTop.y};
+  if (shown.outline.stop) {
+    const PixelPoint edge =
+        view.toPixels({shown.outline.stop->zMm, shown.outline.stop->apertureRadiusMm}, centre);
+    state.uiRects["cross-section/stop-edge"] = {edge.x - grab, edge.y - grab, 2 * grab, 2 * grab};
+  } else {
+    state.uiRects.erase("cross-section/stop-edge");
+  }
+}
+
 }  // namespace
 
 void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
@@ -268,6 +287,7 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
     view.fit(shown.fitBounds, size.x, size.y);
     state.crossSectionNeedsFit = false;
   }
+  recordHandles(state, shown, centre);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->PushClipRect(origin, end, true);
