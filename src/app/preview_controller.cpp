@@ -85,10 +85,9 @@ std::pair<int, int> PreviewController::previewSize(bool draft) const {
 
 render::RenderJob PreviewController::makeJob(int width, int height, int samplesPerPixel) const {
   render::RenderJob job;
-  job.camera =
-      submitted_->pinhole
-          ? render::makeMatchingPinholeCamera(*description_, *submittedLens_, width, height)
-          : render::makeLensCamera(*description_, submittedLens_, width, height);
+  job.camera = submitted_->pinhole
+                   ? render::makeMatchingPinholeCamera(*description_, submittedLens_, width, height)
+                   : render::makeLensCamera(*description_, submittedLens_, width, height);
   job.scene = scene_;
   job.settings.samplesPerPixel = samplesPerPixel;
   job.settings.integrator.kind = description_->integrator.kind;

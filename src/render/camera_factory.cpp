@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <limits>
 #include <numbers>
 
 #include "optics/focus.h"
 #include "optics/lens_file.h"
+#include "render/matched_pinhole_camera.h"
 #include "render/realistic_camera.h"
 
 namespace lenslab::render {
@@ -135,9 +137,9 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                            originZMm, framing.lensSampling);
 }
 
-std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& scene,
-                                                        const optics::LensSystem& lens, int width,
-                                                        int height) {
+std::shared_ptr<const Camera> makeMatchingPinholeCamera(
+    const SceneDescription& scene, std::shared_ptr<const optics::LensSystem> lens, int width,
+    int height) {
   const CameraFraming framing = framingOf(scene);
   const double aspect = static_cast<double>(width) / std::max(1, height);
   const double diagonal = framing.filmDiagonalMm;
@@ -145,10 +147,15 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& 
       diagonal / std::sqrt(1.0 + std::pow(std::max(aspect, 1.0 / aspect), 2));
   // The image distance of an ideal lens of the same focal length focused at infinity.
   const double imageDistanceMm =
-      lens.firstOrder().eflMm > 0 ? lens.firstOrder().eflMm : lens.filmDistanceMm();
+      lens->firstOrder().eflMm > 0 ? lens->firstOrder().eflMm : lens->filmDistanceMm();
   const double fovDegrees =
       2.0 * std::atan(0.5 * shortSideMm / imageDistanceMm) * 180.0 / std::numbers::pi;
-  return std::make_shared<PerspectiveCamera>(framing.cameraFromWorld, fovDegrees, width, height);
+  auto pinhole =
+      std::make_shared<PerspectiveCamera>(framing.cameraFromWorld, fovDegrees, width, height);
+  const glm::dvec4 viewDirection = glm::inverse(framing.cameraFromWorld) * glm::dvec4(0, 0, 1, 0);
+  return std::make_shared<MatchedPinholeCamera>(
+      makeLensCamera(scene, std::move(lens), width, height), std::move(pinhole),
+      glm::vec3(viewDirection));
 }
 
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,

@@ -47,10 +47,11 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
                                              int width, int height);
 // A pinhole with the same framing and about the same field of view as `lens` (its focal length
-// over the film's shorter side), for comparing the lens against an ideal one.
-std::shared_ptr<const Camera> makeMatchingPinholeCamera(const SceneDescription& scene,
-                                                        const optics::LensSystem& lens, int width,
-                                                        int height);
+// over the film's shorter side), and the lens's exposure at the image centre, for comparing the
+// lens against an ideal one (MatchedPinholeCamera).
+std::shared_ptr<const Camera> makeMatchingPinholeCamera(
+    const SceneDescription& scene, std::shared_ptr<const optics::LensSystem> lens, int width,
+    int height);
 
 // The scene's camera. With a lens override, a realistic camera uses that lens instead of its
 // own; a perspective camera becomes a realistic one with the same placement, the lens at its own

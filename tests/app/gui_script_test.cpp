@@ -98,6 +98,47 @@ TEST_F(ScriptedViewer, AnEditChangesThePreviewAndUndoRestoresIt) {
   EXPECT_NEAR(testing::meanBrightness(undone), bright, 0.03 * bright);
 }
 
+// "Pinhole" compares the lens with an ideal one of the same focal length and the same exposure
+// at the image centre: toggling it changes the picture's corners and blur, not its brightness.
+// (A plain pinhole images radiance, three stops brighter than the lens at f/2.5.)
+TEST_F(ScriptedViewer, ThePinholeTakesTheLensExposureInTheMiddle) {
+  const auto result = runScript(
+      "wait-spp 16\n"
+      "screenshot-render lens.exr\n"
+      "set camera pinhole\n"
+      "wait-spp 16\n"
+      "screenshot-render pinhole.exr\n"
+      "set stop-diameter 7\n"  // half the diameter: two stops down, for both
+      "wait-spp 16\n"
+      "screenshot-render pinhole-stopped-down.exr\n"
+      "quit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto lens = render::readImage(scratch / "lens.exr");
+  const auto pinhole = render::readImage(scratch / "pinhole.exr");
+  const auto stoppedDown = render::readImage(scratch / "pinhole-stopped-down.exr");
+  ASSERT_TRUE(lens.ok && pinhole.ok && stoppedDown.ok) << lens.error << pinhole.error;
+  // The middle fifth of the picture (the chart's checks, in focus): its mean linear value.
+  const auto middleMean = [](const render::FloatImage& picture) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = picture.height * 2 / 5; y < picture.height * 3 / 5; ++y) {
+      for (int x = picture.width * 2 / 5; x < picture.width * 3 / 5; ++x, ++count) {
+        for (int c = 0; c < 3; ++c) {
+          sum += picture.rgb[3 * (static_cast<std::size_t>(y) * picture.width + x) + c];
+        }
+      }
+    }
+    return sum / (3.0 * std::max(1, count));
+  };
+  const double lensMiddle = middleMean(lens.image);
+  ASSERT_GT(lensMiddle, 0.05);
+  EXPECT_NEAR(middleMean(pinhole.image), lensMiddle, 0.05 * lensMiddle);
+  // Stopping the lens down by two stops takes the pinhole's exposure down to a quarter too (the
+  // ideal pupil's area; the real one's edge moves a little).
+  EXPECT_NEAR(middleMean(stoppedDown.image), 0.25 * middleMean(pinhole.image),
+              0.02 * middleMean(pinhole.image));
+}
+
 // The cross-section and the preview paint their canvases edge to edge, so ImGui draws no window
 // background under them (beginCanvasPanel): their frames, padding and the preview's black bars
 // must still look like every other panel's.

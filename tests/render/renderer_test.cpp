@@ -7,6 +7,7 @@
 #include <mutex>
 #include <thread>
 
+#include "furnace.h"
 #include "optics/lens_system.h"
 #include "render/realistic_camera.h"
 #include "render_support.h"
@@ -16,19 +17,11 @@
 namespace lenslab::render {
 namespace {
 
+using render::testing::furnaceWorld;
 using render::testing::loadJob;
+using render::testing::relativeIllumination;
 using render::testing::writeFile;
 using Clock = std::chrono::steady_clock;
-
-// A uniform emitter all around the camera: a two-sided emitting sphere with a black surface.
-std::string furnaceWorld(double radiance) {
-  const std::string l = std::to_string(radiance);
-  return "WorldBegin\nAttributeBegin\nMaterial \"matte\" \"rgb Kd\" [0 0 0]\n"
-         "AreaLightSource \"diffuse\" \"rgb L\" [" +
-         l + " " + l + " " + l +
-         "] \"bool twosided\" \"true\"\nShape \"sphere\" \"float radius\" [50]\nAttributeEnd\n"
-         "WorldEnd\n";
-}
 
 TEST(Renderer, PinholeFurnaceSeesTheEmittedRadianceEverywhere) {
   const auto directory = lenslab::testing::makeTestDirectory("furnace-pinhole");
@@ -46,26 +39,6 @@ TEST(Renderer, PinholeFurnaceSeesTheEmittedRadianceEverywhere) {
     ASSERT_TRUE(image);
     for (float value : image->rgb) ASSERT_NEAR(value, radiance, 1e-5) << integrator;
   }
-}
-
-// Relative illumination at a film point by brute force: a fine grid over a disk of radius
-// `radiusMm` on the rear vertex plane, each point traced exactly;
-// E/L = (1/Z^2) * sum over passing points of cos^4(theta) dA.
-double relativeIllumination(const optics::LensSystem& lens, glm::dvec2 film, double radiusMm) {
-  const double z = lens.rearVertexZ();
-  constexpr int kSteps = 240;
-  const double step = 2.0 * radiusMm / kSteps;
-  double sum = 0.0;
-  for (int i = 0; i < kSteps; ++i) {
-    for (int j = 0; j < kSteps; ++j) {
-      const glm::dvec2 p(-radiusMm + (i + 0.5) * step, -radiusMm + (j + 0.5) * step);
-      if (glm::dot(p, p) > radiusMm * radiusMm) continue;
-      const glm::dvec3 direction = glm::normalize(glm::dvec3(p, z) - glm::dvec3(film, 0.0));
-      if (!lens.traceFromFilm({glm::dvec3(film, 0.0), direction})) continue;
-      sum += std::pow(direction.z, 4.0) * step * step;
-    }
-  }
-  return sum / (z * z);
 }
 
 struct FurnaceCase {
