@@ -232,7 +232,10 @@ optics::Prescription flipped(const optics::Prescription& lens) {
     const std::size_t i = n - 1 - j;
     optics::Surface& surface = result.surfaces[j];
     surface = old[i];
-    surface.radiusMm = -old[i].radiusMm;
+    // The stop (0) and a flat surface (inf) have no side to turn: they stay 0 and inf, not the
+    // -0 and -inf the table and the saved file would show.
+    surface.radiusMm =
+        old[i].isStop() || old[i].isFlat() ? std::abs(old[i].radiusMm) : -old[i].radiusMm;
     if (i > 0) {
       surface.thicknessMm = old[i - 1].thicknessMm;
       surface.indexD = old[i - 1].indexD;

@@ -96,6 +96,16 @@ TEST(Flip, ReversesSurfacesNegatesRadiiAndMovesMedia) {
   }
 }
 
+TEST(Flip, KeepsTheStopAndFlatSurfacesUnsigned) {
+  optics::Prescription lens = triplet();
+  lens.surfaces[3].radiusMm = optics::kFlatRadius;
+  const optics::Prescription flippedLens = flipped(lens);
+  // Old surfaces 2 (the stop) and 3 (flat) become 2 and 1.
+  EXPECT_EQ(flippedLens.surfaces[2].radiusMm, 0.0);
+  EXPECT_FALSE(std::signbit(flippedLens.surfaces[2].radiusMm));      // not -0, shown as "-0"
+  EXPECT_EQ(flippedLens.surfaces[1].radiusMm, optics::kFlatRadius);  // not -inf
+}
+
 TEST(Scale, ScalesEveryLength) {
   const optics::Prescription doubled = scaled(triplet(), 2.0);
   EXPECT_DOUBLE_EQ(doubled.surfaces[0].radiusMm, 80.0);
