@@ -256,7 +256,12 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   const bool isWait = verb.rfind("wait-", 0) == 0;
   if (!isCapture && !isWait) changedThisStep_ = true;
   if (verb == "load-lens") return check(host.loadLens(a[0]));
-  if (verb == "load-scene") return check(host.loadScene(a[0]));
+  if (verb == "load-scene") {
+    if (framesWaited_++ == 0) host.startLoadingScene(a[0]);
+    const auto outcome = host.sceneLoadOutcome();
+    if (!outcome) return false;  // still loading
+    return check(outcome->empty() ? std::nullopt : outcome);
+  }
   if (verb == "save-lens") return check(host.saveLens(a[0]));
   if (verb == "make-stop") {
     return check(host.edit(MakeStop{static_cast<std::size_t>(*parseInteger(a[0]) - 1)}));

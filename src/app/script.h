@@ -57,7 +57,11 @@ class ScriptHost {
   virtual ~ScriptHost() = default;
   // Each returns an error message, or nullopt on success.
   virtual std::optional<std::string> loadLens(const std::string& path) = 0;
-  virtual std::optional<std::string> loadScene(const std::string& path) = 0;
+  // Opening a scene takes a while (it is parsed and built off the UI thread): load-scene starts
+  // it, then waits for sceneLoadOutcome(): nullopt while it loads, then "" once the scene is
+  // open, or why it could not be opened.
+  virtual void startLoadingScene(const std::string& path) = 0;
+  virtual std::optional<std::string> sceneLoadOutcome() const = 0;
   virtual std::optional<std::string> saveLens(const std::string& path) = 0;
   virtual std::optional<std::string> edit(const EditCommand& command) = 0;
   virtual bool undo() = 0;

@@ -44,6 +44,8 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"preview_width", state.settings.layout.previewWidth},
         {"log_height", state.settings.layout.logHeight}}},
       {"log", log},
+      {"scene_path", state.scenePath},
+      {"scene_loading", state.loadingScenePath},
       {"film_distance_mm", filmDistance},
       {"stop_diameter_mm", stopDiameter},
       {"cross_section_view",

@@ -245,6 +245,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     nextFrame = std::max(nextFrame + framePeriod, ViewerStats::Clock::now());
     const auto workStarted = ViewerStats::Clock::now();
     openDroppedFiles();
+    finishSceneLoad();
     pollPreview();
     window_.beginFrame();
     drawFrame();
@@ -264,7 +265,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     stats_.frameDrawn(ViewerStats::Clock::now(), rendering);
     carryOutRequests();
     takeCaptures();
-    if (script) script->step(*this);
+    if (script && !state_.quitRequested) script->step(*this);
     updatePreview();  // files opened and script edits start rendering now, not next frame
     if (testMode && frame + 1 >= options.frames) {
       // The picture must show the preview's first pass, not the black canvas before it (unless
@@ -348,18 +349,16 @@ int runViewer(const ViewerOptions& options) {
       return 1;
     }
   }
-  const std::string scenePath = options.scenePath.empty() ? defaultScenePath() : options.scenePath;
-  if (const auto sceneError = viewer.loadScene(scenePath)) {
-    state.log.error(*sceneError);
-    if (!options.scenePath.empty()) {
-      std::fprintf(stderr, "lenslab: %s\n", sceneError->c_str());
-      return 1;
-    }
-  }
   state.lens = LensDocument(state.lens.prescription(), state.lens.path());  // nothing to undo yet
-  // Files named on the command line were the user's choice; the defaults are not.
+  // The scene loads while the window runs (a failed --scene then ends the session with 1).
+  if (options.scenePath.empty()) {
+    viewer.startLoadingScene(defaultScenePath(), Viewer::SceneOrigin::Default);
+  } else {
+    viewer.startLoadingScene(options.scenePath, Viewer::SceneOrigin::CommandLine);
+  }
+  // Files named on the command line were the user's choice; the defaults are not. (A scene is
+  // added once it has opened.)
   if (!options.lensPath.empty()) addRecentFile(state.settings, options.lensPath);
-  if (!options.scenePath.empty()) addRecentFile(state.settings, options.scenePath);
   const int exitCode = viewer.run(options, std::move(script));
   if (!options.statsJsonPath.empty()) {
     if (const std::string statsError = viewer.stats().writeJson(options.statsJsonPath);

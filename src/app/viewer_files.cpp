@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -90,7 +91,7 @@ std::optional<std::string> Viewer::chooseInDialog(const std::string& name) {
 }
 
 // Requests from the menus, the browser, drops and the recent-files list: what the user opened
-// goes to the recent files (the defaults loaded at start do not).
+// goes to the recent files (the defaults loaded at start do not), a scene once it has loaded.
 std::optional<std::string> Viewer::perform(const FileRequest& request) {
   using Kind = FileRequest::Kind;
   const std::string& path = request.path;
@@ -103,12 +104,17 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
   };
   switch (request.kind) {
     case Kind::Open:
-      return remember(std::filesystem::path(path).extension() == ".pbrt" ? loadScene(path)
-                                                                         : loadLens(path));
+      if (std::filesystem::path(path).extension() == ".pbrt") {
+        startLoadingScene(path, SceneOrigin::User);
+        return std::nullopt;
+      }
+      return remember(loadLens(path));
     case Kind::OpenLens:
       return remember(loadLens(path));
     case Kind::OpenScene:
-      return remember(loadScene(path));
+      // Loads off the UI thread; it becomes a recent file once open (finishSceneLoad).
+      startLoadingScene(path, SceneOrigin::User);
+      return std::nullopt;
     case Kind::SaveLens:
       return remember(saveLens(path));
     case Kind::SaveRender:
@@ -145,8 +151,43 @@ std::optional<std::string> Viewer::loadLens(const std::string& path) {
   return std::nullopt;
 }
 
-std::optional<std::string> Viewer::loadScene(const std::string& path) {
-  const LoadedScene loaded = loadSceneFile(path);
+void Viewer::startLoadingScene(const std::string& path, SceneOrigin origin) {
+  sceneLoader_.start(path);
+  sceneOrigin_ = origin;
+  state_.loadingScenePath = path;
+  sceneLoadOutcome_.reset();
+}
+
+void Viewer::finishSceneLoad() {
+  std::optional<SceneLoader::Result> result = sceneLoader_.take();
+  if (!result) return;
+  state_.loadingScenePath.clear();
+  const bool atStart =
+      sceneOrigin_ == SceneOrigin::Default || sceneOrigin_ == SceneOrigin::CommandLine;
+  // The scene opened with may bring its camera's lens: that is where the session starts, not an
+  // edit to undo (unless the user has edited the lens while the scene loaded).
+  const bool untouched = !state_.lens.canUndo();
+  const std::optional<std::string> error = openLoadedScene(result->path, result->loaded);
+  sceneLoadOutcome_ = error.value_or("");
+  if (error) {
+    state_.log.error(*error);
+    if (sceneOrigin_ == SceneOrigin::CommandLine) {
+      std::fprintf(stderr, "lenslab: %s\n", error->c_str());
+      quit(1);
+    }
+    return;
+  }
+  if (atStart && untouched)
+    state_.lens = LensDocument(state_.lens.prescription(), state_.lens.path());
+  // What the user chose to open, from the command line or the menus, is a recent file.
+  if (sceneOrigin_ == SceneOrigin::User || sceneOrigin_ == SceneOrigin::CommandLine) {
+    std::error_code ignored;
+    addRecentFile(state_.settings, std::filesystem::absolute(result->path, ignored).string());
+  }
+}
+
+std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
+                                                   const LoadedScene& loaded) {
   if (!loaded.error.empty()) return "cannot open scene " + path + ":\n" + loaded.error;
   for (const std::string& warning : loaded.warnings) state_.log.warning(warning);
   preview_.setScene(loaded);

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <utility>
 
@@ -10,6 +11,8 @@
 namespace lenslab::app {
 
 std::optional<int> Viewer::previewSpp() const {
+  // A scene that is loading will render (or report why not): its samples are worth waiting for.
+  if (sceneLoader_.busy() && state_.lensSystem) return 0;
   if (!preview_.hasScene() || !state_.lensSystem) return std::nullopt;
   return preview_.currentSpp(state_.lensSystem, state_.pinholeCamera);
 }
@@ -31,7 +34,10 @@ void Viewer::updatePreview() {
 
 void Viewer::pollPreview() {
   preview_.poll(state_.preview, state_.exposureStops, stats_);
-  if (!preview_.hasScene()) {
+  if (!state_.loadingScenePath.empty()) {
+    state_.preview.status =
+        "Loading " + std::filesystem::path(state_.loadingScenePath).filename().string() + "...";
+  } else if (!preview_.hasScene()) {
     state_.preview.status = "No scene: File > Open scene.";
   } else if (!state_.lensSystem) {
     state_.preview.status = "No valid lens to render through.";

@@ -10,6 +10,7 @@
 
 #include "app/frame_damage.h"
 #include "app/preview_controller.h"
+#include "app/scene_loader.h"
 #include "app/script.h"
 #include "app/ui_dump.h"
 #include "app/viewer.h"
@@ -28,7 +29,10 @@ class Viewer final : public ScriptHost {
 
   // ScriptHost
   std::optional<std::string> loadLens(const std::string& path) override;
-  std::optional<std::string> loadScene(const std::string& path) override;
+  void startLoadingScene(const std::string& path) override {
+    startLoadingScene(path, SceneOrigin::Script);
+  }
+  std::optional<std::string> sceneLoadOutcome() const override { return sceneLoadOutcome_; }
   std::optional<std::string> saveLens(const std::string& path) override;
   // Script edits take effect at once (validation, LensSystem, fans), so a following wait-spp
   // waits for the render of the edited lens.
@@ -106,6 +110,20 @@ class Viewer final : public ScriptHost {
   // Sets damage_: where this frame differs from the last drawn one.
   void findDamage();
   void askForPath(FileRequest::Kind kind);
+
+ public:
+  // Why a scene is being opened, which decides what its outcome does: the scene at start (the
+  // default, or --scene, whose failure ends the session with exit code 1), one the user opened
+  // (a recent file once open), or a script's.
+  enum class SceneOrigin { Default, CommandLine, User, Script };
+  // Starts loading a scene off the UI thread (SceneLoader); the current scene keeps rendering
+  // until the new one is ready, and a failure leaves it in place.
+  void startLoadingScene(const std::string& path, SceneOrigin origin);
+
+ private:
+  // Takes a finished scene load: the new scene (and its camera's lens), or its errors.
+  void finishSceneLoad();
+  std::optional<std::string> openLoadedScene(const std::string& path, const LoadedScene& loaded);
   std::optional<std::string> perform(const FileRequest& request);
 
   Window& window_;
@@ -121,6 +139,9 @@ class Viewer final : public ScriptHost {
   bool windowCheckPending_ = false;  // check-window, after this frame's present
   void checkWindowPixels();
   bool drawnThisFrame_ = false;
+  SceneLoader sceneLoader_{&Window::wakeFromAnyThread};
+  SceneOrigin sceneOrigin_ = SceneOrigin::Default;
+  std::optional<std::string> sceneLoadOutcome_ = "";  // nullopt while a scene loads
 
  public:
   // With a lens given on the command line, opening a scene keeps it instead of the scene's.

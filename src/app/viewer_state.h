@@ -112,6 +112,7 @@ struct ViewerState {
   bool pinholeCamera = false;
   PreviewState preview;
   std::string scenePath;
+  std::string loadingScenePath;  // a scene being opened (off the UI thread); empty when none
   FileBrowser fileBrowser;
   std::vector<FileRequest> fileRequests;
   std::optional<FileRequest::Kind> browserPurpose;  // what the browser's answer is for

@@ -405,6 +405,84 @@ TEST_F(ScriptedViewer, ADroppedBrokenFileKeepsTheCurrentLensAndSaysWhy) {
   }
 }
 
+TEST_F(ScriptedViewer, ADroppedBrokenSceneKeepsTheCurrentSceneAndSaysWhy) {
+  std::ofstream(scratch / "broken.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [x]\n";
+  const auto result = runScript("wait-spp 1\ndrop " + (scratch / "broken.pbrt").string() +
+                                "\nwait-frames 3\nwait-spp 2\ndump-ui after.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto dump = json("after.json");
+  // The default scene stays, and renders on (wait-spp 2 got its samples).
+  EXPECT_NE(dump["state"]["scene_path"].get<std::string>().find("default.pbrt"), std::string::npos);
+  EXPECT_EQ(dump["state"]["scene_loading"], "");
+  bool explained = false;
+  for (const auto& entry : dump["state"]["log"]) {
+    const std::string text = entry["text"];
+    explained |= entry["level"] == "error" && text.find("broken.pbrt:2:") != std::string::npos;
+  }
+  EXPECT_TRUE(explained) << dump["state"]["log"];
+  for (const auto& path : dump["state"]["recent_files"]) {
+    EXPECT_EQ(path.get<std::string>().find("broken.pbrt"), std::string::npos);
+  }
+}
+
+TEST_F(ScriptedViewer, ABrokenSceneOnTheCommandLineEndsTheSessionWithItsError) {
+  std::ofstream(scratch / "broken.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [x]\n";
+  const auto result =
+      runScript("wait-spp 1\nquit\n", "", "--scene '" + (scratch / "broken.pbrt").string() + "'");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.err.find("broken.pbrt:2:"), std::string::npos) << result.err;
+}
+
+// A scene of a million triangles takes about a second to parse and build (two on a busy
+// machine): it loads while the window draws, which shows it loading, and then renders it.
+TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
+  constexpr int kSide = 708;  // vertices per side: 2 * 707^2 = 999 698 triangles
+  {
+    std::ofstream ply(scratch / "terrain.ply", std::ios::binary);
+    ply << "ply\nformat binary_little_endian 1.0\nelement vertex " << kSide * kSide
+        << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
+        << 2 * (kSide - 1) * (kSide - 1)
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (int i = 0; i < kSide; ++i) {
+      for (int j = 0; j < kSide; ++j) {
+        const float x = 4.0f * i / (kSide - 1) - 2.0f, z = 4.0f * j / (kSide - 1) - 2.0f;
+        const float point[3] = {x, 0.1f * std::sin(6.0f * x) * std::cos(6.0f * z), z};
+        ply.write(reinterpret_cast<const char*>(point), sizeof point);
+      }
+    }
+    for (int i = 0; i + 1 < kSide; ++i) {
+      for (int j = 0; j + 1 < kSide; ++j) {
+        const int a = i * kSide + j, b = a + 1, c = a + kSide, d = c + 1;
+        const int faces[2][3] = {{a, c, b}, {b, c, d}};
+        for (const auto& face : faces) {
+          const unsigned char three = 3;
+          ply.write(reinterpret_cast<const char*>(&three), 1);
+          ply.write(reinterpret_cast<const char*>(face), sizeof face);
+        }
+      }
+    }
+  }
+  std::ofstream(scratch / "terrain.pbrt")
+      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [45]\n"
+         "Film \"image\" \"integer xresolution\" [300] \"integer yresolution\" [200]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+         "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
+         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  const auto result = runScript(
+      "dump-ui first-frame.json\nwait-spp 1\ndump-ui loaded.json\n"
+      "screenshot-render terrain.png\nquit\n",
+      "", "--scene terrain.pbrt");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  // The first frame came while the scene loaded, and said so.
+  const auto first = json("first-frame.json");
+  EXPECT_EQ(first["state"]["scene_loading"], "terrain.pbrt") << first["state"]["log"];
+  const auto loaded = json("loaded.json");
+  EXPECT_EQ(loaded["state"]["scene_path"], "terrain.pbrt");
+  EXPECT_EQ(loaded["state"]["scene_loading"], "");
+  // The scene, seen through the lens: the lit terrain, not a black frame.
+  EXPECT_GT(testing::meanBrightness(image("terrain.png")), 20.0);
+}
+
 TEST_F(ScriptedViewer, ACrossSectionSavedThroughTheFileBrowserDoesNotShowIt) {
   // As from File > Save cross-section: the browser opens, the user types a name and confirms.
   // The picture must be taken from a later frame, without the browser over the canvas.

@@ -14,9 +14,16 @@ class FakeHost : public ScriptHost {
     if (path == "broken.dat") return std::string("broken.dat:3:7: not a number");
     return std::nullopt;
   }
-  std::optional<std::string> loadScene(const std::string& path) override {
+  // A scene loads over `sceneLoadFrames` calls of sceneLoadOutcome(), as the viewer's loads
+  // take frames.
+  void startLoadingScene(const std::string& path) override {
     calls.push_back("load-scene " + path);
-    return std::nullopt;
+    sceneLoadPolls = 0;
+    sceneError = path == "broken.pbrt" ? "broken.pbrt:2:1: unknown directive" : "";
+  }
+  std::optional<std::string> sceneLoadOutcome() const override {
+    if (++sceneLoadPolls < sceneLoadFrames) return std::nullopt;
+    return sceneError;
   }
   std::optional<std::string> saveLens(const std::string& path) override {
     calls.push_back("save-lens " + path);
@@ -59,6 +66,9 @@ class FakeHost : public ScriptHost {
   std::vector<std::string> calls, errors;
   std::optional<int> exitCode;
   std::optional<int> spp = 0;
+  int sceneLoadFrames = 1;
+  mutable int sceneLoadPolls = 0;
+  std::string sceneError;
   double exposure = 0;
   bool pinhole = false;
 };
@@ -131,6 +141,27 @@ TEST(ScriptRun, FailsOnTheFirstErrorWithItsLocation) {
   EXPECT_NE(host.errors[0].find("s.script:1:"), std::string::npos);
   EXPECT_NE(host.errors[0].find("broken.dat:3:7"), std::string::npos);
   for (const auto& call : host.calls) EXPECT_EQ(call.find("screenshot"), std::string::npos);
+}
+
+TEST(ScriptRun, LoadSceneWaitsForTheSceneAndFailsWithItsError) {
+  const ParsedScript script = parseScript(
+      "load-scene a.pbrt\nscreenshot a.png\nload-scene broken.pbrt\nscreenshot never.png\n",
+      "s.script");
+  FakeHost host;
+  host.sceneLoadFrames = 3;
+  ScriptRunner runner(script.commands);
+  EXPECT_TRUE(runner.step(host));  // loading: started once, nothing after it yet
+  EXPECT_TRUE(runner.step(host));
+  EXPECT_EQ(host.calls, std::vector<std::string>{"load-scene a.pbrt"});
+  int steps = 2;
+  while (runner.step(host) && steps < 20) ++steps;
+  // a.pbrt opened: its screenshot; then broken.pbrt failed, and the script stopped there.
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"load-scene a.pbrt", "screenshot a.png",
+                                                  "load-scene broken.pbrt"}));
+  EXPECT_EQ(host.exitCode, 1);
+  ASSERT_EQ(host.errors.size(), 1u);
+  EXPECT_NE(host.errors[0].find("s.script:3:"), std::string::npos) << host.errors[0];
+  EXPECT_NE(host.errors[0].find("broken.pbrt:2:1"), std::string::npos) << host.errors[0];
 }
 
 TEST(ScriptRun, EditOfAMissingSurfaceFails) {
