@@ -1,7 +1,8 @@
-// Real mouse input (xdotool) in the cross-section and the preview: dragging the film plane and
-// the stop's edge edits the lens, the wheel zooms about the cursor, and a click in the preview
-// focuses on what is under it. Each test runs the viewer with a script that dumps its state
-// (dump-ui) before and after the input, waits for the test to send it, and saves a screenshot.
+// Real mouse and keyboard input (xdotool) in the cross-section and the preview: dragging the
+// film plane and the stop's edge edits the lens (the film drag is undone and redone with Ctrl+Z
+// and Ctrl+Shift+Z), the wheel zooms about the cursor, and a click in the preview focuses on what
+// is under it. Each test runs the viewer with a script that dumps its state (dump-ui) before and
+// after each round of input, waits for the test to send it, and saves a screenshot.
 
 #include <gtest/gtest.h>
 
@@ -22,39 +23,48 @@ using testing::readJson;
 using testing::waitForFile;
 using testing::WidgetPoint;
 
-// One viewer run: `setUp` script lines, then ui0.json; the test's input; then ui1.json and
-// after.png (the window), then `afterwards` lines and quit.
+// One viewer run: `setUp` script lines, then ui0.json; then, for each of the test's `rounds` of
+// input, the state after it (ui1.json, ...) and the window (after1.png, ...); then quit.
 class MouseDriven : public ::testing::Test {
  protected:
-  void start(const std::string& name, const std::string& setUp,
-             const std::string& afterwards = "") {
+  void start(const std::string& name, const std::string& setUp, int rounds = 1) {
     scratch_ = testing::makeTestDirectory(name);
-    std::ofstream(scratch_ / "commands.script") << "wait-frames 3\n"
-                                                << setUp << "wait-frames 3\n"
-                                                << "dump-ui ui0.json\n"
-                                                   "wait-until-file go\n"
-                                                   "wait-frames 5\n"
-                                                   "dump-ui ui1.json\n"
-                                                   "screenshot after.png\n"
-                                                << afterwards << "quit\n";
+    rounds_ = rounds;
+    std::ofstream script(scratch_ / "commands.script");
+    script << "wait-frames 3\n" << setUp << "wait-frames 3\ndump-ui ui0.json\n";
+    for (int round = 1; round <= rounds; ++round) {
+      const std::string k = std::to_string(round);
+      script << "wait-until-file go" << k << "\nwait-frames 5\ndump-ui ui" << k
+             << ".json\nscreenshot after" << k << ".png\n";
+    }
+    script << "quit\n";
+    script.close();
     viewer_.emplace("cd '" + scratch_.string() + "' && exec '" + LENSLAB_BINARY +
                     "' --size 1280x800 --script commands.script 2>stderr.txt");
     ASSERT_TRUE(waitForFile(scratch_ / "ui0.json", std::chrono::seconds(60)));
     ui0_ = readJson(scratch_ / "ui0.json");
   }
 
-  // Runs xdotool commands on the focused viewer window ($W), then lets the script go on.
+  // Runs xdotool commands on the focused viewer window ($W), then lets the script go on to its
+  // next dump and screenshot (ui_ and after_; ui1_ keeps the first round's); after the last round,
+  // the viewer quits.
   void input(const std::string& commands) {
     const auto result =
         testing::runProcess(testing::kFocusViewerWindow + "sleep 0.2 && " + commands, scratch_);
     ASSERT_EQ(result.exitCode, 0) << result.err;
-    std::ofstream(scratch_ / "go") << "go";
-    const auto exitCode = viewer_->wait(std::chrono::seconds(60));
-    ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
-    ASSERT_EQ(*exitCode, 0) << testing::readWholeFile(scratch_ / "stderr.txt");
-    ui1_ = readJson(scratch_ / "ui1.json");
-    after_ = testing::PngImage::load(scratch_ / "after.png");
+    const std::string k = std::to_string(++round_);
+    std::ofstream(scratch_ / ("go" + k)) << "go";
+    if (round_ == rounds_) {
+      const auto exitCode = viewer_->wait(std::chrono::seconds(60));
+      ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
+      ASSERT_EQ(*exitCode, 0) << testing::readWholeFile(scratch_ / "stderr.txt");
+    } else {
+      ASSERT_TRUE(waitForFile(scratch_ / ("after" + k + ".png"), std::chrono::seconds(60)));
+    }
+    ui_ = readJson(scratch_ / ("ui" + k + ".json"));
+    after_ = testing::PngImage::load(scratch_ / ("after" + k + ".png"));
     ASSERT_TRUE(after_.valid());
+    if (round_ == 1) ui1_ = ui_;
   }
 
   // A press at `from`, a move by (dx, dy) in `steps` steps (a frame or more each), a release.
@@ -77,7 +87,8 @@ class MouseDriven : public ::testing::Test {
 
   std::filesystem::path scratch_;
   std::optional<testing::BackgroundProcess> viewer_;
-  nlohmann::json ui0_, ui1_;
+  int rounds_ = 1, round_ = 0;
+  nlohmann::json ui0_, ui1_, ui_;  // before, after the first round, after the latest
   testing::PngImage after_;
 };
 
@@ -97,7 +108,7 @@ constexpr testing::Rgb kFilmColour{240, 240, 240};  // palette::kFilm
 constexpr testing::Rgb kStopColour{235, 200, 80};   // palette::kStop
 
 TEST_F(MouseDriven, DraggingTheFilmPlaneChangesTheFilmDistanceInOneUndoStep) {
-  start("mouse-film", "", "undo\nwait-frames 3\ndump-ui ui2.json\n");
+  start("mouse-film", "", 3);
   ASSERT_TRUE(ui0_["widgets"].contains("cross-section/film")) << ui0_["widgets"];
   constexpr int kDragPx = -40;  // toward the lens (the film is near the canvas's right edge)
   const WidgetPoint grab = pointIn(ui0_, "cross-section/film", 0.5, 0.3);
@@ -116,8 +127,17 @@ TEST_F(MouseDriven, DraggingTheFilmPlaneChangesTheFilmDistanceInOneUndoStep) {
   const WidgetPoint bottom = pointIn(ui1_, "cross-section/film", 0.5, 1.0);
   EXPECT_GT(rowsWithColourNear(after_, moved.x, moved.y + 2, bottom.y - 2, kFilmColour), 0.95);
   EXPECT_LT(rowsWithColourNear(after_, before.x, moved.y + 2, bottom.y - 2, kFilmColour), 0.5);
-  // The whole drag is one edit: one undo restores the film distance it started from.
-  EXPECT_EQ(state(readJson(scratch_ / "ui2.json"), "film_distance_mm"), film0);
+  // The whole drag is one edit: one Ctrl+Z restores the film distance it started from, and
+  // Ctrl+Shift+Z brings the drag back. (Ctrl is held over a frame or more on each side of the
+  // key, so that the frame with the key sees it.)
+  const auto chord = [](const std::string& modifiers, const std::string& key) {
+    return "xdotool keydown " + modifiers + " && sleep 0.2 && xdotool key " + key +
+           " && sleep 0.2 && xdotool keyup " + modifiers;
+  };
+  input(chord("ctrl", "z"));
+  EXPECT_EQ(state(ui_, "film_distance_mm"), film0);
+  input(chord("ctrl shift", "z"));
+  EXPECT_EQ(state(ui_, "film_distance_mm"), film1);
 }
 
 TEST_F(MouseDriven, DraggingTheStopEdgeChangesTheAperture) {
