@@ -19,6 +19,9 @@ struct LensTableState {
   std::string editingCell;
   char editText[64] = {};
   double scaleTargetEflMm = 50.0;
+  // Cells drawn last frame whose value did not fit even at three significant digits (the table
+  // scrolls sideways so that none is cut off; dump-ui reports it for the layout tests).
+  int cellsCutOff = 0;
 };
 
 }  // namespace lenslab::app

@@ -46,6 +46,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"log", log},
       {"scene_path", state.scenePath},
       {"scene_loading", state.loadingScenePath},
+      {"lens_table_cells_cut_off", state.lensTable.cellsCutOff},
       {"film_distance_mm", filmDistance},
       {"stop_diameter_mm", stopDiameter},
       {"cross_section_view",

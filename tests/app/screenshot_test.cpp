@@ -125,9 +125,10 @@ TEST_F(ViewerScreenshot, ThePreviewShowsTheSceneNotABlackCanvas) {
 
 TEST_F(ViewerScreenshot, TheLayoutScalesWithTheUiScale) {
   // LENSLAB_UI_SCALE stands in for a HiDPI monitor's content scale (Xvfb always reports 1).
-  const auto dump = [&](const std::string& environment, const std::string& name) {
+  const auto dump = [&](const std::string& environment, const std::string& name,
+                        const std::string& setUp = "") {
     std::ofstream(scratch / "dump.script")
-        << "wait-frames 3\ndump-ui " << (scratch / name).string() << "\nquit\n";
+        << setUp << "wait-frames 3\ndump-ui " << (scratch / name).string() << "\nquit\n";
     const auto result = testing::runProcess(environment + " '" + std::string(LENSLAB_BINARY) +
                                                 "' --size 1600x1000 --script '" +
                                                 (scratch / "dump.script").string() + "'",
@@ -138,21 +139,29 @@ TEST_F(ViewerScreenshot, TheLayoutScalesWithTheUiScale) {
   };
   const nlohmann::json one = dump("", "one.json");
   const nlohmann::json two = dump("LENSLAB_UI_SCALE=2", "two.json");
-  ASSERT_TRUE(one["widgets"].contains("lens-table/1/radius") &&
-              two["widgets"].contains("lens-table/1/radius"));
+  // The same with the lens table given half the window.
+  const nlohmann::json wide = dump("LENSLAB_UI_SCALE=2", "wide.json", "set layout 0.5 0.25 0.2\n");
+  for (const nlohmann::json* ui : {&one, &two, &wide}) {
+    ASSERT_TRUE((*ui)["widgets"].contains("lens-table/1/radius"));
+    // Every value shows at least three significant digits whole: at twice the scale the table
+    // is wider than its panel and scrolls sideways rather than cutting values off.
+    EXPECT_EQ((*ui)["state"]["lens_table_cells_cut_off"], 0);
+  }
   const auto height = [](const nlohmann::json& ui, const std::string& widget) {
     return ui["widgets"][widget]["height"].get<double>();
   };
   // Fonts and frames twice as tall.
   EXPECT_NEAR(height(two, "lens-table/1/radius") / height(one, "lens-table/1/radius"), 2.0, 0.2);
-  // The fixed-width stop column grew with them: its checkbox still fits inside it.
-  for (const nlohmann::json* ui : {&one, &two}) {
+  // The fixed-width stop column grew with them: its checkbox still fits inside it (in the wide
+  // table, where the column is in view).
+  for (const nlohmann::json* ui : {&one, &wide}) {
     const auto& box = (*ui)["widgets"]["lens-table/1/stop"];
     const auto& cell = (*ui)["widgets"]["lens-table/1/stop-cell"];
     EXPECT_GE(box["x"].get<double>(), cell["x"].get<double>() - 0.5);
     EXPECT_LE(box["x"].get<double>() + box["width"].get<double>(),
               cell["x"].get<double>() + cell["width"].get<double>() + 0.5)
         << "the stop checkbox is cut off at scale " << (ui == &one ? 1 : 2);
+    EXPECT_GT(cell["width"].get<double>(), 0.0);
   }
   // The splitters between the panels are twice as wide.
   EXPECT_EQ(one["widgets"]["layout/left-splitter"]["width"].get<double>(), app::kSplitterThickness);

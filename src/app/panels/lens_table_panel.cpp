@@ -74,6 +74,7 @@ void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double v
       ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().FramePadding.x;
   char display[sizeof table.editText];
   const std::string formatted = fittingText(field, value, textWidth);
+  if (ImGui::CalcTextSize(formatted.c_str()).x > textWidth) ++table.cellsCutOff;
   std::strncpy(display, formatted.c_str(), sizeof display - 1);
   display[sizeof display - 1] = '\0';
   const std::string exact = formatFieldValueExact(field, value);
@@ -176,21 +177,40 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
 
   constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
                                           ImGuiTableFlags_SizingStretchProp |
-                                          ImGuiTableFlags_ScrollY;
+                                          ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY;
   // The table takes the rows it needs (up to 55% of the panel); first-order data goes below.
   const float rowHeight = ImGui::GetFrameHeightWithSpacing() + 1.0f;
   const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + px(6.0f);
   const float tableHeight =
       std::clamp(wanted, px(80.0f), std::max(px(80.0f), ImGui::GetContentRegionAvail().y * 0.55f));
-  if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight))) {
-    ImGui::TableSetupScrollFreeze(0, 1);
-    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, px(34.0f));
-    ImGui::TableSetupColumn("Radius", ImGuiTableColumnFlags_WidthStretch, 1.2f);
-    ImGui::TableSetupColumn("Thick.", ImGuiTableColumnFlags_WidthStretch, 1.05f);
-    ImGui::TableSetupColumn("n_d", ImGuiTableColumnFlags_WidthStretch, 0.9f);
-    ImGui::TableSetupColumn("V_d", ImGuiTableColumnFlags_WidthStretch, 0.75f);
-    ImGui::TableSetupColumn("Aper.", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-    ImGui::TableSetupColumn("Stop", ImGuiTableColumnFlags_WidthFixed, px(34.0f));
+  // The value columns share out the panel's width in these proportions (the radius needs the most
+  // digits), each at least as wide as the shortest text the cells fall back to (three significant
+  // digits, and a sign for the radius: fittingText). In a narrower panel (a small window, or a
+  // large UI scale) the table scrolls sideways, the row numbers staying in view, rather than
+  // cutting digits off: 3.76 must not read "3.".
+  static constexpr const char* kNames[] = {"Radius", "Thick.", "n_d", "V_d", "Aper."};
+  static constexpr float kShares[] = {1.2f, 1.05f, 0.9f, 0.9f, 1.0f};
+  static constexpr const char* kNarrowestValues[] = {"-14.5", "36.8", "1.67", "64.2", "25.2"};
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float cellPadding = 2.0f * (style.FramePadding.x + style.CellPadding.x);
+  float sharesSum = 0.0f, valuesWidth = 0.0f;
+  for (float share : kShares) sharesSum += share;
+  for (int column = 0; column < 5; ++column) {
+    const float narrowest = ImGui::CalcTextSize(kNarrowestValues[column]).x + cellPadding;
+    valuesWidth = std::max(valuesWidth, narrowest * sharesSum / kShares[column]);
+  }
+  const float fixedColumnWidth = px(34.0f);
+  const float tableWidth =
+      valuesWidth + 2.0f * (fixedColumnWidth + 2.0f * style.CellPadding.x) + style.ScrollbarSize;
+  const float innerWidth = std::max(tableWidth, ImGui::GetContentRegionAvail().x);
+  if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight), innerWidth)) {
+    state.lensTable.cellsCutOff = 0;
+    ImGui::TableSetupScrollFreeze(1, 1);
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
+    for (int column = 0; column < 5; ++column) {
+      ImGui::TableSetupColumn(kNames[column], ImGuiTableColumnFlags_WidthStretch, kShares[column]);
+    }
+    ImGui::TableSetupColumn("Stop", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
     ImGui::TableHeadersRow();
     for (std::size_t row = 0; row < surfaces.size(); ++row) {
       const optics::Surface& surface = surfaces[row];

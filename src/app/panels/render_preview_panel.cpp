@@ -5,6 +5,7 @@
 
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
+#include "app/panels/wrap_row.h"
 #include "app/preview_controller.h"
 #include "app/ui_scale.h"
 
@@ -15,14 +16,17 @@ namespace {
 void drawControls(ViewerState& state) {
   PreviewState& preview = state.preview;
   float exposure = static_cast<float>(state.exposureStops);
+  // In a narrow panel the controls wrap instead of running off its edge.
+  WrapRow row;
+  row.next(px(140) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Exposure").x);
   ImGui::SetNextItemWidth(px(140));
   if (ImGui::SliderFloat("Exposure", &exposure, -6.0f, 6.0f, "%+.1f EV")) {
     state.exposureStops = exposure;
   }
-  ImGui::SameLine();
   int camera = state.pinholeCamera ? 1 : 0;
+  row.next(WrapRow::checkboxWidth("Lens"));
   ImGui::RadioButton("Lens", &camera, 0);
-  ImGui::SameLine();
+  row.next(WrapRow::checkboxWidth("Pinhole"));
   ImGui::RadioButton("Pinhole", &camera, 1);
   state.pinholeCamera = camera == 1;
   const ImVec4 kBusy(1.0f, 0.8f, 0.35f, 1.0f);
