@@ -29,7 +29,7 @@ struct LoadedScene {
   std::string error;                  // all errors, one per line; empty on success
 };
 
-// Parses and builds a scene file (blocking; the viewer calls it on load).
+// Parses and builds a scene file (blocking: the viewer calls it on SceneLoader's thread).
 LoadedScene loadSceneFile(const std::filesystem::path& path);
 
 // After every change the preview job renders a coarse first look (a quarter of the resolution

@@ -1,5 +1,6 @@
 #include "app/scene_loader.h"
 
+#include <exception>
 #include <utility>
 
 namespace lenslab::app {
@@ -44,7 +45,15 @@ void SceneLoader::work(std::stop_token stop) {
       if (!requested_.wait(lock, stop, [&] { return next_.has_value(); })) return;
       request = std::move(*std::exchange(next_, std::nullopt));
     }
-    LoadedScene loaded = loadSceneFile(request.second);
+    LoadedScene loaded;
+    try {
+      loaded = loadSceneFile(request.second);
+    } catch (const std::exception& exception) {
+      // Parse and build errors come back as messages; this is what escapes them (out of memory
+      // for a huge mesh, an Embree failure), which must not end the program from this thread.
+      loaded = LoadedScene{};
+      loaded.error = request.second + ": cannot load the scene: " + exception.what();
+    }
     {
       std::lock_guard lock(mutex_);
       // A newer request made meanwhile supersedes this one: it is next_, and loads next.

@@ -177,8 +177,9 @@ void Viewer::finishSceneLoad() {
     }
     return;
   }
-  if (atStart && untouched)
+  if (atStart && untouched) {
     state_.lens = LensDocument(state_.lens.prescription(), state_.lens.path());
+  }
   // What the user chose to open, from the command line or the menus, is a recent file.
   if (sceneOrigin_ == SceneOrigin::User || sceneOrigin_ == SceneOrigin::CommandLine) {
     std::error_code ignored;

@@ -27,6 +27,14 @@ class Viewer final : public ScriptHost {
 
   int run(const ViewerOptions& options, std::optional<ScriptRunner> script);
 
+  // Why a scene is being opened, which decides what its outcome does: the scene at start (the
+  // default, or --scene, whose failure ends the session with exit code 1), one the user opened
+  // (a recent file once open), or a script's.
+  enum class SceneOrigin { Default, CommandLine, User, Script };
+  // Starts loading a scene off the UI thread (SceneLoader); the current scene keeps rendering
+  // until the new one is ready, and a failure leaves it in place.
+  void startLoadingScene(const std::string& path, SceneOrigin origin);
+
   // ScriptHost
   std::optional<std::string> loadLens(const std::string& path) override;
   void startLoadingScene(const std::string& path) override {
@@ -110,17 +118,6 @@ class Viewer final : public ScriptHost {
   // Sets damage_: where this frame differs from the last drawn one.
   void findDamage();
   void askForPath(FileRequest::Kind kind);
-
- public:
-  // Why a scene is being opened, which decides what its outcome does: the scene at start (the
-  // default, or --scene, whose failure ends the session with exit code 1), one the user opened
-  // (a recent file once open), or a script's.
-  enum class SceneOrigin { Default, CommandLine, User, Script };
-  // Starts loading a scene off the UI thread (SceneLoader); the current scene keeps rendering
-  // until the new one is ready, and a failure leaves it in place.
-  void startLoadingScene(const std::string& path, SceneOrigin origin);
-
- private:
   // Takes a finished scene load: the new scene (and its camera's lens), or its errors.
   void finishSceneLoad();
   std::optional<std::string> openLoadedScene(const std::string& path, const LoadedScene& loaded);

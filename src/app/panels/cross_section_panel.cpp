@@ -180,8 +180,6 @@ void recordHandles(ViewerState& state, const CrossSectionCache& shown, PixelPoin
     const PixelPoint edge =
         view.toPixels({shown.outline.stop->zMm, shown.outline.stop->apertureRadiusMm}, centre);
     state.uiRects["cross-section/stop-edge"] = {edge.x - grab, edge.y - grab, 2 * grab, 2 * grab};
-  } else {
-    state.uiRects.erase("cross-section/stop-edge");
   }
 }
 
