@@ -28,15 +28,15 @@ class PersistentSettings : public ::testing::Test {
 
 TEST_F(PersistentSettings, SizeLayoutAndRecentFilesSurviveARestart) {
   const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/wide-22mm.dat";
-  const auto first =
-      run("wait-frames 2\n"
-          "set layout 0.25 0.4 0.3\n"
-          "drop " +
-              lens +
-              "\n"  // opened by the user: a recent file
-              "wait-frames 3\n"
-              "quit\n",
-          "--size 1100x700");
+  std::ofstream(scratch / "mine.pbrt")
+      << "LookAt 0 1 -3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [40]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+         "Shape \"sphere\" \"float radius\" [1]\nWorldEnd\n";
+  const std::string scene = (scratch / "mine.pbrt").string();
+  // Opened by the user: recent files (the scene once it has loaded: wait-spp waits for that).
+  const auto first = run("wait-frames 2\nset layout 0.25 0.4 0.3\ndrop " + lens +
+                             "\nwait-frames 3\ndrop " + scene + "\nwait-spp 1\nquit\n",
+                         "--size 1100x700");
   ASSERT_EQ(first.exitCode, 0) << first.err;
   ASSERT_TRUE(std::filesystem::exists(scratch / "config" / "lenslab" / "settings.json"));
 
@@ -52,10 +52,12 @@ TEST_F(PersistentSettings, SizeLayoutAndRecentFilesSurviveARestart) {
   EXPECT_NEAR(layout["log_height"].get<double>(), 0.30, 1e-4);
   const double lensPanelWidth = ui["widgets"]["cross-section/canvas"]["x"].get<double>();
   EXPECT_NEAR(lensPanelWidth, 0.25 * 1100, 30.0);  // the cross-section starts after the table
-  // Only the file the user opened, not the default lens and scene loaded at each start.
+  // Only the files the user opened, most recent first, not the default lens and scene loaded at
+  // each start.
   const auto& recent = ui["state"]["recent_files"];
-  ASSERT_EQ(recent.size(), 1u) << recent;
-  EXPECT_EQ(recent[0], lens);
+  ASSERT_EQ(recent.size(), 2u) << recent;
+  EXPECT_EQ(recent[0], scene);
+  EXPECT_EQ(recent[1], lens);
 }
 
 }  // namespace
