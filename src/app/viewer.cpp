@@ -231,13 +231,14 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
   auto nextFrame = started;
   for (int frame = 0; !window_.shouldClose() && !state_.quitRequested; ++frame) {
     // Idle when nothing happens: wake for input, or a few times a second. While the preview
-    // renders (and while a script runs), frames come at the display rate, as swapping with vsync
-    // would pace them: input wakes the loop at once, and the time between frames is the render
-    // workers'. Only --screenshot runs flat out.
+    // renders (and while a script runs; one that ends without quitting leaves an ordinary
+    // session), frames come at the display rate, as swapping with vsync would pace them: input
+    // wakes the loop at once, and the time between frames is the render workers'. Only
+    // --screenshot runs flat out.
     const auto now = ViewerStats::Clock::now();
     if (testMode) {
       window_.waitEvents(0.0);
-    } else if (script || preview_.busy()) {
+    } else if ((script && !script->finished()) || preview_.busy()) {
       window_.waitEvents(std::max(0.0, Seconds(nextFrame - now).count()));
     } else {
       window_.waitEvents(0.25);

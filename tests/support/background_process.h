@@ -31,6 +31,9 @@ class BackgroundProcess {
   BackgroundProcess(const BackgroundProcess&) = delete;
   BackgroundProcess& operator=(const BackgroundProcess&) = delete;
 
+  // The shell's process id: the command's own when it starts with `exec`.
+  pid_t pid() const { return pid_; }
+
   // The exit code, or nullopt if it is still running after `timeout`.
   std::optional<int> wait(std::chrono::seconds timeout) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
