@@ -1,8 +1,9 @@
 // Real mouse and keyboard input (xdotool) in the cross-section and the preview: dragging the
 // film plane and the stop's edge edits the lens (the film drag is undone and redone with Ctrl+Z
-// and Ctrl+Shift+Z), the wheel zooms about the cursor, and a click in the preview focuses on what
-// is under it. Each test runs the viewer with a script that dumps its state (dump-ui) before and
-// after each round of input, waits for the test to send it, and saves a screenshot.
+// and Ctrl+Shift+Z), the wheel zooms about the cursor, a drag elsewhere pans and a double click
+// fits, and a click in the preview focuses on what is under it. Each test runs the viewer with a
+// script that dumps its state (dump-ui) before and after each round of input, waits for the test to
+// send it, and saves a screenshot.
 
 #include <gtest/gtest.h>
 
@@ -158,8 +159,8 @@ TEST_F(MouseDriven, DraggingTheStopEdgeChangesTheAperture) {
   EXPECT_GT(rowsWithColourNear(after_, edge.x, grab.y - 4, edge.y - 2, kStopColour), 0.9);
 }
 
-TEST_F(MouseDriven, TheWheelZoomsAboutTheCursor) {
-  start("mouse-wheel", "");
+TEST_F(MouseDriven, TheWheelZoomsAboutTheCursorADragPansAndADoubleClickFits) {
+  start("mouse-wheel", "", 3);
   ASSERT_TRUE(ui0_["widgets"].contains("cross-section/canvas")) << ui0_["widgets"];
   const WidgetPoint cursor = pointIn(ui0_, "cross-section/canvas", 0.8, 0.35);
   // Two notches of the wheel (X buttons 4: up, away from the user), a frame or more apart.
@@ -194,6 +195,23 @@ TEST_F(MouseDriven, TheWheelZoomsAboutTheCursor) {
   EXPECT_GT(rowsWithColourNear(after_, filmTop.x, std::max(filmTop.y, canvasTopLeft.y) + 2,
                                std::min(filmBottom.y, canvasBottomRight.y) - 2, kFilmColour),
             0.95);
+
+  // A drag on the canvas away from the handles pans: the drawing follows the mouse.
+  const auto view = [](const nlohmann::json& ui, const char* key) {
+    return ui["state"]["cross_section_view"][key].get<double>();
+  };
+  const double ppm = pixelsPerMm(ui1_);
+  input(drag(pointIn(ui1_, "cross-section/canvas", 0.15, 0.85), 30, -20, 3));
+  EXPECT_EQ(pixelsPerMm(ui_), ppm);
+  EXPECT_NEAR(view(ui_, "centre_z_mm") - view(ui1_, "centre_z_mm"), 30 / ppm, 1.5 / ppm);
+  EXPECT_NEAR(view(ui_, "centre_y_mm") - view(ui1_, "centre_y_mm"), -20 / ppm, 1.5 / ppm);
+  // A double click fits the lens to the canvas again, as it was at the start.
+  input("xdotool mousemove --window $W " +
+        pointIn(ui1_, "cross-section/canvas", 0.15, 0.85).text() +
+        " && sleep 0.2 && xdotool click --repeat 2 --delay 80 1 && sleep 0.2");
+  EXPECT_DOUBLE_EQ(pixelsPerMm(ui_), pixelsPerMm(ui0_));
+  EXPECT_DOUBLE_EQ(view(ui_, "centre_z_mm"), view(ui0_, "centre_z_mm"));
+  EXPECT_DOUBLE_EQ(view(ui_, "centre_y_mm"), view(ui0_, "centre_y_mm"));
 }
 
 TEST_F(MouseDriven, AClickInThePreviewFocusesOnWhatIsUnderIt) {
