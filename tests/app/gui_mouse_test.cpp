@@ -141,6 +141,31 @@ TEST_F(MouseDriven, DraggingTheFilmPlaneChangesTheFilmDistanceInOneUndoStep) {
   EXPECT_EQ(state(ui_, "film_distance_mm"), film1);
 }
 
+// While the film is held the preview renders at half the resolution (a quarter of the pixels,
+// so the picture keeps up with the mouse), and at full resolution again once it is released.
+TEST_F(MouseDriven, ThePreviewRendersAtHalfResolutionWhileAValueIsDragged) {
+  start("mouse-draft", "wait-spp 1\n", 2);
+  const WidgetPoint grab = pointIn(ui0_, "cross-section/film", 0.5, 0.3);
+  // Pressed and moved, then held for a second: the dump comes while the button is down.
+  input("xdotool mousemove --window $W " + grab.text() +
+        " && sleep 0.2 && xdotool mousedown 1 && sleep 0.2 && xdotool mousemove --window $W " +
+        WidgetPoint{grab.x - 10, grab.y}.text() + " && sleep 1");
+  const auto preview = [](const nlohmann::json& ui, const char* key) {
+    return ui["state"]["preview"][key].get<int>();
+  };
+  const int fullWidth = preview(ui0_, "image_width"), fullHeight = preview(ui0_, "image_height");
+  ASSERT_GT(fullWidth, 100);
+  EXPECT_TRUE(ui_["state"]["preview"]["draft"].get<bool>());
+  EXPECT_NEAR(preview(ui_, "image_width"), fullWidth / 2, 1);
+  EXPECT_NEAR(preview(ui_, "image_height"), fullHeight / 2, 1);
+  EXPECT_GE(preview(ui_, "samples_per_pixel"), 1);
+  input("xdotool mouseup 1 && sleep 1");
+  EXPECT_FALSE(ui_["state"]["preview"]["draft"].get<bool>());
+  EXPECT_EQ(preview(ui_, "image_width"), fullWidth);
+  EXPECT_EQ(preview(ui_, "image_height"), fullHeight);
+  EXPECT_GE(preview(ui_, "samples_per_pixel"), 1);
+}
+
 TEST_F(MouseDriven, DraggingTheStopEdgeChangesTheAperture) {
   start("mouse-stop", "");
   ASSERT_TRUE(ui0_["widgets"].contains("cross-section/stop-edge")) << ui0_["widgets"];
