@@ -229,6 +229,14 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
   const auto framePeriod = std::chrono::duration_cast<ViewerStats::Clock::duration>(
       Seconds(1.0 / window_.refreshRateHz()));
   auto nextFrame = started;
+  // ImGui sizes tables and scrollbars from what the previous frame drew: the first frame would
+  // show the first-order data's table collapsed, a letter per line, and the second a scrollbar
+  // the content does not need. Those two frames are laid out and dropped, never shown.
+  for (int unseen = 0; unseen < 2; ++unseen) {
+    window_.beginFrame();
+    drawFrame();
+    window_.endFrame();
+  }
   for (int frame = 0; !window_.shouldClose() && !state_.quitRequested; ++frame) {
     // Idle when nothing happens: wake for input, or a few times a second. While the preview
     // renders (and while a script runs; one that ends without quitting leaves an ordinary
