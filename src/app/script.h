@@ -3,7 +3,7 @@
 // reproducible screenshots. One command per line; '#' starts a comment; surfaces count from 1
 // as in the lens table.
 //
-//   load-lens FILE              load-scene FILE             save-lens FILE
+//   load-lens FILE              load-scene FILE (waits until it has loaded)      save-lens FILE
 //   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
 //   set camera lens|pinhole     set blocked-rays show|hide  set layout LENS PREVIEW LOG
