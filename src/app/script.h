@@ -3,7 +3,7 @@
 // reproducible screenshots. One command per line; '#' starts a comment; surfaces count from 1
 // as in the lens table.
 //
-//   load-lens FILE              load-scene FILE (waits until it has loaded)      save-lens FILE
+//   load-lens FILE              load-scene FILE             save-lens FILE
 //   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
 //   set camera lens|pinhole     set blocked-rays show|hide  set layout LENS PREVIEW LOG
@@ -18,7 +18,8 @@
 //   dump-ui FILE.json           quit [CODE]
 //
 // "set layout" takes the lens table's and the preview's shares of the width and the log's share
-// of the height, as fractions.
+// of the height, as fractions. "load-scene" waits until the scene has loaded (it loads off the
+// UI thread) and fails with its errors.
 //
 // A wait that lasts longer than two minutes fails the script.
 
