@@ -51,7 +51,6 @@ void SceneLoader::work(std::stop_token stop) {
     } catch (const std::exception& exception) {
       // Parse and build errors come back as messages; this is what escapes them (out of memory
       // for a huge mesh, an Embree failure), which must not end the program from this thread.
-      loaded = LoadedScene{};
       loaded.error = request.second + ": cannot load the scene: " + exception.what();
     }
     {

@@ -96,10 +96,7 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
   using Kind = FileRequest::Kind;
   const std::string& path = request.path;
   const auto remember = [&](std::optional<std::string> error) {
-    if (!error) {
-      std::error_code ignored;
-      addRecentFile(state_.settings, std::filesystem::absolute(path, ignored).string());
-    }
+    if (!error) rememberRecentFile(path);
     return error;
   };
   switch (request.kind) {
@@ -182,9 +179,13 @@ void Viewer::finishSceneLoad() {
   }
   // What the user chose to open, from the command line or the menus, is a recent file.
   if (sceneOrigin_ == SceneOrigin::User || sceneOrigin_ == SceneOrigin::CommandLine) {
-    std::error_code ignored;
-    addRecentFile(state_.settings, std::filesystem::absolute(result->path, ignored).string());
+    rememberRecentFile(result->path);
   }
+}
+
+void Viewer::rememberRecentFile(const std::string& path) {
+  std::error_code ignored;
+  addRecentFile(state_.settings, std::filesystem::absolute(path, ignored).string());
 }
 
 std::optional<std::string> Viewer::openLoadedScene(const std::string& path,

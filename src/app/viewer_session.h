@@ -121,6 +121,8 @@ class Viewer final : public ScriptHost {
   // Takes a finished scene load: the new scene (and its camera's lens), or its errors.
   void finishSceneLoad();
   std::optional<std::string> openLoadedScene(const std::string& path, const LoadedScene& loaded);
+  // Adds a file the user opened to the recent files, by its absolute path.
+  void rememberRecentFile(const std::string& path);
   std::optional<std::string> perform(const FileRequest& request);
 
   Window& window_;
