@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "app/automation/viewer_stats.h"
+#include "app/drawing/stale_dimming.h"
 #include "app/preview_state.h"
-#include "app/stale_dimming.h"
-#include "app/viewer_stats.h"
 #include "optics/lens_system.h"
 #include "render/progressive_renderer.h"
 #include "render/scene.h"

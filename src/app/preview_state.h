@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "app/preview_texture.h"
+#include "app/platform/preview_texture.h"
 
 namespace lenslab::app {
 

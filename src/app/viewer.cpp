@@ -15,11 +15,11 @@
 #include <utility>
 
 #include "app/panels/panels.h"
+#include "app/platform/screenshot.h"
+#include "app/platform/ui_scale.h"
+#include "app/platform/window_pixels.h"
 #include "app/resources.h"
-#include "app/screenshot.h"
-#include "app/ui_scale.h"
 #include "app/viewer_session.h"
-#include "app/window_pixels.h"
 #include "render/image_io.h"
 
 namespace lenslab::app {

@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <string>
 
+#include "app/drawing/svg_export.h"
+#include "app/platform/screenshot.h"
+#include "app/platform/ui_scale.h"
 #include "app/resources.h"
-#include "app/screenshot.h"
-#include "app/svg_export.h"
-#include "app/ui_scale.h"
 #include "app/viewer_session.h"
 #include "optics/lens_file.h"
 #include "render/camera_factory.h"

@@ -8,15 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_damage.h"
+#include "app/automation/script.h"
+#include "app/automation/ui_dump.h"
+#include "app/automation/viewer_stats.h"
+#include "app/platform/frame_damage.h"
+#include "app/platform/window.h"
 #include "app/preview_controller.h"
 #include "app/scene_loader.h"
-#include "app/script.h"
-#include "app/ui_dump.h"
 #include "app/viewer.h"
 #include "app/viewer_state.h"
-#include "app/viewer_stats.h"
-#include "app/window.h"
 
 namespace lenslab::app {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "app/lens_problems.h"
+#include "app/document/lens_problems.h"
 
 namespace lenslab::app {
 

@@ -10,12 +10,12 @@
 #include <utility>
 #include <vector>
 
-#include "app/cross_section_view.h"
+#include "app/dialogs/file_browser.h"
+#include "app/document/lens_document.h"
+#include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
-#include "app/lens_document.h"
-#include "app/lens_table_state.h"
 #include "app/log.h"
-#include "app/panels/file_browser.h"
+#include "app/panels/lens_table_state.h"
 #include "app/preview_state.h"
 #include "app/settings.h"
 #include "optics/lens_system.h"

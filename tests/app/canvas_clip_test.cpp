@@ -1,4 +1,4 @@
-#include "app/canvas_clip.h"
+#include "app/drawing/canvas_clip.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 
 #include <sstream>
 
-#include "app/cross_section_drawing.h"
-#include "app/cross_section_view.h"
-#include "app/svg_export.h"
+#include "app/drawing/cross_section_drawing.h"
+#include "app/drawing/cross_section_view.h"
+#include "app/drawing/svg_export.h"
 #include "optics/lens_system.h"
 #include "optics/ray_fan.h"
 #include "support/run_process.h"

@@ -1,7 +1,7 @@
 // FrameDamage on real ImGui frames (an ImGui context without a window: ImGui builds draw lists
 // without GL): what changed is damaged, what did not is left alone.
 
-#include "app/frame_damage.h"
+#include "app/platform/frame_damage.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

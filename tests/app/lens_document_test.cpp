@@ -1,4 +1,4 @@
-#include "app/lens_document.h"
+#include "app/document/lens_document.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "app/lens_problems.h"
+#include "app/document/lens_problems.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // markUnmatched (Myers' shortest edit script): what it keeps is a longest common subsequence.
 
-#include "app/sequence_diff.h"
+#include "app/platform/sequence_diff.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // An out-of-date preview image is dimmed only once it has been out of date for a while.
-#include "app/stale_dimming.h"
+#include "app/drawing/stale_dimming.h"
 
 #include <gtest/gtest.h>
 

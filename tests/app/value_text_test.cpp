@@ -1,4 +1,4 @@
-#include "app/value_text.h"
+#include "app/drawing/value_text.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "app/viewer_stats.h"
+#include "app/automation/viewer_stats.h"
 
 #include <gtest/gtest.h>
 

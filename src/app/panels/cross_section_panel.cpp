@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <iterator>
 
-#include "app/canvas_clip.h"
-#include "app/cross_section_drawing.h"
+#include "app/drawing/canvas_clip.h"
+#include "app/drawing/cross_section_drawing.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
-#include "app/ui_scale.h"
+#include "app/platform/ui_scale.h"
 #include "optics/lens_outline.h"
 
 namespace lenslab::app {

@@ -7,7 +7,7 @@
 
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
-#include "app/ui_scale.h"
+#include "app/platform/ui_scale.h"
 #include "optics/focus.h"
 
 namespace lenslab::app {

@@ -7,10 +7,10 @@
 #include <limits>
 #include <string>
 
+#include "app/drawing/value_text.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
-#include "app/ui_scale.h"
-#include "app/value_text.h"
+#include "app/platform/ui_scale.h"
 
 namespace lenslab::app {
 

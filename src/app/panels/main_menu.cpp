@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "app/panels/panels.h"
+#include "app/platform/ui_scale.h"
 #include "app/resources.h"
-#include "app/ui_scale.h"
 
 namespace lenslab::app {
 

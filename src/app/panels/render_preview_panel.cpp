@@ -6,8 +6,8 @@
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
+#include "app/platform/ui_scale.h"
 #include "app/preview_controller.h"
-#include "app/ui_scale.h"
 
 namespace lenslab::app {
 

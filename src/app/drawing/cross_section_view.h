@@ -2,8 +2,8 @@
 // The cross-section's view transform: lens millimetres (z, y) to canvas pixels. The front of the
 // lens is on the left, so screen x grows as z falls; screen y grows downward as y falls.
 
-#include "app/canvas_clip.h"
-#include "app/cross_section_drawing.h"
+#include "app/drawing/canvas_clip.h"
+#include "app/drawing/cross_section_drawing.h"
 
 namespace lenslab::app {
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/pixel_rect.h"
+#include "app/platform/pixel_rect.h"
 
 struct GLFWwindow;
 

@@ -1,4 +1,4 @@
-#include "app/screenshot.h"
+#include "app/platform/screenshot.h"
 
 #include <glad/gl.h>
 

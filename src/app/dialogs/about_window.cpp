@@ -1,7 +1,7 @@
 #include <imgui.h>
 
 #include "app/panels/panels.h"
-#include "app/ui_scale.h"
+#include "app/platform/ui_scale.h"
 
 namespace lenslab::app {
 

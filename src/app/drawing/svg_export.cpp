@@ -1,6 +1,6 @@
-#include "app/svg_export.h"
+#include "app/drawing/svg_export.h"
 
-#include "app/canvas_clip.h"
+#include "app/drawing/canvas_clip.h"
 #include "common/atomic_file.h"
 
 #include <algorithm>

@@ -30,7 +30,7 @@
 #include <variant>
 #include <vector>
 
-#include "app/lens_document.h"
+#include "app/document/lens_document.h"
 
 namespace lenslab::app {
 

@@ -1,4 +1,4 @@
-#include "app/partial_repaint.h"
+#include "app/platform/partial_repaint.h"
 
 #include <glad/gl.h>
 // glad must come before GLFW so GLFW does not pull in the system GL header.

@@ -1,4 +1,4 @@
-#include "app/preview_texture.h"
+#include "app/platform/preview_texture.h"
 
 #include <glad/gl.h>
 

@@ -1,4 +1,4 @@
-#include "app/script.h"
+#include "app/automation/script.h"
 
 #include <algorithm>
 #include <charconv>

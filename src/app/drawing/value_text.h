@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include "app/lens_document.h"
+#include "app/document/lens_document.h"
 
 namespace lenslab::app {
 

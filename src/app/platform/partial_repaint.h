@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "app/frame_damage.h"
+#include "app/platform/frame_damage.h"
 
 struct GLFWwindow;
 

@@ -1,4 +1,4 @@
-#include "app/window_pixels.h"
+#include "app/platform/window_pixels.h"
 
 #include <GLFW/glfw3.h>
 #include <X11/Xlib.h>

@@ -1,4 +1,4 @@
-#include "app/ui_scale.h"
+#include "app/platform/ui_scale.h"
 
 #include <charconv>
 #include <cmath>

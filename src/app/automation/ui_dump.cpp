@@ -1,4 +1,4 @@
-#include "app/ui_dump.h"
+#include "app/automation/ui_dump.h"
 
 #include "common/atomic_file.h"
 

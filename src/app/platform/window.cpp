@@ -1,4 +1,4 @@
-#include "app/window.h"
+#include "app/platform/window.h"
 
 #include <glad/gl.h>
 // glad must come before GLFW so GLFW does not pull in the system GL header.
@@ -13,9 +13,9 @@
 #include <filesystem>
 #include <utility>
 
-#include "app/cross_section_drawing.h"
-#include "app/partial_repaint.h"
-#include "app/ui_scale.h"
+#include "app/drawing/cross_section_drawing.h"
+#include "app/platform/partial_repaint.h"
+#include "app/platform/ui_scale.h"
 
 namespace lenslab::app {
 

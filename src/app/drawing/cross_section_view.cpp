@@ -1,4 +1,4 @@
-#include "app/cross_section_view.h"
+#include "app/drawing/cross_section_view.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "app/cross_section_drawing.h"
+#include "app/drawing/cross_section_drawing.h"
 
 namespace lenslab::app {
 

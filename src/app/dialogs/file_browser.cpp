@@ -1,4 +1,4 @@
-#include "app/panels/file_browser.h"
+#include "app/dialogs/file_browser.h"
 
 #include <imgui.h>
 
@@ -7,7 +7,7 @@
 #include <system_error>
 #include <utility>
 
-#include "app/ui_scale.h"
+#include "app/platform/ui_scale.h"
 
 namespace lenslab::app {
 

@@ -1,11 +1,11 @@
-#include "app/frame_damage.h"
+#include "app/platform/frame_damage.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string_view>
 
-#include "app/sequence_diff.h"
+#include "app/platform/sequence_diff.h"
 
 namespace lenslab::app {
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "app/screenshot.h"
+#include "app/platform/screenshot.h"
 
 struct GLFWwindow;
 

@@ -1,4 +1,4 @@
-#include "app/cross_section_drawing.h"
+#include "app/drawing/cross_section_drawing.h"
 
 #include <algorithm>
 #include <iterator>

@@ -24,7 +24,7 @@
 
 #include <imgui.h>
 
-#include "app/pixel_rect.h"
+#include "app/platform/pixel_rect.h"
 
 namespace lenslab::app {
 
