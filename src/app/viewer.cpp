@@ -61,21 +61,18 @@ void Viewer::handleShortcuts() {
   // Inside a text field, Ctrl+Z belongs to the field.
   if (io.KeyCtrl && !io.WantTextInput) {
     if (ImGui::IsKeyPressed(kKeyZ, false)) {
-      const bool done = io.KeyShift ? state_.lens.redo() : state_.lens.undo();
-      if (!done) state_.log.info(io.KeyShift ? "nothing to redo" : "nothing to undo");
+      state_.lens.issue(io.KeyShift ? EditCommand(Redo{}) : EditCommand(Undo{}));
     }
-    if (ImGui::IsKeyPressed(kKeyY, false) && !state_.lens.redo()) {
-      state_.log.info("nothing to redo");
-    }
+    if (ImGui::IsKeyPressed(kKeyY, false)) state_.lens.issue(Redo{});
   }
 }
 
 namespace {
 
 // A menu, popup or the file browser is on screen: captures wait for a frame without them.
-bool overlayShown(const ViewerState& state) {
+bool overlayShown(const FileBrowser& fileBrowser) {
   return ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) ||
-         state.fileBrowser.visible();
+         fileBrowser.visible();
 }
 
 }  // namespace
@@ -85,31 +82,27 @@ void Viewer::drawFrame() {
   const float height = static_cast<float>(window_.height());
   ++state_.frameNumber;
   // Whatever is open now is drawn in this frame, even if it closes during it.
-  state_.frameHadOverlay = overlayShown(state_);
+  state_.frameHadOverlay = overlayShown(fileBrowser_);
   state_.uiRects.clear();
   state_.dragging = false;
   refreshLens(state_);
   handleShortcuts();
   const float menuHeight = drawMainMenu(state_);
-  applyPendingEdits(state_);
   state_.settings.layout =
       clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight), uiScale());
   state_.layout =
       computeLayout(width, height, menuHeight, state_.settings.layout, state_.showLog, uiScale());
   drawSplitters(state_, width, height);
   drawLensTablePanel(state_, state_.layout.lensTable);
-  // Apply the table's edits now, so the cross-section drawn next shows them in this frame.
-  applyPendingEdits(state_);
   drawCrossSectionPanel(state_, state_.layout.crossSection);
   drawRenderPreviewPanel(state_, state_.layout.renderPreview);
   if (state_.showLog) drawLogPanel(state_, state_.layout.log);
   drawAboutWindow(state_);
-  if (const auto chosen = state_.fileBrowser.draw(); chosen && state_.browserPurpose) {
-    state_.fileRequests.push_back({*state_.browserPurpose, chosen->string()});
+  if (const auto chosen = fileBrowser_.draw(); chosen && browserPurpose_) {
+    state_.fileRequests.push_back({*browserPurpose_, chosen->string()});
   }
-  if (state_.fileBrowser.visible()) state_.uiRects["file-browser"] = state_.fileBrowser.rect();
-  applyPendingEdits(state_);
-  state_.frameHadOverlay |= overlayShown(state_);
+  if (fileBrowser_.visible()) state_.uiRects["file-browser"] = fileBrowser_.rect();
+  state_.frameHadOverlay |= overlayShown(fileBrowser_);
 }
 
 void Viewer::openDroppedFiles() {
@@ -232,10 +225,13 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
   // ImGui sizes tables and scrollbars from what the previous frame drew: the first frame would
   // show the first-order data's table collapsed, a letter per line, and the second a scrollbar
   // the content does not need. Those two frames are laid out and dropped, never shown.
+  // The lens the session opens with, issued before the first frame, is there for it to lay out.
+  applyCommands(state_);
   for (int unseen = 0; unseen < 2; ++unseen) {
     window_.beginFrame();
     drawFrame();
     window_.endFrame();
+    applyCommands(state_);
   }
   for (int frame = 0; !window_.shouldClose() && !state_.quitRequested; ++frame) {
     // Idle when nothing happens: wake for input, or a few times a second. While the preview
@@ -246,6 +242,8 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     const auto now = ViewerStats::Clock::now();
     if (testMode) {
       window_.waitEvents(0.0);
+    } else if (state_.lens.hasQueued()) {
+      window_.waitEvents(0.0);  // a file opened or a script's edit, waiting for its frame
     } else if ((script && !script->finished()) || preview_.busy()) {
       window_.waitEvents(std::max(0.0, Seconds(nextFrame - now).count()));
     } else {
@@ -260,6 +258,11 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     drawFrame();
     window_.endFrame();
     focusOnClick();
+    // The one place the lens changes, once per frame: the commands the panels, menus, shortcuts
+    // and the focus click issued in this frame, and those that opening files and the script
+    // issued after the last one. The frame just laid out shows the lens as it was; the next one
+    // shows the change.
+    applyCommands(state_);
     // Start the render this frame's edits call for before the frame is rasterized, which may
     // take a while.
     updatePreview();
@@ -275,7 +278,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     carryOutRequests();
     takeCaptures();
     if (script && !state_.quitRequested) script->step(*this);
-    updatePreview();  // files opened and script edits start rendering now, not next frame
+    updatePreview();  // a script's exposure or camera starts rendering now, not next frame
     if (testMode && frame + 1 >= options.frames) {
       // The picture must show the preview's first pass, not the black canvas before it (unless
       // there is nothing to render, or it takes far too long).
@@ -351,14 +354,16 @@ int runViewer(const ViewerOptions& options) {
   Viewer viewer(*window, state);
   viewer.keepLensOnSceneLoad = !options.lensPath.empty();
   if (const auto lensError =
-          viewer.loadLens(options.lensPath.empty() ? defaultLensPath() : options.lensPath)) {
+          viewer
+              .openLensFile(options.lensPath.empty() ? defaultLensPath() : options.lensPath,
+                            /*startsSession=*/true)
+              .error) {
     state.log.error(*lensError);
     if (!options.lensPath.empty()) {
       std::fprintf(stderr, "lenslab: %s\n", lensError->c_str());
       return 1;
     }
   }
-  state.lens = LensDocument(state.lens.prescription(), state.lens.path());  // nothing to undo yet
   // The scene loads while the window runs (a failed --scene then ends the session with 1).
   if (options.scenePath.empty()) {
     viewer.startLoadingScene(defaultScenePath(), Viewer::SceneOrigin::Default);

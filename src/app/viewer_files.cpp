@@ -41,26 +41,25 @@ void Viewer::askForPath(FileRequest::Kind kind) {
   const std::filesystem::path lenses = findResourceDirectory("lenses");
   const std::filesystem::path scenes = findResourceDirectory("scenes");
   const std::filesystem::path here = std::filesystem::current_path();
-  state_.browserPurpose = kind;
+  browserPurpose_ = kind;
   switch (kind) {
     case Kind::Open:
     case Kind::OpenLens:
-      state_.fileBrowser.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
+      fileBrowser_.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
       break;
     case Kind::OpenScene:
-      state_.fileBrowser.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
+      fileBrowser_.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
       break;
     case Kind::SaveLens:
-      state_.fileBrowser.show("Save lens as", FileBrowser::Mode::Save, {".dat"}, here,
-                              render::nonClobberingPath(here, "lens", ".dat").filename());
+      fileBrowser_.show("Save lens as", FileBrowser::Mode::Save, {".dat"}, here,
+                        render::nonClobberingPath(here, "lens", ".dat").filename());
       break;
     case Kind::SaveRender:
-      state_.fileBrowser.show("Save render as (.png or .exr)", FileBrowser::Mode::Save,
-                              {".png", ".exr"}, here,
-                              render::nonClobberingPath(here, "lenslab-render", ".png").filename());
+      fileBrowser_.show("Save render as (.png or .exr)", FileBrowser::Mode::Save, {".png", ".exr"},
+                        here, render::nonClobberingPath(here, "lenslab-render", ".png").filename());
       break;
     case Kind::SaveCrossSection:
-      state_.fileBrowser.show(
+      fileBrowser_.show(
           "Save cross-section as (.png or .svg)", FileBrowser::Mode::Save, {".png", ".svg"}, here,
           render::nonClobberingPath(here, "lenslab-cross-section", ".svg").filename());
       break;
@@ -85,8 +84,8 @@ std::optional<std::string> Viewer::openDialog(const std::string& kind) {
 }
 
 std::optional<std::string> Viewer::chooseInDialog(const std::string& name) {
-  if (!state_.fileBrowser.visible()) return "there is no file browser open to choose " + name;
-  state_.fileBrowser.submit(name);
+  if (!fileBrowser_.visible()) return "there is no file browser open to choose " + name;
+  fileBrowser_.submit(name);
   return std::nullopt;
 }
 
@@ -105,9 +104,9 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
         startLoadingScene(path, SceneOrigin::User);
         return std::nullopt;
       }
-      return remember(loadLens(path));
+      return remember(openLensFile(path).error);
     case Kind::OpenLens:
-      return remember(loadLens(path));
+      return remember(openLensFile(path).error);
     case Kind::OpenScene:
       // Loads off the UI thread; it becomes a recent file once open (finishSceneLoad).
       startLoadingScene(path, SceneOrigin::User);
@@ -132,20 +131,19 @@ std::string Viewer::saveWindowScreenshotToDefault() {
   return {};
 }
 
-std::optional<std::string> Viewer::loadLens(const std::string& path) {
+ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSession) {
   optics::LensFileResult file = optics::readLensFile(path);
   if (!file.ok()) {
     // The current lens stays; every problem goes to the log with its file:line:column.
     std::string message = "cannot open lens " + path + ":";
     for (const optics::LensFileError& error : file.errors) message += "\n  " + error.toString();
-    return message;
+    return {message};
   }
-  state_.lens.apply(ReplaceLens{std::move(file.lens->prescription), path});
-  state_.lensHeaderComments = std::move(file.lens->headerComments);
-  state_.crossSectionNeedsFit = true;
-  refreshLens(state_);
+  const CommandTicket ticket =
+      state_.lens.issue(ReplaceLens{std::move(file.lens->prescription), path,
+                                    std::move(file.lens->headerComments), startsSession});
   state_.log.info("Opened lens " + path);
-  return std::nullopt;
+  return {std::nullopt, ticket};
 }
 
 void Viewer::startLoadingScene(const std::string& path, SceneOrigin origin) {
@@ -159,11 +157,6 @@ void Viewer::finishSceneLoad() {
   std::optional<SceneLoader::Result> result = sceneLoader_.take();
   if (!result) return;
   state_.loadingScenePath.clear();
-  const bool atStart =
-      sceneOrigin_ == SceneOrigin::Default || sceneOrigin_ == SceneOrigin::CommandLine;
-  // The scene opened with may bring its camera's lens: that is where the session starts, not an
-  // edit to undo (unless the user has edited the lens while the scene loaded).
-  const bool untouched = !state_.lens.canUndo();
   const std::optional<std::string> error = openLoadedScene(result->path, result->loaded);
   sceneLoadOutcome_ = error.value_or("");
   if (error) {
@@ -173,9 +166,6 @@ void Viewer::finishSceneLoad() {
       quit(1);
     }
     return;
-  }
-  if (atStart && untouched) {
-    state_.lens = LensDocument(state_.lens.prescription(), state_.lens.path());
   }
   // What the user chose to open, from the command line or the menus, is a recent file.
   if (sceneOrigin_ == SceneOrigin::User || sceneOrigin_ == SceneOrigin::CommandLine) {
@@ -205,9 +195,11 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
     const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
     if (realistic != nullptr) {
       const std::string lensPath = loaded.description->camera.lensPath.lexically_normal().string();
-      state_.lens.apply(ReplaceLens{realistic->lens().prescription(), lensPath});
-      state_.lensHeaderComments.clear();
-      refreshLens(state_);
+      // The scene opened with brings the lens the session starts from, not an edit to undo
+      // (unless the user has edited the lens while the scene loaded).
+      const bool atStart =
+          sceneOrigin_ == SceneOrigin::Default || sceneOrigin_ == SceneOrigin::CommandLine;
+      state_.lens.issue(ReplaceLens{realistic->lens().prescription(), lensPath, {}, atStart});
       state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
     } else {
       for (const render::Diagnostic& diagnostic : diagnostics.all()) {
@@ -220,7 +212,8 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
 
 std::optional<std::string> Viewer::saveLens(const std::string& path) {
   std::string error;
-  if (!optics::writeLensFile(path, state_.lens.prescription(), state_.lensHeaderComments, &error)) {
+  if (!optics::writeLensFile(path, state_.lens.prescription(),
+                             state_.lens.document().headerComments(), &error)) {
     return error;
   }
   state_.lens.markSaved(path);

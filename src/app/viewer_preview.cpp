@@ -67,8 +67,7 @@ void Viewer::focusOnClick() {
                      " m: " + focus.whyNot);
     return;
   }
-  state_.lens.apply(SetFilmDistance{*focus.valueMm});
-  refreshLens(state_);
+  state_.lens.issue(SetFilmDistance{*focus.valueMm});
   state_.focusDistanceInputMm = *distance;
   char message[128];
   std::snprintf(message, sizeof message, "Focused at %.3f m (film distance %.3f mm)",

@@ -11,6 +11,7 @@
 #include "app/automation/script.h"
 #include "app/automation/ui_dump.h"
 #include "app/automation/viewer_stats.h"
+#include "app/dialogs/file_browser.h"
 #include "app/platform/frame_damage.h"
 #include "app/platform/window.h"
 #include "app/preview_controller.h"
@@ -35,37 +36,24 @@ class Viewer final : public ScriptHost {
   // until the new one is ready, and a failure leaves it in place.
   void startLoadingScene(const std::string& path, SceneOrigin origin);
 
+  // Reads a lens file and issues the command that opens it (applied with the frame). With
+  // `startsSession`, it is the lens the session starts with: nothing to undo.
+  Issued openLensFile(const std::string& path, bool startsSession = false);
+
   // ScriptHost
-  std::optional<std::string> loadLens(const std::string& path) override;
+  Issued loadLens(const std::string& path) override { return openLensFile(path); }
   void startLoadingScene(const std::string& path) override {
     startLoadingScene(path, SceneOrigin::Script);
   }
   std::optional<std::string> sceneLoadOutcome() const override { return sceneLoadOutcome_; }
   std::optional<std::string> saveLens(const std::string& path) override;
-  // Script edits take effect at once (validation, LensSystem, fans), so a following wait-spp
-  // waits for the render of the edited lens.
-  // Script edits are logged like the table's, so a scripted session's log reads the same.
-  std::optional<std::string> edit(const EditCommand& command) override {
-    auto refusal = state_.lens.apply(command);
-    if (refusal) {
-      state_.log.error("script: cannot " + describe(command) + ": " + *refusal);
-    } else {
-      state_.log.info("script: " + describe(command));
-    }
-    refreshLens(state_);
-    return refusal;
+  // A script's edits are commands like the user's, applied with the next frame and logged with
+  // "script:" in front; the script waits for the outcome.
+  CommandTicket issue(const EditCommand& command) override {
+    return state_.lens.issue(command, {}, CommandSource::Script);
   }
-  bool undo() override {
-    const bool done = state_.lens.undo();
-    state_.log.info(done ? "script: undo" : "script: nothing to undo");
-    refreshLens(state_);
-    return done;
-  }
-  bool redo() override {
-    const bool done = state_.lens.redo();
-    state_.log.info(done ? "script: redo" : "script: nothing to redo");
-    refreshLens(state_);
-    return done;
+  std::optional<std::string> commandOutcome(CommandTicket ticket) const override {
+    return state_.lens.outcome(ticket);
   }
   void setExposure(double stops) override { state_.exposureStops = stops; }
   void setPinholeCamera(bool pinhole) override { state_.pinholeCamera = pinhole; }
@@ -75,7 +63,9 @@ class Viewer final : public ScriptHost {
   // A window screenshot at the default, non-clobbering path (F12, the menu); "" or an error.
   std::string saveWindowScreenshotToDefault();
   std::optional<std::string> dumpUi(const std::string& path) override {
-    const std::string error = writeUiDump(path, state_, window_.width(), window_.height());
+    const std::string error =
+        writeUiDump(path, state_, fileBrowser_.visible() ? fileBrowser_.purpose() : "",
+                    window_.width(), window_.height());
     return error.empty() ? std::nullopt : std::optional(error);
   }
   std::optional<int> previewSpp() const override;
@@ -99,6 +89,7 @@ class Viewer final : public ScriptHost {
   }
 
  private:
+  // Draws the panels (which issue commands for their edits), then applies this frame's commands.
   void drawFrame();
   void handleShortcuts();
   // Before drawing: takes the renderer's newest snapshot into the preview state.
@@ -139,6 +130,8 @@ class Viewer final : public ScriptHost {
   void checkWindowPixels();
   bool drawnThisFrame_ = false;
   SceneLoader sceneLoader_{&Window::wakeFromAnyThread};
+  FileBrowser fileBrowser_;
+  std::optional<FileRequest::Kind> browserPurpose_;  // what the browser's answer is for
   SceneOrigin sceneOrigin_ = SceneOrigin::Default;
   std::optional<std::string> sceneLoadOutcome_ = "";  // nullopt while a scene loads
 

@@ -6,12 +6,6 @@
 
 namespace lenslab::app {
 
-// Out of line on purpose: inlined into every caller, GCC 12 reports false
-// -Wmaybe-uninitialized warnings for the variant's inactive members.
-void ViewerState::requestEdit(EditCommand command, std::string mergeKey) {
-  pendingEdits.emplace_back(std::move(command), std::move(mergeKey));
-}
-
 std::optional<double> fanObjectDistanceFromVertexMm(const ViewerState& state) {
   if (state.fanSettings.objectAtInfinity || !state.lensSystem) return std::nullopt;
   // The fans' object plane is given from the film (as "Focus at distance" and "In focus" are);
@@ -90,16 +84,32 @@ const CrossSectionCache& crossSection(ViewerState& state) {
   return cache;
 }
 
-void applyPendingEdits(ViewerState& state) {
-  for (auto& [command, mergeKey] : state.pendingEdits) {
-    if (const auto refusal = state.lens.apply(command, mergeKey)) {
-      state.log.error("cannot " + describe(command) + ": " + *refusal);
-    } else if (mergeKey.empty()) {
+void applyCommands(ViewerState& state) {
+  for (const AppliedCommand& applied : state.lens.applyQueued()) {
+    const IssuedCommand& issued = applied.issued;
+    const bool fromScript = issued.source == CommandSource::Script;
+    const std::string prefix = fromScript ? "script: " : "";
+    const bool isUndoOrRedo = std::holds_alternative<Undo>(issued.command) ||
+                              std::holds_alternative<Redo>(issued.command);
+    if (applied.refusal) {
+      if (isUndoOrRedo) {
+        state.log.info(prefix + *applied.refusal);  // "nothing to undo" is no error
+      } else {
+        state.log.error(prefix + "cannot " + describe(issued.command) + ": " + *applied.refusal);
+      }
+      continue;
+    }
+    if (std::holds_alternative<ReplaceLens>(issued.command)) {
+      // A new lens is shown whole (whoever opened it logs where it came from).
+      state.crossSectionNeedsFit = true;
+    } else if (fromScript) {
+      state.log.info(prefix + describe(issued.command));
+    } else if (issued.mergeKey.empty() && !isUndoOrRedo) {
       // Drags would flood the log with one line per frame; their final value is in the table.
-      state.log.info(describe(command));
+      // The user's undo and redo show in the table and the title.
+      state.log.info(describe(issued.command));
     }
   }
-  state.pendingEdits.clear();
   refreshLens(state);
 }
 

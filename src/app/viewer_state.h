@@ -10,8 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/dialogs/file_browser.h"
-#include "app/document/lens_document.h"
+#include "app/document/lens_editor.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
 #include "app/log.h"
@@ -69,8 +68,9 @@ struct ViewerState {
   Settings settings;
   std::filesystem::path settingsFile;  // empty: do not persist (no config directory)
   Log log;
-  LensDocument lens;
-  std::vector<std::string> lensHeaderComments;  // kept from the opened file for saving
+  // The lens document; every change to it is a command issued here (lens.issue) and applied by
+  // applyCommands once per frame.
+  LensEditor lens;
   std::vector<LensProblem> lensProblems;  // validation of lens.prescription(); empty when valid
   // The last valid lens, built; it keeps rendering while the document is invalid.
   std::shared_ptr<const optics::LensSystem> lensSystem;
@@ -93,6 +93,9 @@ struct ViewerState {
   bool crossSectionNeedsFit = true;
   std::pair<float, float> crossSectionCanvasSize{0.0f, 0.0f};  // as last drawn
   double pendingZoomFactor = 1.0;  // a zoom asked by a script, applied about the canvas centre
+  // How far the view moves along the axis in the next frame: a film drag moves the lens in the
+  // lens frame, and the view follows once the drag's edit has been applied.
+  double crossSectionShiftZMm = 0.0;
   CrossSectionGrab crossSectionGrab = CrossSectionGrab::None;
   // The film's diagonal, drawn as the film plane's extent and used for the field of view. The
   // scene's film sets it; 43.27 mm is the 36 x 24 mm full frame.
@@ -100,11 +103,6 @@ struct ViewerState {
   // Effective focal length of the last valid lens (0 when unknown), for "scale to focal length".
   double lensEflMm = 0.0;
   PanelLayout layout;
-  // Edits made by panels this frame, applied by the main loop (which logs refusals). The string
-  // is the merge key: a drag sends the same key every frame so it undoes as one step.
-  std::vector<std::pair<EditCommand, std::string>> pendingEdits;
-  void requestEdit(EditCommand command, std::string mergeKey = {});
-
   // Screen rectangles of named widgets, recorded while drawing, for `dump-ui` (tests click them).
   std::map<std::string, Rect> uiRects;
   // Render preview settings.
@@ -113,9 +111,7 @@ struct ViewerState {
   PreviewState preview;
   std::string scenePath;
   std::string loadingScenePath;  // a scene being opened (off the UI thread); empty when none
-  FileBrowser fileBrowser;
   std::vector<FileRequest> fileRequests;
-  std::optional<FileRequest::Kind> browserPurpose;  // what the browser's answer is for
   // Requests made by menus and shortcuts, carried out by the main loop between frames.
   bool quitRequested = false;
   bool windowScreenshotRequested = false;
@@ -138,8 +134,10 @@ const CrossSectionCache& crossSection(ViewerState& state);
 // The fan spec's object distance is from the front vertex; the UI's is from the film.
 std::optional<double> fanObjectDistanceFromVertexMm(const ViewerState& state);
 
-// Applies state.pendingEdits to the lens document in order, logging what each did and why any
-// was refused, and clears the list.
-void applyPendingEdits(ViewerState& state);
+// The one place the lens document changes: applies the commands issued since the last call (by
+// panels, menus, shortcuts, scripts, the focus click, opening files), in order, logs what each
+// did and why any was refused, and rebuilds what depends on the lens. The viewer calls it once
+// per frame.
+void applyCommands(ViewerState& state);
 
 }  // namespace lenslab::app

@@ -9,10 +9,11 @@ namespace {
 
 class FakeHost : public ScriptHost {
  public:
-  std::optional<std::string> loadLens(const std::string& path) override {
+  Issued loadLens(const std::string& path) override {
     calls.push_back("load-lens " + path);
-    if (path == "broken.dat") return std::string("broken.dat:3:7: not a number");
-    return std::nullopt;
+    if (path == "broken.dat") return {std::string("broken.dat:3:7: not a number")};
+    return {std::nullopt,
+            lens.issue(ReplaceLens{lens.prescription(), path}, {}, CommandSource::Script)};
   }
   // A scene loads over `sceneLoadFrames` calls of sceneLoadOutcome(), as the viewer's loads
   // take frames.
@@ -29,17 +30,13 @@ class FakeHost : public ScriptHost {
     calls.push_back("save-lens " + path);
     return std::nullopt;
   }
-  std::optional<std::string> edit(const EditCommand& command) override {
+  // Like the viewer, the fake applies a script's lens commands with the next frame.
+  CommandTicket issue(const EditCommand& command) override {
     calls.push_back(describe(command));
-    return document.apply(command);
+    return lens.issue(command, {}, CommandSource::Script);
   }
-  bool undo() override {
-    calls.push_back("undo");
-    return document.undo();
-  }
-  bool redo() override {
-    calls.push_back("redo");
-    return document.redo();
+  std::optional<std::string> commandOutcome(CommandTicket ticket) const override {
+    return lens.outcome(ticket);
   }
   void setExposure(double stops) override { exposure = stops; }
   void setPinholeCamera(bool usePinhole) override { pinhole = usePinhole; }
@@ -60,9 +57,24 @@ class FakeHost : public ScriptHost {
   void quit(int code) override { exitCode = code; }
   void reportError(const std::string& message) override { errors.push_back(message); }
 
-  LensDocument document{optics::Prescription{{{40.0, 5.0, 1.5, std::nullopt, 20.0},
-                                              {0.0, 5.0, 1.0, std::nullopt, 10.0},
-                                              {-40.0, 40.0, 1.0, std::nullopt, 20.0}}}};
+  FakeHost() {
+    lens.issue(ReplaceLens{optics::Prescription{{{40.0, 5.0, 1.5, std::nullopt, 20.0},
+                                                 {0.0, 5.0, 1.0, std::nullopt, 10.0},
+                                                 {-40.0, 40.0, 1.0, std::nullopt, 20.0}}},
+                           "",
+                           {},
+                           true});
+    lens.applyQueued();
+  }
+  const optics::Prescription& prescription() const { return lens.prescription(); }
+  // One frame of the viewer: the commands issued since the last are applied, then the script
+  // takes its step.
+  bool frame(ScriptRunner& runner) {
+    lens.applyQueued();
+    return runner.step(*this);
+  }
+
+  LensEditor lens;
   std::vector<std::string> calls, errors;
   std::optional<int> exitCode;
   std::optional<int> spp = 0;
@@ -104,10 +116,19 @@ TEST(ScriptRun, AppliesEditsUndoAndQuits) {
   ASSERT_TRUE(script.errors.empty()) << script.errors[0];
   FakeHost host;
   ScriptRunner runner(script.commands);
-  EXPECT_TRUE(runner.step(host));  // the screenshot waits for a frame that shows the edits
-  EXPECT_FALSE(runner.step(host));
-  EXPECT_DOUBLE_EQ(host.document.prescription().surfaces[0].radiusMm, 35.0);
-  EXPECT_DOUBLE_EQ(host.document.prescription().surfaces[2].thicknessMm, 40.0);  // undone
+  // Each edit waits for the frame that applies it: the radius, the film distance, the undo.
+  EXPECT_TRUE(host.frame(runner));
+  EXPECT_EQ(host.calls, std::vector<std::string>{"set radius of surface 1 to 35"});
+  EXPECT_DOUBLE_EQ(host.prescription().surfaces[0].radiusMm, 40.0);  // not applied yet
+  EXPECT_TRUE(host.frame(runner));
+  EXPECT_DOUBLE_EQ(host.prescription().surfaces[0].radiusMm, 35.0);
+  EXPECT_TRUE(host.frame(runner));
+  EXPECT_DOUBLE_EQ(host.prescription().surfaces[2].thicknessMm, 37.0);
+  EXPECT_TRUE(host.frame(runner));  // the screenshot waits for a frame that shows the edits
+  EXPECT_FALSE(host.frame(runner));
+  EXPECT_DOUBLE_EQ(host.prescription().surfaces[0].radiusMm, 35.0);
+  EXPECT_DOUBLE_EQ(host.prescription().surfaces[2].thicknessMm, 40.0);  // undone
+  EXPECT_EQ(host.calls.back(), "screenshot out.png");
   EXPECT_DOUBLE_EQ(host.exposure, -1.5);
   EXPECT_TRUE(host.pinhole);
   EXPECT_EQ(host.exitCode, 3);
@@ -165,11 +186,26 @@ TEST(ScriptRun, LoadSceneWaitsForTheSceneAndFailsWithItsError) {
 }
 
 TEST(ScriptRun, EditOfAMissingSurfaceFails) {
-  const ParsedScript script = parseScript("set surface 9 radius 1\n", "t");
+  const ParsedScript script = parseScript("set surface 9 radius 1\nundo\n", "t");
   FakeHost host;
   ScriptRunner runner(script.commands);
-  runner.step(host);
+  EXPECT_TRUE(host.frame(runner));  // issued, and waiting for its frame
+  EXPECT_FALSE(runner.failed());
+  EXPECT_FALSE(host.frame(runner));
   EXPECT_TRUE(runner.failed());
+  ASSERT_EQ(host.errors.size(), 1u);
+  EXPECT_NE(host.errors[0].find("t:1:5: set: surface 9 does not exist"), std::string::npos)
+      << host.errors[0];
+}
+
+TEST(ScriptRun, UndoWithNothingToUndoFails) {
+  const ParsedScript script = parseScript("undo\n", "t");
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  while (host.frame(runner)) {
+  }
+  ASSERT_EQ(host.errors.size(), 1u);
+  EXPECT_EQ(host.errors[0], "t:1:1: undo: nothing to undo");
 }
 
 TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
@@ -177,8 +213,10 @@ TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
   ASSERT_TRUE(script.errors.empty());
   FakeHost host;
   ScriptRunner runner(script.commands);
-  runner.step(host);
-  EXPECT_FALSE(host.document.prescription().surfaces[0].abbeD.has_value());
+  while (host.frame(runner)) {
+  }
+  EXPECT_FALSE(runner.failed());
+  EXPECT_FALSE(host.prescription().surfaces[0].abbeD.has_value());
 }
 
 TEST(ScriptParse, ViewerCommandsAreChecked) {

@@ -242,6 +242,20 @@ bool ScriptRunner::step(ScriptHost& host) {
   return false;
 }
 
+bool ScriptRunner::editAndWait(const ScriptCommand& command, ScriptHost& host,
+                               const EditCommand& edit) {
+  if (!awaitedCommand_) awaitedCommand_ = host.issue(edit);
+  return waitForCommand(command, host);
+}
+
+bool ScriptRunner::waitForCommand(const ScriptCommand& command, ScriptHost& host) {
+  const std::optional<std::string> outcome = host.commandOutcome(*awaitedCommand_);
+  if (!outcome) return false;  // applied with the next frame
+  awaitedCommand_.reset();
+  if (!outcome->empty()) fail(host, command.where(0) + ": " + command.verb + ": " + *outcome);
+  return true;
+}
+
 bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   const auto& a = command.arguments;
   const auto check = [&](std::optional<std::string> error) {
@@ -255,7 +269,14 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (isCapture && changedThisStep_) return false;  // let a frame show the change first
   const bool isWait = verb.rfind("wait-", 0) == 0;
   if (!isCapture && !isWait) changedThisStep_ = true;
-  if (verb == "load-lens") return check(host.loadLens(a[0]));
+  if (verb == "load-lens") {
+    if (!awaitedCommand_) {
+      const ScriptHost::Issued issued = host.loadLens(a[0]);
+      if (issued.error) return check(issued.error);
+      awaitedCommand_ = issued.ticket;
+    }
+    return waitForCommand(command, host);
+  }
   if (verb == "load-scene") {
     if (framesWaited_++ == 0) host.startLoadingScene(a[0]);
     const auto outcome = host.sceneLoadOutcome();
@@ -264,25 +285,23 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "save-lens") return check(host.saveLens(a[0]));
   if (verb == "make-stop") {
-    return check(host.edit(MakeStop{static_cast<std::size_t>(*parseInteger(a[0]) - 1)}));
+    return editAndWait(command, host, MakeStop{static_cast<std::size_t>(*parseInteger(a[0]) - 1)});
   }
-  if (verb == "flip") return check(host.edit(FlipLens{}));
-  if (verb == "undo") {
-    if (!host.undo()) fail(host, command.where(0) + ": undo: nothing to undo");
-    return true;
-  }
-  if (verb == "redo") {
-    if (!host.redo()) fail(host, command.where(0) + ": redo: nothing to redo");
-    return true;
-  }
+  if (verb == "flip") return editAndWait(command, host, FlipLens{});
+  if (verb == "undo") return editAndWait(command, host, Undo{});
+  if (verb == "redo") return editAndWait(command, host, Redo{});
   if (verb == "set") {
     if (a[0] == "surface") {
       const auto field = *surfaceFieldFromName(a[2]);
       const std::size_t surface = static_cast<std::size_t>(*parseInteger(a[1]) - 1);
-      return check(host.edit(SetSurfaceField{surface, field, *parseNumber(a[3])}));
+      return editAndWait(command, host, SetSurfaceField{surface, field, *parseNumber(a[3])});
     }
-    if (a[0] == "film-distance") return check(host.edit(SetFilmDistance{*parseNumber(a[1])}));
-    if (a[0] == "stop-diameter") return check(host.edit(SetStopDiameter{*parseNumber(a[1])}));
+    if (a[0] == "film-distance") {
+      return editAndWait(command, host, SetFilmDistance{*parseNumber(a[1])});
+    }
+    if (a[0] == "stop-diameter") {
+      return editAndWait(command, host, SetStopDiameter{*parseNumber(a[1])});
+    }
     if (a[0] == "exposure") {
       host.setExposure(*parseNumber(a[1]));
       return true;

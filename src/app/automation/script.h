@@ -30,7 +30,7 @@
 #include <variant>
 #include <vector>
 
-#include "app/document/lens_document.h"
+#include "app/document/lens_editor.h"
 
 namespace lenslab::app {
 
@@ -57,16 +57,25 @@ class ScriptHost {
  public:
   virtual ~ScriptHost() = default;
   // Each returns an error message, or nullopt on success.
-  virtual std::optional<std::string> loadLens(const std::string& path) = 0;
+  //
+  // Changes to the lens are commands that the viewer applies once per frame, like the user's:
+  // the host queues them and says later how each went (the script waits for that).
+  struct Issued {
+    std::optional<std::string> error;  // the command could not even be issued (unreadable file)
+    CommandTicket ticket = 0;
+  };
+  // Reads the lens file and issues the command that opens it.
+  virtual Issued loadLens(const std::string& path) = 0;
+  // Issues an edit, undo or redo.
+  virtual CommandTicket issue(const EditCommand& command) = 0;
+  // nullopt until the command has been applied; then "" or why the document refused it.
+  virtual std::optional<std::string> commandOutcome(CommandTicket ticket) const = 0;
   // Opening a scene takes a while (it is parsed and built off the UI thread): load-scene starts
   // it, then waits for sceneLoadOutcome(): nullopt while it loads, then "" once the scene is
   // open, or why it could not be opened.
   virtual void startLoadingScene(const std::string& path) = 0;
   virtual std::optional<std::string> sceneLoadOutcome() const = 0;
   virtual std::optional<std::string> saveLens(const std::string& path) = 0;
-  virtual std::optional<std::string> edit(const EditCommand& command) = 0;
-  virtual bool undo() = 0;
-  virtual bool redo() = 0;
   virtual void setExposure(double stops) = 0;
   virtual void setPinholeCamera(bool pinhole) = 0;
   virtual std::optional<std::string> saveWindowScreenshot(const std::string& path) = 0;
@@ -111,6 +120,11 @@ class ScriptRunner {
  private:
   // Returns true when the command is complete, false when it must be retried next frame.
   bool execute(const ScriptCommand& command, ScriptHost& host);
+  // Issues a lens command once, then waits for the frame that applies it; a refusal fails the
+  // script.
+  bool editAndWait(const ScriptCommand& command, ScriptHost& host, const EditCommand& edit);
+  // Waits for awaitedCommand_ to be applied.
+  bool waitForCommand(const ScriptCommand& command, ScriptHost& host);
   void fail(ScriptHost& host, const std::string& message);
 
   // A waiting command that has not finished after this long fails the script, so a test never
@@ -123,6 +137,7 @@ class ScriptRunner {
   // A screenshot after a change in the same step waits a frame, so it shows the change.
   bool changedThisStep_ = false;
   int framesWaited_ = 0;
+  std::optional<CommandTicket> awaitedCommand_;  // issued by the current command, not yet applied
   bool failed_ = false;
 };
 

@@ -9,7 +9,7 @@
 namespace lenslab::app {
 
 std::string writeUiDump(const std::filesystem::path& path, const ViewerState& state,
-                        int windowWidth, int windowHeight) {
+                        const std::string& fileBrowserPurpose, int windowWidth, int windowHeight) {
   nlohmann::json widgets = nlohmann::json::object();
   for (const auto& [name, rect] : state.uiRects) {
     widgets[name] = {{"x", rect.x}, {"y", rect.y}, {"width", rect.width}, {"height", rect.height}};
@@ -37,7 +37,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"lens_modified", state.lens.modified()},
       {"lens_valid", state.lensSystemIsCurrent},
       {"problems", problems},
-      {"file_browser", state.fileBrowser.visible() ? state.fileBrowser.purpose() : ""},
+      {"file_browser", fileBrowserPurpose},
       {"recent_files", state.settings.recentFiles},
       {"layout",
        {{"lens_table_width", state.settings.layout.lensTableWidth},

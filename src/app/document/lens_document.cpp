@@ -85,6 +85,8 @@ std::string describe(const EditCommand& command) {
           [&](const ReplaceLens& c) {
             text << "open " << (c.path.empty() ? std::string("a new lens") : c.path);
           },
+          [&](const Undo&) { text << "undo"; },
+          [&](const Redo&) { text << "redo"; },
       },
       command);
   return text.str();
@@ -118,7 +120,24 @@ bool LensDocument::modified() const {
 
 std::optional<std::string> LensDocument::apply(const EditCommand& command,
                                                const std::string& mergeKey) {
+  if (std::holds_alternative<Undo>(command)) {
+    return undo() ? std::nullopt : std::optional<std::string>("nothing to undo");
+  }
+  if (std::holds_alternative<Redo>(command)) {
+    return redo() ? std::nullopt : std::optional<std::string>("nothing to redo");
+  }
+  if (const auto* replace = std::get_if<ReplaceLens>(&command);
+      replace != nullptr && replace->startsSession && undo_.empty() && redo_.empty()) {
+    current_ = replace->prescription;
+    path_ = replace->path;
+    headerComments_ = replace->headerComments;
+    saved_ = current_;
+    lastMergeKey_.clear();
+    ++generation_;
+    return std::nullopt;
+  }
   optics::Prescription next = current_;
+  std::vector<std::string> nextHeaderComments = headerComments_;
   std::string nextPath = path_;
   std::vector<optics::Surface>& surfaces = next.surfaces;
   const std::size_t count = surfaces.size();
@@ -177,20 +196,24 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
           [&](const ReplaceLens& c) {
             next = c.prescription;
             nextPath = c.path;
+            nextHeaderComments = c.headerComments;
           },
+          [](const Undo&) {},  // handled above
+          [](const Redo&) {},
       },
       command);
   if (refusal) return refusal;
 
   const bool merges = !mergeKey.empty() && mergeKey == lastMergeKey_ && !undo_.empty();
   if (!merges) {
-    undo_.push_back({current_, path_});
+    undo_.push_back({current_, path_, headerComments_});
     if (undo_.size() > kMaxUndoSteps) undo_.erase(undo_.begin());
   }
   lastMergeKey_ = mergeKey;
   redo_.clear();
   current_ = std::move(next);
   path_ = std::move(nextPath);
+  headerComments_ = std::move(nextHeaderComments);
   // A lens just opened is unmodified.
   if (std::holds_alternative<ReplaceLens>(command)) saved_ = current_;
   ++generation_;
@@ -199,9 +222,10 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
 
 bool LensDocument::undo() {
   if (undo_.empty()) return false;
-  redo_.push_back({current_, path_});
+  redo_.push_back({current_, path_, headerComments_});
   current_ = std::move(undo_.back().prescription);
   path_ = std::move(undo_.back().path);
+  headerComments_ = std::move(undo_.back().headerComments);
   undo_.pop_back();
   lastMergeKey_.clear();
   ++generation_;
@@ -210,9 +234,10 @@ bool LensDocument::undo() {
 
 bool LensDocument::redo() {
   if (redo_.empty()) return false;
-  undo_.push_back({current_, path_});
+  undo_.push_back({current_, path_, headerComments_});
   current_ = std::move(redo_.back().prescription);
   path_ = std::move(redo_.back().path);
+  headerComments_ = std::move(redo_.back().headerComments);
   redo_.pop_back();
   lastMergeKey_.clear();
   ++generation_;

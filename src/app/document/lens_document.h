@@ -1,7 +1,9 @@
 #pragma once
 // The lens being edited. Every change is an explicit command (set the radius of surface 3 to
-// 40 mm, flip the lens, ...) applied to the prescription, recorded for undo and counted by a
-// generation number that the viewer watches to rebuild the optics and restart the render.
+// 40 mm, flip the lens, undo, ...) applied to the prescription, recorded for undo and counted by
+// a generation number that the viewer watches to rebuild the optics and restart the render. The
+// viewer changes it only through LensEditor (lens_editor.h), which queues the commands of a frame
+// and applies them in one place.
 
 #include <cstdint>
 #include <optional>
@@ -49,12 +51,20 @@ struct SetStopDiameter {
 };
 struct ReplaceLens {
   optics::Prescription prescription;
-  std::string path;  // where it came from; empty for an unsaved lens
+  std::string path;                              // where it came from; empty for an unsaved lens
+  std::vector<std::string> headerComments = {};  // the file's, kept for saving
+  // The lens the session starts with (the default or --lens, or the scene's): while nothing has
+  // been edited it replaces the document without an undo step, so that there is nothing to undo
+  // at the start. Once something has been edited it is an ordinary, undoable replacement.
+  bool startsSession = false;
 };
+// Undo and redo are commands too, so that they take the same path as every other change.
+struct Undo {};
+struct Redo {};
 
 using EditCommand =
     std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface, MoveSurface, FlipLens,
-                 ScaleLens, SetFilmDistance, SetStopDiameter, ReplaceLens>;
+                 ScaleLens, SetFilmDistance, SetStopDiameter, ReplaceLens, Undo, Redo>;
 
 // What a command does, in words, for the log and the Edit menu ("set radius of surface 3").
 std::string describe(const EditCommand& command);
@@ -66,11 +76,14 @@ class LensDocument {
 
   const optics::Prescription& prescription() const { return current_; }
   const std::string& path() const { return path_; }
+  // Comment lines of the file the lens came from, written back when it is saved.
+  const std::vector<std::string>& headerComments() const { return headerComments_; }
   // Bumped by every change, undo and redo included.
   std::uint64_t generation() const { return generation_; }
 
   // Applies a command. Commands that name a surface that does not exist (or would leave no
-  // surface) are refused with a message and change nothing. Values are not range-checked here:
+  // surface), and an undo or redo with nothing to undo or redo, are refused with a message and
+  // change nothing. Values are not range-checked here:
   // an invalid lens is allowed while editing and flagged by validation.
   //
   // `mergeKey`: consecutive commands with the same non-empty key (a slider being dragged)
@@ -79,6 +92,7 @@ class LensDocument {
 
   bool canUndo() const { return !undo_.empty(); }
   bool canRedo() const { return !redo_.empty(); }
+  // What apply(Undo{}) and apply(Redo{}) do; false when there is nothing to undo or redo.
   bool undo();
   bool redo();
   // Ends the current merge group, so the next command starts a new undo step.
@@ -92,11 +106,13 @@ class LensDocument {
   struct Snapshot {
     optics::Prescription prescription;
     std::string path;
+    std::vector<std::string> headerComments;
   };
   static constexpr std::size_t kMaxUndoSteps = 500;
 
   optics::Prescription current_;
   std::string path_;
+  std::vector<std::string> headerComments_;
   optics::Prescription saved_;  // as last opened or saved
   std::vector<Snapshot> undo_, redo_;
   std::string lastMergeKey_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <utility>
 
 #include "app/drawing/canvas_clip.h"
 #include "app/drawing/cross_section_drawing.h"
@@ -204,8 +205,11 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
   state.crossSectionCanvasSize = {size.x, size.y};
   const PixelPoint centre{origin.x + size.x * 0.5f, origin.y + size.y * 0.5f};
   CrossSectionView& view = state.crossSectionView;
-  // Input first, on the lens as it is; the edits it makes are applied before painting, so the
-  // drawing shows them in this same frame.
+  // A film drag in the last frame moved the film, and with it the lens in the lens frame (the
+  // film is at z = 0): the view moves with it, so the lens stays still on screen.
+  view.centreZMm += std::exchange(state.crossSectionShiftZMm, 0.0);
+  // Input on the lens as it is; the edits it issues are applied after this frame, and the next
+  // one shows them.
   const optics::Prescription& lens = state.lens.prescription();
   const std::optional<optics::StopOutline> stopBefore = crossSection(state).outline.stop;
 
@@ -249,15 +253,16 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
         const double deltaMm = delta.x / view.pixelsPerMm;
         if (deltaMm != 0.0) {
           const double film = std::max(0.01, lens.surfaces.back().thicknessMm + deltaMm);
-          state.requestEdit(SetFilmDistance{film}, "drag-film");
-          view.centreZMm += film - lens.surfaces.back().thicknessMm;
+          state.lens.issue(SetFilmDistance{film}, "drag-film");
+          // Applied after this frame, so the view follows in the next one, with the lens.
+          state.crossSectionShiftZMm += film - lens.surfaces.back().thicknessMm;
         }
         break;
       }
       case Grab::StopEdge: {
         const optics::OutlinePoint at = view.toLens(mouse, centre);
         const double diameter = std::max(0.05, 2.0 * std::abs(at.yMm));
-        state.requestEdit(SetStopDiameter{diameter}, "drag-stop");
+        state.lens.issue(SetStopDiameter{diameter}, "drag-stop");
         break;
       }
       case Grab::None:
@@ -279,7 +284,6 @@ void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
     state.crossSectionNeedsFit = true;
   }
 
-  applyPendingEdits(state);
   const CrossSectionCache& shown = crossSection(state);
   if (state.crossSectionNeedsFit && shown.fitBounds.hasPoints) {
     view.fit(shown.fitBounds, size.x, size.y);

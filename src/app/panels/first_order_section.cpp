@@ -56,7 +56,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   row.next(px(110) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Film mm").x);
   ImGui::SetNextItemWidth(px(110));
   if (ImGui::DragFloat("Film mm", &film, 0.02f, 0.01f, 1000.0f, "%.3f")) {
-    state.requestEdit(SetFilmDistance{film}, "film-distance-drag");
+    state.lens.issue(SetFilmDistance{film}, "film-distance-drag");
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Film distance: last surface to film (drag or type)");
@@ -67,7 +67,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     row.next(px(110) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Stop mm").x);
     ImGui::SetNextItemWidth(px(110));
     if (ImGui::DragFloat("Stop mm", &diameter, 0.02f, 0.05f, 500.0f, "%.2f")) {
-      state.requestEdit(SetStopDiameter{diameter}, "stop-diameter-drag");
+      state.lens.issue(SetStopDiameter{diameter}, "stop-diameter-drag");
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop diameter (drag or type)");
     if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
@@ -91,7 +91,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     const optics::FocusResult result =
         optics::filmDistanceForObjectDistance(lens, state.focusDistanceInputMm);
     if (result.ok()) {
-      state.requestEdit(SetFilmDistance{*result.valueMm});
+      state.lens.issue(SetFilmDistance{*result.valueMm});
     } else {
       state.log.error("cannot focus at " + distanceText(state.focusDistanceInputMm) + ": " +
                       result.whyNot);

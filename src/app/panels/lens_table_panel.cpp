@@ -103,7 +103,7 @@ void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double v
     if (parsed.value) {
       const double old = value;
       const bool unchanged = (std::isnan(old) && std::isnan(*parsed.value)) || old == *parsed.value;
-      if (!unchanged) state.requestEdit(SetSurfaceField{row, field, *parsed.value});
+      if (!unchanged) state.lens.issue(SetSurfaceField{row, field, *parsed.value});
     } else {
       state.log.error("surface " + std::to_string(row + 1) + " " + surfaceFieldName(field) + ": " +
                       parsed.error);
@@ -132,25 +132,25 @@ void drawToolbar(ViewerState& state) {
     added.radiusMm = std::numeric_limits<double>::infinity();  // flat
     added.thicknessMm = 1.0;
     added.apertureDiameterMm = hasSelection ? surfaces[row].apertureDiameterMm : 10.0;
-    state.requestEdit(InsertSurface{hasSelection ? row + 1 : surfaces.size(), added});
+    state.lens.issue(InsertSurface{hasSelection ? row + 1 : surfaces.size(), added});
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Insert a flat surface after the selected row");
   ImGui::SameLine();
   ImGui::BeginDisabled(!hasSelection);
-  if (ImGui::Button("Delete")) state.requestEdit(DeleteSurface{row});
+  if (ImGui::Button("Delete")) state.lens.issue(DeleteSurface{row});
   ImGui::SameLine();
   if (ImGui::ArrowButton("##up", ImGuiDir_Up) && row > 0) {
-    state.requestEdit(MoveSurface{row, row - 1});
+    state.lens.issue(MoveSurface{row, row - 1});
     state.lensTable.selectedRow = selected - 1;
   }
   ImGui::SameLine();
   if (ImGui::ArrowButton("##down", ImGuiDir_Down) && row + 1 < surfaces.size()) {
-    state.requestEdit(MoveSurface{row, row + 1});
+    state.lens.issue(MoveSurface{row, row + 1});
     state.lensTable.selectedRow = selected + 1;
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Flip")) state.requestEdit(FlipLens{});
+  if (ImGui::Button("Flip")) state.lens.issue(FlipLens{});
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reverse the lens front to back");
 }
 
@@ -244,7 +244,7 @@ void drawLensTablePanel(ViewerState& state, const Rect& rect) {
       // The cell's extent (its clip rectangle) and the checkbox, for the HiDPI layout test.
       const ImVec2 cellMin = ImGui::GetWindowDrawList()->GetClipRectMin();
       const ImVec2 cellMax = ImGui::GetWindowDrawList()->GetClipRectMax();
-      if (ImGui::Checkbox("##stop", &isStop) && isStop) state.requestEdit(MakeStop{row});
+      if (ImGui::Checkbox("##stop", &isStop) && isStop) state.lens.issue(MakeStop{row});
       if (row == 0) {
         const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
         state.uiRects["lens-table/1/stop"] = {min.x, min.y, max.x - min.x, max.y - min.y};

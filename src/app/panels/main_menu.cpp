@@ -38,8 +38,10 @@ void fileMenu(ViewerState& state) {
 }
 
 void editMenu(ViewerState& state) {
-  if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.lens.canUndo())) state.lens.undo();
-  if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, state.lens.canRedo())) state.lens.redo();
+  if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.lens.canUndo())) state.lens.issue(Undo{});
+  if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, state.lens.canRedo())) {
+    state.lens.issue(Redo{});
+  }
 }
 
 void lensMenu(ViewerState& state) {
@@ -53,12 +55,12 @@ void lensMenu(ViewerState& state) {
     ImGui::EndMenu();
   }
   ImGui::Separator();
-  if (ImGui::MenuItem("Flip front to back")) state.requestEdit(FlipLens{});
+  if (ImGui::MenuItem("Flip front to back")) state.lens.issue(FlipLens{});
   if (ImGui::BeginMenu("Scale to focal length")) {
     ImGui::SetNextItemWidth(px(120));
     ImGui::InputDouble("mm##efl", &state.lensTable.scaleTargetEflMm, 0, 0, "%.2f");
     if (ImGui::Button("Scale") && state.lensEflMm > 0 && state.lensTable.scaleTargetEflMm > 0) {
-      state.requestEdit(ScaleLens{state.lensTable.scaleTargetEflMm / state.lensEflMm});
+      state.lens.issue(ScaleLens{state.lensTable.scaleTargetEflMm / state.lensEflMm});
       ImGui::CloseCurrentPopup();
     }
     if (!(state.lensEflMm > 0)) ImGui::TextDisabled("needs a valid lens with a positive EFL");
