@@ -42,6 +42,7 @@ Settings loadSettings(const std::filesystem::path& file, std::string* warning) {
       settings.layout.previewWidth = layout->value("preview_width", defaults.layout.previewWidth);
       settings.layout.logHeight = layout->value("log_height", defaults.layout.logHeight);
     }
+    settings.selectedTabs = json.value("selected_tabs", std::map<std::string, std::string>{});
     settings.recentFiles = json.value("recent_files", std::vector<std::string>{});
     if (settings.windowWidth < 200 || settings.windowHeight < 150) {
       settings.windowWidth = defaults.windowWidth;
@@ -62,6 +63,7 @@ std::string saveSettings(const std::filesystem::path& file, const Settings& sett
        {{"lens_table_width", settings.layout.lensTableWidth},
         {"preview_width", settings.layout.previewWidth},
         {"log_height", settings.layout.logHeight}}},
+      {"selected_tabs", settings.selectedTabs},
       {"recent_files", settings.recentFiles},
   };
   std::error_code error;

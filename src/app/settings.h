@@ -1,9 +1,10 @@
 #pragma once
-// The viewer's persistent settings: window size, panel layout and recent files. They live in
-// the user's config directory ($XDG_CONFIG_HOME/lenslab, else ~/.config/lenslab), never in the
+// The viewer's persistent settings: window size, panel layout and tabs, and recent files. They live
+// in the user's config directory ($XDG_CONFIG_HOME/lenslab, else ~/.config/lenslab), never in the
 // current directory.
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,8 @@ struct Settings {
   int windowWidth = 1600;
   int windowHeight = 900;
   LayoutFractions layout;
+  // The tab each dock area shows, by area name ("bottom": "log"); see panels/panel_registry.h.
+  std::map<std::string, std::string> selectedTabs;
   std::vector<std::string> recentFiles;  // most recent first
 };
 

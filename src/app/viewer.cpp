@@ -90,13 +90,10 @@ void Viewer::drawFrame() {
   const float menuHeight = drawMainMenu(state_);
   state_.settings.layout =
       clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight), uiScale());
-  state_.layout =
-      computeLayout(width, height, menuHeight, state_.settings.layout, state_.showLog, uiScale());
+  state_.layout = computeLayout(width, height, menuHeight, state_.settings.layout,
+                                state_.showBottomArea, uiScale());
   drawSplitters(state_, width, height);
-  drawLensTablePanel(state_, state_.layout.lensTable);
-  drawCrossSectionPanel(state_, state_.layout.crossSection);
-  drawRenderPreviewPanel(state_, state_.layout.renderPreview);
-  if (state_.showLog) drawLogPanel(state_, state_.layout.log);
+  drawDockAreas(state_);
   drawAboutWindow(state_);
   if (const auto chosen = fileBrowser_.draw(); chosen && browserPurpose_) {
     state_.fileRequests.push_back({*browserPurpose_, chosen->string()});
@@ -175,6 +172,20 @@ void Viewer::findDamage() {
   damage_ = frameDamage_.compare(*ImGui::GetDrawData(), width, height,
                                  newPreview ? std::span(&preview, 1) : std::span<ImTextureID>());
   if (window_.takeRefreshRequest()) damage_ = {PixelRect{0, 0, width, height}};
+}
+
+std::optional<std::string> Viewer::showPanel(const std::string& id) {
+  const PanelSpec* panel = findPanel(id);
+  if (panel == nullptr) {
+    std::string known;
+    for (const PanelSpec& registered : registeredPanels()) {
+      known += (known.empty() ? "" : ", ") + std::string(registered.id);
+    }
+    return "no panel '" + id + "' (the panels: " + known + ")";
+  }
+  state_.tabsToSelect[dockAreaName(panel->area)] = panel->id;
+  if (panel->area == DockArea::Bottom) state_.showBottomArea = true;
+  return std::nullopt;
 }
 
 std::optional<std::string> Viewer::checkWindow() {
@@ -335,6 +346,12 @@ int runViewer(const ViewerOptions& options) {
       std::string warning;
       state.settings = loadSettings(state.settingsFile, &warning);
       if (!warning.empty()) state.log.warning(warning);
+    }
+  }
+  // The tabs chosen last time, where the panel still docks in that area.
+  for (const auto& [area, id] : state.settings.selectedTabs) {
+    if (const PanelSpec* panel = findPanel(id); panel && dockAreaName(panel->area) == area) {
+      state.tabsToSelect[area] = id;
     }
   }
   Window::Options windowOptions;

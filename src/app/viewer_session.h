@@ -82,6 +82,7 @@ class Viewer final : public ScriptHost {
   }
   std::optional<std::string> checkWindow() override;
   void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
+  std::optional<std::string> showPanel(const std::string& id) override;
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
   void setLayout(double lensTable, double preview, double log) override {
     state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),

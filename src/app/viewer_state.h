@@ -120,7 +120,10 @@ struct ViewerState {
   // Whether the frame just drawn showed a menu, popup or the file browser at any point.
   bool frameHadOverlay = false;
   bool showAbout = false;
-  bool showLog = true;
+  bool showBottomArea = true;  // the log and the other panels docked along the bottom
+  // Tabs to select in the next frame, by dock area name (the settings' choice at start, a
+  // script's show-panel, the View menu); each is dropped once its tab shows.
+  std::map<std::string, std::string> tabsToSelect;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
 };
 

@@ -1,5 +1,5 @@
-// Settings persist between runs: window size, panel layout and recent files. Scripted runs
-// normally leave the settings alone; LENSLAB_SETTINGS_IN_SCRIPTS=1 lets this test use them, in
+// Settings persist between runs: window size, panel layout and tabs, and recent files. Scripted
+// runs normally leave the settings alone; LENSLAB_SETTINGS_IN_SCRIPTS=1 lets this test use them, in
 // its own XDG_CONFIG_HOME.
 
 #include <gtest/gtest.h>
@@ -34,8 +34,8 @@ TEST_F(PersistentSettings, SizeLayoutAndRecentFilesSurviveARestart) {
          "Shape \"sphere\" \"float radius\" [1]\nWorldEnd\n";
   const std::string scene = (scratch / "mine.pbrt").string();
   // Opened by the user: recent files (the scene once it has loaded: wait-spp waits for that).
-  const auto first = run("wait-frames 2\nset layout 0.25 0.4 0.3\ndrop " + lens +
-                             "\nwait-frames 3\ndrop " + scene + "\nwait-spp 1\nquit\n",
+  const auto first = run("wait-frames 2\nset layout 0.25 0.4 0.3\nshow-panel lens-file\ndrop " +
+                             lens + "\nwait-frames 3\ndrop " + scene + "\nwait-spp 1\nquit\n",
                          "--size 1100x700");
   ASSERT_EQ(first.exitCode, 0) << first.err;
   ASSERT_TRUE(std::filesystem::exists(scratch / "config" / "lenslab" / "settings.json"));
@@ -50,6 +50,7 @@ TEST_F(PersistentSettings, SizeLayoutAndRecentFilesSurviveARestart) {
   EXPECT_NEAR(layout["lens_table_width"].get<double>(), 0.25, 1e-4);
   EXPECT_NEAR(layout["preview_width"].get<double>(), 0.40, 1e-4);
   EXPECT_NEAR(layout["log_height"].get<double>(), 0.30, 1e-4);
+  EXPECT_EQ(ui["state"]["tabs"]["bottom"], "lens-file") << ui["state"];
   const double lensPanelWidth = ui["widgets"]["cross-section/canvas"]["x"].get<double>();
   EXPECT_NEAR(lensPanelWidth, 0.25 * 1100, 30.0);  // the cross-section starts after the table
   // Only the files the user opened, most recent first, not the default lens and scene loaded at

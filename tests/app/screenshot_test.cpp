@@ -19,6 +19,8 @@ using testing::Rgb;
 constexpr Rgb kMenuBar{36, 36, 36};
 constexpr Rgb kTitleBar{10, 10, 10};
 constexpr Rgb kTitleBarActive{41, 74, 122};
+constexpr Rgb kTabSelected{51, 105, 173};  // ImGui's dark style: TabActive
+constexpr Rgb kTabStripBackground{15, 15, 16};
 constexpr Rgb kCrossSectionCanvas{18, 20, 26};
 constexpr Rgb kPreviewCanvas{0, 0, 0};
 constexpr Rgb kGlassEdge{170, 200, 240};
@@ -83,7 +85,15 @@ TEST_F(ViewerScreenshot, DrawsEachPanelWhereTheLayoutPutsIt) {
   EXPECT_TRUE(isTitleBar(layout.lensTable));
   EXPECT_TRUE(isTitleBar(layout.crossSection));
   EXPECT_TRUE(isTitleBar(layout.renderPreview));
-  EXPECT_TRUE(isTitleBar(layout.log));
+  // The bottom area holds two panels (the log and the lens file): tabs instead of a title bar,
+  // the log's selected at the left (above its label), the strip's background beyond the tabs.
+  EXPECT_FALSE(isTitleBar(layout.log));
+  EXPECT_LE(image.at(static_cast<int>(layout.log.x + 5), static_cast<int>(layout.log.y + 3))
+                .maxDifference(kTabSelected),
+            3);
+  EXPECT_LE(image.at(static_cast<int>(layout.log.right() - 10), static_cast<int>(layout.log.y + 3))
+                .maxDifference(kTabStripBackground),
+            3);
 
   const auto interiorFraction = [&](const app::Rect& panel, Rgb colour) {
     return image.fractionNear(static_cast<int>(panel.x + 20), static_cast<int>(panel.y + 40),

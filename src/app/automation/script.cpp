@@ -39,6 +39,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"drop", {1, 1}},
       {"open-dialog", {1, 1}},
       {"dialog-choose", {1, 1}},
+      {"show-panel", {1, 1}},
   };
   return table;
 }
@@ -322,6 +323,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     return true;
   }
   if (verb == "drop") return check(host.drop(a[0]));
+  if (verb == "show-panel") return check(host.showPanel(a[0]));
   if (verb == "open-dialog") return check(host.openDialog(a[0]));
   if (verb == "dialog-choose") return check(host.chooseInDialog(a[0]));
   if (verb == "wait-frames") {

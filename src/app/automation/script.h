@@ -9,6 +9,8 @@
 //   set camera lens|pinhole     set blocked-rays show|hide  set layout LENS PREVIEW LOG
 //   make-stop N                 flip                        undo          redo
 //   zoom-cross-section FACTOR   (about the canvas centre)
+//   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
+//                                lens-file; see panels/panel_registry.cpp)
 //   drop FILE                   (as if the file were dropped onto the window)
 //   open-dialog KIND            (KIND: open-lens open-scene save-lens save-render
 //                                save-cross-section; shows the file browser as the menu does)
@@ -102,6 +104,9 @@ class ScriptHost {
   // the script.
   virtual std::optional<std::string> checkWindow() { return "there is no window to check"; }
   virtual void zoomCrossSection(double /*factor*/) {}
+  virtual std::optional<std::string> showPanel(const std::string& id) {
+    return "there is no panel " + id + " here";
+  }
   virtual void showBlockedRays(bool /*show*/) {}
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
 };

@@ -44,6 +44,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"preview_width", state.settings.layout.previewWidth},
         {"log_height", state.settings.layout.logHeight}}},
       {"log", log},
+      {"tabs", state.settings.selectedTabs},
       {"scene_path", state.scenePath},
       {"scene_loading", state.loadingScenePath},
       {"lens_table_cells_cut_off", state.lensTable.cellsCutOff},

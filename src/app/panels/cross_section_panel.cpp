@@ -186,8 +186,8 @@ void recordHandles(ViewerState& state, const CrossSectionCache& shown, PixelPoin
 
 }  // namespace
 
-void drawCrossSectionPanel(ViewerState& state, const Rect& rect) {
-  if (!beginCanvasPanel("Cross-section", rect, ImGuiWindowFlags_NoScrollbar)) {
+void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place) {
+  if (!beginCanvasPanel("Cross-section", place, ImGuiWindowFlags_NoScrollbar)) {
     ImGui::End();
     return;
   }

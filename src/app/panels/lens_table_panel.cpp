@@ -156,8 +156,8 @@ void drawToolbar(ViewerState& state) {
 
 }  // namespace
 
-void drawLensTablePanel(ViewerState& state, const Rect& rect) {
-  if (!beginPanel("Lens", rect)) {
+void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
+  if (!beginPanel("Lens", place)) {
     ImGui::End();
     return;
   }

@@ -19,8 +19,8 @@ ImVec4 colourFor(LogLevel level) {
 
 }  // namespace
 
-void drawLogPanel(ViewerState& state, const Rect& rect) {
-  if (beginPanel("Log", rect)) {
+void drawLogPanel(ViewerState& state, const PanelPlace& place) {
+  if (beginPanel("Log", place)) {
     if (ImGui::SmallButton("Clear")) state.log.clear();
     ImGui::Separator();
     ImGui::BeginChild("log-lines", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);

@@ -69,7 +69,17 @@ void lensMenu(ViewerState& state) {
 }
 
 void viewMenu(ViewerState& state) {
-  ImGui::MenuItem("Log", nullptr, &state.showLog);
+  // Each panel, by its tab: choosing one shows it (and the bottom area, if it docks there).
+  for (const PanelSpec& panel : registeredPanels()) {
+    const bool shown = state.settings.selectedTabs[dockAreaName(panel.area)] == panel.id &&
+                       (panel.area != DockArea::Bottom || state.showBottomArea);
+    if (ImGui::MenuItem(panel.title, nullptr, shown)) {
+      state.tabsToSelect[dockAreaName(panel.area)] = panel.id;
+      if (panel.area == DockArea::Bottom) state.showBottomArea = true;
+    }
+  }
+  ImGui::MenuItem("Bottom area", nullptr, &state.showBottomArea);
+  ImGui::Separator();
   if (ImGui::MenuItem("Fit cross-section")) state.crossSectionNeedsFit = true;
   if (ImGui::MenuItem("Reset layout")) state.settings.layout = LayoutFractions{};
 }

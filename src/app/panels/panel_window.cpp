@@ -4,8 +4,8 @@
 
 namespace lenslab::app {
 
-bool beginCanvasPanel(const char* title, const Rect& rect, ImGuiWindowFlags extraFlags) {
-  if (!beginPanel(title, rect, extraFlags | ImGuiWindowFlags_NoBackground)) return false;
+bool beginCanvasPanel(const char* title, const PanelPlace& place, ImGuiWindowFlags extraFlags) {
+  if (!beginPanel(title, place, extraFlags | ImGuiWindowFlags_NoBackground)) return false;
   // ImGui draws no border around a window without a background either: the panel's border, as
   // ImGui's own (the window's rectangle, stroked inside), unclipped by the window's content
   // rect. First in the window's draw list, as ImGui's would be, so that a change in the panel's
@@ -42,9 +42,10 @@ void fillAround(ImDrawList* draw, ImVec2 areaMin, ImVec2 areaMax, ImVec2 holeMin
 void fillPanelBackgroundAround(ImVec2 canvasMin, ImVec2 canvasMax) {
   const ImVec2 position = ImGui::GetWindowPos();
   const ImVec2 size = ImGui::GetWindowSize();
-  // Below the title bar, whose height is the frame height (the font size plus the frame padding
-  // above and below: ImGui's TitleBarHeight).
-  const ImVec2 belowTitle(position.x, position.y + ImGui::GetFrameHeight());
+  // Below the title bar, if any: where the content region starts, less the window's padding.
+  const float titleBarHeight =
+      ImGui::GetWindowContentRegionMin().y - ImGui::GetStyle().WindowPadding.y;
+  const ImVec2 belowTitle(position.x, position.y + titleBarHeight);
   fillAround(ImGui::GetBackgroundDrawList(), belowTitle,
              ImVec2(position.x + size.x, position.y + size.y), canvasMin, canvasMax,
              ImGui::GetColorU32(ImGuiCol_WindowBg));

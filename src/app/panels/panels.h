@@ -1,20 +1,29 @@
 #pragma once
-// One function per panel; each draws into the rectangle the layout gave it.
+// The viewer's panels and window-wide widgets. Each panel draws into the place its dock area
+// gives it (panel_registry.h lists them and where they dock).
 
+#include "app/panels/panel_registry.h"
 #include "app/viewer_state.h"
 
 namespace lenslab::app {
 
 // Draws the main menu bar and returns its height in pixels.
 float drawMainMenu(ViewerState& state);
-void drawLensTablePanel(ViewerState& state, const Rect& rect);
-// The lens's first-order data, focus and aperture controls (inside the lens panel).
-void drawFirstOrderSection(ViewerState& state);
-void drawCrossSectionPanel(ViewerState& state, const Rect& rect);
-void drawRenderPreviewPanel(ViewerState& state, const Rect& rect);
-void drawLogPanel(ViewerState& state, const Rect& rect);
-// The draggable gaps between panels; dragging one moves the layout fractions.
+// Every dock area with its panels (tabbed where an area has several), in the rectangles of
+// state.layout.
+void drawDockAreas(ViewerState& state);
+// The draggable gaps between the areas; dragging one moves the layout fractions.
 void drawSplitters(ViewerState& state, float windowWidth, float windowHeight);
 void drawAboutWindow(ViewerState& state);
+
+// The registered panels (panel_registry.cpp).
+void drawLensTablePanel(ViewerState& state, const PanelPlace& place);
+void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place);
+void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place);
+void drawLogPanel(ViewerState& state, const PanelPlace& place);
+void drawLensFilePanel(ViewerState& state, const PanelPlace& place);
+
+// The lens's first-order data, focus and aperture controls (inside the lens panel).
+void drawFirstOrderSection(ViewerState& state);
 
 }  // namespace lenslab::app

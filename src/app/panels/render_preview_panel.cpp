@@ -54,8 +54,8 @@ void drawControls(ViewerState& state) {
 
 }  // namespace
 
-void drawRenderPreviewPanel(ViewerState& state, const Rect& rect) {
-  if (!beginCanvasPanel("Render preview", rect, ImGuiWindowFlags_NoScrollbar)) {
+void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place) {
+  if (!beginCanvasPanel("Render preview", place, ImGuiWindowFlags_NoScrollbar)) {
     ImGui::End();
     return;
   }

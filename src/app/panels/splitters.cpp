@@ -44,7 +44,7 @@ void drawSplitters(ViewerState& state, float windowWidth, float /*windowHeight*/
     fractions.previewWidth -=
         splitter("##split-right", layout.rightSplitter, ImGuiMouseCursor_ResizeEW).x / windowWidth;
   }
-  if (state.showLog && usableHeight > 0) {
+  if (state.showBottomArea && usableHeight > 0) {
     fractions.logHeight -=
         splitter("##split-bottom", layout.bottomSplitter, ImGuiMouseCursor_ResizeNS).y /
         usableHeight;

@@ -1,0 +1,51 @@
+#include "app/panels/panel_registry.h"
+
+#include "app/panels/panels.h"
+
+namespace lenslab::app {
+
+namespace {
+
+// One line per panel. The first panel of an area is its default tab.
+constexpr PanelSpec kPanels[] = {
+    {"lens", "Lens", DockArea::Left, drawLensTablePanel},
+    {"cross-section", "Cross-section", DockArea::Centre, drawCrossSectionPanel},
+    {"preview", "Render preview", DockArea::Right, drawRenderPreviewPanel},
+    {"log", "Log", DockArea::Bottom, drawLogPanel},
+    {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
+};
+
+}  // namespace
+
+const char* dockAreaName(DockArea area) {
+  switch (area) {
+    case DockArea::Left:
+      return "left";
+    case DockArea::Centre:
+      return "centre";
+    case DockArea::Right:
+      return "right";
+    case DockArea::Bottom:
+      return "bottom";
+  }
+  return "?";
+}
+
+std::span<const PanelSpec> registeredPanels() { return kPanels; }
+
+std::vector<const PanelSpec*> panelsIn(DockArea area) {
+  std::vector<const PanelSpec*> panels;
+  for (const PanelSpec& panel : kPanels) {
+    if (panel.area == area) panels.push_back(&panel);
+  }
+  return panels;
+}
+
+const PanelSpec* findPanel(std::string_view id) {
+  for (const PanelSpec& panel : kPanels) {
+    if (panel.id == id) return &panel;
+  }
+  return nullptr;
+}
+
+}  // namespace lenslab::app
