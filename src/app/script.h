@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "app/lens_document.h"
+#include "common/diagnostics.h"
 
 namespace lenslab::app {
 
@@ -41,12 +42,13 @@ struct ScriptCommand {
   std::vector<std::string> arguments;
   std::vector<int> argumentColumns;  // 1-based column of each argument, for error messages
 
-  std::string where(std::size_t argument) const;  // "file:line:column"
+  // Where an argument is; column 1 for an argument the command does not have.
+  SourceLocation at(std::size_t argument) const;
 };
 
 struct ParsedScript {
   std::vector<ScriptCommand> commands;
-  std::vector<std::string> errors;  // "file:line:column: message"; empty when the script is good
+  Diagnostics diagnostics;  // the script's errors; none when the script is good
 };
 
 ParsedScript parseScript(const std::string& text, const std::string& fileName);
@@ -111,7 +113,8 @@ class ScriptRunner {
  private:
   // Returns true when the command is complete, false when it must be retried next frame.
   bool execute(const ScriptCommand& command, ScriptHost& host);
-  void fail(ScriptHost& host, const std::string& message);
+  // Reports `message` as an error at the command's first argument.
+  void fail(ScriptHost& host, const ScriptCommand& command, const std::string& message);
 
   // A waiting command that has not finished after this long fails the script, so a test never
   // hangs on a condition that will not come.

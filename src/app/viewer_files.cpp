@@ -9,6 +9,7 @@
 #include "app/ui_scale.h"
 #include "app/viewer_session.h"
 #include "optics/lens_file.h"
+#include "optics/lens_loader.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
 #include "render/realistic_camera.h"
@@ -133,15 +134,16 @@ std::string Viewer::saveWindowScreenshotToDefault() {
 }
 
 std::optional<std::string> Viewer::loadLens(const std::string& path) {
-  optics::LensFileResult file = optics::readLensFile(path);
-  if (!file.ok()) {
+  optics::LoadedLens loaded = optics::loadLens(path);
+  if (!loaded.ok()) {
     // The current lens stays; every problem goes to the log with its file:line:column.
     std::string message = "cannot open lens " + path + ":";
-    for (const optics::LensFileError& error : file.errors) message += "\n  " + error.toString();
+    for (const Diagnostic& diagnostic : loaded.diagnostics.all())
+      message += "\n  " + diagnostic.format();
     return message;
   }
-  state_.lens.apply(ReplaceLens{std::move(file.lens->prescription), path});
-  state_.lensHeaderComments = std::move(file.lens->headerComments);
+  state_.lens.apply(ReplaceLens{std::move(loaded.file.prescription), path});
+  state_.lensHeaderComments = std::move(loaded.file.headerComments);
   state_.crossSectionNeedsFit = true;
   refreshLens(state_);
   state_.log.info("Opened lens " + path);
@@ -200,7 +202,7 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
   // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
   if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
-    render::Diagnostics diagnostics;
+    Diagnostics diagnostics;
     const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
     const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
     if (realistic != nullptr) {
@@ -210,7 +212,7 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
       refreshLens(state_);
       state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
     } else {
-      for (const render::Diagnostic& diagnostic : diagnostics.all()) {
+      for (const Diagnostic& diagnostic : diagnostics.all()) {
         state_.log.warning(diagnostic.format());
       }
     }
