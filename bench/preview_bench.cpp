@@ -46,7 +46,7 @@ DefaultScene loadDefaultScene(const render::BuildOptions& options) {
   if (!parsed.scene) return out;
   render::BuildResult built = render::buildScene(*parsed.scene, options);
   if (!built.scene) return out;
-  render::Diagnostics diagnostics;
+  lenslab::Diagnostics diagnostics;
   const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
   const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
   if (!realistic) return out;

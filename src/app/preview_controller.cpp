@@ -14,9 +14,9 @@ namespace lenslab::app {
 LoadedScene loadSceneFile(const std::filesystem::path& path) {
   LoadedScene loaded;
   render::ParseResult parsed = render::parsePbrtFile(path);
-  const auto collect = [&](const render::Diagnostics& diagnostics) {
-    for (const render::Diagnostic& diagnostic : diagnostics.all()) {
-      if (diagnostic.severity == render::Severity::Warning) {
+  const auto collect = [&](const Diagnostics& diagnostics) {
+    for (const Diagnostic& diagnostic : diagnostics.all()) {
+      if (diagnostic.severity != Severity::Error) {
         loaded.warnings.push_back(diagnostic.format());
       } else {
         if (!loaded.error.empty()) loaded.error += '\n';

@@ -326,8 +326,8 @@ int runViewer(const ViewerOptions& options) {
   std::optional<ScriptRunner> script;
   if (!options.scriptPath.empty()) {
     ParsedScript parsed = readScriptFile(options.scriptPath);
-    if (!parsed.errors.empty()) {
-      for (const std::string& error : parsed.errors) std::fprintf(stderr, "%s\n", error.c_str());
+    if (parsed.diagnostics.hasErrors()) {
+      std::fputs(parsed.diagnostics.formatAll().c_str(), stderr);
       return 2;
     }
     script.emplace(std::move(parsed.commands));

@@ -9,6 +9,7 @@
 #include "app/resources.h"
 #include "app/viewer_session.h"
 #include "optics/lens_file.h"
+#include "optics/lens_loader.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
 #include "render/realistic_camera.h"
@@ -132,16 +133,18 @@ std::string Viewer::saveWindowScreenshotToDefault() {
 }
 
 ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSession) {
-  optics::LensFileResult file = optics::readLensFile(path);
-  if (!file.ok()) {
+  optics::LoadedLens loaded = optics::loadLens(path);
+  if (!loaded.ok()) {
     // The current lens stays; every problem goes to the log with its file:line:column.
     std::string message = "cannot open lens " + path + ":";
-    for (const optics::LensFileError& error : file.errors) message += "\n  " + error.toString();
+    for (const Diagnostic& diagnostic : loaded.diagnostics.all()) {
+      message += "\n  " + diagnostic.format();
+    }
     return {message};
   }
   const CommandTicket ticket =
-      state_.lens.issue(ReplaceLens{std::move(file.lens->prescription), path,
-                                    std::move(file.lens->headerComments), startsSession});
+      state_.lens.issue(ReplaceLens{std::move(loaded.file.prescription), path,
+                                    std::move(loaded.file.headerComments), startsSession});
   state_.log.info("Opened lens " + path);
   return {std::nullopt, ticket};
 }
@@ -190,7 +193,7 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
   // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
   if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
-    render::Diagnostics diagnostics;
+    Diagnostics diagnostics;
     const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
     const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
     if (realistic != nullptr) {
@@ -202,7 +205,7 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
       state_.lens.issue(ReplaceLens{realistic->lens().prescription(), lensPath, {}, atStart});
       state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
     } else {
-      for (const render::Diagnostic& diagnostic : diagnostics.all()) {
+      for (const Diagnostic& diagnostic : diagnostics.all()) {
         state_.log.warning(diagnostic.format());
       }
     }

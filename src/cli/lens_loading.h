@@ -1,5 +1,6 @@
 #pragma once
-// Loading a lens file for a subcommand: prints file:line:column errors and returns null on failure.
+// Loading a lens file for a subcommand: prints its diagnostics (optics::loadLens) and returns null
+// on failure.
 
 #include <memory>
 #include <string>

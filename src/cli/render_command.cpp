@@ -31,7 +31,7 @@ double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-void printDiagnostics(const render::Diagnostics& diagnostics) {
+void printDiagnostics(const Diagnostics& diagnostics) {
   std::fputs(diagnostics.formatAll().c_str(), stderr);
 }
 
@@ -118,7 +118,7 @@ int runRenderCommand(const RenderArguments& arguments) {
     return kUsageError;
   }
 
-  render::Diagnostics cameraDiagnostics;
+  Diagnostics cameraDiagnostics;
   auto camera = render::makeCamera(description, overrides, cameraDiagnostics);
   printDiagnostics(cameraDiagnostics);
   if (!camera) return kFailure;

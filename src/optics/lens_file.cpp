@@ -84,10 +84,10 @@ std::size_t terminatorLength(std::string_view text, std::size_t i) {
 
 }  // namespace
 
-std::string LensFileError::toString() const {
-  std::ostringstream s;
-  s << file << ':' << line << ':' << column << ": " << message;
-  return s.str();
+int LensFile::lineOfSurface(int surface) const {
+  if (rowLines.empty()) return 0;
+  if (surface < 0 || surface >= static_cast<int>(rowLines.size())) return rowLines.front();
+  return rowLines[static_cast<std::size_t>(surface)];
 }
 
 LensFileResult parseLensText(std::string_view text, const std::string& fileName) {
@@ -97,7 +97,7 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
   if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
     text.remove_prefix(kByteOrderMark.size());
   auto fail = [&](int line, int column, std::string message) {
-    result.errors.push_back({fileName, line, column, std::move(message)});
+    result.diagnostics.error({fileName, line, column}, std::move(message));
     return result;
   };
   LensFile lens;
@@ -180,28 +180,30 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
                              : "no lens surfaces (expected rows of: radius thickness n aperture)");
 
   for (const ValidationError& e : validate(lens.prescription)) {
-    const int line = e.surface >= 0 ? lens.rowLines[e.surface] : lens.rowLines.front();
-    result.errors.push_back({fileName, line, 1, e.toString()});
+    result.diagnostics.error({fileName, lens.lineOfSurface(e.surface), 1}, e.toString());
   }
-  if (!result.errors.empty()) return result;
+  if (result.diagnostics.hasErrors()) return result;
   result.lens = std::move(lens);
   return result;
 }
 
 LensFileResult readLensFile(const std::filesystem::path& path) {
   const std::string name = path.string();
+  const auto fail = [&](std::string message) {
+    LensFileResult result;
+    result.diagnostics.error({name, 1, 1}, std::move(message));
+    return result;
+  };
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return {std::nullopt, {{name, 1, 1, "no such file"}}};
-  if (std::filesystem::is_directory(path, ec))
-    return {std::nullopt, {{name, 1, 1, "is a directory, not a lens file"}}};
+  if (!std::filesystem::exists(path, ec)) return fail("no such file");
+  if (std::filesystem::is_directory(path, ec)) return fail("is a directory, not a lens file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {std::nullopt, {{name, 1, 1, "cannot open the file for reading"}}};
+  if (!in) return fail("cannot open the file for reading");
   std::string text;
   char buffer[4096];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxFileBytes)
-      return {std::nullopt, {{name, 1, 1, "file is too large to be a lens file"}}};
+    if (text.size() > kMaxFileBytes) return fail("file is too large to be a lens file");
   }
   return parseLensText(text, name);
 }

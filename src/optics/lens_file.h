@@ -9,18 +9,10 @@
 #include <string_view>
 #include <vector>
 
+#include "common/diagnostics.h"
 #include "optics/prescription.h"
 
 namespace lenslab::optics {
-
-struct LensFileError {
-  std::string file;
-  int line = 0;    // 1-based
-  int column = 0;  // 1-based, in bytes
-  std::string message;
-  // "file:line:column: message"
-  std::string toString() const;
-};
 
 struct LensFile {
   Prescription prescription;
@@ -28,11 +20,14 @@ struct LensFile {
   std::vector<std::string> headerComments;
   // Line number (1-based) of each surface row, for error messages that point at a row.
   std::vector<int> rowLines;
+  // The line of a surface's row (a 0-based index, as ValidationError::surface counts); the first
+  // row's for the lens as a whole (-1) or an index the file has no row for; 0 without rows.
+  int lineOfSurface(int surface) const;
 };
 
 struct LensFileResult {
-  std::optional<LensFile> lens;       // set only when the whole file is valid
-  std::vector<LensFileError> errors;  // empty on success
+  std::optional<LensFile> lens;  // set only when the whole file is valid
+  Diagnostics diagnostics;       // the errors, at their file:line:column; none on success
   bool ok() const { return lens.has_value(); }
 };
 

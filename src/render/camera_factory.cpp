@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "optics/focus.h"
-#include "optics/lens_file.h"
+#include "optics/lens_loader.h"
 #include "render/matched_pinhole_camera.h"
 #include "render/realistic_camera.h"
 
@@ -15,30 +15,12 @@ namespace lenslab::render {
 
 namespace {
 
-// Reads and builds the lens file, reporting problems as file:line:column errors.
+// Reads and builds the lens file; its problems join the scene's diagnostics.
 std::shared_ptr<const optics::LensSystem> loadLens(const std::filesystem::path& lensPath,
-                                                   const SourceLocation& cameraAt,
                                                    Diagnostics& diagnostics) {
-  const optics::LensFileResult file = optics::readLensFile(lensPath);
-  if (!file.ok()) {
-    for (const optics::LensFileError& error : file.errors) {
-      diagnostics.error({error.file, error.line, error.column}, error.message);
-    }
-    if (file.errors.empty()) diagnostics.error(cameraAt, "cannot read " + lensPath.string());
-    return nullptr;
-  }
-  const optics::BuildResult built = optics::LensSystem::build(file.lens->prescription);
-  if (!built.ok()) {
-    for (const optics::ValidationError& error : built.errors) {
-      const int line =
-          error.surface >= 0 && error.surface < static_cast<int>(file.lens->rowLines.size())
-              ? file.lens->rowLines[static_cast<std::size_t>(error.surface)]
-              : 0;
-      diagnostics.error({lensPath.string(), line, 1}, error.message);
-    }
-    return nullptr;
-  }
-  return built.system;
+  const optics::LoadedLens lens = optics::loadLens(lensPath);
+  diagnostics.append(lens.diagnostics);
+  return lens.system;
 }
 
 // Moves the film so that objects `distance` scene units away are sharp.
@@ -61,8 +43,7 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
                                             Diagnostics& diagnostics) {
   const CameraDescription& camera = scene.camera;
   const std::filesystem::path lensPath = overrides.lensPath.value_or(camera.lensPath);
-  std::shared_ptr<const optics::LensSystem> system =
-      loadLens(lensPath, camera.location, diagnostics);
+  std::shared_ptr<const optics::LensSystem> system = loadLens(lensPath, diagnostics);
   if (!system) return nullptr;
   const CameraFraming framing = framingOf(scene);
   const double stopDiameterMm = camera.apertureDiameterMm;
@@ -100,8 +81,7 @@ std::shared_ptr<const Camera> makeLensInsteadOfPinhole(const SceneDescription& s
                                                        int width, int height,
                                                        Diagnostics& diagnostics) {
   const CameraDescription& camera = scene.camera;
-  std::shared_ptr<const optics::LensSystem> system =
-      loadLens(lensPath, camera.location, diagnostics);
+  std::shared_ptr<const optics::LensSystem> system = loadLens(lensPath, diagnostics);
   if (!system) return nullptr;
   // Without a focal distance, infinity focus: what pbrt's default of 1e6 units means, and the
   // optics library solves it exactly (1e9 mm it does not, at the time of writing).

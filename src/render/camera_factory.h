@@ -5,8 +5,8 @@
 #include <memory>
 #include <optional>
 
+#include "common/diagnostics.h"
 #include "render/camera.h"
-#include "render/diagnostics.h"
 #include "render/realistic_camera.h"
 #include "render/scene_description.h"
 

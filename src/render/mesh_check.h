@@ -2,7 +2,7 @@
 // Checks a triangle mesh from a scene file: NaN or infinite vertices and out-of-range indices are
 // errors; zero-area triangles are dropped with a warning.
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 #include "render/scene_description.h"
 
 namespace lenslab::render {

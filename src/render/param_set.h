@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 
 namespace lenslab::render {
 

@@ -1023,14 +1023,7 @@ class Parser {
         diagnostics_.error(file->location, *problem);
         return false;
       }
-      if (const auto problem = readPlyMesh(path, shape.mesh)) {
-        if (problem->line > 0) {
-          diagnostics_.error({path.string(), problem->line, problem->column}, problem->message);
-        } else {
-          diagnostics_.error(file->location, path.string() + ": " + problem->message);
-        }
-        return false;
-      }
+      if (!readPlyMesh(path, shape.mesh, file->location, diagnostics_)) return false;
       if (!checkMesh(shape.mesh, file->location, diagnostics_)) return false;
       shape.type = "trianglemesh";
     } else if (shape.type != "sphere" && shape.type != "disk" && shape.type != "cone" &&

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 #include "render/scene_description.h"
 
 namespace lenslab::render {

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 
 namespace lenslab::render {
 

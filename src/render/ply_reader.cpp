@@ -51,12 +51,32 @@ std::string formatValue(double value) {
   return text.str();
 }
 
+// Where problems are reported: in the PLY file where it has lines (the header and ASCII data),
+// otherwise where the scene names the file, with the file's path in front of the message.
+struct ProblemPlaces {
+  std::string file;
+  SourceLocation includedAt;
+
+  Diagnostic atLine(int line, int column, std::string message) const {
+    return {Severity::Error, {file, line, column}, std::move(message)};
+  }
+  Diagnostic outside(const std::string& message) const {
+    return {Severity::Error, includedAt, file + ": " + message};
+  }
+};
+
 // Reads the values of the data section one at a time, in either encoding, knowing where each
 // came from for messages.
 class PlyValueReader {
  public:
-  PlyValueReader(const std::string& data, std::size_t start, int startLine, PlyFormat format)
-      : data_(data), position_(start), line_(startLine), lineStart_(start), format_(format) {}
+  PlyValueReader(const std::string& data, std::size_t start, int startLine, PlyFormat format,
+                 const ProblemPlaces& places)
+      : data_(data),
+        position_(start),
+        line_(startLine),
+        lineStart_(start),
+        format_(format),
+        places_(places) {}
 
   // false at the end of the data, or (ASCII) on a token that is not a number: see problem().
   bool read(const std::string& type, double& value) {
@@ -97,9 +117,9 @@ class PlyValueReader {
   const std::string& problem() const { return problem_; }
 
   // Where the last value read (or the failed read) is.
-  PlyProblem at(const std::string& message) const {
-    if (format_ == PlyFormat::Ascii) return {message, valueLine_, valueColumn_};
-    return {message + " (byte " + std::to_string(valueOffset_) + ")", 0, 0};
+  Diagnostic at(const std::string& message) const {
+    if (format_ == PlyFormat::Ascii) return places_.atLine(valueLine_, valueColumn_, message);
+    return places_.outside(message + " (byte " + std::to_string(valueOffset_) + ")");
   }
 
  private:
@@ -153,6 +173,7 @@ class PlyValueReader {
   int line_;
   std::size_t lineStart_ = 0;
   PlyFormat format_;
+  const ProblemPlaces& places_;
   int valueLine_ = 0, valueColumn_ = 0;
   std::size_t valueOffset_ = 0;
   std::string problem_;
@@ -177,11 +198,10 @@ bool isFaceIndexList(const PlyElement& element, const PlyProperty& property) {
          (property.name == "vertex_indices" || property.name == "vertex_index");
 }
 
-}  // namespace
-
-std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshData& mesh) {
+std::optional<Diagnostic> readMesh(const std::filesystem::path& path, MeshData& mesh,
+                                   const ProblemPlaces& places) {
   std::ifstream input(path, std::ios::binary);
-  if (!input) return PlyProblem{"cannot open PLY file " + path.string(), 0, 0};
+  if (!input) return places.outside("cannot open PLY file " + path.string());
   std::ostringstream contents;
   contents << input.rdbuf();
   const std::string data = contents.str();
@@ -200,12 +220,12 @@ std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshDat
   };
   std::string line;
   if (!nextLine(line) || line.rfind("ply", 0) != 0) {
-    return PlyProblem{"not a PLY file (no 'ply' magic)", 1, 1};
+    return places.atLine(1, 1, "not a PLY file (no 'ply' magic)");
   }
   PlyFormat format = PlyFormat::Ascii;
   std::vector<PlyElement> elements;
   for (;;) {
-    if (!nextLine(line)) return PlyProblem{"the PLY header has no end_header", lineNumber, 1};
+    if (!nextLine(line)) return places.atLine(lineNumber, 1, "the PLY header has no end_header");
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
@@ -220,7 +240,7 @@ std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshDat
       else if (name == "binary_big_endian")
         format = PlyFormat::BinaryBig;
       else
-        return PlyProblem{"unknown PLY format '" + name + "'", lineNumber, 1};
+        return places.atLine(lineNumber, 1, "unknown PLY format '" + name + "'");
     } else if (keyword == "element") {
       PlyElement element;
       std::string count;
@@ -229,13 +249,13 @@ std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshDat
       long long value = -1;
       const auto [stop, error] = std::from_chars(count.data(), count.data() + count.size(), value);
       if (error != std::errc() || stop != count.data() + count.size() || value < 0) {
-        return PlyProblem{"element \"" + element.name + "\" has an invalid count '" + count + "'",
-                          lineNumber, 1};
+        return places.atLine(
+            lineNumber, 1, "element \"" + element.name + "\" has an invalid count '" + count + "'");
       }
       element.count = static_cast<std::uint64_t>(value);
       elements.push_back(element);
     } else if (keyword == "property") {
-      if (elements.empty()) return PlyProblem{"PLY property before any element", lineNumber, 1};
+      if (elements.empty()) return places.atLine(lineNumber, 1, "PLY property before any element");
       PlyProperty property;
       std::string type;
       words >> type;
@@ -247,23 +267,23 @@ std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshDat
       words >> property.name;
       if (typeSize(property.type) == 0 ||
           (!property.countType.empty() && typeSize(property.countType) == 0)) {
-        return PlyProblem{"unknown PLY property type in '" + line + "'", lineNumber, 1};
+        return places.atLine(lineNumber, 1, "unknown PLY property type in '" + line + "'");
       }
       elements.back().properties.push_back(property);
     }
   }
 
-  PlyValueReader reader(data, position, lineNumber + 1, format);
+  PlyValueReader reader(data, position, lineNumber + 1, format, places);
   std::optional<std::uint64_t> vertexCount;
   for (const PlyElement& element : elements) {
     const std::size_t minimum = minimumItemBytes(element, format);
     // + 1: the last ASCII value of a file needs no separator after it.
     if (minimum > 0 && element.count > (reader.remainingBytes() + 1) / minimum) {
-      return PlyProblem{"element \"" + element.name + "\" declares " +
-                            std::to_string(element.count) + " items, more than the " +
-                            std::to_string(reader.remainingBytes()) +
-                            " bytes of data after the header can hold",
-                        element.line, 1};
+      return places.atLine(element.line, 1,
+                           "element \"" + element.name + "\" declares " +
+                               std::to_string(element.count) + " items, more than the " +
+                               std::to_string(reader.remainingBytes()) +
+                               " bytes of data after the header can hold");
     }
     const bool isVertex = element.name == "vertex";
     for (std::uint64_t item = 0; item < element.count; ++item) {
@@ -348,6 +368,15 @@ std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshDat
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) mesh.normals.clear();
   if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size()) mesh.uvs.clear();
   return std::nullopt;
+}
+
+}  // namespace
+
+bool readPlyMesh(const std::filesystem::path& path, MeshData& mesh,
+                 const SourceLocation& includedAt, Diagnostics& diagnostics) {
+  const std::optional<Diagnostic> problem = readMesh(path, mesh, {path.string(), includedAt});
+  if (problem) diagnostics.add(*problem);
+  return !problem;
 }
 
 }  // namespace lenslab::render

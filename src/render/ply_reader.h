@@ -5,22 +5,17 @@
 // neither allocates without bound nor wraps a negative index around.
 
 #include <filesystem>
-#include <optional>
-#include <string>
 
+#include "common/diagnostics.h"
 #include "render/scene_description.h"
 
 namespace lenslab::render {
 
-struct PlyProblem {
-  std::string message;
-  // Where in the PLY file, for the header and ASCII data (1-based); 0 in binary data, where the
-  // message names the byte offset instead.
-  int line = 0;
-  int column = 0;
-};
-
-// Fills `mesh`, or says what is wrong with the file.
-std::optional<PlyProblem> readPlyMesh(const std::filesystem::path& path, MeshData& mesh);
+// Fills `mesh`, or reports what is wrong with the file and returns false. Problems in the header
+// and in ASCII data are reported at the PLY file's line and column; the others (the file cannot be
+// opened, binary data, where the message names the byte offset) at `includedAt`, where the scene
+// names the file, with the PLY file's path in front of the message.
+bool readPlyMesh(const std::filesystem::path& path, MeshData& mesh,
+                 const SourceLocation& includedAt, Diagnostics& diagnostics);
 
 }  // namespace lenslab::render

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 #include "render/scene.h"
 #include "render/scene_description.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 #include "render/param_set.h"
 
 namespace lenslab::render {

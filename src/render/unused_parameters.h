@@ -3,7 +3,7 @@
 // list of a description, after the parser, the camera reading and the scene builder have taken
 // what they support (ParamSet marks what they read, and what they could not honour).
 
-#include "render/diagnostics.h"
+#include "common/diagnostics.h"
 #include "render/scene_description.h"
 
 namespace lenslab::render {

@@ -94,12 +94,17 @@ TEST(ScriptParse, ReportsFileLineColumnForEachBadLine) {
       "set film-distance abc\n"
       "wait-spp\n",
       "t.script");
-  ASSERT_EQ(script.errors.size(), 5u);
-  EXPECT_EQ(script.errors[0].rfind("t.script:2:13:", 0), 0u) << script.errors[0];
-  EXPECT_EQ(script.errors[1].rfind("t.script:3:15:", 0), 0u) << script.errors[1];
-  EXPECT_EQ(script.errors[2].rfind("t.script:4:1:", 0), 0u) << script.errors[2];
-  EXPECT_EQ(script.errors[3].rfind("t.script:5:19:", 0), 0u) << script.errors[3];
-  EXPECT_EQ(script.errors[4].rfind("t.script:6:1:", 0), 0u) << script.errors[4];
+  ASSERT_EQ(script.diagnostics.all().size(), 5u);
+  EXPECT_EQ(script.diagnostics.all()[0].format().rfind("t.script:2:13: error: ", 0), 0u)
+      << script.diagnostics.all()[0].format();
+  EXPECT_EQ(script.diagnostics.all()[1].format().rfind("t.script:3:15: error: ", 0), 0u)
+      << script.diagnostics.all()[1].format();
+  EXPECT_EQ(script.diagnostics.all()[2].format().rfind("t.script:4:1: error: ", 0), 0u)
+      << script.diagnostics.all()[2].format();
+  EXPECT_EQ(script.diagnostics.all()[3].format().rfind("t.script:5:19: error: ", 0), 0u)
+      << script.diagnostics.all()[3].format();
+  EXPECT_EQ(script.diagnostics.all()[4].format().rfind("t.script:6:1: error: ", 0), 0u)
+      << script.diagnostics.all()[4].format();
 }
 
 TEST(ScriptRun, AppliesEditsUndoAndQuits) {
@@ -113,7 +118,7 @@ TEST(ScriptRun, AppliesEditsUndoAndQuits) {
       "screenshot out.png\n"
       "quit 3\n",
       "t");
-  ASSERT_TRUE(script.errors.empty()) << script.errors[0];
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
   FakeHost host;
   ScriptRunner runner(script.commands);
   // Each edit waits for the frame that applies it: the radius, the film distance, the undo.
@@ -159,7 +164,7 @@ TEST(ScriptRun, FailsOnTheFirstErrorWithItsLocation) {
   EXPECT_TRUE(runner.failed());
   EXPECT_EQ(host.exitCode, 1);
   ASSERT_EQ(host.errors.size(), 1u);
-  EXPECT_NE(host.errors[0].find("s.script:1:"), std::string::npos);
+  EXPECT_EQ(host.errors[0].rfind("s.script:1:11: error: load-lens: ", 0), 0u) << host.errors[0];
   EXPECT_NE(host.errors[0].find("broken.dat:3:7"), std::string::npos);
   for (const auto& call : host.calls) EXPECT_EQ(call.find("screenshot"), std::string::npos);
 }
@@ -194,7 +199,7 @@ TEST(ScriptRun, EditOfAMissingSurfaceFails) {
   EXPECT_FALSE(host.frame(runner));
   EXPECT_TRUE(runner.failed());
   ASSERT_EQ(host.errors.size(), 1u);
-  EXPECT_NE(host.errors[0].find("t:1:5: set: surface 9 does not exist"), std::string::npos)
+  EXPECT_NE(host.errors[0].find("t:1:5: error: set: surface 9 does not exist"), std::string::npos)
       << host.errors[0];
 }
 
@@ -205,12 +210,12 @@ TEST(ScriptRun, UndoWithNothingToUndoFails) {
   while (host.frame(runner)) {
   }
   ASSERT_EQ(host.errors.size(), 1u);
-  EXPECT_EQ(host.errors[0], "t:1:1: undo: nothing to undo");
+  EXPECT_EQ(host.errors[0], "t:1:1: error: undo: nothing to undo");
 }
 
 TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
   const ParsedScript script = parseScript("set surface 1 abbe 60\nset surface 1 abbe none\n", "t");
-  ASSERT_TRUE(script.errors.empty());
+  ASSERT_TRUE(script.diagnostics.empty());
   FakeHost host;
   ScriptRunner runner(script.commands);
   while (host.frame(runner)) {
@@ -224,14 +229,16 @@ TEST(ScriptParse, ViewerCommandsAreChecked) {
       "set blocked-rays hide\nset layout 0.25 0.4 0.2\nzoom-cross-section 1e4\n"
       "drop x.dat\nopen-dialog save-cross-section\ndialog-choose a.png\n",
       "t");
-  EXPECT_TRUE(good.errors.empty()) << good.errors[0];
+  EXPECT_TRUE(good.diagnostics.empty()) << good.diagnostics.formatAll();
   const ParsedScript bad = parseScript(
       "set blocked-rays maybe\nset layout 0.25 1.5 0.2\nzoom-cross-section -2\n"
       "open-dialog open-sesame\n",
       "t");
-  ASSERT_EQ(bad.errors.size(), 4u);
-  EXPECT_EQ(bad.errors[1].rfind("t:2:17:", 0), 0u) << bad.errors[1];
-  EXPECT_EQ(bad.errors[2].rfind("t:3:20:", 0), 0u) << bad.errors[2];
+  ASSERT_EQ(bad.diagnostics.all().size(), 4u);
+  EXPECT_EQ(bad.diagnostics.all()[1].format().rfind("t:2:17: error: ", 0), 0u)
+      << bad.diagnostics.all()[1].format();
+  EXPECT_EQ(bad.diagnostics.all()[2].format().rfind("t:3:20: error: ", 0), 0u)
+      << bad.diagnostics.all()[2].format();
 }
 
 TEST(ScriptRun, AHostWithoutAWindowRefusesDialogs) {

@@ -201,20 +201,21 @@ TEST_F(LensCommands, BadLensFilesGiveFileLineColumnAndExit1) {
     std::string name, text, expected;
   };
   const Case cases[] = {
-      {"garbage.dat", "50 5 1.5 20\n0 5 zz 10\n-50 40 1 20\n", ":2:5: "},
-      {"short.dat", "50 5 1.5 20\n0 5 0\n", ":2:6: "},
-      {"empty.dat", "", ":1:1: "},
+      {"garbage.dat", "50 5 1.5 20\n0 5 zz 10\n-50 40 1 20\n", ":2:5: error: "},
+      {"short.dat", "50 5 1.5 20\n0 5 0\n", ":2:6: error: "},
+      {"empty.dat", "", ":1:1: error: "},
       {"binary.dat",
        std::string("\x7f"
                    "ELF\x02\x01\x01\0\0\0",
                    10),
        ":1:"},
-      {"nan.dat", "50 5 1.5 nan\n0 5 0 10\n-50 40 1 20\n", ":1:10: "},
-      {"nostop.dat", "50 5 1.5 20\n-50 40 1 20\n", ":1:1: "},
-      {"huge.dat", "50 5 1.5 20\n0 5 0 10\n-50 1e300 1 20\n", ":3:5: thickness 1e300 is beyond"},
+      {"nan.dat", "50 5 1.5 nan\n0 5 0 10\n-50 40 1 20\n", ":1:10: error: "},
+      {"nostop.dat", "50 5 1.5 20\n-50 40 1 20\n", ":1:1: error: "},
+      {"huge.dat", "50 5 1.5 20\n0 5 0 10\n-50 1e300 1 20\n",
+       ":3:5: error: thickness 1e300 is beyond"},
       // Surfaces are named counting from 1, as everywhere users see them.
       {"crossing.dat", "12 1 1.5 20\n-12 5 1 20\n0 40 0 10\n",
-       ":2:1: surface 2: crosses the previous surface (surface 1)"},
+       ":2:1: error: surface 2: crosses the previous surface (surface 1)"},
   };
   for (const auto& c : cases) {
     const std::string path = writeFile(c.name, c.text);
@@ -229,7 +230,8 @@ TEST_F(LensCommands, BadLensFilesGiveFileLineColumnAndExit1) {
   const auto missing =
       testing::runProcess(lenslab("info " + (scratch / "missing.dat").string()), scratch);
   EXPECT_EQ(missing.exitCode, 1);
-  EXPECT_NE(missing.err.find("missing.dat:1:1: no such file"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("missing.dat:1:1: error: no such file"), std::string::npos)
+      << missing.err;
 }
 
 TEST_F(LensCommands, ReadsTheCourseReferenceFiles) {

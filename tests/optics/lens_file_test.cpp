@@ -20,7 +20,7 @@ const char* kFourRows =
 LensFileResult parse(const std::string& text) { return parseLensText(text, "t.dat"); }
 
 std::string firstError(const LensFileResult& r) {
-  return r.errors.empty() ? std::string("(no error)") : r.errors.front().toString();
+  return r.diagnostics.empty() ? std::string("(no error)") : r.diagnostics.all().front().format();
 }
 
 TEST(LensFile, ReadsPbrtRowsAndComments) {
@@ -59,7 +59,7 @@ TEST(LensFile, SkipsAUtf8ByteOrderMark) {
       "\xEF\xBB\xBF"
       "5x 5 1.5 20\n");
   ASSERT_FALSE(bad.ok());
-  EXPECT_EQ(bad.errors.front().column, 1) << firstError(bad);
+  EXPECT_EQ(bad.diagnostics.all().front().location.column, 1) << firstError(bad);
 }
 
 TEST(LensFile, AcceptsLoneCarriageReturnLineEndings) {
@@ -73,8 +73,8 @@ TEST(LensFile, AcceptsLoneCarriageReturnLineEndings) {
   // Errors count those lines, and a mix of endings is fine.
   const auto bad = parse("50 5 1.5 20\r\n0 5 0 10\r-50 4x 1 20\n");
   ASSERT_FALSE(bad.ok());
-  EXPECT_EQ(bad.errors.front().line, 3) << firstError(bad);
-  EXPECT_EQ(bad.errors.front().column, 5) << firstError(bad);
+  EXPECT_EQ(bad.diagnostics.all().front().location.line, 3) << firstError(bad);
+  EXPECT_EQ(bad.diagnostics.all().front().location.column, 5) << firstError(bad);
 }
 
 TEST(LensFile, AcceptsStrayQuotesInComments) {
@@ -183,12 +183,12 @@ TEST(LensFile, BadInputGivesFileLineColumnErrors) {
     const std::string text(c.text);
     const auto r = parse(text);
     EXPECT_FALSE(r.ok()) << c.text;
-    ASSERT_FALSE(r.errors.empty()) << c.text;
-    const auto& e = r.errors.front();
-    EXPECT_EQ(e.line, c.line) << e.toString();
-    EXPECT_EQ(e.column, c.column) << e.toString();
-    EXPECT_NE(e.message.find(c.fragment), std::string::npos) << e.toString();
-    EXPECT_EQ(e.toString().rfind("t.dat:" + std::to_string(c.line) + ":", 0), 0u) << e.toString();
+    ASSERT_FALSE(r.diagnostics.empty()) << c.text;
+    const auto& e = r.diagnostics.all().front();
+    EXPECT_EQ(e.location.line, c.line) << e.format();
+    EXPECT_EQ(e.location.column, c.column) << e.format();
+    EXPECT_NE(e.message.find(c.fragment), std::string::npos) << e.format();
+    EXPECT_EQ(e.format().rfind("t.dat:" + std::to_string(c.line) + ":", 0), 0u) << e.format();
   }
 }
 
@@ -222,14 +222,15 @@ TEST(LensFile, EmbeddedNulIsBinary) {
   const std::string text("50 5 1.5 20\n0 5\0 0 10\n", 22);
   const auto r = parse(text);
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.errors.front().line, 2);
-  EXPECT_EQ(r.errors.front().column, 4);
+  EXPECT_EQ(r.diagnostics.all().front().location.line, 2);
+  EXPECT_EQ(r.diagnostics.all().front().location.column, 4);
 }
 
 TEST(LensFile, MissingFileAndDirectoryAreErrors) {
   const auto missing = readLensFile("/nonexistent/lens.dat");
   ASSERT_FALSE(missing.ok());
-  EXPECT_EQ(missing.errors.front().toString(), "/nonexistent/lens.dat:1:1: no such file");
+  EXPECT_EQ(missing.diagnostics.all().front().format(),
+            "/nonexistent/lens.dat:1:1: error: no such file");
   EXPECT_FALSE(readLensFile(std::filesystem::temp_directory_path()).ok());
 }
 
@@ -250,12 +251,12 @@ TEST(LensFile, RandomTextIsALensOrALocatedError) {
     for (int n = length(rng); n > 0; --n) text += alphabet[pick(rng)];
     const auto r = parseLensText(text, "r.dat");
     if (r.ok()) {
-      EXPECT_TRUE(r.errors.empty());
+      EXPECT_TRUE(r.diagnostics.empty());
       EXPECT_TRUE(LensSystem::build(r.lens->prescription).ok());
     } else {
-      ASSERT_FALSE(r.errors.empty());
-      EXPECT_GE(r.errors.front().line, 1);
-      EXPECT_GE(r.errors.front().column, 1);
+      ASSERT_FALSE(r.diagnostics.empty());
+      EXPECT_GE(r.diagnostics.all().front().location.line, 1);
+      EXPECT_GE(r.diagnostics.all().front().location.column, 1);
     }
   }
 }

@@ -122,7 +122,7 @@ TEST(BundledLenses, AllBuildAndNameTheirSource) {
     if (entry.path().extension() != ".dat") continue;
     ++count;
     const auto file = readLensFile(entry.path());
-    ASSERT_TRUE(file.ok()) << file.errors.front().toString();
+    ASSERT_TRUE(file.ok()) << file.diagnostics.formatAll();
     bool sourced = false;
     for (const auto& line : file.lens->headerComments)
       if (line.find("Source") != std::string::npos || line.find("patent") != std::string::npos)

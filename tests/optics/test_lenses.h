@@ -17,7 +17,7 @@ inline std::filesystem::path bundledLensDir() { return LENSLAB_BUNDLED_LENS_DIR;
 
 inline Prescription loadPrescription(const std::filesystem::path& path) {
   const LensFileResult file = readLensFile(path);
-  EXPECT_TRUE(file.ok()) << (file.errors.empty() ? "" : file.errors.front().toString());
+  EXPECT_TRUE(file.ok()) << file.diagnostics.formatAll();
   return file.ok() ? file.lens->prescription : Prescription{};
 }
 

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -63,89 +64,100 @@ std::optional<long> parseInteger(const std::string& text) {
   return value;
 }
 
+// Where problemAt reports a problem with the command as a whole: column 1 of its line.
+constexpr std::size_t kLineStart = std::numeric_limits<std::size_t>::max();
+
+Diagnostic problemAt(const ScriptCommand& command, std::size_t argument, std::string message) {
+  return {Severity::Error, command.at(argument), std::move(message)};
+}
+
 // Checks a "set" command's shape; returns an error naming the offending argument.
-std::optional<std::string> checkSet(const ScriptCommand& command) {
+std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
   const auto& a = command.arguments;
-  const auto numberAt = [&](std::size_t i) -> std::optional<std::string> {
-    if (i >= a.size()) return command.where(a.size() - 1) + ": expected a value after it";
-    if (!parseNumber(a[i])) return command.where(i) + ": '" + a[i] + "' is not a number";
+  const auto numberAt = [&](std::size_t i) -> std::optional<Diagnostic> {
+    if (i >= a.size()) return problemAt(command, a.size() - 1, "expected a value after it");
+    if (!parseNumber(a[i])) return problemAt(command, i, "'" + a[i] + "' is not a number");
     return std::nullopt;
   };
   if (a[0] == "surface") {
     if (a.size() != 4) {
-      return command.where(0) + ": expected: set surface N FIELD VALUE";
+      return problemAt(command, 0, "expected: set surface N FIELD VALUE");
     }
     const auto index = parseInteger(a[1]);
     if (!index || *index < 1)
-      return command.where(1) + ": '" + a[1] + "' is not a surface number (1, 2, ...)";
+      return problemAt(command, 1, "'" + a[1] + "' is not a surface number (1, 2, ...)");
     if (!surfaceFieldFromName(a[2])) {
-      return command.where(2) + ": unknown field '" + a[2] +
-             "' (expected radius, thickness, n, abbe or aperture)";
+      return problemAt(
+          command, 2,
+          "unknown field '" + a[2] + "' (expected radius, thickness, n, abbe or aperture)");
     }
     return numberAt(3);
   }
   if (a[0] == "film-distance" || a[0] == "stop-diameter" || a[0] == "exposure") {
-    if (a.size() != 2) return command.where(0) + ": expected: set " + a[0] + " VALUE";
+    if (a.size() != 2) return problemAt(command, 0, "expected: set " + a[0] + " VALUE");
     return numberAt(1);
   }
   if (a[0] == "camera") {
     if (a.size() != 2 || (a[1] != "lens" && a[1] != "pinhole")) {
-      return command.where(0) + ": expected: set camera lens|pinhole";
+      return problemAt(command, 0, "expected: set camera lens|pinhole");
     }
     return std::nullopt;
   }
   if (a[0] == "blocked-rays") {
     if (a.size() != 2 || (a[1] != "show" && a[1] != "hide")) {
-      return command.where(0) + ": expected: set blocked-rays show|hide";
+      return problemAt(command, 0, "expected: set blocked-rays show|hide");
     }
     return std::nullopt;
   }
   if (a[0] == "layout") {
-    if (a.size() != 4) return command.where(0) + ": expected: set layout LENS PREVIEW LOG";
+    if (a.size() != 4) return problemAt(command, 0, "expected: set layout LENS PREVIEW LOG");
     for (std::size_t i = 1; i < 4; ++i) {
       const auto value = parseNumber(a[i]);
       if (!value || !(*value > 0 && *value < 1)) {
-        return command.where(i) + ": '" + a[i] + "' is not a fraction between 0 and 1";
+        return problemAt(command, i, "'" + a[i] + "' is not a fraction between 0 and 1");
       }
     }
     return std::nullopt;
   }
-  return command.where(0) + ": unknown setting '" + a[0] +
-         "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays or "
-         "layout)";
+  return problemAt(
+      command, 0,
+      "unknown setting '" + a[0] +
+          "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays or "
+          "layout)");
 }
 
-std::optional<std::string> checkShape(const ScriptCommand& command) {
+std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
   const auto shape = verbs().find(command.verb);
   if (shape == verbs().end()) {
-    return command.file + ":" + std::to_string(command.line) + ":1: unknown command '" +
-           command.verb + "'";
+    return problemAt(command, kLineStart, "unknown command '" + command.verb + "'");
   }
   const std::size_t count = command.arguments.size();
   if (count < shape->second.minArguments || count > shape->second.maxArguments) {
     std::ostringstream message;
-    message << command.file << ":" << command.line << ":1: '" << command.verb << "' takes ";
+    message << "'" << command.verb << "' takes ";
     if (shape->second.minArguments == shape->second.maxArguments) {
       message << shape->second.minArguments;
     } else {
       message << shape->second.minArguments << " to " << shape->second.maxArguments;
     }
     message << " argument(s), got " << count;
-    return message.str();
+    return problemAt(command, kLineStart, message.str());
   }
   if (command.verb == "set") return checkSet(command);
   if (command.verb == "zoom-cross-section") {
     const auto factor = parseNumber(command.arguments[0]);
     if (!factor || !(*factor > 0)) {
-      return command.where(0) + ": '" + command.arguments[0] + "' is not a positive number";
+      return problemAt(command, 0, "'" + command.arguments[0] + "' is not a positive number");
     }
   }
   if (command.verb == "open-dialog") {
     static const char* const kKinds[] = {"open-lens", "open-scene", "save-lens", "save-render",
                                          "save-cross-section"};
     if (std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
-      return command.where(0) + ": unknown dialog '" + command.arguments[0] +
-             "' (expected open-lens, open-scene, save-lens, save-render or save-cross-section)";
+      return problemAt(
+          command, 0,
+          "unknown dialog '" + command.arguments[0] +
+              "' (expected open-lens, open-scene, save-lens, save-render or save-cross-section)");
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
@@ -153,7 +165,7 @@ std::optional<std::string> checkShape(const ScriptCommand& command) {
   if (countArgument && count == 1) {
     const auto value = parseInteger(command.arguments[0]);
     if (!value || *value < 0) {
-      return command.where(0) + ": '" + command.arguments[0] + "' is not a non-negative integer";
+      return problemAt(command, 0, "'" + command.arguments[0] + "' is not a non-negative integer");
     }
   }
   return std::nullopt;
@@ -161,9 +173,9 @@ std::optional<std::string> checkShape(const ScriptCommand& command) {
 
 }  // namespace
 
-std::string ScriptCommand::where(std::size_t argument) const {
+SourceLocation ScriptCommand::at(std::size_t argument) const {
   const int column = argument < argumentColumns.size() ? argumentColumns[argument] : 1;
-  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+  return {file, line, column};
 }
 
 ParsedScript parseScript(const std::string& text, const std::string& fileName) {
@@ -192,8 +204,8 @@ ParsedScript parseScript(const std::string& text, const std::string& fileName) {
       position = end;
     }
     if (command.verb.empty()) continue;
-    if (const auto error = checkShape(command)) {
-      script.errors.push_back(*error);
+    if (std::optional<Diagnostic> problem = checkShape(command)) {
+      script.diagnostics.add(std::move(*problem));
     } else {
       script.commands.push_back(std::move(command));
     }
@@ -205,7 +217,7 @@ ParsedScript readScriptFile(const std::filesystem::path& path) {
   std::ifstream input(path, std::ios::binary);
   if (!input) {
     ParsedScript script;
-    script.errors.push_back(path.string() + ":1:1: cannot open the script");
+    script.diagnostics.error({path.string(), 1, 1}, "cannot open the script");
     return script;
   }
   std::ostringstream text;
@@ -213,10 +225,11 @@ ParsedScript readScriptFile(const std::filesystem::path& path) {
   return parseScript(text.str(), path.string());
 }
 
-void ScriptRunner::fail(ScriptHost& host, const std::string& message) {
+void ScriptRunner::fail(ScriptHost& host, const ScriptCommand& command,
+                        const std::string& message) {
   failed_ = true;
   next_ = commands_.size();
-  host.reportError(message);
+  host.reportError(Diagnostic{Severity::Error, command.at(0), message}.format());
   host.quit(1);
 }
 
@@ -229,8 +242,8 @@ bool ScriptRunner::step(ScriptHost& host) {
       const auto now = std::chrono::steady_clock::now();
       if (!waitStarted_) waitStarted_ = now;
       if (now - *waitStarted_ > kWaitLimit) {
-        fail(host, command.where(0) + ": " + command.verb + ": timed out after " +
-                       std::to_string(kWaitLimit.count()) + " s");
+        fail(host, command,
+             command.verb + ": timed out after " + std::to_string(kWaitLimit.count()) + " s");
         return false;
       }
       return true;
@@ -253,14 +266,14 @@ bool ScriptRunner::waitForCommand(const ScriptCommand& command, ScriptHost& host
   const std::optional<std::string> outcome = host.commandOutcome(*awaitedCommand_);
   if (!outcome) return false;  // applied with the next frame
   awaitedCommand_.reset();
-  if (!outcome->empty()) fail(host, command.where(0) + ": " + command.verb + ": " + *outcome);
+  if (!outcome->empty()) fail(host, command, command.verb + ": " + *outcome);
   return true;
 }
 
 bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   const auto& a = command.arguments;
   const auto check = [&](std::optional<std::string> error) {
-    if (error) fail(host, command.where(0) + ": " + command.verb + ": " + *error);
+    if (error) fail(host, command, command.verb + ": " + *error);
     return true;
   };
   const std::string& verb = command.verb;
@@ -333,8 +346,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "wait-spp") {
     const auto spp = host.previewSpp();
     if (!spp) {
-      fail(host,
-           command.where(0) + ": wait-spp: the preview cannot render (no valid lens or scene)");
+      fail(host, command, "wait-spp: the preview cannot render (no valid lens or scene)");
       return true;
     }
     return *spp >= *parseInteger(a[0]);
@@ -350,7 +362,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     next_ = commands_.size();
     return true;
   }
-  fail(host, command.where(0) + ": unknown command '" + verb + "'");
+  fail(host, command, "unknown command '" + verb + "'");
   return true;
 }
 

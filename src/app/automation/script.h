@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "app/document/lens_editor.h"
+#include "common/diagnostics.h"
 
 namespace lenslab::app {
 
@@ -43,12 +44,13 @@ struct ScriptCommand {
   std::vector<std::string> arguments;
   std::vector<int> argumentColumns;  // 1-based column of each argument, for error messages
 
-  std::string where(std::size_t argument) const;  // "file:line:column"
+  // Where an argument is; column 1 for an argument the command does not have.
+  SourceLocation at(std::size_t argument) const;
 };
 
 struct ParsedScript {
   std::vector<ScriptCommand> commands;
-  std::vector<std::string> errors;  // "file:line:column: message"; empty when the script is good
+  Diagnostics diagnostics;  // the script's errors; none when the script is good
 };
 
 ParsedScript parseScript(const std::string& text, const std::string& fileName);
@@ -130,7 +132,8 @@ class ScriptRunner {
   bool editAndWait(const ScriptCommand& command, ScriptHost& host, const EditCommand& edit);
   // Waits for awaitedCommand_ to be applied.
   bool waitForCommand(const ScriptCommand& command, ScriptHost& host);
-  void fail(ScriptHost& host, const std::string& message);
+  // Reports `message` as an error at the command's first argument.
+  void fail(ScriptHost& host, const ScriptCommand& command, const std::string& message);
 
   // A waiting command that has not finished after this long fails the script, so a test never
   // hangs on a condition that will not come.

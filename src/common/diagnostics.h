@@ -1,0 +1,55 @@
+#pragma once
+// Diagnostics: what every reader (lens files, scene files, PLY meshes, viewer scripts) and the
+// scene and lens builders report, located in a source file, in one printed form.
+//
+// The types live in namespace lenslab itself, not lenslab::common, so that code in any of the
+// libraries' namespaces names them unqualified.
+
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// Where in a source file; line and column count from 1 (the column in bytes). Line 0 means the
+// file as a whole: the diagnostic then names the file alone.
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+// In this order: Diagnostic::format() labels them by their value.
+enum class Severity { Note, Warning, Error };
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  SourceLocation location;
+  std::string message;
+
+  // "file:line:column: error: message", the form compilers use so that editors can jump to it
+  // ("warning:" and "note:" likewise). Every place that shows a diagnostic prints this.
+  std::string format() const;
+};
+
+// Collects diagnostics in the order they were reported.
+class Diagnostics {
+ public:
+  void error(const SourceLocation& where, std::string message);
+  void warning(const SourceLocation& where, std::string message);
+  void note(const SourceLocation& where, std::string message);
+  void add(Diagnostic diagnostic);
+  // Adds another collector's diagnostics after these (a lens file's to its scene's, say).
+  void append(const Diagnostics& other);
+
+  bool hasErrors() const { return errorCount_ > 0; }
+  bool empty() const { return items_.empty(); }
+  const std::vector<Diagnostic>& all() const { return items_; }
+  // Every diagnostic, formatted, one per line (each line ends in '\n').
+  std::string formatAll() const;
+
+ private:
+  std::vector<Diagnostic> items_;
+  int errorCount_ = 0;
+};
+
+}  // namespace lenslab
