@@ -11,7 +11,6 @@
 #include "optics/lens_file.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
-#include "render/realistic_camera.h"
 
 namespace lenslab::app {
 
@@ -198,14 +197,12 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   state_.crossSectionNeedsFit = true;
   state_.log.info("Opened scene " + path);
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
-  // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
+  // lens on the command line. The lens is built the way `lenslab render` builds it (lensOfScene).
   if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
     render::Diagnostics diagnostics;
-    const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
-    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
-    if (realistic != nullptr) {
-      const std::string lensPath = loaded.description->camera.lensPath.lexically_normal().string();
-      state_.lens.apply(ReplaceLens{realistic->lens().prescription(), lensPath});
+    if (const auto sceneLens = render::lensOfScene(*loaded.description, diagnostics)) {
+      const std::string lensPath = sceneLens->path.string();
+      state_.lens.apply(ReplaceLens{sceneLens->prescription, lensPath});
       state_.lensHeaderComments.clear();
       refreshLens(state_);
       state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
