@@ -12,7 +12,6 @@
 #include "optics/lens_loader.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
-#include "render/realistic_camera.h"
 
 namespace lenslab::app {
 
@@ -191,18 +190,16 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   state_.crossSectionNeedsFit = true;
   state_.log.info("Opened scene " + path);
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
-  // lens on the command line. The scene's camera is built the way `lenslab render` builds it.
+  // lens on the command line. The lens is built the way `lenslab render` builds it (lensOfScene).
   if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
     Diagnostics diagnostics;
-    const auto camera = render::makeCamera(*loaded.description, {}, diagnostics);
-    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
-    if (realistic != nullptr) {
-      const std::string lensPath = loaded.description->camera.lensPath.lexically_normal().string();
+    if (const auto sceneLens = render::lensOfScene(*loaded.description, diagnostics)) {
+      const std::string lensPath = sceneLens->path.string();
       // The scene opened with brings the lens the session starts from, not an edit to undo
       // (unless the user has edited the lens while the scene loaded).
       const bool atStart =
           sceneOrigin_ == SceneOrigin::Default || sceneOrigin_ == SceneOrigin::CommandLine;
-      state_.lens.issue(ReplaceLens{realistic->lens().prescription(), lensPath, {}, atStart});
+      state_.lens.issue(ReplaceLens{sceneLens->prescription, lensPath, {}, atStart});
       state_.log.info("Using the scene's lens " + lensPath + " (its stop and focus)");
     } else {
       for (const Diagnostic& diagnostic : diagnostics.all()) {

@@ -4,9 +4,9 @@
 #include <string>
 #include <utility>
 
-#include "app/focus_pick.h"
 #include "app/viewer_session.h"
 #include "optics/focus.h"
+#include "render/focus_pick.h"
 
 namespace lenslab::app {
 
@@ -54,8 +54,8 @@ void Viewer::focusOnClick() {
   const auto [width, height] = preview_.previewSize(false);
   const double x = click->first * width / std::max(1, state_.preview.imageWidth);
   const double y = click->second * height / std::max(1, state_.preview.imageHeight);
-  const auto distance = objectDistanceUnderPixelMm(*preview_.description(), *preview_.scene(),
-                                                   state_.lensSystem, width, height, x, y);
+  const auto distance = render::objectDistanceUnderPixelMm(
+      *preview_.description(), *preview_.scene(), state_.lensSystem, width, height, x, y);
   if (!distance) {
     state_.log.info("Nothing to focus on there (no surface under that pixel).");
     return;

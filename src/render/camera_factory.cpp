@@ -28,8 +28,9 @@ std::shared_ptr<const optics::LensSystem> focusAt(std::shared_ptr<const optics::
                                                   double distance, const CameraFraming& framing,
                                                   const SourceLocation& cameraAt,
                                                   Diagnostics& diagnostics) {
-  const optics::FocusResult focus =
-      optics::filmDistanceForObjectDistance(*system, distance / framing.sceneUnitsPerMm);
+  // The distance along the axis from the camera-space origin, as a lens-frame z.
+  const double distanceMm = framing.lensFrame(*system).lensMmFromCamera({0.0, 0.0, distance}).z;
+  const optics::FocusResult focus = optics::filmDistanceForObjectDistance(*system, distanceMm);
   if (!focus.ok()) {
     diagnostics.error(cameraAt,
                       "the lens cannot focus at " + std::to_string(distance) + ": " + focus.whyNot);
@@ -38,9 +39,10 @@ std::shared_ptr<const optics::LensSystem> focusAt(std::shared_ptr<const optics::
   return system->withFilmDistance(*focus.valueMm);
 }
 
-std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
-                                            const CameraOverrides& overrides, int width, int height,
-                                            Diagnostics& diagnostics) {
+// The lens of a realistic camera, with the scene's stop and film distance or focus.
+std::shared_ptr<const optics::LensSystem> realisticLens(const SceneDescription& scene,
+                                                        const CameraOverrides& overrides,
+                                                        Diagnostics& diagnostics) {
   const CameraDescription& camera = scene.camera;
   const std::filesystem::path lensPath = overrides.lensPath.value_or(camera.lensPath);
   std::shared_ptr<const optics::LensSystem> system = loadLens(lensPath, diagnostics);
@@ -68,9 +70,8 @@ std::shared_ptr<const Camera> makeRealistic(const SceneDescription& scene,
   } else {
     system =
         focusAt(std::move(system), camera.focusDistance, framing, camera.location, diagnostics);
-    if (!system) return nullptr;
   }
-  return makeLensCamera(scene, std::move(system), width, height);
+  return system;
 }
 
 // `--lens` on a scene with a perspective camera: the same placement, seen through the lens at
@@ -93,6 +94,11 @@ std::shared_ptr<const Camera> makeLensInsteadOfPinhole(const SceneDescription& s
 
 }  // namespace
 
+LensFrame CameraFraming::lensFrame(const optics::LensSystem& lens) const {
+  return LensFrame(cameraFromWorld, sceneUnitsPerMm,
+                   frontVertexAtOrigin ? lens.frontVertexZ() : 0.0);
+}
+
 CameraFraming framingOf(const SceneDescription& scene) {
   CameraFraming framing;
   framing.cameraFromWorld = scene.camera.cameraFromWorld;
@@ -111,10 +117,9 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
                                              int width, int height) {
   const CameraFraming framing = framingOf(scene);
-  const double originZMm = framing.frontVertexAtOrigin ? lens->frontVertexZ() : 0.0;
-  return std::make_shared<RealisticCamera>(std::move(lens), framing.cameraFromWorld, width, height,
-                                           framing.filmDiagonalMm, framing.sceneUnitsPerMm,
-                                           originZMm, framing.lensSampling);
+  const LensFrame frame = framing.lensFrame(*lens);
+  return std::make_shared<RealisticCamera>(std::move(lens), frame, width, height,
+                                           framing.filmDiagonalMm, framing.lensSampling);
 }
 
 std::shared_ptr<const Camera> makeMatchingPinholeCamera(
@@ -144,14 +149,23 @@ std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
   const CameraDescription& camera = scene.camera;
   const int width = overrides.width.value_or(scene.film.xResolution);
   const int height = overrides.height.value_or(scene.film.yResolution);
-  if (camera.type == "realistic")
-    return makeRealistic(scene, overrides, width, height, diagnostics);
+  if (camera.type == "realistic") {
+    auto lens = realisticLens(scene, overrides, diagnostics);
+    return lens ? makeLensCamera(scene, std::move(lens), width, height) : nullptr;
+  }
   if (overrides.lensPath) {
     return makeLensInsteadOfPinhole(scene, *overrides.lensPath, width, height, diagnostics);
   }
   return std::make_shared<PerspectiveCamera>(
       camera.cameraFromWorld, camera.fovDegrees, width, height, camera.lensRadius,
       camera.focalDistance.value_or(kPerspectiveDefaultFocalDistance));
+}
+
+std::optional<SceneLens> lensOfScene(const SceneDescription& scene, Diagnostics& diagnostics) {
+  if (scene.camera.type != "realistic") return std::nullopt;
+  const auto lens = realisticLens(scene, {}, diagnostics);
+  if (!lens) return std::nullopt;
+  return SceneLens{lens->prescription(), scene.camera.lensPath.lexically_normal()};
 }
 
 }  // namespace lenslab::render

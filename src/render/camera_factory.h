@@ -6,13 +6,11 @@
 #include <optional>
 
 #include "common/diagnostics.h"
+#include "optics/lens_system.h"
 #include "render/camera.h"
+#include "render/lens_frame.h"
 #include "render/realistic_camera.h"
 #include "render/scene_description.h"
-
-namespace lenslab::optics {
-class LensSystem;
-}
 
 namespace lenslab::render {
 
@@ -38,6 +36,10 @@ struct CameraFraming {
   bool frontVertexAtOrigin = false;
   // ... and aimed film rays at the rear element's disk (see LensSampling).
   LensSampling lensSampling = LensSampling::ExitPupil;
+
+  // Where `lens` sits in the scene with this framing: every conversion between lens
+  // millimetres and scene units goes through it.
+  LensFrame lensFrame(const optics::LensSystem& lens) const;
 };
 CameraFraming framingOf(const SceneDescription& scene);
 
@@ -60,5 +62,15 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
                                          const CameraOverrides& overrides,
                                          Diagnostics& diagnostics);
+
+// The lens a scene's realistic camera looks through, as makeCamera builds it: the lens file's
+// prescription with the scene's stop and film distance (or focus) applied, and the file's path.
+struct SceneLens {
+  optics::Prescription prescription;
+  std::filesystem::path path;  // lexically normal, as the scene names it
+};
+// Nothing for a scene without a realistic camera, or after reporting why the lens cannot be
+// built.
+std::optional<SceneLens> lensOfScene(const SceneDescription& scene, Diagnostics& diagnostics);
 
 }  // namespace lenslab::render

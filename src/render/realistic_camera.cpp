@@ -23,20 +23,17 @@ float exposureWeight(glm::dvec3 toPupil, const optics::PupilSample& pupil) {
 }  // namespace
 
 RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
-                                 const glm::dmat4& cameraFromWorld, int width, int height,
-                                 double filmDiagonalMm, double sceneUnitsPerMm,
-                                 double cameraOriginZMm, LensSampling sampling)
-    : Camera(width, height), lens_(std::move(lens)), sampling_(sampling) {
+                                 const LensFrame& frame, int width, int height,
+                                 double filmDiagonalMm, LensSampling sampling)
+    : Camera(width, height),
+      lens_(std::move(lens)),
+      worldFromLensMm_(frame.worldFromLensMm()),
+      sampling_(sampling) {
   const double diagonalPixels = std::hypot(static_cast<double>(width), static_cast<double>(height));
   filmWidthMm_ = filmDiagonalMm * width / diagonalPixels;
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
   mmPerRasterX_ = filmWidthMm_ / width;
   mmPerRasterY_ = filmHeightMm_ / height;
-  // Lens frame (mm, film at z = 0) to camera space (scene units, origin at cameraOriginZMm) to
-  // world, as one matrix: the only lens-millimetre to scene-unit conversion.
-  glm::dmat4 cameraFromLens(sceneUnitsPerMm);
-  cameraFromLens[3] = glm::dvec4(0.0, 0.0, -cameraOriginZMm * sceneUnitsPerMm, 1.0);
-  worldFromLensMm_ = glm::mat4(glm::inverse(cameraFromWorld) * cameraFromLens);
 }
 
 float RealisticCamera::pixelSpreadRadians() const {

@@ -173,6 +173,29 @@ TEST(SceneInput, OtherParameterValuesAreChecked) {
               "test.pbrt:1:22: error: \"float fov\" is 0; it must be positive and at most 179");
 }
 
+// pbrt's scene-wide options belong before WorldBegin; media, colour spaces and options may also
+// come inside it (pbrt-v3 and v4 file format documentation).
+TEST(SceneInput, OnlyTheSceneWideOptionsMustComeBeforeWorldBegin) {
+  for (const char* directive :
+       {"Camera \"perspective\"", "Film \"image\"", "Sampler \"halton\"", "PixelFilter \"box\"",
+        "Integrator \"path\"", "SurfaceIntegrator \"path\"", "VolumeIntegrator \"single\"",
+        "Accelerator \"bvh\"", "Renderer \"sampler\""}) {
+    const std::string name =
+        std::string(directive).substr(0, std::strchr(directive, ' ') - directive);
+    expectError(std::string("WorldBegin\n") + directive + "\n",
+                "test.pbrt:2:1: error: " + name +
+                    " must come before WorldBegin (the world block began at test.pbrt:1:1)");
+    const ParseResult before = parse(std::string(directive) + "\nWorldBegin\nWorldEnd\n");
+    EXPECT_TRUE(before.scene) << directive << "\n" << messages(before);
+  }
+  for (const char* directive :
+       {"MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"", "ColorSpace \"aces2065-1\"",
+        "Option \"seed\"", "MediumInterface \"fog\" \"\"", "TransformTimes 0 1"}) {
+    const ParseResult inside = parse(std::string("WorldBegin\n") + directive + "\nWorldEnd\n");
+    EXPECT_TRUE(inside.scene) << directive << "\n" << messages(inside);
+  }
+}
+
 TEST(SceneInput, StructureErrorsAreReported) {
   expectError(
       "WorldBegin\nObjectBegin \"a\" ObjectEnd\nObjectBegin \"b\"\n  ObjectInstance \"a\"\n",
