@@ -82,6 +82,18 @@ class InstalledTree : public ::testing::Test {
   testing::ProcessResult runHere(const std::string& command) {
     return testing::runProcess("cd " + quoted(scratch) + " && " + command, scratch);
   }
+  // Runs the installed viewer under Xvfb from the scratch directory with `arguments` until its
+  // first preview sample, and returns its dump-ui (discarded when it failed).
+  nlohmann::json runViewer(const std::string& arguments) {
+    std::ofstream(scratch / "commands.script") << "wait-spp 1\ndump-ui ui.json\nquit\n";
+    fs::remove(scratch / "ui.json");
+    const auto result = runHere(quoted(fs::path(LENSLAB_SOURCE_DIR) / "tests/app/with-xvfb") + " " +
+                                quoted(installedLenslab()) +
+                                " --size 800x500 --script commands.script " + arguments);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    std::ifstream file(scratch / "ui.json");
+    return nlohmann::json::parse(file, nullptr, false);
+  }
 };
 
 fs::path InstalledTree::prefix;
@@ -129,19 +141,37 @@ TEST_F(InstalledTree, TheInstalledDefaultSceneRendersAsTheCheckoutsDoes) {
 // The viewer's own lookup (src/common/resource_directories.cpp): started with no --lens or
 // --scene from an unrelated directory, it opens the installed default lens and scene.
 TEST_F(InstalledTree, TheViewerOpensTheInstalledDefaultLensAndScene) {
-  std::ofstream(scratch / "commands.script") << "wait-spp 1\ndump-ui ui.json\nquit\n";
-  const auto result =
-      runHere(quoted(fs::path(LENSLAB_SOURCE_DIR) / "tests/app/with-xvfb") + " " +
-              quoted(installedLenslab()) + " --size 800x500 --script commands.script");
-  ASSERT_EQ(result.exitCode, 0) << result.err;
-  std::ifstream file(scratch / "ui.json");
-  const auto dump = nlohmann::json::parse(file, nullptr, false);
+  const auto dump = runViewer("");
   ASSERT_FALSE(dump.is_discarded());
   const fs::path canonicalData = fs::canonical(data());
   EXPECT_EQ(dump["state"]["scene_path"].get<std::string>(),
             (canonicalData / "scenes" / "default.pbrt").string());
   EXPECT_EQ(fs::weakly_canonical(dump["state"]["lens_path"].get<std::string>()),
             canonicalData / "lenses" / "dgauss-50mm.dat");
+}
+
+// The desktop entry's Exec=lenslab %f: a file manager passes the file alone, a lens or a scene.
+TEST_F(InstalledTree, TheViewerOpensALensOrSceneGivenAsTheDesktopEntryDoes) {
+  const fs::path lens = data() / "lenses" / "wide-22mm.dat";
+  const auto withLens = runViewer(quoted(lens));
+  ASSERT_FALSE(withLens.is_discarded());
+  EXPECT_EQ(fs::weakly_canonical(withLens["state"]["lens_path"].get<std::string>()),
+            fs::canonical(lens));  // kept when the default scene brings its own
+
+  // A scene of the user's, beside the lens it names.
+  fs::create_directories(scratch / "mine" / "scenes");
+  fs::create_directories(scratch / "mine" / "lenses");
+  fs::copy_file(data() / "scenes" / "default.pbrt", scratch / "mine" / "scenes" / "chart.pbrt");
+  fs::copy_file(data() / "lenses" / "dgauss-50mm.dat",
+                scratch / "mine" / "lenses" / "dgauss-50mm.dat");
+  const auto withScene = runViewer("mine/scenes/chart.pbrt");
+  ASSERT_FALSE(withScene.is_discarded());
+  EXPECT_EQ(withScene["state"]["scene_path"], "mine/scenes/chart.pbrt");  // as given
+  EXPECT_EQ(withScene["state"]["scene_loading"], "");
+  // The viewer ran in the scratch directory: relative paths are relative to it.
+  const fs::path sceneLens = withScene["state"]["lens_path"].get<std::string>();
+  EXPECT_EQ(fs::weakly_canonical(scratch / sceneLens),
+            fs::canonical(scratch / "mine" / "lenses" / "dgauss-50mm.dat"));
 }
 
 TEST_F(InstalledTree, TheDesktopFileIsValidAndNamesTheInstalledIcon) {
