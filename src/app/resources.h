@@ -1,17 +1,16 @@
 #pragma once
-// Finding the bundled lenses/ and scenes/ directories, whether lenslab runs from the build tree
-// (build/lenslab beside the sources) or from somewhere else with the source tree known at build
-// time.
+// The viewer's bundled lenses/ and scenes/ directories, and listing their files. The lookup itself
+// lives in src/common/resource_directories.h (build tree, relocatable install, configured prefix).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "common/resource_directories.h"
+
 namespace lenslab::app {
 
-// The first existing directory named `name` among: beside the executable, one level above it,
-// and the source tree lenslab was built from. Empty when none exists.
-std::filesystem::path findResourceDirectory(const std::string& name);
+using lenslab::findResourceDirectory;
 
 // Files in `directory` with the given extension, sorted by name.
 std::vector<std::filesystem::path> listFiles(const std::filesystem::path& directory,

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -23,6 +24,7 @@ constexpr int kInternalError = 1;
 struct ViewerArguments {
   std::string lensPath;
   std::string scenePath;
+  std::string filePath;  // a lens or scene named without --lens/--scene (the desktop entry's %f)
   std::string screenshotPath;
   std::string scriptPath;
   std::string statsJsonPath;
@@ -34,6 +36,9 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
   app.add_option("--lens", arguments.lensPath, "Lens file to open (.dat)")
       ->check(CLI::ExistingFile);
   app.add_option("--scene", arguments.scenePath, "Scene file to open (.pbrt)")
+      ->check(CLI::ExistingFile);
+  app.add_option("file", arguments.filePath,
+                 "Lens (.dat) or scene (.pbrt) to open, as --lens or --scene would")
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", arguments.screenshotPath,
                  "Draw --frames frames, save the window as this PNG, and exit");
@@ -47,10 +52,28 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
   app.add_option("--size", arguments.size, "Window size WIDTHxHEIGHT, e.g. 1280x800");
 }
 
+// A file opened by a file manager or the desktop entry (lenslab %f): a scene by its extension,
+// otherwise a lens, as the viewer's file drop tells them apart. Empty when there is none.
+std::string takeFileArgument(const ViewerArguments& arguments, app::ViewerOptions& options) {
+  if (arguments.filePath.empty()) return "";
+  const bool isScene = std::filesystem::path(arguments.filePath).extension() == ".pbrt";
+  std::string& path = isScene ? options.scenePath : options.lensPath;
+  if (!path.empty()) {
+    return arguments.filePath + " and " + (isScene ? "--scene" : "--lens") + " both name the " +
+           (isScene ? "scene" : "lens") + ": give one";
+  }
+  path = arguments.filePath;
+  return "";
+}
+
 int runViewer(const ViewerArguments& arguments) {
   app::ViewerOptions options;
   options.lensPath = arguments.lensPath;
   options.scenePath = arguments.scenePath;
+  if (const std::string error = takeFileArgument(arguments, options); !error.empty()) {
+    std::fprintf(stderr, "lenslab: %s\n", error.c_str());
+    return kUsageError;
+  }
   options.frames = arguments.frames;
   options.scriptPath = arguments.scriptPath;
   options.statsJsonPath = arguments.statsJsonPath;

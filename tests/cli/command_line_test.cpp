@@ -47,6 +47,32 @@ TEST_F(CommandLine, BadSizesAreClearErrorsWithExit2) {
   }
 }
 
+// The viewer's file argument (the desktop entry's lenslab %f) is checked before any window opens.
+TEST_F(CommandLine, AFileArgumentMustExistAndNotRepeatTheLensOrScene) {
+  const auto missing = testing::runProcess(lenslab("no-such-lens.dat"), scratch);
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.err.find("does not exist: no-such-lens.dat"), std::string::npos) << missing.err;
+
+  const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
+  const auto twoLenses = testing::runProcess(
+      lenslab("--lens " + lenses + "wide-22mm.dat " + lenses + "dgauss-50mm.dat"), scratch);
+  EXPECT_EQ(twoLenses.exitCode, 2);
+  EXPECT_NE(twoLenses.err.find("dgauss-50mm.dat and --lens both name the lens"), std::string::npos)
+      << twoLenses.err;
+
+  const std::string scene = std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt";
+  const auto twoScenes = testing::runProcess(lenslab("--scene " + scene + " " + scene), scratch);
+  EXPECT_EQ(twoScenes.exitCode, 2);
+  EXPECT_NE(twoScenes.err.find("and --scene both name the scene"), std::string::npos)
+      << twoScenes.err;
+
+  // A lens beside a --scene is no conflict: it gets as far as looking for a display.
+  const auto lensAndScene =
+      testing::runProcess(lenslab("--scene " + scene + " " + lenses + "wide-22mm.dat"), scratch);
+  EXPECT_EQ(lensAndScene.exitCode, 2);
+  EXPECT_NE(lensAndScene.err.find("no display"), std::string::npos) << lensAndScene.err;
+}
+
 TEST_F(CommandLine, NoDisplayIsOneLineAndExit2) {
   const auto result = testing::runProcess(lenslab(""), scratch);
   EXPECT_EQ(result.exitCode, 2);
