@@ -144,7 +144,8 @@ class Viewer final : public ScriptHost {
   const ViewerStats& stats() const { return stats_; }
 };
 
-// The bundled defaults, found beside the executable or in the source tree.
+// The bundled defaults, found where findResourceDirectory looks (common/resource_directories.h):
+// the build tree's checkout, or the installed share/lenslab.
 std::string defaultScenePath();
 std::string defaultLensPath();
 

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "app/panels/lens_table_state.h"
+#include "app/lens_table_state.h"
 #include "optics/prescription.h"
 
 namespace lenslab::app {
