@@ -9,6 +9,7 @@
 
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
+#include "cli/usage_error.h"
 #include "optics/focus.h"
 
 namespace lenslab::cli {
@@ -43,8 +44,8 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
   if (objectGiven) {
     objectDistance = parseDistance(arguments.objectDistance);
     if (!objectDistance) {
-      std::cerr << "lenslab focus: --object-distance: '" << arguments.objectDistance
-                << "' is not a positive distance in mm (or 'inf')\n";
+      printUsageError("lenslab focus", "--object-distance: '" + arguments.objectDistance +
+                                           "' is not a positive distance in mm (or 'inf')");
       return 2;
     }
   }

@@ -13,6 +13,7 @@
 
 #include "cli/number_validators.h"
 #include "cli/size_argument.h"
+#include "cli/usage_error.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
 #include "render/pbrt_parser.h"
@@ -94,7 +95,7 @@ int runRenderCommand(const RenderArguments& arguments) {
     std::string error;
     const auto size = parsePixelSize(arguments.resolution, &error);
     if (!size) {
-      std::fprintf(stderr, "lenslab render: --resolution: %s\n", error.c_str());
+      printUsageError("lenslab render", "--resolution: " + error);
       return kUsageError;
     }
     overrides.width = size->width;
@@ -113,8 +114,7 @@ int runRenderCommand(const RenderArguments& arguments) {
   std::string extension = std::filesystem::path(outPath).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".png" && extension != ".exr" && extension != ".pfm") {
-    std::fprintf(stderr, "lenslab render: %s: unknown image format (use .png, .exr or .pfm)\n",
-                 outPath.c_str());
+    printUsageError("lenslab render", outPath + ": unknown image format (use .png, .exr or .pfm)");
     return kUsageError;
   }
 
