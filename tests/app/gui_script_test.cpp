@@ -239,6 +239,20 @@ TEST_F(ScriptedViewer, AFailingCommandQuitsWith1AndSaysWhy) {
   EXPECT_FALSE(std::filesystem::exists(scratch / "never.png"));
 }
 
+// A refused edit fails the script, which says so once, at its line: the viewer used to log the
+// refusal as well ("script: cannot ..."), and the log's errors go to stderr too.
+TEST_F(ScriptedViewer, ARefusedScriptEditIsReportedOnce) {
+  const auto result = runScript("wait-frames 1\nset surface 99 radius 1\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.err.find("commands.script:2:"), std::string::npos) << result.err;
+  std::size_t reports = 0;
+  for (std::size_t at = result.err.find("surface 99 does not exist"); at != std::string::npos;
+       at = result.err.find("surface 99 does not exist", at + 1)) {
+    ++reports;
+  }
+  EXPECT_EQ(reports, 1u) << result.err;
+}
+
 TEST_F(ScriptedViewer, CrossSectionExportsAsSvgWithTheRayFans) {
   const auto result = runScript("wait-frames 2\nscreenshot-cross-section lens.svg\nquit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
