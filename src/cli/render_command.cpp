@@ -19,6 +19,7 @@
 #include "render/pbrt_parser.h"
 #include "render/progressive_renderer.h"
 #include "render/scene_builder.h"
+#include "render/scene_content.h"
 
 namespace lenslab::cli {
 
@@ -122,6 +123,10 @@ int runRenderCommand(const RenderArguments& arguments) {
   auto camera = render::makeCamera(description, overrides, cameraDiagnostics);
   printDiagnostics(cameraDiagnostics);
   if (!camera) return kFailure;
+  Diagnostics contentDiagnostics;
+  render::reportEmptyScene(description, contentDiagnostics);
+  printDiagnostics(contentDiagnostics);
+  if (contentDiagnostics.hasErrors()) return kFailure;  // no black image for an empty scene
   // The exit-pupil table is set-up, as pbrt's is. It and the scene (image textures, Embree's
   // BVH) are independent, so they are built side by side (a jthread joins even if the scene's
   // build throws).

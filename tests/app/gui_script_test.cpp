@@ -464,6 +464,25 @@ TEST_F(ScriptedViewer, ADroppedBrokenSceneKeepsTheCurrentSceneAndSaysWhy) {
   EXPECT_FALSE(inRecentFiles(dump, "broken.pbrt")) << dump["state"]["recent_files"];
 }
 
+// An empty scene parses cleanly but has nothing to render: it used to replace the current one
+// with a black picture (and a 35 mm film diagonal). It is refused like a broken one.
+TEST_F(ScriptedViewer, ADroppedEmptySceneKeepsTheCurrentSceneAndSaysWhy) {
+  std::ofstream(scratch / "empty.pbrt") << "# nothing but a comment\n";
+  std::ofstream(scratch / "dark.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [1]\n";
+  const auto result = runScript("wait-spp 1\ndrop " + (scratch / "empty.pbrt").string() +
+                                "\nwait-frames 3\ndrop " + (scratch / "dark.pbrt").string() +
+                                "\nwait-frames 3\nwait-spp 2\ndump-ui after.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto dump = json("after.json");
+  EXPECT_NE(dump["state"]["scene_path"].get<std::string>().find("default.pbrt"), std::string::npos);
+  EXPECT_TRUE(loggedError(dump, "empty.pbrt: error: the scene has no shapes"))
+      << dump["state"]["log"];
+  EXPECT_TRUE(loggedError(dump, "dark.pbrt: error: the scene has no lights"))
+      << dump["state"]["log"];
+  EXPECT_FALSE(inRecentFiles(dump, "empty.pbrt")) << dump["state"]["recent_files"];
+  EXPECT_FALSE(inRecentFiles(dump, "dark.pbrt")) << dump["state"]["recent_files"];
+}
+
 TEST_F(ScriptedViewer, ABrokenSceneOnTheCommandLineEndsTheSessionWithItsError) {
   std::ofstream(scratch / "broken.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [x]\n";
   const auto result =
