@@ -46,7 +46,8 @@ TEST_F(CommandLine, UsageErrorsAreOneLineAndTheCommandsHelpHint) {
       {"render " + scene + " --integrator bidir", "lenslab render", "--integrator"},
       {"render " + scene + " --resolution 0x0", "lenslab render", "--resolution"},
       {"render", "lenslab render", "scene"},
-      {"info --wavelength 100 " + lens, "lenslab info", "--wavelength"},
+      {"info --wavelength 100 " + lens, "lenslab info",
+       "--wavelength: '100' is not between 200 and 2000 nm"},
       {"info", "lenslab info", "LENS"},
       {"focus --object-distance far " + lens, "lenslab focus", "--object-distance"},
   };
