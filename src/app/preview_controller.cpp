@@ -8,6 +8,7 @@
 #include "render/image_io.h"
 #include "render/pbrt_parser.h"
 #include "render/scene_builder.h"
+#include "render/scene_content.h"
 
 namespace lenslab::app {
 
@@ -29,6 +30,12 @@ LoadedScene loadSceneFile(const std::filesystem::path& path) {
     if (loaded.error.empty()) loaded.error = path.string() + ": cannot read the scene";
     return loaded;
   }
+  // An empty scene is refused like a broken one, so the viewer keeps the scene it shows (and
+  // its film) instead of a black picture.
+  Diagnostics content;
+  render::reportEmptyScene(*parsed.scene, content);
+  collect(content);
+  if (content.hasErrors()) return loaded;
   render::BuildResult built = render::buildScene(*parsed.scene);
   collect(built.diagnostics);
   if (!built.scene) {

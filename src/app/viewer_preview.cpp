@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "app/viewer_session.h"
+#include "common/distance_text.h"
 #include "optics/focus.h"
 #include "render/focus_pick.h"
 
@@ -63,8 +64,7 @@ void Viewer::focusOnClick() {
   const optics::FocusResult focus =
       optics::filmDistanceForObjectDistance(*state_.lensSystem, *distance);
   if (!focus.ok()) {
-    state_.log.error("cannot focus at " + std::to_string(*distance / 1000.0) +
-                     " m: " + focus.whyNot);
+    state_.log.error("cannot focus at " + distanceText(*distance) + ": " + focus.whyNot);
     return;
   }
   state_.lens.issue(SetFilmDistance{*focus.valueMm});

@@ -92,10 +92,13 @@ void applyCommands(ViewerState& state) {
     const bool isUndoOrRedo = std::holds_alternative<Undo>(issued.command) ||
                               std::holds_alternative<Redo>(issued.command);
     if (applied.refusal) {
+      // A script's refused edit fails the script, which reports it (stderr and the log) with
+      // its file:line:column; logging it here too showed every such error twice.
+      if (fromScript) continue;
       if (isUndoOrRedo) {
-        state.log.info(prefix + *applied.refusal);  // "nothing to undo" is no error
+        state.log.info(*applied.refusal);  // "nothing to undo" is no error
       } else {
-        state.log.error(prefix + "cannot " + describe(issued.command) + ": " + *applied.refusal);
+        state.log.error("cannot " + describe(issued.command) + ": " + *applied.refusal);
       }
       continue;
     }

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <iostream>
 #include <string>
 
 #include "app/viewer.h"
@@ -13,6 +12,7 @@
 #include "cli/render_command.h"
 #include "cli/size_argument.h"
 #include "cli/subcommand.h"
+#include "cli/usage_error.h"
 
 namespace lenslab::cli {
 
@@ -71,7 +71,7 @@ int runViewer(const ViewerArguments& arguments) {
   options.lensPath = arguments.lensPath;
   options.scenePath = arguments.scenePath;
   if (const std::string error = takeFileArgument(arguments, options); !error.empty()) {
-    std::fprintf(stderr, "lenslab: %s\n", error.c_str());
+    printUsageError("lenslab", error);
     return kUsageError;
   }
   options.frames = arguments.frames;
@@ -82,7 +82,7 @@ int runViewer(const ViewerArguments& arguments) {
     std::string error;
     const auto size = parsePixelSize(arguments.size, &error);
     if (!size) {
-      std::fprintf(stderr, "lenslab: --size: %s\n", error.c_str());
+      printUsageError("lenslab", "--size: " + error);
       return kUsageError;
     }
     options.width = size->width;
@@ -115,7 +115,13 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& version) {
     return app.exit(version);
   } catch (const CLI::ParseError& error) {
-    std::cerr << "lenslab: " << error.what() << "\n\n" << app.help();
+    // The error belongs to the innermost subcommand parsed so far (render for render --spp 0).
+    std::string command = "lenslab";
+    for (const CLI::App* parsed = &app; !parsed->get_subcommands().empty();) {
+      parsed = parsed->get_subcommands().back();
+      command += " " + parsed->get_name();
+    }
+    printUsageError(command, error.what());
     return kUsageError;
   }
   // Last resort: nothing a user passes may end in an uncaught exception (an abort, exit 134).

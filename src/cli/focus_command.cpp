@@ -9,6 +9,8 @@
 
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
+#include "cli/usage_error.h"
+#include "common/distance_text.h"
 #include "optics/focus.h"
 
 namespace lenslab::cli {
@@ -43,8 +45,8 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
   if (objectGiven) {
     objectDistance = parseDistance(arguments.objectDistance);
     if (!objectDistance) {
-      std::cerr << "lenslab focus: --object-distance: '" << arguments.objectDistance
-                << "' is not a positive distance in mm (or 'inf')\n";
+      printUsageError("lenslab focus", "--object-distance: '" + arguments.objectDistance +
+                                           "' is not a positive distance in mm (or 'inf')");
       return 2;
     }
   }
@@ -65,11 +67,12 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
                        .dump(2)
                 << "\n";
     } else {
-      std::printf(
-          "film distance %.6f mm (rear vertex to film) focuses an object at %s mm from "
-          "the film\n",
-          *film.valueMm,
-          std::isinf(*objectDistance) ? "infinity" : std::to_string(*objectDistance).c_str());
+      // An object at infinity is at no distance "from the film".
+      const std::string where = std::isinf(*objectDistance)
+                                    ? std::string("infinity")
+                                    : distanceText(*objectDistance) + " from the film";
+      std::printf("film distance %.6f mm (rear vertex to film) focuses an object at %s\n",
+                  *film.valueMm, where.c_str());
     }
     return 0;
   }
@@ -90,8 +93,8 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
   } else if (std::isinf(*object.valueMm)) {
     std::printf("film distance %.6f mm focuses at infinity\n", arguments.filmDistanceMm);
   } else {
-    std::printf("film distance %.6f mm focuses an object at %.6f mm from the film\n",
-                arguments.filmDistanceMm, *object.valueMm);
+    std::printf("film distance %.6f mm focuses an object at %s from the film\n",
+                arguments.filmDistanceMm, distanceText(*object.valueMm).c_str());
   }
   return 0;
 }

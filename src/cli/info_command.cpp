@@ -129,8 +129,7 @@ void addInfoCommand(CLI::App& app, SubcommandRunner& run) {
   info->add_option("LENS", arguments->lensPath, "Lens file (.dat, pbrt format)")->required();
   info->add_flag("--json", arguments->json, "Print JSON instead of text");
   info->add_option("--wavelength", arguments->wavelengthNm, "Wavelength in nm (default 587.56)")
-      ->check(PositiveFiniteNumber())
-      ->check(CLI::Range(200.0, 2000.0));
+      ->check(FiniteNumberBetween(200.0, 2000.0, "nm"));
   info->add_option("--film-diagonal", arguments->filmDiagonalMm,
                    "Film diagonal in mm for the field of view (default 43.27, full frame)")
       ->check(PositiveFiniteNumber());

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -31,7 +32,24 @@ CLI::Validator numberCheck(bool positive) {
       positive ? "POSITIVE" : "NUMBER");
 }
 
+// A bound as it was written in the code: 200, not 200.000000.
+std::string boundText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 }  // namespace
+
+FiniteNumberBetween::FiniteNumberBetween(double min, double max, const std::string& unit)
+    : CLI::Validator(
+          [min, max, unit](std::string& text) -> std::string {
+            const auto value = parseDouble(text);
+            if (value && std::isfinite(*value) && *value >= min && *value <= max) return {};
+            return "'" + text + "' is not between " + boundText(min) + " and " + boundText(max) +
+                   " " + unit;
+          },
+          "NUMBER in [" + boundText(min) + ", " + boundText(max) + "]") {}
 
 PositiveFiniteNumber::PositiveFiniteNumber() : CLI::Validator(numberCheck(true)) {}
 FiniteNumber::FiniteNumber() : CLI::Validator(numberCheck(false)) {}

@@ -19,4 +19,11 @@ class FiniteNumber : public CLI::Validator {
   FiniteNumber();
 };
 
+// A finite number from min to max inclusive, in `unit` ("nm"): "'100' is not between 200 and
+// 2000 nm", where CLI::Range said "Value 100 not in range 200.000000 to 2000.000000".
+class FiniteNumberBetween : public CLI::Validator {
+ public:
+  FiniteNumberBetween(double min, double max, const std::string& unit);
+};
+
 }  // namespace lenslab::cli

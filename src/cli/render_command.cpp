@@ -13,11 +13,13 @@
 
 #include "cli/number_validators.h"
 #include "cli/size_argument.h"
+#include "cli/usage_error.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
 #include "render/pbrt_parser.h"
 #include "render/progressive_renderer.h"
 #include "render/scene_builder.h"
+#include "render/scene_content.h"
 
 namespace lenslab::cli {
 
@@ -94,7 +96,7 @@ int runRenderCommand(const RenderArguments& arguments) {
     std::string error;
     const auto size = parsePixelSize(arguments.resolution, &error);
     if (!size) {
-      std::fprintf(stderr, "lenslab render: --resolution: %s\n", error.c_str());
+      printUsageError("lenslab render", "--resolution: " + error);
       return kUsageError;
     }
     overrides.width = size->width;
@@ -113,8 +115,7 @@ int runRenderCommand(const RenderArguments& arguments) {
   std::string extension = std::filesystem::path(outPath).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".png" && extension != ".exr" && extension != ".pfm") {
-    std::fprintf(stderr, "lenslab render: %s: unknown image format (use .png, .exr or .pfm)\n",
-                 outPath.c_str());
+    printUsageError("lenslab render", outPath + ": unknown image format (use .png, .exr or .pfm)");
     return kUsageError;
   }
 
@@ -122,6 +123,10 @@ int runRenderCommand(const RenderArguments& arguments) {
   auto camera = render::makeCamera(description, overrides, cameraDiagnostics);
   printDiagnostics(cameraDiagnostics);
   if (!camera) return kFailure;
+  Diagnostics contentDiagnostics;
+  render::reportEmptyScene(description, contentDiagnostics);
+  printDiagnostics(contentDiagnostics);
+  if (contentDiagnostics.hasErrors()) return kFailure;  // no black image for an empty scene
   // The exit-pupil table is set-up, as pbrt's is. It and the scene (image textures, Embree's
   // BVH) are independent, so they are built side by side (a jthread joins even if the scene's
   // build throws).

@@ -239,6 +239,20 @@ TEST_F(ScriptedViewer, AFailingCommandQuitsWith1AndSaysWhy) {
   EXPECT_FALSE(std::filesystem::exists(scratch / "never.png"));
 }
 
+// A refused edit fails the script, which says so once, at its line: the viewer used to log the
+// refusal as well ("script: cannot ..."), and the log's errors go to stderr too.
+TEST_F(ScriptedViewer, ARefusedScriptEditIsReportedOnce) {
+  const auto result = runScript("wait-frames 1\nset surface 99 radius 1\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.err.find("commands.script:2:"), std::string::npos) << result.err;
+  std::size_t reports = 0;
+  for (std::size_t at = result.err.find("surface 99 does not exist"); at != std::string::npos;
+       at = result.err.find("surface 99 does not exist", at + 1)) {
+    ++reports;
+  }
+  EXPECT_EQ(reports, 1u) << result.err;
+}
+
 TEST_F(ScriptedViewer, CrossSectionExportsAsSvgWithTheRayFans) {
   const auto result = runScript("wait-frames 2\nscreenshot-cross-section lens.svg\nquit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
@@ -448,6 +462,25 @@ TEST_F(ScriptedViewer, ADroppedBrokenSceneKeepsTheCurrentSceneAndSaysWhy) {
   EXPECT_EQ(dump["state"]["scene_loading"], "");
   EXPECT_TRUE(loggedError(dump, "broken.pbrt:2:")) << dump["state"]["log"];
   EXPECT_FALSE(inRecentFiles(dump, "broken.pbrt")) << dump["state"]["recent_files"];
+}
+
+// An empty scene parses cleanly but has nothing to render: it used to replace the current one
+// with a black picture (and a 35 mm film diagonal). It is refused like a broken one.
+TEST_F(ScriptedViewer, ADroppedEmptySceneKeepsTheCurrentSceneAndSaysWhy) {
+  std::ofstream(scratch / "empty.pbrt") << "# nothing but a comment\n";
+  std::ofstream(scratch / "dark.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [1]\n";
+  const auto result = runScript("wait-spp 1\ndrop " + (scratch / "empty.pbrt").string() +
+                                "\nwait-frames 3\ndrop " + (scratch / "dark.pbrt").string() +
+                                "\nwait-frames 3\nwait-spp 2\ndump-ui after.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto dump = json("after.json");
+  EXPECT_NE(dump["state"]["scene_path"].get<std::string>().find("default.pbrt"), std::string::npos);
+  EXPECT_TRUE(loggedError(dump, "empty.pbrt: error: the scene has no shapes"))
+      << dump["state"]["log"];
+  EXPECT_TRUE(loggedError(dump, "dark.pbrt: error: the scene has no lights"))
+      << dump["state"]["log"];
+  EXPECT_FALSE(inRecentFiles(dump, "empty.pbrt")) << dump["state"]["recent_files"];
+  EXPECT_FALSE(inRecentFiles(dump, "dark.pbrt")) << dump["state"]["recent_files"];
 }
 
 TEST_F(ScriptedViewer, ABrokenSceneOnTheCommandLineEndsTheSessionWithItsError) {

@@ -213,6 +213,27 @@ TEST(ScriptRun, UndoWithNothingToUndoFails) {
   EXPECT_EQ(host.errors[0], "t:1:1: error: undo: nothing to undo");
 }
 
+// inf is a flat surface's radius, as the table and the lens file write it; it means nothing as a
+// thickness or a film distance, so there it stays "not a number".
+TEST(ScriptRun, RadiusInfMakesAFlatSurface) {
+  const ParsedScript script = parseScript("set surface 1 radius inf\n", "t");
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  while (host.frame(runner)) {
+  }
+  EXPECT_FALSE(runner.failed()) << (host.errors.empty() ? "" : host.errors[0]);
+  EXPECT_TRUE(std::isinf(host.prescription().surfaces[0].radiusMm));
+
+  for (const char* text :
+       {"set surface 1 thickness inf\n", "set film-distance inf\n", "set surface 1 radius nan\n"}) {
+    const ParsedScript rejected = parseScript(text, "t");
+    ASSERT_EQ(rejected.diagnostics.all().size(), 1u) << text;
+    EXPECT_NE(rejected.diagnostics.formatAll().find("is not a number"), std::string::npos)
+        << rejected.diagnostics.formatAll();
+  }
+}
+
 TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
   const ParsedScript script = parseScript("set surface 1 abbe 60\nset surface 1 abbe none\n", "t");
   ASSERT_TRUE(script.diagnostics.empty());

@@ -31,11 +31,40 @@ TEST_F(CommandLine, VersionWorksWithoutADisplay) {
   EXPECT_NE(result.out.find("lenslab 0."), std::string::npos);
 }
 
-TEST_F(CommandLine, UnknownFlagPrintsUsageAndExits2) {
-  const auto result = testing::runProcess(lenslab("--frobnicate"), scratch);
-  EXPECT_EQ(result.exitCode, 2);
-  EXPECT_NE(result.err.find("--frobnicate"), std::string::npos);
-  EXPECT_NE(result.err.find("Usage"), std::string::npos);
+// A usage error is one line naming the command and the problem, then the command's --help hint:
+// not the whole help text (which it used to print, burying the line that matters).
+TEST_F(CommandLine, UsageErrorsAreOneLineAndTheCommandsHelpHint) {
+  const std::string scene = std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt";
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
+  struct Case {
+    std::string arguments, command, mentioned;
+  };
+  const Case cases[] = {
+      {"--frobnicate", "lenslab", "--frobnicate"},
+      {"--frames 0", "lenslab", "--frames"},
+      {"render " + scene + " --spp 0", "lenslab render", "--spp"},
+      {"render " + scene + " --integrator bidir", "lenslab render", "--integrator"},
+      {"render " + scene + " --resolution 0x0", "lenslab render", "--resolution"},
+      {"render", "lenslab render", "scene"},
+      {"info --wavelength 100 " + lens, "lenslab info",
+       "--wavelength: '100' is not between 200 and 2000 nm"},
+      {"info", "lenslab info", "LENS"},
+      {"focus --object-distance far " + lens, "lenslab focus", "--object-distance"},
+  };
+  for (const auto& c : cases) {
+    const auto result = testing::runProcess(lenslab(c.arguments), scratch);
+    EXPECT_EQ(result.exitCode, 2) << c.arguments;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 2)
+        << c.arguments << ": " << result.err;
+    EXPECT_EQ(result.err.rfind(c.command + ": ", 0), 0u) << c.arguments << ": " << result.err;
+    const std::string firstLine = result.err.substr(0, result.err.find('\n'));
+    EXPECT_NE(firstLine.find(c.mentioned), std::string::npos) << c.arguments << ": " << firstLine;
+    EXPECT_NE(result.err.find("\nRun '" + c.command + " --help' for its options.\n"),
+              std::string::npos)
+        << c.arguments << ": " << result.err;
+    EXPECT_EQ(result.err.find("Usage"), std::string::npos) << c.arguments;
+    EXPECT_TRUE(result.out.empty()) << c.arguments;
+  }
 }
 
 TEST_F(CommandLine, BadSizesAreClearErrorsWithExit2) {

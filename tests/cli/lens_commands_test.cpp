@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -95,6 +96,32 @@ TEST_F(LensCommands, FocusPrintsTheFilmDistance) {
       lenslab("focus --object-distance inf " + lensPath("dgauss-50mm.dat")), scratch);
   EXPECT_EQ(infinity.exitCode, 0) << infinity.err;
   EXPECT_NE(infinity.out.find("infinity"), std::string::npos);
+}
+
+// Distances read as the viewer shows them: "at infinity", "3.600 m", never "infinity mm" or
+// "3600.000000 mm".
+TEST_F(LensCommands, FocusTextGivesDistancesWithTheirUnits) {
+  const std::string lens = lensPath("dgauss-50mm.dat");
+  const auto infinity =
+      testing::runProcess(lenslab("focus --object-distance inf " + lens), scratch);
+  ASSERT_EQ(infinity.exitCode, 0) << infinity.err;
+  EXPECT_NE(infinity.out.find("focuses an object at infinity\n"), std::string::npos)
+      << infinity.out;
+  const auto near = testing::runProcess(lenslab("focus --object-distance 3600 " + lens), scratch);
+  ASSERT_EQ(near.exitCode, 0) << near.err;
+  EXPECT_NE(near.out.find("focuses an object at 3.600 m from the film\n"), std::string::npos)
+      << near.out;
+  // And back: the film distance for 3.6 m focuses an object 3.600 m away.
+  const auto json =
+      testing::runProcess(lenslab("focus --json --object-distance 3600 " + lens), scratch);
+  const double film = nlohmann::json::parse(json.out).at("film_distance_mm").get<double>();
+  char filmText[32];
+  std::snprintf(filmText, sizeof filmText, "%.9f", film);
+  const auto back = testing::runProcess(
+      lenslab("focus --film-distance " + std::string(filmText) + " " + lens), scratch);
+  ASSERT_EQ(back.exitCode, 0) << back.err;
+  EXPECT_NE(back.out.find("focuses an object at 3.600 m from the film\n"), std::string::npos)
+      << back.out;
 }
 
 TEST_F(LensCommands, FocusWithNoSolutionSaysSoAndFails) {

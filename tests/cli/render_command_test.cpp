@@ -151,6 +151,52 @@ TEST_F(RenderCommand, UpperCaseExtensionsAreAccepted) {
   EXPECT_EQ(testing::readWholeFile(scratch / "a.PNG").substr(1, 3), "PNG");
 }
 
+// A scene with nothing to render used to render black and exit 0; it is an error at the file.
+TEST_F(RenderCommand, AnEmptySceneIsAnErrorAndWritesNoImage) {
+  const std::string camera = "LookAt 0 1 4  0 0.3 0  0 1 0\nCamera \"perspective\"\n";
+  const std::string sphere = "Shape \"sphere\" \"float radius\" [0.5]\n";
+  struct Case {
+    const char* name;
+    std::string scene;
+    const char* message;
+  };
+  const Case cases[] = {
+      {"comments", "# only a comment\n# and another\n", "the scene has no shapes"},
+      {"noshapes", camera + "WorldBegin\nLightSource \"point\" \"rgb I\" [5 5 5]\nWorldEnd\n",
+       "the scene has no shapes"},
+      {"nolights", camera + "WorldBegin\n" + sphere + "WorldEnd\n", "the scene has no lights"},
+  };
+  for (const Case& empty : cases) {
+    const auto path = scratch / (std::string(empty.name) + ".pbrt");
+    std::ofstream(path) << empty.scene;
+    const auto result = testing::runProcess(
+        lenslab("render '" + path.string() + "' --spp 1 --resolution 8x6 --out '" +
+                (scratch / "empty.png").string() + "'"),
+        scratch);
+    EXPECT_EQ(result.exitCode, 1) << empty.name << "\n" << result.err;
+    EXPECT_NE(result.err.find(path.string() + ": error: " + empty.message), std::string::npos)
+        << empty.name << "\n"
+        << result.err;
+    EXPECT_FALSE(std::filesystem::exists(scratch / "empty.png")) << empty.name;
+  }
+  // Light from an area light alone is light, and an instanced object's shapes are shapes.
+  std::ofstream(scratch / "emitter.pbrt")
+      << camera << "WorldBegin\nAreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
+      << sphere << "WorldEnd\n";
+  std::ofstream(scratch / "instanced.pbrt")
+      << camera << "WorldBegin\nLightSource \"point\" \"rgb I\" [5 5 5]\nObjectBegin \"ball\"\n"
+      << sphere << "ObjectEnd\nObjectInstance \"ball\"\nWorldEnd\n";
+  for (const char* name : {"emitter", "instanced"}) {
+    const auto out = scratch / (std::string(name) + ".png");
+    const auto result = testing::runProcess(
+        lenslab("render '" + (scratch / (std::string(name) + ".pbrt")).string() +
+                "' --spp 1 --resolution 8x6 --out '" + out.string() + "'"),
+        scratch);
+    EXPECT_EQ(result.exitCode, 0) << name << "\n" << result.err;
+    EXPECT_TRUE(std::filesystem::exists(out)) << name;
+  }
+}
+
 TEST_F(RenderCommand, BadInputNeverCrashes) {
   // Each used to abort: a zero view direction reached Embree (exit 134), a 300-character name
   // threw filesystem_error.

@@ -56,6 +56,15 @@ std::optional<double> parseNumber(const std::string& text) {
   return value;
 }
 
+// A surface field's value: a number, or for a radius also inf (a flat surface, as the table and
+// the lens file write it). No other setting has a meaning for infinity.
+std::optional<double> parseSurfaceValue(SurfaceField field, const std::string& text) {
+  if (field == SurfaceField::RadiusMm && (text == "inf" || text == "-inf")) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return parseNumber(text);
+}
+
 std::optional<long> parseInteger(const std::string& text) {
   long value = 0;
   const char* end = text.data() + text.size();
@@ -86,12 +95,17 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     const auto index = parseInteger(a[1]);
     if (!index || *index < 1)
       return problemAt(command, 1, "'" + a[1] + "' is not a surface number (1, 2, ...)");
-    if (!surfaceFieldFromName(a[2])) {
+    const auto field = surfaceFieldFromName(a[2]);
+    if (!field) {
       return problemAt(
           command, 2,
           "unknown field '" + a[2] + "' (expected radius, thickness, n, abbe or aperture)");
     }
-    return numberAt(3);
+    if (!parseSurfaceValue(*field, a[3])) {
+      const char* expected = *field == SurfaceField::RadiusMm ? " (or inf for a flat surface)" : "";
+      return problemAt(command, 3, "'" + a[3] + "' is not a number" + expected);
+    }
+    return std::nullopt;
   }
   if (a[0] == "film-distance" || a[0] == "stop-diameter" || a[0] == "exposure") {
     if (a.size() != 2) return problemAt(command, 0, "expected: set " + a[0] + " VALUE");
@@ -308,7 +322,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     if (a[0] == "surface") {
       const auto field = *surfaceFieldFromName(a[2]);
       const std::size_t surface = static_cast<std::size_t>(*parseInteger(a[1]) - 1);
-      return editAndWait(command, host, SetSurfaceField{surface, field, *parseNumber(a[3])});
+      return editAndWait(command, host,
+                         SetSurfaceField{surface, field, *parseSurfaceValue(field, a[3])});
     }
     if (a[0] == "film-distance") {
       return editAndWait(command, host, SetFilmDistance{*parseNumber(a[1])});

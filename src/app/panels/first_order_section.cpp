@@ -8,6 +8,7 @@
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
 #include "app/platform/ui_scale.h"
+#include "common/distance_text.h"
 #include "optics/focus.h"
 
 namespace lenslab::app {
@@ -20,17 +21,6 @@ void textRow(const char* name, const std::string& value) {
   ImGui::TextDisabled("%s", name);
   ImGui::TableSetColumnIndex(1);
   ImGui::TextWrapped("%s", value.c_str());
-}
-
-std::string distanceText(double mm) {
-  if (!std::isfinite(mm)) return "infinity";
-  char text[64];
-  if (std::abs(mm) >= 1000.0) {
-    std::snprintf(text, sizeof text, "%.3f m", mm / 1000.0);
-  } else {
-    std::snprintf(text, sizeof text, "%.1f mm", mm);
-  }
-  return text;
 }
 
 // A label followed by a value, in one cell of the compact table.
