@@ -73,6 +73,7 @@ void drawDockAreas(ViewerState& state) {
     if (panels.empty()) continue;
     const Rect rect = rectOf(state.layout, area);
     if (panels.size() == 1) {
+      state.settings.selectedTabs[dockAreaName(area)] = panels.front()->id;
       panels.front()->draw(state, {rect, true});
       continue;
     }

@@ -71,7 +71,9 @@ void lensMenu(ViewerState& state) {
 void viewMenu(ViewerState& state) {
   // Each panel, by its tab: choosing one shows it (and the bottom area, if it docks there).
   for (const PanelSpec& panel : registeredPanels()) {
-    const bool shown = state.settings.selectedTabs[dockAreaName(panel.area)] == panel.id &&
+    const auto selected = state.settings.selectedTabs.find(dockAreaName(panel.area));
+    const bool shown = selected != state.settings.selectedTabs.end() &&
+                       selected->second == panel.id &&
                        (panel.area != DockArea::Bottom || state.showBottomArea);
     if (ImGui::MenuItem(panel.title, nullptr, shown)) {
       state.tabsToSelect[dockAreaName(panel.area)] = panel.id;
