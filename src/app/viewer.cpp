@@ -183,8 +183,7 @@ std::optional<std::string> Viewer::showPanel(const std::string& id) {
     }
     return "no panel '" + id + "' (the panels: " + known + ")";
   }
-  state_.tabsToSelect[dockAreaName(panel->area)] = panel->id;
-  if (panel->area == DockArea::Bottom) state_.showBottomArea = true;
+  app::showPanel(state_, *panel);
   return std::nullopt;
 }
 

@@ -88,7 +88,6 @@ void applyCommands(ViewerState& state) {
   for (const AppliedCommand& applied : state.lens.applyQueued()) {
     const IssuedCommand& issued = applied.issued;
     const bool fromScript = issued.source == CommandSource::Script;
-    const std::string prefix = fromScript ? "script: " : "";
     const bool isUndoOrRedo = std::holds_alternative<Undo>(issued.command) ||
                               std::holds_alternative<Redo>(issued.command);
     if (applied.refusal) {
@@ -106,7 +105,7 @@ void applyCommands(ViewerState& state) {
       // A new lens is shown whole (whoever opened it logs where it came from).
       state.crossSectionNeedsFit = true;
     } else if (fromScript) {
-      state.log.info(prefix + describe(issued.command));
+      state.log.info("script: " + describe(issued.command));
     } else if (issued.mergeKey.empty() && !isUndoOrRedo) {
       // Drags would flood the log with one line per frame; their final value is in the table.
       // The user's undo and redo show in the table and the title.

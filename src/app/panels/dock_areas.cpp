@@ -66,6 +66,11 @@ const PanelSpec* drawTabStrip(ViewerState& state, DockArea area, const Rect& rec
 
 }  // namespace
 
+void showPanel(ViewerState& state, const PanelSpec& panel) {
+  state.tabsToSelect[dockAreaName(panel.area)] = panel.id;
+  if (panel.area == DockArea::Bottom) state.showBottomArea = true;
+}
+
 void drawDockAreas(ViewerState& state) {
   for (const DockArea area : kDockAreas) {
     if (area == DockArea::Bottom && !state.showBottomArea) continue;

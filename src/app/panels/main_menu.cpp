@@ -75,10 +75,7 @@ void viewMenu(ViewerState& state) {
     const bool shown = selected != state.settings.selectedTabs.end() &&
                        selected->second == panel.id &&
                        (panel.area != DockArea::Bottom || state.showBottomArea);
-    if (ImGui::MenuItem(panel.title, nullptr, shown)) {
-      state.tabsToSelect[dockAreaName(panel.area)] = panel.id;
-      if (panel.area == DockArea::Bottom) state.showBottomArea = true;
-    }
+    if (ImGui::MenuItem(panel.title, nullptr, shown)) showPanel(state, panel);
   }
   ImGui::MenuItem("Bottom area", nullptr, &state.showBottomArea);
   ImGui::Separator();

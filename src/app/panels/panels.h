@@ -12,6 +12,9 @@ float drawMainMenu(ViewerState& state);
 // Every dock area with its panels (tabbed where an area has several), in the rectangles of
 // state.layout.
 void drawDockAreas(ViewerState& state);
+// Makes `panel` the one its area shows, from the next frame (and shows the bottom area, if it
+// docks there): View > (a panel) and a script's show-panel.
+void showPanel(ViewerState& state, const PanelSpec& panel);
 // The draggable gaps between the areas; dragging one moves the layout fractions.
 void drawSplitters(ViewerState& state, float windowWidth, float windowHeight);
 void drawAboutWindow(ViewerState& state);
