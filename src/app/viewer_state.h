@@ -84,6 +84,10 @@ struct ViewerState {
   // "In focus" for lensSystem (a real-ray search: computed once per lens, not every frame).
   std::shared_ptr<const optics::LensSystem> inFocusLens;
   std::string inFocusText;
+  // What limits the axial beam and the unvignetted field, for lensSystem (real-ray searches:
+  // once per lens, as "In focus").
+  std::shared_ptr<const optics::LensSystem> beamLens;
+  std::string axialBeamText, unvignettedText, fNumberText;
   double focusDistanceInputMm = 3000.0;
   // A value is being dragged this frame (film, stop, a splitter): the preview renders at reduced
   // resolution until it is released.

@@ -3,12 +3,16 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
 #include "optics/field.h"
+#include "optics/focus.h"
+#include "optics/limiting_aperture.h"
+#include "optics/unvignetted_field.h"
 
 namespace lenslab::cli {
 
@@ -40,9 +44,30 @@ nlohmann::json pupilJson(const optics::PupilData& pupil, const char* reference) 
           {"at_infinity", pupil.atInfinity}};
 }
 
+// What limits the axial beam from infinity, the unvignetted field and whether the lens forms an
+// image: computed once, printed as text or JSON.
+struct BeamFigures {
+  optics::LimitingAperture limit;
+  std::optional<double> unvignettedFieldDeg;
+  optics::InfinityImage image;
+};
+
+BeamFigures beamFigures(const optics::LensSystem& lens) {
+  return {optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity()),
+          optics::unvignettedFieldOfViewDeg(lens), optics::infinityImage(lens)};
+}
+
+// "before the iris" / "after the iris" / "the iris".
+std::string whereAgainstIris(int surface, std::size_t stopIndex) {
+  if (surface == static_cast<int>(stopIndex)) return "the iris";
+  return surface < static_cast<int>(stopIndex) ? "before the iris" : "after the iris";
+}
+
 nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& arguments) {
   const optics::FirstOrderData& fo = lens.firstOrder();
   const auto realField = optics::realFieldOfViewDeg(lens, arguments.filmDiagonalMm);
+  const BeamFigures beam = beamFigures(lens);
+  const int limiting = beam.limit.limitingSurface();
   nlohmann::json surfaces = nlohmann::json::array();
   for (std::size_t i = 0; i < lens.prescription().surfaces.size(); ++i) {
     const optics::Surface& s = lens.prescription().surfaces[i];
@@ -66,7 +91,10 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       {"ffl_mm", focal(fo, fo.fflMm)},
       {"front_principal_plane_mm", focal(fo, fo.frontPrincipalPlaneMm)},
       {"rear_principal_plane_mm", focal(fo, fo.rearPrincipalPlaneMm)},
-      {"f_number", focal(fo, fo.fNumber)},
+      // EFL / the paraxial beam from infinity that passes every clear aperture (the iris's
+      // entrance pupil, or less when a rim limits the beam first: limiting_aperture.h).
+      {"f_number", beam.limit.paraxial ? focal(fo, beam.limit.paraxial->workingFNumber)
+                                       : focal(fo, fo.fNumber)},
       {"total_track_mm", fo.totalTrackMm},
       {"lens_length_mm", fo.lensLengthMm},
       {"film_distance_mm", lens.filmDistanceMm()},
@@ -77,11 +105,68 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       {"film_diagonal_mm", arguments.filmDiagonalMm},
       {"field_of_view_deg", focal(fo, fo.fieldOfViewDeg(arguments.filmDiagonalMm))},
       {"field_of_view_real_deg", realField ? nlohmann::json(*realField) : nlohmann::json(nullptr)},
+      // What limits the axial beam from infinity (limiting_aperture.h): the surface counted from
+      // 1; the working f-number 1 / (2 n' sin u') of the widest real ray that passes; the paraxial
+      // figures from the smallest semi-aperture / marginal-height ratio.
+      {"limiting_aperture_surface",
+       limiting >= 0 ? nlohmann::json(limiting + 1) : nlohmann::json(nullptr)},
+      {"limiting_aperture_is_stop", limiting >= 0
+                                        ? nlohmann::json(beam.limit.limitedByStop(lens.stopIndex()))
+                                        : nlohmann::json(nullptr)},
+      {"working_f_number",
+       beam.limit.real ? number(beam.limit.real->workingFNumber) : nlohmann::json(nullptr)},
+      {"working_f_number_definition",
+       "real rays: 1 / (2 n' sin u') of the widest axial ray from infinity that passes"},
+      {"passing_beam_diameter_mm",
+       beam.limit.real ? number(2.0 * beam.limit.real->entranceHeightMm) : nlohmann::json(nullptr)},
+      {"paraxial_limiting_surface", beam.limit.paraxial
+                                        ? nlohmann::json(beam.limit.paraxial->surfaceIndex + 1)
+                                        : nlohmann::json(nullptr)},
+      {"paraxial_limited_entrance_pupil_diameter_mm",
+       beam.limit.paraxial ? number(beam.limit.paraxial->entrancePupilDiameterMm)
+                           : nlohmann::json(nullptr)},
+      {"unvignetted_field_of_view_deg",
+       beam.unvignettedFieldDeg ? number(*beam.unvignettedFieldDeg) : nlohmann::json(nullptr)},
+      {"forms_real_image", beam.image.ok()},
+      {"no_image_reason",
+       beam.image.ok() ? nlohmann::json(nullptr) : nlohmann::json(beam.image.whyNot)},
       {"surfaces", surfaces}};
+}
+
+void printBeam(const optics::LensSystem& lens, const BeamFigures& beam) {
+  const int limiting = beam.limit.limitingSurface();
+  if (beam.limit.real && limiting >= 0) {
+    const optics::RealAxialBeam& real = *beam.limit.real;
+    if (beam.limit.limitedByStop(lens.stopIndex()))
+      std::printf("the iris (surface %zu) limits the axial beam: working f/%.2f\n",
+                  lens.stopIndex() + 1, real.workingFNumber);
+    else
+      std::printf("surface %d limits the axial beam %s: working f/%.2f\n", limiting + 1,
+                  whereAgainstIris(limiting, lens.stopIndex()).c_str(), real.workingFNumber);
+    std::printf(
+        "%-34s %12.4f mm across (real rays from infinity; the next is stopped by "
+        "surface %d)\n",
+        "  widest passing axial beam", 2.0 * real.entranceHeightMm, limiting + 1);
+    std::printf("%-34s %12.4f (real rays: 1 / (2 n' sin u') of that beam's edge ray)\n",
+                "  working f-number", real.workingFNumber);
+  }
+  if (beam.limit.paraxial) {
+    const optics::ParaxialAxialLimit& paraxial = *beam.limit.paraxial;
+    std::printf(
+        "%-34s %12.4f mm (paraxial: surface %zu has the smallest semi-aperture / "
+        "marginal height)\n",
+        "  limited entrance pupil", paraxial.entrancePupilDiameterMm, paraxial.surfaceIndex + 1);
+  }
+  if (beam.unvignettedFieldDeg)
+    std::printf("%-34s %12.4f deg (the axial beam's size passes whole, at infinity)\n",
+                "field of view, unvignetted", *beam.unvignettedFieldDeg);
+  else
+    std::printf("%-34s %12s (no axial beam passes)\n", "field of view, unvignetted", "-");
 }
 
 void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   const optics::FirstOrderData& fo = lens.firstOrder();
+  const BeamFigures beam = beamFigures(lens);
   auto line = [](const char* label, double value, const char* unit) {
     std::printf("%-34s %12.4f %s\n", label, value, unit);
   };
@@ -96,13 +181,19 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
               arguments.lensPath.c_str(), lens.prescription().surfaces.size(), lens.stopIndex() + 1,
               lens.wavelengthNm());
   if (fo.afocal) std::printf("afocal: zero power, no focal lengths\n");
+  // Said first, in focus's words: the paraxial figures below mean little for such a lens.
+  if (!beam.image.ok()) std::printf("%s\n", beam.image.whyNot.c_str());
   focalLine("effective focal length (EFL)", fo.eflMm, "mm");
   focalLine("back focal length (BFL)", fo.bflMm, "mm from the rear vertex");
   focalLine("front focal length (FFL)", fo.fflMm, "mm in front of the front vertex");
   focalLine("front principal plane", fo.frontPrincipalPlaneMm, "mm from the front vertex");
   focalLine("rear principal plane", fo.rearPrincipalPlaneMm, "mm from the rear vertex");
-  focalLine("f-number (infinity)", fo.fNumber, "");
-  line("entrance pupil diameter", fo.entrancePupil.diameterMm, "mm");
+  if (beam.limit.paraxial)
+    focalLine("f-number (infinity)", beam.limit.paraxial->workingFNumber,
+              "(paraxial: EFL / limited entrance pupil, below)");
+  else
+    focalLine("f-number (infinity)", fo.fNumber, "(paraxial: EFL / entrance pupil)");
+  line("entrance pupil diameter", fo.entrancePupil.diameterMm, "mm (the iris's image)");
   line("entrance pupil position", fo.entrancePupil.positionMm, "mm from the front vertex");
   line("exit pupil diameter", fo.exitPupil.diameterMm, "mm");
   line("exit pupil position", fo.exitPupil.positionMm, "mm from the rear vertex");
@@ -118,6 +209,7 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
     std::printf("%-34s %12.4f deg (chief ray)\n", "field of view, real", *real);
   else
     std::printf("%-34s %12s (no chief ray reaches the film corner)\n", "field of view, real", "-");
+  printBeam(lens, beam);
   std::printf("(positions are positive toward the film)\n");
 }
 

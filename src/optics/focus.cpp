@@ -5,7 +5,9 @@
 #include <limits>
 #include <sstream>
 
+#include "common/distance_text.h"
 #include "optics/lens_system.h"
+#include "optics/limiting_aperture.h"
 #include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
@@ -15,16 +17,8 @@ namespace {
 constexpr int kZones = 8;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A ray from the axial object through the front-vertex plane at height y. It starts on the ray
-// just in front of the lens, not at the object: from an object 1e9 mm away, every hit point
-// would lose about 1e-7 mm to the cancellation in z, enough to move the focus of a distant
-// object by micrometres (and far more beyond that).
 LensRay launch(const LensSystem& lens, double objectFromFront, double y) {
-  const double zFront = lens.frontVertexZ();
-  if (std::isinf(objectFromFront)) return {{y, 0.0, zFront + 1.0}, {0.0, 0.0, -1.0}};
-  const double ahead = std::min(1.0, 0.5 * objectFromFront);  // start this far before the vertex
-  return {{y * (1.0 - ahead / objectFromFront), 0.0, zFront + ahead},
-          glm::normalize(glm::dvec3{y / objectFromFront, 0.0, -1.0})};
+  return axialRayFromObject(lens, objectFromFront, y);
 }
 
 // Height at the stop plane of that ray, ignoring clear apertures (only aiming); nullopt when it
@@ -65,14 +59,19 @@ std::optional<double> aim(const LensSystem& lens, double objectFromFront, double
 std::optional<double> bestFocusBehindRearVertexMm(const LensSystem& lens,
                                                   double objectFromFrontVertexMm) {
   if (!(objectFromFrontVertexMm > 0.0)) return std::nullopt;
-  const double stopRadius = lens.surfaces()[lens.stopIndex()].semiApertureMm;
+  // The zones fill the beam that really passes, not the iris: opened past the rims, most of the
+  // iris takes no light, and zones aimed there would all be blocked. Its edge on the stop is the
+  // widest passing axial ray's crossing (limiting_aperture.h).
+  const auto limit = findLimitingAperture(lens, objectFromFrontVertexMm);
+  if (!limit.real) return std::nullopt;
+  const double beamRadiusAtStop = limit.real->heightAtStopMm;
   // y(z) = a + b z for each exit ray in the meridional plane; the least-squares focus minimizes
   // sum (a_i + b_i z)^2, i.e. z* = -sum a_i b_i / sum b_i^2.
   double sumAB = 0.0, sumBB = 0.0;
   int used = 0;
   for (int i = 0; i < kZones; ++i) {
     const double rho = std::sqrt((i + 0.5) / kZones);  // equal-area zones
-    const auto y = aim(lens, objectFromFrontVertexMm, 0.999 * rho * stopRadius);
+    const auto y = aim(lens, objectFromFrontVertexMm, 0.999 * rho * beamRadiusAtStop);
     if (!y) continue;
     const auto out = lens.traceFromScene(launch(lens, objectFromFrontVertexMm, *y));
     if (!out || out->direction.z >= 0.0) continue;
@@ -85,6 +84,25 @@ std::optional<double> bestFocusBehindRearVertexMm(const LensSystem& lens,
   if (used == 0 || sumBB < 1e-18) return std::nullopt;
   const double zFocus = -sumAB / sumBB;
   return lens.rearVertexZ() - zFocus;
+}
+
+InfinityImage infinityImage(const LensSystem& lens) {
+  InfinityImage image;
+  const std::string prefix = "the lens forms no real image of an object at infinity: ";
+  if (!findLimitingAperture(lens, kInfinity).real) {
+    image.whyNot = prefix + "no axial beam passes the lens";
+    return image;
+  }
+  const auto focus = bestFocusBehindRearVertexMm(lens, kInfinity);
+  if (!focus || !std::isfinite(*focus)) {
+    image.whyNot = prefix + "the rays that pass leave the lens parallel";
+  } else if (*focus <= 0.0) {
+    image.whyNot = prefix + "the rays that pass leave the lens diverging, from a virtual image " +
+                   distanceText(-*focus) + " in front of the rear vertex";
+  } else {
+    image.focusBehindRearVertexMm = focus;
+  }
+  return image;
 }
 
 std::optional<ClosestFocus> closestFocus(const LensSystem& lens) {
@@ -146,11 +164,12 @@ FocusResult filmDistanceForObjectDistance(const LensSystem& lens, double objectD
     result.whyNot = "the object distance must be positive";
     return result;
   }
-  const auto atInfinity = bestFocusBehindRearVertexMm(lens, kInfinity);
-  if (!atInfinity || *atInfinity <= 0.0) {
-    result.whyNot = "the lens forms no real image of an object at infinity";
+  const InfinityImage image = infinityImage(lens);
+  if (!image.ok()) {
+    result.whyNot = image.whyNot;
     return result;
   }
+  const auto atInfinity = image.focusBehindRearVertexMm;
   if (std::isinf(objectDistanceMm)) {
     result.valueMm = *atInfinity;
     return result;
@@ -234,11 +253,12 @@ FocusResult objectDistanceForFilmDistance(const LensSystem& lens, double filmDis
     result.whyNot = "the film distance must be a positive number";
     return result;
   }
-  const auto atInfinity = bestFocusBehindRearVertexMm(lens, kInfinity);
-  if (!atInfinity) {
-    result.whyNot = "the lens forms no real image";
+  const InfinityImage image = infinityImage(lens);
+  if (!image.ok()) {
+    result.whyNot = image.whyNot;
     return result;
   }
+  const auto atInfinity = image.focusBehindRearVertexMm;
   if (filmDistanceMm < *atInfinity - 1e-9 * *atInfinity) {
     std::ostringstream why;
     why << "the film is nearer the lens than the infinity focus (" << *atInfinity

@@ -3,8 +3,11 @@
 // distance is sharp for a film distance.
 //
 // "In focus" means the plane of least RMS spot size of an axial fan of real rays that fill the
-// stop in equal-area zones (meridional least squares; closed form, e.g. Smith, Modern Optical
-// Engineering, ch. 11, "best focus"). Rays are aimed at the stop, not at the front element, so the
+// beam that really passes in equal-area zones on the stop (meridional least squares; closed
+// form, e.g. Smith, Modern Optical Engineering, ch. 11, "best focus"). The beam is the widest
+// passing axial ray's (limiting_aperture.h): the iris when it limits, a rim when the iris is
+// opened past it, so the focus does not depend on how far past the rims the iris opens. Rays are
+// aimed at the stop, not at the front element, so the
 // answer stays well defined at f/22 and at 1:1 magnification, where pbrt's thick-lens focusing
 // fails (mmp/pbrt-v3#122, #123). As the stop closes it converges to the paraxial focus.
 //
@@ -23,6 +26,17 @@ struct FocusResult {
   std::string whyNot;  // set when there is no solution
   bool ok() const { return valueMm.has_value(); }
 };
+
+// Whether the lens forms a real image of an object at infinity, in the words that `info`, `focus`
+// and the viewer all use: whyNot reads "the lens forms no real image of an object at infinity:"
+// and the reason (no axial ray passes the lens; the rays that pass leave it parallel; or they
+// leave it diverging, from a virtual image in front of the rear vertex).
+struct InfinityImage {
+  std::optional<double> focusBehindRearVertexMm;  // the real-ray best focus, when it is real
+  std::string whyNot;
+  bool ok() const { return focusBehindRearVertexMm.has_value(); }
+};
+InfinityImage infinityImage(const LensSystem& lens);
 
 // Film distance (last surface to film) that focuses an axial object `objectDistanceMm` from the
 // film (std::numeric_limits<double>::infinity() for infinity). When two film positions focus the

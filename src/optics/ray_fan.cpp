@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "optics/limiting_aperture.h"
 #include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
@@ -37,13 +38,24 @@ class FanTracer {
       pupilRadius_ = 0.5 * lens.prescription().surfaces.front().apertureDiameterMm;
     }
     stopRadius_ = lens.surfaces()[lens.stopIndex()].semiApertureMm;
-    // Pupil heights worth searching for a chief ray: the front element and then some, since a
-    // wide-angle lens's real pupil moves well off the paraxial one.
-    aimRange_ = std::max(4.0 * pupilRadius_, 2.0 * lens.surfaces().front().semiApertureMm);
     // Rays start a little in front of the lens: far enough to read as incoming, close enough
     // that the lens stays the subject of the drawing.
     startZ_ = lens.frontVertexZ() + std::max(5.0, 0.25 * lens.totalTrackMm());
     farObjectZ_ = lens.frontVertexZ() + 2.0 * lens.totalTrackMm();
+    // The fans span the beam that really passes on axis, not the paraxial pupil of the iris:
+    // with the iris opened past the rims (or a rim tighter than the iris) the paraxial pupil is
+    // far wider than anything the lens takes, and a fan across it would be all clipped rays,
+    // starting hundreds of millimetres off the axis.
+    const ObjectField axis = fieldFor(0.0);
+    const auto edge = widestPassing([&](double h) { return trace(axis, h).filmPoint.has_value(); },
+                                    axialSearchRange());
+    if (edge && edge->lastPassing > 0.0) {
+      pupilRadius_ = edge->lastPassing;
+      marginalHeight_ = edge->lastPassing;
+    }
+    // Pupil heights worth searching for a chief ray: the front element and then some, since a
+    // wide-angle lens's real pupil moves well off the paraxial one.
+    aimRange_ = std::max(4.0 * pupilRadius_, 2.0 * lens.surfaces().front().semiApertureMm);
   }
 
   // The ray of `field` through height `pupilHeight` on the entrance-pupil plane.
@@ -204,6 +216,18 @@ class FanTracer {
   }
 
   double pupilRadius() const { return pupilRadius_; }
+  // The widest passing axial ray's height on the entrance-pupil plane; nullopt when none passes.
+  std::optional<double> marginalHeight() const { return marginalHeight_; }
+
+  // Pupil heights beyond which no axial ray reaches the front rim: twice the front
+  // semi-aperture, scaled from the front-vertex plane to the pupil plane for a near object.
+  double axialSearchRange() const {
+    const double front = 2.0 * lens_.surfaces().front().semiApertureMm;
+    if (!spec_.objectDistanceMm) return front;
+    const double objectZ = lens_.frontVertexZ() + *spec_.objectDistanceMm;
+    const double scale = (objectZ - pupilZ_) / (objectZ - lens_.frontVertexZ());
+    return std::isfinite(scale) ? front * std::max(1.0, std::abs(scale)) : front;
+  }
 
  private:
   std::optional<double> bracketChief(const ObjectField& field, double tolerance,
@@ -245,6 +269,7 @@ class FanTracer {
   const FanSpec& spec_;
   double pupilZ_ = 0, pupilRadius_ = 0, stopRadius_ = 0, aimRange_ = 0, startZ_ = 0,
          farObjectZ_ = 0;
+  std::optional<double> marginalHeight_;
 };
 
 }  // namespace
@@ -283,16 +308,12 @@ RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
     }
     result.fans.push_back(std::move(fan));
   }
-  // The marginal ray: the highest on-axis pupil height that still passes (bisection).
-  const auto axis = tracer.fieldFor(0.0);
-  double low = 0.0, high = spec.pupilOverfill * 2.0 * tracer.pupilRadius();
-  if (tracer.trace(axis, low).filmPoint) {
-    for (int iteration = 0; iteration < 40; ++iteration) {
-      const double middle = 0.5 * (low + high);
-      (tracer.trace(axis, middle).filmPoint ? low : high) = middle;
-    }
-    result.marginal = tracer.trace(axis, low);
-  }
+  // The marginal ray: the widest axial ray such that every ray between it and the axis passes
+  // (limiting_aperture.h's definition, on the entrance-pupil plane).
+  if (const auto height = tracer.marginalHeight())
+    result.marginal = tracer.trace(tracer.fieldFor(0.0), *height);
+  else if (const FanRay axial = tracer.trace(tracer.fieldFor(0.0), 0.0); axial.filmPoint)
+    result.marginal = axial;
   return result;
 }
 

@@ -10,6 +10,8 @@
 #include "app/platform/ui_scale.h"
 #include "common/distance_text.h"
 #include "optics/focus.h"
+#include "optics/limiting_aperture.h"
+#include "optics/unvignetted_field.h"
 
 namespace lenslab::app {
 
@@ -102,6 +104,43 @@ const std::string& inFocusText(ViewerState& state) {
   return state.inFocusText;
 }
 
+// Which aperture limits the axial beam and the unvignetted field, in the words `lenslab info`
+// uses (limiting_aperture.h, unvignetted_field.h): real-ray searches, once per lens.
+void updateBeamTexts(ViewerState& state) {
+  if (state.beamLens == state.lensSystem) return;
+  state.beamLens = state.lensSystem;
+  const optics::LensSystem& lens = *state.lensSystem;
+  const optics::LimitingAperture limit =
+      optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity());
+  const int surface = limit.limitingSurface();
+  char text[160];
+  if (!limit.real || surface < 0) {
+    state.axialBeamText = "no axial beam passes the lens";
+  } else if (limit.limitedByStop(lens.stopIndex())) {
+    std::snprintf(text, sizeof text, "the iris (surface %zu) limits it: working f/%.2f (real rays)",
+                  lens.stopIndex() + 1, limit.real->workingFNumber);
+    state.axialBeamText = text;
+  } else {
+    std::snprintf(text, sizeof text,
+                  "surface %d limits the axial beam %s the iris: working f/%.2f (real rays)",
+                  surface + 1, surface < static_cast<int>(lens.stopIndex()) ? "before" : "after",
+                  limit.real->workingFNumber);
+    state.axialBeamText = text;
+  }
+  // The paraxial f-number of the beam that passes (EFL / limited entrance pupil), as `info`
+  // prints it: not the iris's alone, which opened past the rims reads f/0.87 for an f/2 lens.
+  state.fNumberText = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
+                          ? format("f/%.2f", limit.paraxial->workingFNumber)
+                          : format("f/%.2f", lens.firstOrder().fNumber);
+  const auto unvignetted = optics::unvignettedFieldOfViewDeg(lens);
+  if (unvignetted) {
+    std::snprintf(text, sizeof text, "%.1f deg (the full axial beam passes)", *unvignetted);
+    state.unvignettedText = text;
+  } else {
+    state.unvignettedText = "- (no axial beam passes)";
+  }
+}
+
 }  // namespace
 
 void drawFirstOrderSection(ViewerState& state) {
@@ -117,6 +156,7 @@ void drawFirstOrderSection(ViewerState& state) {
   drawControls(state, lens);
   if (!ImGui::CollapsingHeader("First-order data", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const optics::FirstOrderData& data = lens.firstOrder();
+  updateBeamTexts(state);
   constexpr ImGuiTableFlags kFlags = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg;
   // Short figures two to a row; the long ones take a whole row.
   if (ImGui::BeginTable("first-order", 4, kFlags)) {
@@ -130,7 +170,7 @@ void drawFirstOrderSection(ViewerState& state) {
       pairCell(2, "f-number", "-");
     } else {
       pairCell(0, "EFL", format("%.3f mm", data.eflMm));
-      pairCell(2, "f-number", format("f/%.2f", data.fNumber));
+      pairCell(2, "f-number", state.fNumberText);
       ImGui::TableNextRow();
       pairCell(0, "BFL", format("%.3f mm", data.bflMm));
       pairCell(2, "FFL", format("%.3f mm", data.fflMm));
@@ -156,6 +196,8 @@ void drawFirstOrderSection(ViewerState& state) {
     std::snprintf(planes, sizeof planes, "H %.2f mm, H' %.2f mm", data.frontPrincipalPlaneMm,
                   data.rearPrincipalPlaneMm);
     textRow("Principal planes", planes);
+    textRow("Axial beam", state.axialBeamText);
+    textRow("FOV unvignetted", state.unvignettedText);
     textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
     textRow("In focus", inFocusText(state));
     ImGui::EndTable();
