@@ -7,48 +7,68 @@
 
 #include "optics/lens_system.h"
 #include "optics/limiting_aperture.h"
+#include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
 
 namespace {
 
 constexpr double kRadians = std::numbers::pi / 180.0;
-constexpr int kChordSteps = 400;
+constexpr int kChordSteps = 200;
+constexpr int kBisections = 30;
 constexpr double kMaxHalfAngleDeg = 89.5;
 
 // Parallel rays at `halfAngle` (toward -y as they travel, i.e. from an object above the axis)
-// through the point (x, y) of the front-vertex plane.
+// through points (x, y) of the front-vertex plane.
 struct ObliqueBeam {
   const LensSystem& lens;
+  std::size_t limiting;
   glm::dvec3 direction;
   double zFront;
 
-  ObliqueBeam(const LensSystem& l, double halfAngle)
+  ObliqueBeam(const LensSystem& l, std::size_t k, double halfAngle)
       : lens(l),
+        limiting(k),
         direction(0.0, -std::sin(halfAngle), -std::cos(halfAngle)),
         zFront(l.frontVertexZ()) {}
 
-  bool passes(double x, double y) const {
+  LensRay ray(double x, double y) const {
     // Start one unit of z ahead of the vertex plane, on the ray through (x, y, zFront).
-    const glm::dvec3 through{x, y, zFront};
-    const glm::dvec3 origin = through - direction * (1.0 / -direction.z);
-    const auto exit = lens.traceFromScene({origin, direction});
+    return {glm::dvec3{x, y, zFront} - direction * (1.0 / -direction.z), direction};
+  }
+  // The ray crosses the limiting surface inside its clear aperture, the others ignored.
+  bool admitted(double x, double y) const {
+    const auto at = traceFromSceneUnclipped(lens, ray(x, y), limiting);
+    if (!at) return false;
+    const double a = lens.surfaces()[limiting].semiApertureMm;
+    return at->origin.x * at->origin.x + at->origin.y * at->origin.y <= a * a;
+  }
+  // The ray passes the whole lens, every clear aperture included.
+  bool passes(double x, double y) const {
+    const auto exit = lens.traceFromScene(ray(x, y));
     return exit && exit->direction.z < 0.0;
   }
 };
 
-// The meridional chord (x = 0) that passes at this field: the longest passing run of a scan,
-// its ends refined by bisection. nullopt when no meridional ray passes.
-struct Chord {
-  double low = 0.0, high = 0.0;
-};
-std::optional<Chord> meridionalChord(const ObliqueBeam& beam, double halfWidth) {
-  int bestStart = -1, bestLength = 0, runStart = -1;
+// Bisection between an admitted point and one that is not, along a line.
+template <typename Inside>
+double edgeBetween(Inside inside, double in, double out) {
+  for (int k = 0; k < kBisections; ++k) {
+    const double middle = 0.5 * (in + out);
+    (inside(middle) ? in : out) = middle;
+  }
+  return in;
+}
+
+// Centre of the admitted beam's meridional chord (x = 0): the longest admitted run of a scan,
+// its ends refined by bisection. nullopt when no meridional ray is admitted.
+std::optional<double> chordCentre(const ObliqueBeam& beam, double halfWidth) {
   auto at = [&](int i) { return -halfWidth + 2.0 * halfWidth * i / kChordSteps; };
+  int bestStart = -1, bestLength = 0, runStart = -1;
   for (int i = 0; i <= kChordSteps + 1; ++i) {
-    const bool pass = i <= kChordSteps && beam.passes(0.0, at(i));
-    if (pass && runStart < 0) runStart = i;
-    if (!pass && runStart >= 0) {
+    const bool in = i <= kChordSteps && beam.admitted(0.0, at(i));
+    if (in && runStart < 0) runStart = i;
+    if (!in && runStart >= 0) {
       if (i - runStart > bestLength) {
         bestLength = i - runStart;
         bestStart = runStart;
@@ -58,15 +78,10 @@ std::optional<Chord> meridionalChord(const ObliqueBeam& beam, double halfWidth) 
   }
   if (bestStart < 0) return std::nullopt;
   const double step = 2.0 * halfWidth / kChordSteps;
-  auto refine = [&](double inside, double outside) {
-    for (int k = 0; k < 50 && std::abs(outside - inside) > 1e-12 * halfWidth; ++k) {
-      const double middle = 0.5 * (inside + outside);
-      (beam.passes(0.0, middle) ? inside : outside) = middle;
-    }
-    return inside;
-  };
+  auto admittedAt = [&](double y) { return beam.admitted(0.0, y); };
   const double first = at(bestStart), last = at(bestStart + bestLength - 1);
-  return Chord{refine(first, first - step), refine(last, last + step)};
+  return 0.5 * (edgeBetween(admittedAt, first, first - step) +
+                edgeBetween(admittedAt, last, last + step));
 }
 
 double scanHalfWidth(const LensSystem& lens, double halfAngle) {
@@ -78,18 +93,22 @@ double scanHalfWidth(const LensSystem& lens, double halfAngle) {
 
 }  // namespace
 
-bool beamPassesUnvignetted(const LensSystem& lens, double beamRadiusMm, double halfAngleDeg) {
+bool beamPassesUnvignetted(const LensSystem& lens, std::size_t limitingSurface,
+                           double halfAngleDeg) {
+  if (limitingSurface >= lens.surfaces().size()) return false;
   const double halfAngle = halfAngleDeg * kRadians;
-  const ObliqueBeam beam(lens, halfAngle);
-  const auto chord = meridionalChord(beam, scanHalfWidth(lens, halfAngle));
-  if (!chord) return false;
-  const double radius = beamRadiusMm * (1.0 - kUnvignettedRadiusTolerance);
-  if (chord->high - chord->low < 2.0 * radius) return false;
-  const double centre = 0.5 * (chord->low + chord->high);
-  if (!beam.passes(0.0, centre)) return false;
-  for (int k = 0; k < kUnvignettedRimRays; ++k) {
-    const double phi = 2.0 * std::numbers::pi * k / kUnvignettedRimRays;
-    if (!beam.passes(radius * std::cos(phi), centre + radius * std::sin(phi))) return false;
+  const ObliqueBeam beam(lens, limitingSurface, halfAngle);
+  const double halfWidth = scanHalfWidth(lens, halfAngle);
+  const auto centre = chordCentre(beam, halfWidth);
+  if (!centre || !beam.passes(0.0, *centre)) return false;
+  // The beam is symmetric about the meridional plane: half the rim is enough.
+  for (int k = 0; k <= kUnvignettedRimRays / 2; ++k) {
+    const double phi = std::numbers::pi * (k / (0.5 * kUnvignettedRimRays) - 0.5);
+    const double cx = std::cos(phi), sy = std::sin(phi);
+    auto admittedAt = [&](double r) { return beam.admitted(r * cx, *centre + r * sy); };
+    const double edge = edgeBetween(admittedAt, 0.0, 2.0 * halfWidth);
+    const double r = edge * (1.0 - kUnvignettedRadiusTolerance);
+    if (!beam.passes(r * cx, *centre + r * sy)) return false;
   }
   return true;
 }
@@ -98,22 +117,23 @@ std::optional<double> unvignettedFieldOfViewDeg(const LensSystem& lens) {
   if (lens.firstOrder().afocal) return std::nullopt;
   const LimitingAperture limit =
       findLimitingAperture(lens, std::numeric_limits<double>::infinity());
-  if (!limit.real || !(limit.real->entranceHeightMm > 0.0)) return std::nullopt;
-  const double radius = limit.real->entranceHeightMm;
-  if (!beamPassesUnvignetted(lens, radius, 0.0)) return 0.0;
+  const int surface = limit.limitingSurface();
+  if (!limit.real || surface < 0) return std::nullopt;
+  const auto k = static_cast<std::size_t>(surface);
+  if (!beamPassesUnvignetted(lens, k, 0.0)) return 0.0;
   double good = 0.0, bad = -1.0;
   for (double angle = kUnvignettedStepDeg; angle <= kMaxHalfAngleDeg;
        angle += kUnvignettedStepDeg) {
-    if (!beamPassesUnvignetted(lens, radius, angle)) {
+    if (!beamPassesUnvignetted(lens, k, angle)) {
       bad = angle;
       break;
     }
     good = angle;
   }
   if (bad < 0.0) return 2.0 * good;
-  for (int k = 0; k < 30 && bad - good > 1e-6; ++k) {
+  for (int i = 0; i < 24 && bad - good > 1e-5; ++i) {
     const double middle = 0.5 * (good + bad);
-    (beamPassesUnvignetted(lens, radius, middle) ? good : bad) = middle;
+    (beamPassesUnvignetted(lens, k, middle) ? good : bad) = middle;
   }
   return 2.0 * good;
 }

@@ -170,7 +170,9 @@ TEST(LimitingAperture, OpeningTheIrisPastTheRimsKeepsTheStockFocus) {
 TEST(LimitingAperture, StockInfinityFocusMatchesADenseLeastSquaresFocus) {
   const auto lens = doubleGauss(500.0);
   ASSERT_TRUE(lens);
-  auto exit = [&](double h) { return lens->traceFromScene({{h, 0, lens->frontVertexZ() + 1}, {0, 0, -1}}); };
+  auto exit = [&](double h) {
+    return lens->traceFromScene({{h, 0, lens->frontVertexZ() + 1}, {0, 0, -1}});
+  };
   double edge = 0.0;
   for (double h = 0.0; exit(h); h += 1e-4) edge = h;
   EXPECT_NEAR(2.0 * edge, 24.96, 0.005);

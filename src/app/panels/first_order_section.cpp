@@ -108,6 +108,9 @@ const std::string& inFocusText(ViewerState& state) {
 // uses (limiting_aperture.h, unvignetted_field.h): real-ray searches, once per lens.
 void updateBeamTexts(ViewerState& state) {
   if (state.beamLens == state.lensSystem) return;
+  // Tens of milliseconds of real rays: not on every frame of a drag of the film or the stop;
+  // the figures catch up when it is released.
+  if (state.dragging && state.beamLens) return;
   state.beamLens = state.lensSystem;
   const optics::LensSystem& lens = *state.lensSystem;
   const optics::LimitingAperture limit =
