@@ -158,8 +158,9 @@ void printBeam(const optics::LensSystem& lens, const BeamFigures& beam) {
         "  limited entrance pupil", paraxial.entrancePupilDiameterMm, paraxial.surfaceIndex + 1);
   }
   if (beam.unvignettedFieldDeg)
-    std::printf("%-34s %12.4f deg (the axial beam's size passes whole, at infinity)\n",
-                "field of view, unvignetted", *beam.unvignettedFieldDeg);
+    std::printf(
+        "%-34s %12.4f deg (from infinity: no ray the limiting aperture admits is blocked)\n",
+        "field of view, unvignetted", *beam.unvignettedFieldDeg);
   else
     std::printf("%-34s %12s (no axial beam passes)\n", "field of view, unvignetted", "-");
 }

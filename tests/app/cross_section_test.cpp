@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "app/drawing/cross_section_drawing.h"
@@ -142,6 +143,23 @@ TEST(SvgExport, ShowsOnlyTheFrameItIsGiven) {
       EXPECT_LE(y, -14.9);
     }
   }
+}
+
+// A ray point that is not finite ends the drawn line there: the ray is drawn up to it and never
+// joined across the canvas to the points after it.
+TEST(CrossSectionDrawing, ARayEndsAtAPointThatIsNotFinite) {
+  optics::RayFans fans;
+  optics::FanRay ray;
+  ray.path.points = {
+      {0.0, 1.0, 30.0}, {0.0, 0.5, 20.0}, {0.0, std::nan(""), 10.0}, {0.0, 0.0, 5.0}};
+  ray.filmPoint = glm::dvec3{0.0, -1.0, 0.0};
+  fans.fans.push_back({});
+  fans.fans.back().rays.push_back(ray);
+  CrossSectionDrawing drawing;
+  drawRayFans(drawing, fans, true);
+  ASSERT_EQ(drawing.lines.size(), 1u);
+  ASSERT_EQ(drawing.lines[0].points.size(), 2u);
+  EXPECT_EQ(drawing.lines[0].points[1].yMm, 0.5);
 }
 
 }  // namespace

@@ -46,7 +46,8 @@ class LimitingApertureCommands : public ::testing::Test {
       if (line.rfind("0\t4.5\t0\t17.1", 0) == 0) line = "0\t4.5\t0\t" + std::to_string(irisMm);
       out << line << "\n";
     }
-    const auto path = scratch / ("dgauss-iris-" + std::to_string(static_cast<int>(irisMm)) + ".dat");
+    const auto path =
+        scratch / ("dgauss-iris-" + std::to_string(static_cast<int>(irisMm)) + ".dat");
     std::ofstream(path) << out.str();
     return path.string();
   }
@@ -143,7 +144,8 @@ std::string randomStack(int surfaces, unsigned seed) {
   out << "# " << surfaces << " random surfaces, seed " << seed << "\n";
   for (int i = 0; i < surfaces; ++i) {
     const bool stop = i == surfaces / 2;
-    const double radius = stop ? 0.0 : (uniform(rng) < 0.5 ? -1 : 1) * (30.0 + 270.0 * uniform(rng));
+    const double radius =
+        stop ? 0.0 : (uniform(rng) < 0.5 ? -1 : 1) * (30.0 + 270.0 * uniform(rng));
     const double thickness = 1.0 + 3.0 * uniform(rng);
     const double index = (stop || i % 2 == 1) ? 1.0 : 1.45 + 0.45 * uniform(rng);
     out << radius << "\t" << thickness << "\t" << index << "\t10\n";
@@ -172,7 +174,8 @@ TEST_F(LimitingApertureCommands, ALensThatFormsNoImageIsReportedTheSameWayByInfo
   for (const std::string arguments : {"--object-distance inf", "--object-distance 1000",
                                       "--film-distance 50", "--json --object-distance inf"}) {
     SCOPED_TRACE(arguments);
-    const auto focus = testing::runProcess(lenslab("focus " + arguments + " '" + lens + "'"), scratch);
+    const auto focus =
+        testing::runProcess(lenslab("focus " + arguments + " '" + lens + "'"), scratch);
     EXPECT_EQ(focus.exitCode, 1);
     EXPECT_TRUE(focus.out.empty()) << focus.out;
     EXPECT_EQ(focus.err, "lenslab focus: no solution: " + reason + "\n");

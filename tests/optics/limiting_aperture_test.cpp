@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "optics/exit_pupil.h"
 #include "optics/focus.h"
 #include "optics/limiting_aperture.h"
 #include "optics/ray_fan.h"
@@ -219,6 +220,26 @@ TEST(LimitingAperture, FansSpanThePassingBeamWithTheIrisWideOpen) {
       for (const FanRay& ray : fan.rays) fanPassed += ray.filmPoint.has_value();
       EXPECT_GE(fanPassed, 3) << fan.fieldFraction;
     }
+  }
+}
+
+// The exit-pupil table (the renderer's sampling) already bounds the region whose rays really
+// pass, found with clipped traces from the film, so it needed no change: with the iris at 40 or
+// 500 mm its bins are the same, and far smaller than the iris's paraxial exit pupil (62 and
+// 776 mm across).
+TEST(LimitingAperture, ExitPupilSamplingAlreadyTracesThePassingBeam) {
+  const auto open40 = doubleGauss(40.0);
+  const auto open500 = doubleGauss(500.0);
+  ASSERT_TRUE(open40 && open500);
+  const ExitPupilTable& a = open40->exitPupilTable();
+  const ExitPupilTable& b = open500->exitPupilTable();
+  ASSERT_EQ(a.radialBins(), b.radialBins());
+  const double rear = open40->rearApertureRadiusMm();
+  for (int j = 0; j < a.radialBins(); j += 16) {
+    SCOPED_TRACE(j);
+    EXPECT_EQ(a.bin(j).empty, b.bin(j).empty);
+    EXPECT_DOUBLE_EQ(a.bin(j).areaMm2, b.bin(j).areaMm2);
+    if (!a.bin(j).empty) EXPECT_LT(a.bin(j).areaMm2, 4.0 * (1.5 * rear) * (1.5 * rear));
   }
 }
 

@@ -1,6 +1,7 @@
 #include "app/drawing/cross_section_drawing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 namespace lenslab::app {
@@ -78,8 +79,15 @@ namespace {
 
 Polyline rayLine(const optics::FanRay& ray, Colour colour, float width) {
   Polyline line;
-  for (const glm::dvec3& point : ray.path.points) line.points.push_back({point.z, point.y});
-  if (ray.filmPoint) line.points.push_back({ray.filmPoint->z, ray.filmPoint->y});
+  // A point that is not finite ends the line there: the ray is drawn up to it, never joined
+  // across the canvas to what follows (the clipper also drops non-finite segments).
+  bool broken = false;
+  auto add = [&](const glm::dvec3& point) {
+    broken = broken || !(std::isfinite(point.z) && std::isfinite(point.y));
+    if (!broken) line.points.push_back({point.z, point.y});
+  };
+  for (const glm::dvec3& point : ray.path.points) add(point);
+  if (ray.filmPoint) add(*ray.filmPoint);
   line.colour = colour;
   line.widthPx = width;
   return line;

@@ -137,7 +137,7 @@ void updateBeamTexts(ViewerState& state) {
                           : format("f/%.2f", lens.firstOrder().fNumber);
   const auto unvignetted = optics::unvignettedFieldOfViewDeg(lens);
   if (unvignetted) {
-    std::snprintf(text, sizeof text, "%.1f deg (the full axial beam passes)", *unvignetted);
+    std::snprintf(text, sizeof text, "%.1f deg (no ray the limit admits is blocked)", *unvignetted);
     state.unvignettedText = text;
   } else {
     state.unvignettedText = "- (no axial beam passes)";
