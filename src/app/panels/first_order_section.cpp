@@ -137,7 +137,7 @@ void updateBeamTexts(ViewerState& state) {
                           : format("f/%.2f", lens.firstOrder().fNumber);
   const auto unvignetted = optics::unvignettedFieldOfViewDeg(lens);
   if (unvignetted) {
-    std::snprintf(text, sizeof text, "%.1f deg (no ray the limit admits is blocked)", *unvignetted);
+    std::snprintf(text, sizeof text, "%.1f deg from infinity", *unvignetted);
     state.unvignettedText = text;
   } else {
     state.unvignettedText = "- (no axial beam passes)";
@@ -201,6 +201,11 @@ void drawFirstOrderSection(ViewerState& state) {
     textRow("Principal planes", planes);
     textRow("Axial beam", state.axialBeamText);
     textRow("FOV unvignetted", state.unvignettedText);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "The widest full field at which no ray that the aperture limiting the axial beam\n"
+          "admits is blocked by another (as `lenslab info` reports it).");
+    }
     textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
     textRow("In focus", inFocusText(state));
     ImGui::EndTable();
