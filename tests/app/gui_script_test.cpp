@@ -653,5 +653,28 @@ TEST_F(ScriptedViewer, TheRepaintChecksCatchAMissedRegion) {
       << result.err;
 }
 
+// Issue 20: with the iris of the double-Gauss 50 mm opened to 500 mm (its neighbours are 17-18 mm
+// across) the first-order data said f/0.07 and "no real image", and the fans collapsed. The
+// section now names the surface that limits the axial beam and the f-number of the beam that
+// passes, the same as for the stock lens.
+TEST_F(ScriptedViewer, TheIrisOpenedPastTheRimsKeepsTheStockBeamFigures) {
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
+  const auto result = runScript("load-lens " + lens +
+                                "\nwait-frames 3\ndump-ui stock.json\n"
+                                "set stop-diameter 500\nwait-frames 3\ndump-ui wide.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  for (const char* name : {"stock.json", "wide.json"}) {
+    SCOPED_TRACE(name);
+    const auto shown = json(name)["state"]["first_order"];
+    ASSERT_TRUE(shown.is_object());
+    EXPECT_EQ(shown["f_number"], "f/2.07");
+    const std::string beam = shown["axial_beam"];
+    EXPECT_EQ(beam.rfind("surface 3 limits the axial beam before the iris: working f/2.03", 0), 0u)
+        << beam;
+    EXPECT_NE(shown["unvignetted"].get<std::string>().find(" deg"), std::string::npos);
+  }
+  EXPECT_EQ(json("wide.json")["state"]["stop_diameter_mm"], 500.0);
+}
+
 }  // namespace
 }  // namespace lenslab

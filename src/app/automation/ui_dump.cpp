@@ -55,6 +55,11 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"image_height", state.preview.imageHeight},
         {"samples_per_pixel", state.preview.samplesPerPixel},
         {"draft", state.preview.reducedResolution}}},
+      // The first-order section's beam figures as shown (empty until it has been drawn).
+      {"first_order",
+       {{"f_number", state.fNumberText},
+        {"axial_beam", state.axialBeamText},
+        {"unvignetted", state.unvignettedText}}},
       {"cross_section_view",
        {{"pixels_per_mm", view.pixelsPerMm},
         {"centre_z_mm", view.centreZMm},
