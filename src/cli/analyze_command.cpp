@@ -47,7 +47,8 @@ nlohmann::json toJson(const AnalyzeArguments& arguments, const optics::LensSyste
                       {"total", p.total},
                       {"cos4", p.cos4},
                       {"vignetting", p.vignetting},
-                      {"clipped_by", clipped}});
+                      {"clipped_by", clipped},
+                      {"rear_disk_total", p.rearDiskTotal.value_or(0.0)}});
   }
   nlohmann::json json{{"lens", arguments.lensPath},
                       {"film_distance_mm", lens.filmDistanceMm()},
@@ -67,18 +68,19 @@ void printText(const AnalyzeArguments& arguments, const optics::LensSystem& lens
   std::printf("%s: relative illumination, film distance %s, film diagonal %s\n",
               arguments.lensPath.c_str(), distanceText(lens.filmDistanceMm()).c_str(),
               distanceText(arguments.filmDiagonalMm).c_str());
-  if (objectDistanceMm)
-    std::printf("focused %s\n", std::isinf(*objectDistanceMm)
-                                    ? "at infinity"
-                                    : ("at " + distanceText(*objectDistanceMm)).c_str());
+  if (objectDistanceMm) {
+    const std::string where =
+        std::isinf(*objectDistanceMm) ? "infinity" : distanceText(*objectDistanceMm);
+    std::printf("focused at %s\n", where.c_str());
+  }
   std::printf(
-      "total = E(h)/E(0); cos4 = cos^4 of the image-side chief ray; vignetting = "
-      "total / cos4\n");
-  std::printf("%10s %8s %8s %11s  %s\n", "height mm", "total", "cos4", "vignetting",
-              "clipped by surfaces");
+      "total = E(h)/E(0); cos4 = cos^4 of the image-side chief ray; vignetting = total / cos4;\n"
+      "rear disk = total as the course scenes' sampling of the rear element's disk sees it\n");
+  std::printf("%10s %8s %8s %11s %10s  %s\n", "height mm", "total", "cos4", "vignetting",
+              "rear disk", "clipped by surfaces");
   for (const optics::RelativeIlluminationPoint& p : curve.points)
-    std::printf("%10.3f %8.4f %8.4f %11.4f  %s\n", p.imageHeightMm, p.total, p.cos4, p.vignetting,
-                surfaceList(p.clippedBy).c_str());
+    std::printf("%10.3f %8.4f %8.4f %11.4f %10.4f  %s\n", p.imageHeightMm, p.total, p.cos4,
+                p.vignetting, p.rearDiskTotal.value_or(0.0), surfaceList(p.clippedBy).c_str());
 }
 
 int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
@@ -114,7 +116,8 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
     if (!lens) return 1;
   }
   const auto curve =
-      optics::relativeIllumination(*lens, 0.5 * arguments.filmDiagonalMm, arguments.points);
+      optics::relativeIllumination(*lens, 0.5 * arguments.filmDiagonalMm, arguments.points, {},
+                                   /*withRearDiskTotal=*/true);
   if (!curve) {
     std::cerr << "lenslab analyze: no ray from the centre of the film passes the lens, so there is "
                  "no illumination to compare with\n";

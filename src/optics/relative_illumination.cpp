@@ -35,8 +35,8 @@ std::array<UnitNode, 8> unitGaussLegendre8() {
 
 class PassRegion {
  public:
-  PassRegion(const LensSystem& lens, double filmHeightMm)
-      : lens_(lens), h_(filmHeightMm), planeZ_(lens.rearVertexZ()) {
+  PassRegion(const LensSystem& lens, double filmHeightMm, std::optional<double> diskRadiusMm)
+      : lens_(lens), h_(filmHeightMm), planeZ_(lens.rearVertexZ()), diskRadiusMm_(diskRadiusMm) {
     double widest = 0.0;
     for (const SurfaceGeometry& s : lens.surfaces()) widest = std::max(widest, s.semiApertureMm);
     // No ray that passes crosses the rear-vertex plane farther out than this: the lens is at most
@@ -48,6 +48,7 @@ class PassRegion {
   double searchRadiusMm() const { return searchRadiusMm_; }
 
   bool passes(double x, double y) const {
+    if (diskRadiusMm_ && x * x + y * y > *diskRadiusMm_ * *diskRadiusMm_) return false;
     const glm::dvec3 origin{h_, 0.0, 0.0};
     return lens_.traceFromFilm({origin, glm::normalize(glm::dvec3{x, y, planeZ_} - origin)})
         .has_value();
@@ -75,6 +76,7 @@ class PassRegion {
   const LensSystem& lens_;
   double h_;
   double planeZ_;
+  std::optional<double> diskRadiusMm_;
   double searchRadiusMm_ = 0.0;
 };
 
@@ -132,7 +134,7 @@ FilmPointIllumination filmPointIllumination(const LensSystem& lens, double image
   const auto chief = aimChiefRay(lens, imageHeightMm);
   if (chief) result.cos4 = std::pow(chief->imageSideCosine, 4);
 
-  const PassRegion region(lens, imageHeightMm);
+  const PassRegion region(lens, imageHeightMm, settings.samplingDiskRadiusMm);
   const double tolerance = settings.relativeTolerance * region.searchRadiusMm();
   const double guessX = chief ? chief->planeXMm : 0.0;
   const auto start = passingPointOnMeridian(region, guessX);
@@ -190,8 +192,12 @@ FilmPointIllumination filmPointIllumination(const LensSystem& lens, double image
 
 std::optional<RelativeIllumination> relativeIllumination(const LensSystem& lens,
                                                          double maxImageHeightMm, int pointCount,
-                                                         const IlluminationSettings& settings) {
+                                                         const IlluminationSettings& settings,
+                                                         bool withRearDiskTotal) {
   const int count = std::max(2, pointCount);
+  IlluminationSettings rearDisk = settings;
+  rearDisk.samplingDiskRadiusMm = lens.rearApertureRadiusMm();
+  double rearDiskAxial = 0.0;
   RelativeIllumination curve;
   curve.points.reserve(count);
   for (int i = 0; i < count; ++i) {
@@ -207,6 +213,11 @@ std::optional<RelativeIllumination> relativeIllumination(const LensSystem& lens,
     point.cos4 = at.cos4.value_or(0.0);
     point.vignetting = point.cos4 > 0.0 ? point.total / point.cos4 : 0.0;
     point.clippedBy = at.clippedBy;
+    if (withRearDiskTotal) {
+      const double irradiance = filmPointIllumination(lens, h, rearDisk).irradiance;
+      if (i == 0) rearDiskAxial = irradiance;
+      point.rearDiskTotal = rearDiskAxial > 0.0 ? irradiance / rearDiskAxial : 0.0;
+    }
     curve.points.push_back(std::move(point));
   }
   return curve;

@@ -56,6 +56,10 @@ struct IlluminationSettings {
   // Boundary bisection, relative to the search radius (3x the widest semi-aperture): about 4 um
   // for the double-Gauss 50 mm, an area error below 0.1%.
   double relativeTolerance = 1e-4;
+  // When set, only rays through this disk about the axis on the rear-vertex plane count: the
+  // course scenes' approximation, which samples the rear element's disk (realistic_camera.h's
+  // LensSampling::RearElementDisk) and so misses the rays that pass outside it.
+  std::optional<double> samplingDiskRadiusMm;
 };
 
 FilmPointIllumination filmPointIllumination(const LensSystem& lens, double imageHeightMm,
@@ -67,6 +71,9 @@ struct RelativeIlluminationPoint {
   double cos4 = 0.0;        // 0 when there is no chief ray
   double vignetting = 0.0;  // 0 where cos4 is 0
   std::vector<int> clippedBy;
+  // total as the course's rear-disk sampling integrates it (relative to its own axial value);
+  // only when relativeIllumination was asked for it.
+  std::optional<double> rearDiskTotal;
 };
 
 struct RelativeIllumination {
@@ -75,10 +82,12 @@ struct RelativeIllumination {
 };
 
 // `pointCount` >= 2 points from the axis to maxImageHeightMm inclusive. nullopt when no ray from
-// the axial film point passes (nothing to normalise by).
+// the axial film point passes (nothing to normalise by). With withRearDiskTotal, each point also
+// gets rearDiskTotal (about twice the work).
 std::optional<RelativeIllumination> relativeIllumination(const LensSystem& lens,
                                                          double maxImageHeightMm,
                                                          int pointCount = 64,
-                                                         const IlluminationSettings& settings = {});
+                                                         const IlluminationSettings& settings = {},
+                                                         bool withRearDiskTotal = false);
 
 }  // namespace lenslab::optics

@@ -65,6 +65,8 @@ TEST_F(AnalyzeCommand, RelativeIlluminationOfABareOpeningFollowsTheClosedForm) {
     EXPECT_NEAR(p.at("cos4").get<double>(), cos4, 1e-9);
     EXPECT_NEAR(p.at("vignetting").get<double>(), total / cos4, 1e-3);
     EXPECT_EQ(p.at("clipped_by"), nlohmann::json::array({1}));  // surfaces count from 1
+    // The opening is the rear element's disk itself, so the course's sampling sees it all.
+    EXPECT_NEAR(p.at("rear_disk_total").get<double>(), total, 5e-4);
   }
 }
 
