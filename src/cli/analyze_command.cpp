@@ -44,6 +44,8 @@ nlohmann::json toJson(const AnalyzeArguments& arguments, const optics::LensSyste
     nlohmann::json clipped = nlohmann::json::array();
     for (int s : p.clippedBy) clipped.push_back(s + 1);
     points.push_back({{"image_height_mm", p.imageHeightMm},
+                      {"field_angle_deg", p.fieldAngleDeg ? nlohmann::json(*p.fieldAngleDeg)
+                                                          : nlohmann::json(nullptr)},
                       {"total", p.total},
                       {"cos4", p.cos4},
                       {"vignetting", p.vignetting},

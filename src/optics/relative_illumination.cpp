@@ -8,6 +8,7 @@
 
 #include "optics/chief_ray.h"
 #include "optics/lens_system.h"
+#include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
 
@@ -132,7 +133,15 @@ FilmPointIllumination filmPointIllumination(const LensSystem& lens, double image
   FilmPointIllumination result;
   result.imageHeightMm = imageHeightMm;
   const auto chief = aimChiefRay(lens, imageHeightMm);
-  if (chief) result.cos4 = std::pow(chief->imageSideCosine, 4);
+  if (chief) {
+    result.cos4 = std::pow(chief->imageSideCosine, 4);
+    const glm::dvec3 origin{imageHeightMm, 0.0, 0.0};
+    const LensRay ray{
+        origin, glm::normalize(glm::dvec3{chief->planeXMm, 0.0, lens.rearVertexZ()} - origin)};
+    if (const auto out = traceFromFilmUnclipped(lens, ray, 0))
+      result.fieldAngleDeg =
+          std::acos(std::clamp(out->direction.z, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+  }
 
   const PassRegion region(lens, imageHeightMm, settings.samplingDiskRadiusMm);
   const double tolerance = settings.relativeTolerance * region.searchRadiusMm();
@@ -212,6 +221,7 @@ std::optional<RelativeIllumination> relativeIllumination(const LensSystem& lens,
     point.total = at.irradiance / curve.axialIrradiance;
     point.cos4 = at.cos4.value_or(0.0);
     point.vignetting = point.cos4 > 0.0 ? point.total / point.cos4 : 0.0;
+    point.fieldAngleDeg = at.fieldAngleDeg;
     point.clippedBy = at.clippedBy;
     if (withRearDiskTotal) {
       const double irradiance = filmPointIllumination(lens, h, rearDisk).irradiance;

@@ -44,6 +44,8 @@ struct FilmPointIllumination {
   // cos^4 of the chief ray's image-side angle; nullopt when there is no chief ray (the stop's
   // centre cannot be reached from this point).
   std::optional<double> cos4;
+  // The chief ray's angle to the axis in object space (degrees): the field angle of this point.
+  std::optional<double> fieldAngleDeg;
   std::vector<int> clippedBy;  // 0-based prescription indices, ascending
   // Centre of the star-shaped pass region on the rear-vertex plane (mm, on y = 0) and the
   // boundary radii found, for drawing the footprint; empty when nothing passes.
@@ -68,8 +70,9 @@ FilmPointIllumination filmPointIllumination(const LensSystem& lens, double image
 struct RelativeIlluminationPoint {
   double imageHeightMm = 0.0;
   double total = 0.0;
-  double cos4 = 0.0;        // 0 when there is no chief ray
-  double vignetting = 0.0;  // 0 where cos4 is 0
+  double cos4 = 0.0;                    // 0 when there is no chief ray
+  double vignetting = 0.0;              // 0 where cos4 is 0
+  std::optional<double> fieldAngleDeg;  // object-side chief ray angle; nullopt without one
   std::vector<int> clippedBy;
   // total as the course's rear-disk sampling integrates it (relative to its own axial value);
   // only when relativeIllumination was asked for it.

@@ -62,6 +62,9 @@ TEST(RelativeIllumination, CircularOpeningMatchesTheClosedForm) {
     ASSERT_TRUE(at.cos4.has_value());
     // The chief ray runs straight to the centre of the stop.
     EXPECT_NEAR(*at.cos4, std::pow(30.0 / std::hypot(30.0, h), 4), 1e-9);
+    // No glass: the field angle is the chief ray's own angle.
+    ASSERT_TRUE(at.fieldAngleDeg.has_value());
+    EXPECT_NEAR(*at.fieldAngleDeg, std::atan2(h, 30.0) * 180.0 / std::numbers::pi, 1e-7);
     ASSERT_EQ(at.clippedBy.size(), 1u);
     EXPECT_EQ(at.clippedBy[0], 0);
   }
