@@ -26,6 +26,7 @@ struct AnalyzeArguments {
   double filmDistanceMm = 0.0;
   std::string objectDistance;     // text, so that "inf" works
   double filmDiagonalMm = 43.27;  // 36 x 24 mm full frame
+  double stopDiameterMm = 0.0;    // 0: the file's
   int points = 64;
 };
 
@@ -55,6 +56,7 @@ nlohmann::json toJson(const AnalyzeArguments& arguments, const optics::LensSyste
   nlohmann::json json{{"lens", arguments.lensPath},
                       {"film_distance_mm", lens.filmDistanceMm()},
                       {"film_diagonal_mm", arguments.filmDiagonalMm},
+                      {"stop_diameter_mm", lens.stopDiameterMm()},
                       {"relative_illumination", points}};
   if (objectDistanceMm) {
     json["object_distance_mm"] =
@@ -97,6 +99,15 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   }
   auto lens = loadLensOrReport(arguments.lensPath, "analyze");
   if (!lens) return 1;
+  if (arguments.stopDiameterMm > 0.0) {
+    // Before focusing: the focus of a real lens moves as it is stopped down.
+    lens = lens->withStopDiameter(arguments.stopDiameterMm);
+    if (!lens) {
+      std::cerr << "lenslab analyze: --stop-diameter " << arguments.stopDiameterMm
+                << " mm is beyond what a lens may have\n";
+      return 1;
+    }
+  }
   if (filmGiven) {
     lens = lens->withFilmDistance(arguments.filmDistanceMm);
     if (!lens) {
@@ -152,6 +163,10 @@ void addAnalyzeCommand(CLI::App& app, SubcommandRunner& run) {
       ->add_option("--film-diagonal", arguments->filmDiagonalMm,
                    "Film diagonal in mm; the curve runs from the axis to its corner (default "
                    "43.27, full frame)")
+      ->check(PositiveFiniteNumber());
+  analyze
+      ->add_option("--stop-diameter", arguments->stopDiameterMm,
+                   "Open or close the iris to this diameter in mm (default: the file's)")
       ->check(PositiveFiniteNumber());
   analyze
       ->add_option("--points", arguments->points,
