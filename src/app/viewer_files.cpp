@@ -186,7 +186,9 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   for (const std::string& warning : loaded.warnings) state_.log.warning(warning);
   preview_.setScene(loaded);
   state_.scenePath = path;
-  state_.filmDiagonalMm = render::framingOf(*loaded.description).filmDiagonalMm;
+  const render::CameraFraming framing = render::framingOf(*loaded.description);
+  state_.filmDiagonalMm = framing.filmDiagonalMm;
+  state_.sceneSamplesRearDisk = framing.lensSampling == render::LensSampling::RearElementDisk;
   state_.crossSectionNeedsFit = true;
   state_.log.info("Opened scene " + path);
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a

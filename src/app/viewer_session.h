@@ -1,8 +1,8 @@
 #pragma once
 // The viewer session: owns the state's window-side parts (preview renderer, statistics), runs
-// the frame loop, and is what scripts drive. Its methods live in three files: viewer.cpp (the
-// loop, drawing, shortcuts), viewer_files.cpp (opening and saving) and viewer_preview.cpp (the
-// render preview and click-to-focus).
+// the frame loop, and is what scripts drive. Its methods live in four files: viewer.cpp (the
+// loop, drawing, shortcuts), viewer_files.cpp (opening and saving), viewer_preview.cpp (the
+// render preview and click-to-focus) and viewer_plots.cpp (exporting the analysis panels' plots).
 
 #include <optional>
 #include <string>
@@ -60,6 +60,7 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveWindowScreenshot(const std::string& path) override;
   std::optional<std::string> saveRender(const std::string& path) override;
   std::optional<std::string> saveCrossSection(const std::string& path) override;
+  PlotExport exportPlot(const std::string& panelId, const std::string& path) override;
   // A window screenshot at the default, non-clobbering path (F12, the menu); "" or an error.
   std::string saveWindowScreenshotToDefault();
   std::optional<std::string> dumpUi(const std::string& path) override {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/analysis/illumination_analysis.h"
 #include "app/document/lens_editor.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
@@ -129,6 +130,11 @@ struct ViewerState {
   // script's show-panel, the View menu); each is dropped once its tab shows.
   std::map<std::string, std::string> tabsToSelect;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
+  // The Illumination panel's curve (computed off the UI thread) and choices.
+  IlluminationView illumination;
+  // The scene's camera samples the rear element's disk, as the course's scenes do
+  // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
+  bool sceneSamplesRearDisk = false;
 };
 
 // Rebuilds what depends on the lens document when its generation changed: validation, the

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/viewer.h"
+#include "cli/analyze_command.h"
 #include "cli/focus_command.h"
 #include "cli/info_command.h"
 #include "cli/render_command.h"
@@ -104,6 +105,7 @@ int run(int argc, char** argv) {
   SubcommandRunner subcommand;  // set when a headless subcommand was named
   addInfoCommand(app, subcommand);
   addFocusCommand(app, subcommand);
+  addAnalyzeCommand(app, subcommand);
   addRenderCommand(app, subcommand);
 
   try {

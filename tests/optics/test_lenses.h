@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #include "optics/lens_file.h"
@@ -56,5 +57,12 @@ inline Prescription singlet(double r1, double r2, double thickness, double n, do
                 {0.0, film, 1.0, std::nullopt, diameter}};
   return p;
 }
+
+}  // namespace lenslab::optics::testing
+
+namespace lenslab::optics::testing {
+
+// Test names and failure messages show the lens file, not the struct's bytes.
+inline void PrintTo(const CourseLens& lens, std::ostream* out) { *out << lens.bundled; }
 
 }  // namespace lenslab::optics::testing

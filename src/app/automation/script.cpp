@@ -41,6 +41,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"open-dialog", {1, 1}},
       {"dialog-choose", {1, 1}},
       {"show-panel", {1, 1}},
+      {"export-plot", {2, 2}},
   };
   return table;
 }
@@ -352,6 +353,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "drop") return check(host.drop(a[0]));
   if (verb == "show-panel") return check(host.showPanel(a[0]));
+  if (verb == "export-plot") {
+    const ScriptHost::PlotExport attempt = host.exportPlot(a[0], a[1]);
+    return attempt.ready ? check(attempt.error) : false;
+  }
   if (verb == "open-dialog") return check(host.openDialog(a[0]));
   if (verb == "dialog-choose") return check(host.chooseInDialog(a[0]));
   if (verb == "wait-frames") {

@@ -10,7 +10,9 @@
 //   make-stop N                 flip                        undo          redo
 //   zoom-cross-section FACTOR   (about the canvas centre)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
-//                                lens-file; see panels/panel_registry.cpp)
+//                                lens-file, illumination; see panels/panel_registry.cpp)
+//   export-plot ID FILE         (an analysis panel's plot, ID illumination, as .svg or .csv,
+//                                once it is computed for the current lens)
 //   drop FILE                   (as if the file were dropped onto the window)
 //   open-dialog KIND            (KIND: open-lens open-scene save-lens save-render
 //                                save-cross-section; shows the file browser as the menu does)
@@ -110,6 +112,15 @@ class ScriptHost {
     return "there is no panel " + id + " here";
   }
   virtual void showBlockedRays(bool /*show*/) {}
+  // Writes an analysis panel's plot; ready is false while its computation for the current lens
+  // is still running (the script waits).
+  struct PlotExport {
+    bool ready = true;
+    std::optional<std::string> error;
+  };
+  virtual PlotExport exportPlot(const std::string& panelId, const std::string& /*path*/) {
+    return {true, "there is no plot " + panelId + " here"};
+  }
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
 };
 

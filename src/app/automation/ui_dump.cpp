@@ -49,6 +49,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"scene_loading", state.loadingScenePath},
       {"lens_table_cells_cut_off", state.lensTable.cellsCutOff},
       {"film_distance_mm", filmDistance},
+      {"film_diagonal_mm", state.filmDiagonalMm},
       {"stop_diameter_mm", stopDiameter},
       {"preview",
        {{"image_width", state.preview.imageWidth},

@@ -14,6 +14,16 @@ void fileMenu(ViewerState& state) {
   using Kind = FileRequest::Kind;
   if (ImGui::MenuItem("Open lens...", "Ctrl+O")) state.fileRequests.push_back({Kind::OpenLens, {}});
   if (ImGui::MenuItem("Open scene...")) state.fileRequests.push_back({Kind::OpenScene, {}});
+  // The bundled scenes: the default, and the vignetting demos (a flat field, and one with a
+  // chart) that show a lens's fall-off and nothing else.
+  const std::filesystem::path scenes = findResourceDirectory("scenes");
+  if (ImGui::BeginMenu("Bundled scenes", !scenes.empty())) {
+    for (const auto& file : listFiles(scenes, ".pbrt")) {
+      if (ImGui::MenuItem(file.stem().string().c_str()))
+        state.fileRequests.push_back({Kind::OpenScene, file.string()});
+    }
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("Open recent", !state.settings.recentFiles.empty())) {
     for (const std::string& path : state.settings.recentFiles) {
       if (ImGui::MenuItem(path.c_str())) state.fileRequests.push_back({Kind::Open, path});

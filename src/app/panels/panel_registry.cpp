@@ -13,6 +13,7 @@ constexpr PanelSpec kPanels[] = {
     {"preview", "Render preview", DockArea::Right, drawRenderPreviewPanel},
     {"log", "Log", DockArea::Bottom, drawLogPanel},
     {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
+    {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
 };
 
 }  // namespace

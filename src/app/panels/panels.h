@@ -25,6 +25,7 @@ void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place);
 void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place);
 void drawLogPanel(ViewerState& state, const PanelPlace& place);
 void drawLensFilePanel(ViewerState& state, const PanelPlace& place);
+void drawIlluminationPanel(ViewerState& state, const PanelPlace& place);
 
 // The lens's first-order data, focus and aperture controls (inside the lens panel).
 void drawFirstOrderSection(ViewerState& state);

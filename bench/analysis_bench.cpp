@@ -1,0 +1,63 @@
+// Lens analyses that panels recompute on every edit.
+//
+// BM_RelativeIllumination/<lens>: the 64-point relative illumination curve
+// (optics/relative_illumination.h) from the axis to the corner of a full-frame film (43.27 mm
+// diagonal), at the lens file's film distance, on one thread. Target (issue 21): <= 10 ms for the
+// double-Gauss 50 mm and the wide 22 mm.
+// BM_FilmPointIllumination/<lens>: one film point at 0.7 of the half diagonal (what a pixel
+// click asks for).
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "optics/lens_loader.h"
+#include "optics/relative_illumination.h"
+
+namespace {
+
+std::shared_ptr<const lenslab::optics::LensSystem> loadBundled(benchmark::State& state,
+                                                               const std::string& name) {
+  auto lens = lenslab::optics::loadLens(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name);
+  if (!lens.ok()) state.SkipWithError("cannot load lens");
+  return lens.system;
+}
+
+constexpr double kHalfDiagonalMm = 0.5 * 43.27;
+
+void BM_RelativeIllumination(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state) {
+    const auto curve = lenslab::optics::relativeIllumination(*lens, kHalfDiagonalMm, 64);
+    benchmark::DoNotOptimize(curve);
+  }
+}
+
+void BM_FilmPointIllumination(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state) {
+    const auto point = lenslab::optics::filmPointIllumination(*lens, 0.7 * kHalfDiagonalMm);
+    benchmark::DoNotOptimize(point);
+  }
+}
+
+const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
+                            {"fisheye10", "fisheye-10mm.dat"},
+                            {"telephoto250", "telephoto-250mm.dat"},
+                            {"wide22", "wide-22mm.dat"}};
+
+[[maybe_unused]] const bool kRegistered = [] {
+  for (const auto& [name, file] : kLenses) {
+    benchmark::RegisterBenchmark((std::string("BM_RelativeIllumination/") + name).c_str(),
+                                 BM_RelativeIllumination, std::string(file))
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("BM_FilmPointIllumination/") + name).c_str(),
+                                 BM_FilmPointIllumination, std::string(file))
+        ->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
+
+}  // namespace

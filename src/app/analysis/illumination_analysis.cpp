@@ -1,0 +1,72 @@
+#include "app/analysis/illumination_analysis.h"
+
+#include <cstdio>
+
+namespace lenslab::app {
+
+void requestIllumination(IlluminationView& view,
+                         const std::shared_ptr<const optics::LensSystem>& lens,
+                         double filmDiagonalMm) {
+  if (!lens) return;
+  if (lens == view.requestedLens && filmDiagonalMm == view.requestedFilmDiagonalMm) return;
+  if (!view.job) view.job = std::make_unique<LatestJob<IlluminationResult>>();
+  view.requestedLens = lens;
+  view.requestedFilmDiagonalMm = filmDiagonalMm;
+  view.job->request(++view.requests, [lens, filmDiagonalMm] {
+    IlluminationResult result{lens, filmDiagonalMm, std::nullopt};
+    result.curve = optics::relativeIllumination(*lens, 0.5 * filmDiagonalMm, kIlluminationPoints,
+                                                {}, /*withRearDiskTotal=*/true);
+    return result;
+  });
+}
+
+PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
+                          bool sceneSamplesRearDisk) {
+  PlotSpec spec;
+  spec.title = "Relative illumination";
+  spec.x.label = againstFieldAngle ? "field angle (deg)" : "image height (mm)";
+  spec.x.min = 0.0;
+  spec.y.label = "relative to the axis";
+  spec.y.min = 0.0;
+  spec.y.max = 1.05;
+  char note[160];
+  std::snprintf(note, sizeof note, "film diagonal %.1f mm; film distance %.2f mm",
+                result.filmDiagonalMm, result.lens ? result.lens->filmDistanceMm() : 0.0);
+  spec.note = note;
+  if (!result.curve) {
+    spec.note += "; no light reaches the centre of the film";
+    return spec;
+  }
+  // Colours for the dark theme (plot_svg darkens them on white).
+  PlotSeries total{"total", {}, {}, 0xf0f0f0ffu, false};
+  PlotSeries cos4{"cos4 (chief ray)", {}, {}, 0xffb347ffu, true};
+  PlotSeries vignetting{"vignetting (apertures)", {}, {}, 0x5ec8ffffu, false};
+  PlotSeries rearDisk{"course: rear-disk sampling", {}, {}, 0xff6b9dffu, true};
+  for (const optics::RelativeIlluminationPoint& p : result.curve->points) {
+    double x = p.imageHeightMm;
+    if (againstFieldAngle) {
+      if (!p.fieldAngleDeg) continue;  // beyond where a chief ray exists
+      x = *p.fieldAngleDeg;
+    }
+    total.x.push_back(x);
+    total.y.push_back(p.total);
+    if (p.cos4 > 0.0) {
+      cos4.x.push_back(x);
+      cos4.y.push_back(p.cos4);
+      vignetting.x.push_back(x);
+      vignetting.y.push_back(p.vignetting);
+    }
+    if (p.rearDiskTotal) {
+      rearDisk.x.push_back(x);
+      rearDisk.y.push_back(*p.rearDiskTotal);
+    }
+  }
+  spec.series = {total, cos4, vignetting};
+  if (sceneSamplesRearDisk) {
+    spec.series.push_back(rearDisk);
+    spec.note += "; the render samples the rear element's disk, as the course did";
+  }
+  return spec;
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,45 @@
+#pragma once
+// What the Illumination panel shows for a lens: its relative illumination curve
+// (optics/relative_illumination.h) over the film's half diagonal, computed on a LatestJob, and
+// the curve as a PlotSpec.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/analysis/latest_job.h"
+#include "app/plot/plot_spec.h"
+#include "optics/lens_system.h"
+#include "optics/relative_illumination.h"
+
+namespace lenslab::app {
+
+struct IlluminationResult {
+  std::shared_ptr<const optics::LensSystem> lens;  // the lens it was computed for
+  double filmDiagonalMm = 0.0;
+  std::optional<optics::RelativeIllumination> curve;  // nullopt: no light on the axis
+};
+
+struct IlluminationView {
+  bool againstFieldAngle = false;  // x axis: field angle instead of image height
+  // What was last asked of the job, so that a frame asks again only when it changed.
+  std::shared_ptr<const optics::LensSystem> requestedLens;
+  double requestedFilmDiagonalMm = 0.0;
+  std::uint64_t requests = 0;
+  std::unique_ptr<LatestJob<IlluminationResult>> job;
+};
+
+inline constexpr int kIlluminationPoints = 64;
+
+// Asks for the curve of `lens` when it (or the film) differs from the last request.
+void requestIllumination(IlluminationView& view,
+                         const std::shared_ptr<const optics::LensSystem>& lens,
+                         double filmDiagonalMm);
+
+// The curves to plot: total, cos4 and vignetting (and the course's rear-disk total when the
+// scene renders that way), against image height or field angle.
+PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
+                          bool sceneSamplesRearDisk);
+
+}  // namespace lenslab::app

@@ -1,0 +1,88 @@
+#include "app/plot/plot_scale.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lenslab::app {
+
+AxisTicks niceTicks(double dataMin, double dataMax, int targetCount, std::optional<double> fixedMin,
+                    std::optional<double> fixedMax) {
+  double lo = fixedMin.value_or(dataMin), hi = fixedMax.value_or(dataMax);
+  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0.0, hi = 1.0;
+  if (hi < lo) std::swap(lo, hi);
+  if (hi - lo < 1e-12 * std::max(1.0, std::abs(lo))) {
+    // One value: a unit around it (or around zero).
+    lo -= 0.5;
+    hi += 0.5;
+  }
+  const int count = std::max(2, targetCount);
+  // The step: the smallest of 1, 2, 5 x 10^k that gives at most `count` intervals.
+  const double raw = (hi - lo) / count;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10.0 * power;
+  for (double multiple : {1.0, 2.0, 5.0}) {
+    if (multiple * power >= raw) {
+      step = multiple * power;
+      break;
+    }
+  }
+  AxisTicks ticks;
+  ticks.min = fixedMin ? lo : std::floor(lo / step + 1e-9) * step;
+  ticks.max = fixedMax ? hi : std::ceil(hi / step - 1e-9) * step;
+  const double first = std::ceil(ticks.min / step - 1e-9) * step;
+  for (double value = first; value <= ticks.max + 1e-9 * step; value += step) {
+    ticks.values.push_back(std::abs(value) < 1e-9 * step ? 0.0 : value);
+  }
+  ticks.decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+  return ticks;
+}
+
+std::string tickLabel(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", std::clamp(decimals, 0, 12), value);
+  std::string label = text;
+  if (label.find_first_not_of("-0.") == std::string::npos)
+    return decimals > 0 ? label.substr(label[0] == '-') : "0";
+  return label;
+}
+
+std::optional<DataRange> dataRange(const PlotSpec& spec) {
+  std::optional<DataRange> range;
+  for (const PlotSeries& series : spec.series) {
+    const std::size_t n = std::min(series.x.size(), series.y.size());
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = series.x[i], y = series.y[i];
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      if (!range) {
+        range = DataRange{x, x, y, y};
+      } else {
+        range->xMin = std::min(range->xMin, x);
+        range->xMax = std::max(range->xMax, x);
+        range->yMin = std::min(range->yMin, y);
+        range->yMax = std::max(range->yMax, y);
+      }
+    }
+  }
+  return range;
+}
+
+std::vector<std::optional<double>> valuesAt(const PlotSpec& spec, double x) {
+  std::vector<std::optional<double>> values;
+  for (const PlotSeries& series : spec.series) {
+    std::optional<double> value;
+    const std::size_t n = std::min(series.x.size(), series.y.size());
+    for (std::size_t i = 0; i + 1 < n && !value; ++i) {
+      const double x0 = series.x[i], x1 = series.x[i + 1];
+      if (x < x0 || x > x1) continue;
+      const double t = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
+      const double y = series.y[i] + t * (series.y[i + 1] - series.y[i]);
+      if (std::isfinite(y)) value = y;
+    }
+    if (!value && n == 1 && series.x[0] == x && std::isfinite(series.y[0])) value = series.y[0];
+    values.push_back(value);
+  }
+  return values;
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,43 @@
+// Exporting the analysis panels' plots (the Viewer's part; the plots themselves are in plot/).
+
+#include <filesystem>
+
+#include "app/analysis/illumination_analysis.h"
+#include "app/plot/plot_csv.h"
+#include "app/plot/plot_svg.h"
+#include "app/viewer_session.h"
+
+namespace lenslab::app {
+
+namespace {
+
+// The size an exported plot is laid out at: a 16:10 half of a slide.
+constexpr int kPlotExportWidthPx = 1200, kPlotExportHeightPx = 750;
+
+}  // namespace
+
+ScriptHost::PlotExport Viewer::exportPlot(const std::string& panelId, const std::string& path) {
+  if (panelId != "illumination") return {true, "there is no plot '" + panelId + "' (illumination)"};
+  if (!state_.lensSystem) return {true, "there is no valid lens to analyse"};
+  IlluminationView& view = state_.illumination;
+  requestIllumination(view, state_.lensSystem, state_.filmDiagonalMm);
+  const auto result = view.job->latest();
+  if (!result || result->lens != state_.lensSystem ||
+      result->filmDiagonalMm != state_.filmDiagonalMm)
+    return {false, std::nullopt};
+  const PlotSpec spec =
+      illuminationPlot(*result, view.againstFieldAngle, state_.sceneSamplesRearDisk);
+  const std::string extension = std::filesystem::path(path).extension().string();
+  std::string error;
+  if (extension == ".svg")
+    error = writePlotSvg(path, spec, kPlotExportWidthPx, kPlotExportHeightPx);
+  else if (extension == ".csv")
+    error = writePlotCsv(path, spec);
+  else
+    return {true, "cannot write a plot as '" + extension + "' (use .svg or .csv)"};
+  if (!error.empty()) return {true, error};
+  state_.log.info("Saved the " + spec.title + " plot to " + path);
+  return {true, std::nullopt};
+}
+
+}  // namespace lenslab::app

@@ -1,0 +1,131 @@
+// The Illumination panel in the real viewer: its plot is drawn in the bottom area, follows an
+// edit of the lens, and its exported numbers are those `lenslab analyze` gives for the lens the
+// viewer shows (saved from the viewer, so both see the same prescription).
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "support/png_image.h"
+#include "support/run_process.h"
+
+namespace lenslab {
+namespace {
+
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+};
+
+CsvTable readCsv(const std::filesystem::path& path) {
+  CsvTable table;
+  std::ifstream in(path);
+  std::string line;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::stringstream stream(text);
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  if (std::getline(in, line)) table.header = split(line);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (const std::string& cell : split(line)) row.push_back(std::stod(cell));
+    table.rows.push_back(row);
+  }
+  return table;
+}
+
+std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+  return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
+}
+
+TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
+  const auto scratch = testing::makeTestDirectory("illumination-panel");
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/wide-22mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
+                                             << "set layout 0.3 0.36 0.4\n"
+                                                "show-panel illumination\n"
+                                                "export-plot illumination wide.csv\n"
+                                                "export-plot illumination wide.svg\n"
+                                                "save-lens wide-as-shown.dat\n"
+                                                "wait-frames 3\n"
+                                                "screenshot panel.png\n"
+                                                "dump-ui ui.json\n"
+                                                "set stop-diameter 3\n"
+                                                "export-plot illumination stopped-down.csv\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+
+  // The numbers: 64 points from the axis to the film corner, total = 1 on the axis, as analyze
+  // computes them for the same lens and film.
+  const CsvTable wide = readCsv(scratch / "wide.csv");
+  ASSERT_EQ(wide.header.size(), 4u);
+  EXPECT_EQ(wide.header[0], "image height (mm)");
+  EXPECT_EQ(wide.header[1], "total");
+  ASSERT_EQ(wide.rows.size(), 64u);
+  EXPECT_DOUBLE_EQ(wide.rows[0][1], 1.0);
+  std::ifstream uiFile(scratch / "ui.json");
+  const nlohmann::json ui = nlohmann::json::parse(uiFile);
+  const double diagonal = ui["state"]["film_diagonal_mm"].get<double>();
+  EXPECT_NEAR(wide.rows.back()[0], 0.5 * diagonal, 1e-6);
+  const auto analyzed = testing::runProcess(
+      std::string("env -u DISPLAY '") + LENSLAB_BINARY + "' analyze --json --film-diagonal " +
+          std::to_string(diagonal) + " '" + (scratch / "wide-as-shown.dat").string() + "'",
+      scratch);
+  ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+  const auto points = nlohmann::json::parse(analyzed.out).at("relative_illumination");
+  ASSERT_EQ(points.size(), 64u);
+  for (std::size_t i = 0; i < 64; i += 9) {
+    EXPECT_NEAR(wide.rows[i][1], points[i].at("total").get<double>(), 1e-6) << i;
+    EXPECT_NEAR(wide.rows[i][2], points[i].at("cos4").get<double>(), 1e-6) << i;
+  }
+
+  // Stopped down to 3 mm, the apertures cut less of the off-axis bundles: at 0.7 of the field
+  // the vignetting term is nearer 1 than at full aperture.
+  const CsvTable stopped = readCsv(scratch / "stopped-down.csv");
+  ASSERT_EQ(stopped.rows.size(), 64u);
+  EXPECT_GT(stopped.rows[44][3], wide.rows[44][3] + 0.05);
+
+  // The plot on screen: the three curves' colours inside its axes' box.
+  ASSERT_TRUE(ui["widgets"].contains("illumination-plot")) << ui["widgets"];
+  const auto& box = ui["widgets"]["illumination-plot"];
+  const int x0 = box["x"].get<int>(), y0 = box["y"].get<int>();
+  const int x1 = x0 + box["width"].get<int>(), y1 = y0 + box["height"].get<int>();
+  ASSERT_GT(x1 - x0, 300);
+  ASSERT_GT(y1 - y0, 100);
+  const auto shot = testing::PngImage::load(scratch / "panel.png");
+  ASSERT_TRUE(shot.valid());
+  const double orange = shot.fractionNear(x0, y0, x1, y1, {0xff, 0xb3, 0x47}, 40);
+  const double blue = shot.fractionNear(x0, y0, x1, y1, {0x5e, 0xc8, 0xff}, 40);
+  const double white = shot.fractionNear(x0, y0, x1, y1, {0xf0, 0xf0, 0xf0}, 30);
+  EXPECT_GT(orange, 0.001);
+  EXPECT_GT(blue, 0.002);
+  EXPECT_GT(white, 0.002);
+  // The SVG for slides names its curves.
+  const std::string svg = testing::readWholeFile(scratch / "wide.svg");
+  EXPECT_NE(svg.find(">vignetting (apertures)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">image height (mm)</text>"), std::string::npos);
+}
+
+TEST(IlluminationPanel, ExportRefusesOtherFormatsAndPanels) {
+  const auto scratch = testing::makeTestDirectory("illumination-export-errors");
+  std::ofstream(scratch / "bad-format.script") << "export-plot illumination plot.bmp\n";
+  const auto format =
+      testing::runProcess(viewer(scratch, "--size 1000x700 --script bad-format.script"), scratch);
+  EXPECT_EQ(format.exitCode, 1);
+  EXPECT_NE(format.err.find("use .svg or .csv"), std::string::npos) << format.err;
+  std::ofstream(scratch / "bad-panel.script") << "export-plot spots plot.svg\n";
+  const auto panel =
+      testing::runProcess(viewer(scratch, "--size 1000x700 --script bad-panel.script"), scratch);
+  EXPECT_EQ(panel.exitCode, 1);
+  EXPECT_NE(panel.err.find("there is no plot 'spots'"), std::string::npos) << panel.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch / "plot.svg"));
+}
+
+}  // namespace
+}  // namespace lenslab

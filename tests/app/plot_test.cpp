@@ -1,0 +1,176 @@
+// The plot component's arithmetic and its exports: tick choice by hand cases, interpolation,
+// the CSV read back, and the SVG's text and coordinates read back with a small parser written
+// here.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <sstream>
+
+#include "app/plot/plot_csv.h"
+#include "app/plot/plot_layout.h"
+#include "app/plot/plot_scale.h"
+#include "app/plot/plot_svg.h"
+
+namespace lenslab::app {
+namespace {
+
+TEST(PlotScale, TicksAreRoundAndCoverTheData) {
+  // 0..21.6 in at most 6 intervals: a step of 5 (2 would give 11), ends widened to 0 and 25.
+  const AxisTicks a = niceTicks(0.0, 21.6, 6);
+  EXPECT_DOUBLE_EQ(a.min, 0.0);
+  EXPECT_DOUBLE_EQ(a.max, 25.0);
+  EXPECT_EQ(a.values, (std::vector<double>{0, 5, 10, 15, 20, 25}));
+  EXPECT_EQ(a.decimals, 0);
+  // Fixed ends stay; ticks are the round values within them.
+  const AxisTicks b = niceTicks(0.1, 0.9, 5, 0.0, 1.05);
+  EXPECT_DOUBLE_EQ(b.min, 0.0);
+  EXPECT_DOUBLE_EQ(b.max, 1.05);
+  // Step 0.5: 0.2 would give 5.25 intervals, more than 5.
+  EXPECT_EQ(b.values, (std::vector<double>{0.0, 0.5, 1.0}));
+  EXPECT_EQ(b.decimals, 1);
+  // Negative and small ranges.
+  const AxisTicks c = niceTicks(-0.0032, 0.0041, 4);
+  EXPECT_NEAR(c.values.front(), -0.004, 1e-12);
+  EXPECT_NEAR(c.values.back(), 0.006, 1e-12);  // step 0.002; 0.0041 rounds up to 0.006
+  EXPECT_EQ(c.decimals, 3);
+  // One value gets a unit range; no ticks from NaN.
+  EXPECT_EQ(niceTicks(3.0, 3.0, 4).values.front(), 2.5);
+  EXPECT_FALSE(niceTicks(NAN, 1.0, 4).values.empty());
+}
+
+TEST(PlotScale, TickLabels) {
+  EXPECT_EQ(tickLabel(0.25, 2), "0.25");
+  EXPECT_EQ(tickLabel(-1e-17, 1), "0.0");
+  EXPECT_EQ(tickLabel(-0.0, 0), "0");
+  EXPECT_EQ(tickLabel(20, 0), "20");
+}
+
+TEST(PlotScale, ValuesAtInterpolateEachSeries) {
+  PlotSpec spec;
+  spec.series = {{"a", {0, 10}, {1, 0}}, {"b", {5, 6}, {2, 4}}};
+  const auto values = valuesAt(spec, 5.5);
+  ASSERT_EQ(values.size(), 2u);
+  EXPECT_DOUBLE_EQ(*values[0], 0.45);
+  EXPECT_DOUBLE_EQ(*values[1], 3.0);
+  EXPECT_FALSE(valuesAt(spec, 8.0)[1].has_value());  // outside b's range
+}
+
+PlotSpec sampleSpec() {
+  PlotSpec spec;
+  spec.title = "Relative illumination";
+  spec.note = "film diagonal 43.3 mm";
+  spec.x.label = "image height (mm)";
+  spec.y.label = "relative to the axis";
+  spec.y.min = 0.0;
+  spec.y.max = 1.05;
+  spec.series = {{"total", {0, 10, 20}, {1, 0.6, 0.2}, 0xf0f0f0ffu},
+                 {"cos4, \"chief\"", {0, 10, 20}, {1, 0.8, 0.45}, 0xffb347ffu, true}};
+  return spec;
+}
+
+TEST(PlotCsv, HeaderAndRowsReadBack) {
+  const std::string csv = plotCsv(sampleSpec());
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  // The comma and quotes in a name are quoted (RFC 4180).
+  EXPECT_EQ(line, "image height (mm),total,\"cos4, \"\"chief\"\"\"");
+  std::getline(lines, line);
+  EXPECT_EQ(line, "0,1,1");
+  std::getline(lines, line);
+  EXPECT_EQ(line, "10,0.6,0.8");
+  std::getline(lines, line);
+  EXPECT_EQ(line, "20,0.2,0.45");
+  EXPECT_FALSE(std::getline(lines, line));
+}
+
+TEST(PlotCsv, SeriesWithOtherXValuesLeaveCellsEmpty) {
+  PlotSpec spec;
+  spec.x.label = "x";
+  spec.series = {{"a", {0, 1}, {5, 6}}, {"b", {1, 2}, {7, NAN}}};
+  EXPECT_EQ(plotCsv(spec), "x,a,b\n0,5,\n1,6,7\n2,,\n");
+}
+
+// The numbers in `attribute="..."` of every element named `element`.
+std::vector<std::string> attributes(const std::string& svg, const std::string& element,
+                                    const std::string& attribute) {
+  std::vector<std::string> found;
+  const std::regex tag("<" + element + "[^>]*\\s" + attribute + "=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), tag); it != std::sregex_iterator();
+       ++it)
+    found.push_back((*it)[1]);
+  return found;
+}
+
+std::vector<std::string> texts(const std::string& svg) {
+  std::vector<std::string> found;
+  const std::regex text("<text[^>]*>([^<]*)</text>");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator();
+       ++it)
+    found.push_back((*it)[1]);
+  return found;
+}
+
+TEST(PlotSvg, LabelsTicksLegendAndCurvesWhereTheAxesSay) {
+  const std::string svg = plotSvg(sampleSpec(), 1200, 750);
+  const auto words = texts(svg);
+  auto has = [&](const std::string& w) {
+    return std::find(words.begin(), words.end(), w) != words.end();
+  };
+  EXPECT_TRUE(has("Relative illumination"));
+  EXPECT_TRUE(has("film diagonal 43.3 mm"));
+  EXPECT_TRUE(has("image height (mm)"));
+  EXPECT_TRUE(has("relative to the axis"));
+  EXPECT_TRUE(has("total"));
+  EXPECT_TRUE(has("cos4, &quot;chief&quot;"));
+  for (const char* tick : {"0", "10", "20", "0.0", "0.5", "1.0"}) EXPECT_TRUE(has(tick)) << tick;
+  // The curves: the point (10, 0.6) of "total" lies where the x tick "10" and the y ticks say.
+  // x ticks: where the label "10" is centred.
+  const std::regex xTick("<text class=\"x-tick\" x=\"([0-9.]+)\"[^>]*>10</text>");
+  std::smatch tenTick;
+  ASSERT_TRUE(std::regex_search(svg, tenTick, xTick));
+  const auto polylines = attributes(svg, "polyline", "points");
+  ASSERT_EQ(polylines.size(), 2u);
+  std::istringstream points(polylines[0]);
+  std::vector<std::pair<double, double>> xy;
+  for (std::string pair; points >> pair;) {
+    const auto comma = pair.find(',');
+    xy.push_back({std::stod(pair.substr(0, comma)), std::stod(pair.substr(comma + 1))});
+  }
+  ASSERT_EQ(xy.size(), 3u);
+  EXPECT_NEAR(xy[1].first, std::stod(tenTick[1]), 0.01);
+  // y: 0 at the box's bottom, 1.05 at its top; the box is the rect with a stroke and no fill.
+  const std::regex box(
+      "<rect x=\"([0-9.]+)\" y=\"([0-9.]+)\" width=\"([0-9.]+)\" height=\"([0-9.]+)\" "
+      "fill=\"none\"");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(svg, m, box));
+  const double top = std::stod(m[2]), height = std::stod(m[4]);
+  EXPECT_NEAR(xy[1].second, top + height * (1.0 - 0.6 / 1.05), 0.02);
+  EXPECT_NEAR(xy[0].second, top + height * (1.0 - 1.0 / 1.05), 0.02);
+  // The dashed series is dashed, and white "total" is drawn dark on the white page.
+  EXPECT_NE(svg.find("stroke-dasharray"), std::string::npos);
+  EXPECT_NE(svg.find("data-name=\"total\" stroke=\"#202020\""), std::string::npos);
+}
+
+TEST(PlotLayout, LegendAvoidsTheCurves) {
+  // A curve along the top: the legend goes to a bottom corner.
+  PlotSpec spec = sampleSpec();
+  spec.series[0].y = {1.0, 1.0, 1.0};
+  spec.series[1].y = {1.0, 1.0, 0.95};
+  const PlotFrame frame = layoutPlot(spec, {0, 0, 800, 500}, 14.0f,
+                                     [](const std::string& s) { return 7.0f * s.size(); });
+  ASSERT_GT(frame.legend.width, 0.0f);
+  EXPECT_GT(frame.legend.y, frame.area.y + 0.5f * frame.area.height);
+  // A curve along the bottom: the legend stays at the top.
+  spec.series[0].y = {0.0, 0.05, 0.0};
+  spec.series[1].y = {0.1, 0.05, 0.0};
+  const PlotFrame low = layoutPlot(spec, {0, 0, 800, 500}, 14.0f,
+                                   [](const std::string& s) { return 7.0f * s.size(); });
+  EXPECT_LT(low.legend.y, low.area.y + 0.5f * low.area.height);
+}
+
+}  // namespace
+}  // namespace lenslab::app

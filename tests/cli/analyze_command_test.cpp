@@ -1,0 +1,110 @@
+// `lenslab analyze`, run as a real process: its relative-illumination JSON against the closed
+// form for a bare circular opening, and its options.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "support/run_process.h"
+
+namespace lenslab {
+namespace {
+
+std::string lenslab(const std::string& arguments) {
+  return std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + LENSLAB_BINARY + "' " + arguments;
+}
+
+std::string lensPath(const std::string& name) {
+  return std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name;
+}
+
+class AnalyzeCommand : public ::testing::Test {
+ protected:
+  std::filesystem::path scratch = testing::makeTestDirectory("analyze-command");
+
+  std::string writeFile(const std::string& name, const std::string& text) {
+    const auto path = scratch / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+  }
+  nlohmann::json analyzeJson(const std::string& arguments) {
+    const auto result = testing::runProcess(lenslab("analyze --json " + arguments), scratch);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    return result.exitCode == 0 ? nlohmann::json::parse(result.out) : nlohmann::json{};
+  }
+};
+
+// A film point offset h below a circular opening of radius a at distance z receives
+// E = pi (1 - (z^2 + h^2 - a^2) / sqrt((z^2 + h^2 + a^2)^2 - 4 a^2 h^2)) / 2 (configuration factor
+// from a differential area to a parallel disk), and the chief ray runs straight to the opening's
+// centre, so cos4 = (z^2 / (z^2 + h^2))^2.
+TEST_F(AnalyzeCommand, RelativeIlluminationOfABareOpeningFollowsTheClosedForm) {
+  const std::string lens =
+      writeFile("opening.dat", "# a 20 mm stop, 30 mm from the film\n0 30 0 20\n");
+  const auto json = analyzeJson(lens + " --film-diagonal 60");
+  ASSERT_TRUE(json.contains("relative_illumination"));
+  EXPECT_EQ(json.at("film_distance_mm").get<double>(), 30.0);
+  EXPECT_EQ(json.at("film_diagonal_mm").get<double>(), 60.0);
+  const auto& points = json.at("relative_illumination");
+  ASSERT_EQ(points.size(), 64u);
+  auto irradiance = [](double h) {
+    const double a = 10.0, z = 30.0, s = z * z + h * h + a * a;
+    return 0.5 * std::numbers::pi *
+           (1.0 - (z * z + h * h - a * a) / std::sqrt(s * s - 4 * a * a * h * h));
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& p = points[i];
+    const double h = p.at("image_height_mm").get<double>();
+    EXPECT_NEAR(h, 30.0 * i / 63.0, 1e-9);
+    const double total = irradiance(h) / irradiance(0.0);
+    EXPECT_NEAR(p.at("total").get<double>(), total, 5e-4) << "h = " << h;
+    const double cos4 = std::pow(30.0 * 30.0 / (30.0 * 30.0 + h * h), 2);
+    EXPECT_NEAR(p.at("cos4").get<double>(), cos4, 1e-9);
+    EXPECT_NEAR(p.at("vignetting").get<double>(), total / cos4, 1e-3);
+    EXPECT_EQ(p.at("clipped_by"), nlohmann::json::array({1}));  // surfaces count from 1
+    // The opening is the rear element's disk itself, so the course's sampling sees it all.
+    EXPECT_NEAR(p.at("rear_disk_total").get<double>(), total, 5e-4);
+  }
+}
+
+TEST_F(AnalyzeCommand, FocusesFirstWhenGivenAnObjectDistance) {
+  const auto focus = testing::runProcess(
+      lenslab("focus --json --object-distance 2000 " + lensPath("dgauss-50mm.dat")), scratch);
+  ASSERT_EQ(focus.exitCode, 0) << focus.err;
+  const double film = nlohmann::json::parse(focus.out).at("film_distance_mm").get<double>();
+  const auto json = analyzeJson(lensPath("dgauss-50mm.dat") + " --object-distance 2000");
+  EXPECT_NEAR(json.at("film_distance_mm").get<double>(), film, 1e-9);
+  EXPECT_EQ(json.at("object_distance_mm").get<double>(), 2000.0);
+  const auto given = analyzeJson(lensPath("dgauss-50mm.dat") + " --film-distance 40 --points 65");
+  EXPECT_EQ(given.at("film_distance_mm").get<double>(), 40.0);
+  EXPECT_EQ(given.at("relative_illumination").size(), 65u);
+  // The double-Gauss darkens toward the corner, and the rims do part of it.
+  const auto& corner = given.at("relative_illumination").back();
+  EXPECT_LT(corner.at("total").get<double>(), 0.6);
+  EXPECT_LT(corner.at("vignetting").get<double>(), 0.9);
+  EXPECT_FALSE(corner.at("clipped_by").empty());
+}
+
+TEST_F(AnalyzeCommand, TextTableAndBadOptions) {
+  const auto text = testing::runProcess(lenslab("analyze " + lensPath("wide-22mm.dat")), scratch);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("vignetting"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("clipped by surfaces"), std::string::npos) << text.out;
+  const auto bad = testing::runProcess(
+      lenslab("analyze --object-distance near " + lensPath("wide-22mm.dat")), scratch);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--object-distance: 'near'"), std::string::npos) << bad.err;
+  const auto both = testing::runProcess(
+      lenslab("analyze --object-distance inf --film-distance 20 " + lensPath("wide-22mm.dat")),
+      scratch);
+  EXPECT_EQ(both.exitCode, 2);
+  const auto missing = testing::runProcess(lenslab("analyze nothing-here.dat"), scratch);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("nothing-here.dat"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace lenslab
