@@ -239,7 +239,9 @@ TEST(LimitingAperture, ExitPupilSamplingAlreadyTracesThePassingBeam) {
     SCOPED_TRACE(j);
     EXPECT_EQ(a.bin(j).empty, b.bin(j).empty);
     EXPECT_DOUBLE_EQ(a.bin(j).areaMm2, b.bin(j).areaMm2);
-    if (!a.bin(j).empty) EXPECT_LT(a.bin(j).areaMm2, 4.0 * (1.5 * rear) * (1.5 * rear));
+    if (!a.bin(j).empty) {
+      EXPECT_LT(a.bin(j).areaMm2, 4.0 * (1.5 * rear) * (1.5 * rear));
+    }
   }
 }
 

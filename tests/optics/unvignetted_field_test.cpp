@@ -74,7 +74,9 @@ TEST(UnvignettedField, MatchesABruteForceGridAtFieldsAroundTheLimit) {
     // On axis and just inside the limit no ray that surface k admits (to 0.1% of its rim, as
     // the definition's tolerance) is blocked; a tenth of a degree beyond it, some are.
     EXPECT_EQ(vignettedRays(*lens, k, 0.0, 0.001), 0);
-    if (half > 0.05) EXPECT_EQ(vignettedRays(*lens, k, half - 0.05, 0.001), 0) << half;
+    if (half > 0.05) {
+      EXPECT_EQ(vignettedRays(*lens, k, half - 0.05, 0.001), 0) << half;
+    }
     EXPECT_GT(vignettedRays(*lens, k, half + 0.1, 0.001), 0) << half;
   }
 }
