@@ -95,6 +95,8 @@ void Viewer::drawFrame() {
   drawSplitters(state_, width, height);
   drawDockAreas(state_);
   drawAboutWindow(state_);
+  drawExportCrossSectionDialog(state_);
+  state_.frameHadOverlay |= state_.showExportCrossSection;  // over the canvas, as the browser
   if (const auto chosen = fileBrowser_.draw(); chosen && browserPurpose_) {
     state_.fileRequests.push_back({*browserPurpose_, chosen->string()});
   }

@@ -60,6 +60,8 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveWindowScreenshot(const std::string& path) override;
   std::optional<std::string> saveRender(const std::string& path) override;
   std::optional<std::string> saveCrossSection(const std::string& path) override;
+  std::optional<std::string> exportCrossSection(const std::string& path,
+                                                const CrossSectionExportRequest& request) override;
   // A window screenshot at the default, non-clobbering path (F12, the menu); "" or an error.
   std::string saveWindowScreenshotToDefault();
   std::optional<std::string> dumpUi(const std::string& path) override {
@@ -116,6 +118,9 @@ class Viewer final : public ScriptHost {
   // Adds a file the user opened to the recent files, by its absolute path.
   void rememberRecentFile(const std::string& path);
   std::optional<std::string> perform(const FileRequest& request);
+  // Writes the slide export and logs where and what size.
+  std::optional<std::string> exportCrossSectionAs(const std::string& path,
+                                                  const CrossSectionExportSettings& settings);
 
   Window& window_;
   ViewerState& state_;

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/cross_section_export.h"
 #include "app/document/lens_editor.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
@@ -125,6 +126,9 @@ struct ViewerState {
   // script's show-panel, the View menu); each is dropped once its tab shows.
   std::map<std::string, std::string> tabsToSelect;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
+  // File > Export cross-section...: the dialog's settings, kept for the file browser's answer.
+  CrossSectionExportSettings crossSectionExport;
+  bool showExportCrossSection = false;
 };
 
 // Rebuilds what depends on the lens document when its generation changed: validation, the

@@ -17,6 +17,10 @@
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
+//   export-cross-section FILE [WIDTHxHEIGHT] [DPI] [light|dark]
+//                               (the cross-section for slides, off screen: PNG or SVG from the
+//                                extension; default 1920x1080, 144 DPI, light; labels, scale
+//                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
 //
 // "set layout" takes the lens table's and the preview's shares of the width and the log's share
@@ -47,6 +51,17 @@ struct ScriptCommand {
   // Where an argument is; column 1 for an argument the command does not have.
   SourceLocation at(std::size_t argument) const;
 };
+
+// export-cross-section's optional arguments; unset ones take the export's defaults.
+struct CrossSectionExportRequest {
+  std::optional<int> widthPx, heightPx;
+  std::optional<double> dotsPerInch;
+  std::optional<bool> dark;
+};
+
+// Reads "1600x900", "300" and "light"/"dark" in any order; nullopt when one is none of these.
+std::optional<CrossSectionExportRequest> parseExportArguments(
+    const std::vector<std::string>& arguments, std::size_t* badArgument = nullptr);
 
 struct ParsedScript {
   std::vector<ScriptCommand> commands;
@@ -106,6 +121,10 @@ class ScriptHost {
   // the script.
   virtual std::optional<std::string> checkWindow() { return "there is no window to check"; }
   virtual void zoomCrossSection(double /*factor*/) {}
+  virtual std::optional<std::string> exportCrossSection(
+      const std::string& path, const CrossSectionExportRequest& /*request*/) {
+    return "cannot export " + path + " here";
+  }
   virtual std::optional<std::string> showPanel(const std::string& id) {
     return "there is no panel " + id + " here";
   }

@@ -49,6 +49,7 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
                     {stop.zMm, sign * stop.outerRadiusMm}};
       bar.colour = palette::kStop;
       bar.widthPx = 3.0f;
+      bar.part = DrawingPart::Stop;
       bounds.include(bar.points[1]);
       drawing.lines.push_back(std::move(bar));
     }
@@ -60,12 +61,14 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
   axis.points = {{bounds.maxZ + margin, 0.0}, {bounds.minZ - margin, 0.0}};
   axis.colour = palette::kAxis;
   axis.dashed = true;
+  axis.part = DrawingPart::Axis;
   drawing.lines.push_back(std::move(axis));
 
   Polyline film;
   film.points = {{0.0, -filmHalfDiagonalMm}, {0.0, filmHalfDiagonalMm}};
   film.colour = palette::kFilm;
   film.widthPx = 2.0f;
+  film.part = DrawingPart::Film;
   drawing.lines.push_back(std::move(film));
   return drawing;
 }
@@ -76,8 +79,10 @@ namespace lenslab::app {
 
 namespace {
 
-Polyline rayLine(const optics::FanRay& ray, Colour colour, float width) {
+Polyline rayLine(const optics::FanRay& ray, Colour colour, float width, DrawingPart part) {
   Polyline line;
+  line.part = part;
+  line.blocked = !ray.filmPoint.has_value();
   for (const glm::dvec3& point : ray.path.points) line.points.push_back({point.z, point.y});
   if (ray.filmPoint) line.points.push_back({ray.filmPoint->z, ray.filmPoint->y});
   line.colour = colour;
@@ -97,15 +102,20 @@ void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool
       if (!passed && !showBlocked) continue;
       Colour shade = colour;
       if (!passed) shade.a = 110;
-      drawing.lines.push_back(rayLine(ray, shade, 1.0f));
+      Polyline line = rayLine(ray, shade, 1.0f, DrawingPart::Ray);
+      line.fanIndex = static_cast<int>(f);
+      drawing.lines.push_back(std::move(line));
     }
     if (fan.chief) {
-      Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f);
+      Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f, DrawingPart::ChiefRay);
+      chief.fanIndex = static_cast<int>(f);
       chief.dashed = true;
       drawing.lines.push_back(std::move(chief));
     }
   }
-  if (fans.marginal) drawing.lines.push_back(rayLine(*fans.marginal, palette::kMarginalRay, 1.6f));
+  if (fans.marginal)
+    drawing.lines.push_back(
+        rayLine(*fans.marginal, palette::kMarginalRay, 1.6f, DrawingPart::MarginalRay));
 }
 
 }  // namespace lenslab::app

@@ -1,0 +1,28 @@
+#pragma once
+// PNG files that say their resolution: a pHYs chunk (pixels per metre, PNG 1.2 section 4.2.4.2)
+// after the header, so a slide program places a 1920-pixel picture at 13.33 inches when told
+// 144 DPI. stb_image_write encodes the pixels; it writes no pHYs chunk, so it is inserted here.
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+
+namespace lenslab::app {
+
+// The CRC-32 of PNG chunks (ISO 3309, reflected polynomial 0xEDB88320) over `bytes`.
+std::uint32_t pngCrc32(std::span<const std::uint8_t> bytes);
+
+// Dots per inch as PNG's pixels per metre, rounded (300 DPI: 11811).
+std::uint32_t pixelsPerMetre(double dotsPerInch);
+
+// The PNG file of 8-bit RGBA pixels (rows top to bottom) with a pHYs chunk of `dotsPerInch`;
+// "" when the encoder fails.
+std::string encodePngWithDpi(int width, int height, std::span<const std::uint8_t> rgba,
+                             double dotsPerInch);
+
+// Encodes and writes atomically; returns "" or an error naming the path.
+std::string writePngWithDpi(const std::filesystem::path& path, int width, int height,
+                            std::span<const std::uint8_t> rgba, double dotsPerInch);
+
+}  // namespace lenslab::app
