@@ -1,6 +1,6 @@
 #include "app/drawing/png_dpi.h"
 
-#include <stb_image_write.h>
+#include <zlib.h>
 
 #include <array>
 #include <cmath>
@@ -38,30 +38,62 @@ void appendBigEndian(std::string& out, std::uint32_t value) {
 
 }  // namespace
 
+namespace {
+
+void appendChunk(std::string& png, const char* type, const std::string& data) {
+  appendBigEndian(png, static_cast<std::uint32_t>(data.size()));
+  const std::size_t typeAt = png.size();
+  png += type;
+  png += data;
+  const auto* typeAndData = reinterpret_cast<const std::uint8_t*>(png.data() + typeAt);
+  appendBigEndian(png, pngCrc32({typeAndData, png.size() - typeAt}));
+}
+
+}  // namespace
+
 std::string encodePngWithDpi(int width, int height, std::span<const std::uint8_t> rgba,
                              double dotsPerInch) {
-  std::string png;
-  const auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                               static_cast<std::size_t>(size));
-  };
-  if (stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4) == 0) {
+  // 8-bit RGB (the pictures are opaque), each row filtered with "Up" (PNG filter 2: the
+  // difference from the row above), which leaves a drawing on a plain background mostly zeros.
+  // zlib, not stb_image_write: stb's deflate took 0.8 s for a 1920x1080 slide, zlib ~50 ms.
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
+  std::string filtered((rowBytes + 1) * static_cast<std::size_t>(height), '\0');
+  for (int y = 0; y < height; ++y) {
+    char* out = &filtered[(rowBytes + 1) * static_cast<std::size_t>(y)];
+    *out++ = 2;
+    const std::uint8_t* row = &rgba[static_cast<std::size_t>(y) * width * 4];
+    const std::uint8_t* above = y > 0 ? row - static_cast<std::size_t>(width) * 4 : nullptr;
+    for (int x = 0; x < width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        const int value = row[x * 4 + c] - (above ? above[x * 4 + c] : 0);
+        *out++ = static_cast<char>(static_cast<std::uint8_t>(value & 0xFF));
+      }
+    }
+  }
+  uLongf compressedSize = compressBound(static_cast<uLong>(filtered.size()));
+  std::string compressed(compressedSize, '\0');
+  if (compress2(reinterpret_cast<Bytef*>(compressed.data()), &compressedSize,
+                reinterpret_cast<const Bytef*>(filtered.data()),
+                static_cast<uLong>(filtered.size()), 6) != Z_OK) {
     return {};
   }
-  // The signature (8 bytes) and IHDR (4 length + 4 type + 13 data + 4 CRC) come first; pHYs
-  // must come before the image data, so it goes right after IHDR.
-  constexpr std::size_t kAfterHeader = 8 + 25;
-  if (png.size() < kAfterHeader || png.compare(12, 4, "IHDR") != 0) return {};
-  std::string chunk;
-  appendBigEndian(chunk, 9);
-  chunk += "pHYs";
+  compressed.resize(compressedSize);
+
+  std::string png("\x89PNG\r\n\x1a\n", 8);
+  std::string header;
+  appendBigEndian(header, static_cast<std::uint32_t>(width));
+  appendBigEndian(header, static_cast<std::uint32_t>(height));
+  header += std::string("\x08\x02\x00\x00\x00", 5);  // 8 bits, RGB, deflate, filters, no interlace
+  appendChunk(png, "IHDR", header);
+  // pHYs (before the image data, as PNG requires): pixels per metre in x and y, unit 1 (metre).
+  std::string physical;
   const std::uint32_t perMetre = pixelsPerMetre(dotsPerInch);
-  appendBigEndian(chunk, perMetre);  // x
-  appendBigEndian(chunk, perMetre);  // y
-  chunk.push_back(1);                // the unit is the metre
-  const auto* typeAndData = reinterpret_cast<const std::uint8_t*>(chunk.data() + 4);
-  appendBigEndian(chunk, pngCrc32({typeAndData, chunk.size() - 4}));
-  png.insert(kAfterHeader, chunk);
+  appendBigEndian(physical, perMetre);
+  appendBigEndian(physical, perMetre);
+  physical.push_back(1);
+  appendChunk(png, "pHYs", physical);
+  appendChunk(png, "IDAT", compressed);
+  appendChunk(png, "IEND", {});
   return png;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // PNG files that say their resolution: a pHYs chunk (pixels per metre, PNG 1.2 section 4.2.4.2)
 // after the header, so a slide program places a 1920-pixel picture at 13.33 inches when told
-// 144 DPI. stb_image_write encodes the pixels; it writes no pHYs chunk, so it is inserted here.
+// 144 DPI. stb_image_write writes no pHYs chunk (and deflates slowly): the file is written here,
+// its image data deflated by zlib.
 
 #include <cstdint>
 #include <filesystem>
@@ -16,8 +17,8 @@ std::uint32_t pngCrc32(std::span<const std::uint8_t> bytes);
 // Dots per inch as PNG's pixels per metre, rounded (300 DPI: 11811).
 std::uint32_t pixelsPerMetre(double dotsPerInch);
 
-// The PNG file of 8-bit RGBA pixels (rows top to bottom) with a pHYs chunk of `dotsPerInch`;
-// "" when the encoder fails.
+// The PNG file (8-bit RGB: alpha is dropped) of RGBA pixels, rows top to bottom, with a pHYs
+// chunk of `dotsPerInch`; "" when zlib fails.
 std::string encodePngWithDpi(int width, int height, std::span<const std::uint8_t> rgba,
                              double dotsPerInch);
 

@@ -50,11 +50,25 @@ std::string slideSvg(const SlidePicture& picture, const std::string& title) {
       << ")</desc>\n"
       << "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" << picture.widthPx << "\" height=\""
       << picture.heightPx << "\" fill=\"" << rgb(picture.background) << "\"/>\n";
-  for (const SlideFill& fill : picture.fills) {
-    out << "<polygon class=\"" << fill.group << "\" fill=\"" << rgb(fill.colour)
-        << "\" fill-opacity=\"" << fill.colour.a / 255.0 << "\" stroke=\"none\" points=\"";
-    for (const CanvasPoint& point : fill.polygon) out << point.x << "," << point.y << " ";
+  // Fills of one colour and group go in one path: drawn as separate polygons, the glass's quads
+  // showed their shared edges as faint seams (each edge anti-aliased twice).
+  for (std::size_t first = 0; first < picture.fills.size();) {
+    const SlideFill& fill = picture.fills[first];
+    out << "<path class=\"" << fill.group << "\" fill=\"" << rgb(fill.colour)
+        << "\" fill-opacity=\"" << fill.colour.a / 255.0 << "\" stroke=\"none\" d=\"";
+    std::size_t next = first;
+    for (; next < picture.fills.size(); ++next) {
+      const SlideFill& part = picture.fills[next];
+      const bool same = part.group == fill.group && part.colour.r == fill.colour.r &&
+                        part.colour.g == fill.colour.g && part.colour.b == fill.colour.b &&
+                        part.colour.a == fill.colour.a;
+      if (!same) break;
+      out << "M";
+      for (const CanvasPoint& point : part.polygon) out << point.x << "," << point.y << " ";
+      out << "Z ";
+    }
     out << "\"/>\n";
+    first = next;
   }
   for (const SlideLine& line : picture.lines) {
     out << "<polyline class=\"" << line.group << "\" fill=\"none\" stroke=\"" << rgb(line.colour)
