@@ -104,11 +104,11 @@ SlideCaption crossSectionCaption(const ViewerState& state) {
   return caption;
 }
 
-std::string exportCrossSection(ViewerState& state, const std::filesystem::path& path,
-                               const CrossSectionExportSettings& settings, std::string* summary) {
+std::variant<CrossSectionExportJob, std::string> prepareCrossSectionExport(
+    ViewerState& state, const std::filesystem::path& path,
+    const CrossSectionExportSettings& settings) {
   const std::string extension = path.extension().string();
-  const bool svg = extension == ".svg";
-  if (!svg && extension != ".png") {
+  if (extension != ".svg" && extension != ".png") {
     return "cannot export the cross-section to " + path.string() +
            ": the file name must end in .png or .svg";
   }
@@ -120,31 +120,35 @@ std::string exportCrossSection(ViewerState& state, const std::filesystem::path& 
            ": the lens is invalid (see the lens table)";
   }
   const CrossSectionCache& shown = crossSection(state);
+  return CrossSectionExportJob{path,          settings,        shown.drawing,
+                               shown.outline, shown.fitBounds, crossSectionCaption(state)};
+}
+
+CrossSectionExportResult runCrossSectionExport(const CrossSectionExportJob& job) {
   const SlideFont font;
-  const SlideCaption caption = crossSectionCaption(state);
-  const SlidePicture picture = layoutSlide(shown.drawing, shown.outline, shown.fitBounds, caption,
-                                           settings.slide, font.metrics());
-  std::string error;
+  const SlidePicture picture = layoutSlide(job.drawing, job.outline, job.fit, job.caption,
+                                           job.settings.slide, font.metrics());
+  const bool svg = job.path.extension() == ".svg";
+  CrossSectionExportResult result;
   if (svg) {
-    error = writeFileAtomically(path, slideSvg(picture, caption.title));
+    result.error = writeFileAtomically(job.path, slideSvg(picture, job.caption.title));
   } else {
     const SlideImage image = rasterizeSlide(picture, font);
-    error = writePngWithDpi(path, image.width, image.height, image.rgba, settings.dotsPerInch);
+    result.error =
+        writePngWithDpi(job.path, image.width, image.height, image.rgba, job.settings.dotsPerInch);
   }
-  if (!error.empty()) return error;
-  if (summary != nullptr) {
-    char text[160];
-    const char* theme = settings.slide.theme == SlideTheme::Light ? "light" : "dark";
-    if (svg) {
-      std::snprintf(text, sizeof text, "SVG, %d×%d px, %s theme", picture.widthPx, picture.heightPx,
-                    theme);
-    } else {
-      std::snprintf(text, sizeof text, "PNG, %d×%d px, %g DPI, %s theme", picture.widthPx,
-                    picture.heightPx, settings.dotsPerInch, theme);
-    }
-    *summary = text;
+  if (!result.error.empty()) return result;
+  char text[160];
+  const char* theme = job.settings.slide.theme == SlideTheme::Light ? "light" : "dark";
+  if (svg) {
+    std::snprintf(text, sizeof text, "SVG, %d×%d px, %s theme", picture.widthPx, picture.heightPx,
+                  theme);
+  } else {
+    std::snprintf(text, sizeof text, "PNG, %d×%d px, %g DPI, %s theme", picture.widthPx,
+                  picture.heightPx, job.settings.dotsPerInch, theme);
   }
-  return {};
+  result.summary = text;
+  return result;
 }
 
 }  // namespace lenslab::app

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <variant>
 
 #include "app/drawing/slide_layout.h"
 
@@ -34,9 +35,30 @@ SlideCaption crossSectionCaption(const ViewerState& state);
 // A field's legend text: "0°" on axis, else the angle with one decimal ("14.2°").
 std::string fieldAngleText(double degrees);
 
-// Writes the export (PNG or SVG, from the extension) atomically. Returns "" or an error naming
-// the path; `summary` gets what was written ("PNG, 1600×900 px, 300 DPI, light theme").
-std::string exportCrossSection(ViewerState& state, const std::filesystem::path& path,
-                               const CrossSectionExportSettings& settings, std::string* summary);
+// Everything an export needs, copied from the viewer's state, so that it runs on a thread of its
+// own while the viewer goes on (a 4K picture takes half a second to draw and deflate).
+struct CrossSectionExportJob {
+  std::filesystem::path path;
+  CrossSectionExportSettings settings;
+  CrossSectionDrawing drawing;
+  optics::LensOutline outline;
+  BoundsMm fit;
+  SlideCaption caption;
+};
+
+struct CrossSectionExportResult {
+  std::string error;    // "" when written; else naming the path
+  std::string summary;  // what was written: "PNG, 1600×900 px, 300 DPI, light theme"
+};
+
+// The job for the current lens and fans, or why it cannot be exported (the extension is not
+// .png or .svg, the settings are out of range, the lens is invalid).
+std::variant<CrossSectionExportJob, std::string> prepareCrossSectionExport(
+    ViewerState& state, const std::filesystem::path& path,
+    const CrossSectionExportSettings& settings);
+
+// Lays the picture out and writes it (PNG or SVG, from the extension) atomically. Touches no
+// viewer state: safe on any thread.
+CrossSectionExportResult runCrossSectionExport(const CrossSectionExportJob& job);
 
 }  // namespace lenslab::app

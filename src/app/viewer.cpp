@@ -265,6 +265,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     const auto workStarted = ViewerStats::Clock::now();
     openDroppedFiles();
     finishSceneLoad();
+    finishExports();
     pollPreview();
     window_.beginFrame();
     drawFrame();

@@ -248,25 +248,56 @@ std::optional<std::string> Viewer::saveRender(const std::string& path) {
   return std::nullopt;
 }
 
-std::optional<std::string> Viewer::exportCrossSectionAs(
-    const std::string& path, const CrossSectionExportSettings& settings) {
-  std::string summary;
-  if (std::string error = app::exportCrossSection(state_, path, settings, &summary);
-      !error.empty()) {
-    return error;
-  }
-  state_.log.info("Exported cross-section to " + path + " (" + summary + ")");
+std::optional<std::string> Viewer::exportCrossSectionAs(const std::string& path,
+                                                        const CrossSectionExportSettings& settings,
+                                                        std::uint64_t* ticket) {
+  auto prepared = prepareCrossSectionExport(state_, path, settings);
+  if (auto* error = std::get_if<std::string>(&prepared)) return *error;
+  const std::uint64_t number = nextExportTicket_++;
+  if (ticket != nullptr) *ticket = number;
+  exports_.push_back(
+      {number, path,
+       std::async(std::launch::async, [job = std::get<CrossSectionExportJob>(std::move(prepared))] {
+         CrossSectionExportResult result = runCrossSectionExport(job);
+         Window::wakeFromAnyThread();  // the next frame logs it
+         return result;
+       })});
   return std::nullopt;
 }
 
-std::optional<std::string> Viewer::exportCrossSection(const std::string& path,
-                                                      const CrossSectionExportRequest& request) {
+void Viewer::finishExports() {
+  for (auto running = exports_.begin(); running != exports_.end();) {
+    if (running->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      ++running;
+      continue;
+    }
+    const CrossSectionExportResult result = running->result.get();
+    if (result.error.empty()) {
+      state_.log.info("Exported cross-section to " + running->path + " (" + result.summary + ")");
+    } else {
+      state_.log.error(result.error);
+    }
+    exportOutcomes_[running->ticket] = result.error;
+    running = exports_.erase(running);
+  }
+}
+
+ScriptHost::ExportStarted Viewer::startCrossSectionExport(
+    const std::string& path, const CrossSectionExportRequest& request) {
   CrossSectionExportSettings settings;  // the defaults, not the dialog's: scripts reproduce
   if (request.widthPx) settings.slide.widthPx = *request.widthPx;
   if (request.heightPx) settings.slide.heightPx = *request.heightPx;
   if (request.dotsPerInch) settings.dotsPerInch = *request.dotsPerInch;
   if (request.dark) settings.slide.theme = *request.dark ? SlideTheme::Dark : SlideTheme::Light;
-  return exportCrossSectionAs(path, settings);
+  ExportStarted started;
+  started.error = exportCrossSectionAs(path, settings, &started.ticket);
+  return started;
+}
+
+std::optional<std::string> Viewer::exportOutcome(std::uint64_t ticket) const {
+  const auto outcome = exportOutcomes_.find(ticket);
+  if (outcome == exportOutcomes_.end()) return std::nullopt;
+  return outcome->second;
 }
 
 std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {

@@ -424,8 +424,17 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "screenshot-render") return check(host.saveRender(a[0]));
   if (verb == "screenshot-cross-section") return check(host.saveCrossSection(a[0]));
   if (verb == "export-cross-section") {
-    const std::vector<std::string> options(a.begin() + 1, a.end());
-    return check(host.exportCrossSection(a[0], *parseExportArguments(options)));
+    if (!awaitedExport_) {
+      const std::vector<std::string> options(a.begin() + 1, a.end());
+      const ScriptHost::ExportStarted started =
+          host.startCrossSectionExport(a[0], *parseExportArguments(options));
+      if (started.error) return check(started.error);
+      awaitedExport_ = started.ticket;
+    }
+    const std::optional<std::string> outcome = host.exportOutcome(*awaitedExport_);
+    if (!outcome) return false;  // still being written
+    awaitedExport_.reset();
+    return check(outcome->empty() ? std::nullopt : outcome);
   }
   if (verb == "dump-ui") return check(host.dumpUi(a[0]));
   if (verb == "check-window") return check(host.checkWindow());

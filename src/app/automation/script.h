@@ -121,10 +121,17 @@ class ScriptHost {
   // the script.
   virtual std::optional<std::string> checkWindow() { return "there is no window to check"; }
   virtual void zoomCrossSection(double /*factor*/) {}
-  virtual std::optional<std::string> exportCrossSection(
-      const std::string& path, const CrossSectionExportRequest& /*request*/) {
-    return "cannot export " + path + " here";
+  // Starts writing the export on a thread of its own; the script waits for exportOutcome():
+  // nullopt while it runs, then "" or why it failed.
+  struct ExportStarted {
+    std::optional<std::string> error;  // it could not even start (bad path or settings)
+    std::uint64_t ticket = 0;
+  };
+  virtual ExportStarted startCrossSectionExport(const std::string& path,
+                                                const CrossSectionExportRequest& /*request*/) {
+    return {"cannot export " + path + " here"};
   }
+  virtual std::optional<std::string> exportOutcome(std::uint64_t /*ticket*/) const { return ""; }
   virtual std::optional<std::string> showPanel(const std::string& id) {
     return "there is no panel " + id + " here";
   }
@@ -165,6 +172,7 @@ class ScriptRunner {
   bool changedThisStep_ = false;
   int framesWaited_ = 0;
   std::optional<CommandTicket> awaitedCommand_;  // issued by the current command, not yet applied
+  std::optional<std::uint64_t> awaitedExport_;   // export-cross-section's, still being written
   bool failed_ = false;
 };
 
