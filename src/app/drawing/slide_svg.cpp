@@ -80,10 +80,11 @@ std::string slideSvg(const SlidePicture& picture, const std::string& title) {
     out << "\"/>\n";
   }
   for (const SlideText& text : picture.texts) {
-    out << "<text class=\"" << text.kind << "\" x=\"" << text.leftPx << "\" y=\""
-        << text.topPx + picture.metrics.ascentPerSize * text.sizePx << "\" font-size=\""
-        << text.sizePx * picture.metrics.emPerSize << "\" fill=\"" << rgb(text.colour) << "\">"
-        << escaped(text.text) << "</text>\n";
+    // xml:space: the caption's separators are two spaces wide, as in the PNG.
+    out << "<text class=\"" << text.kind << "\" xml:space=\"preserve\" x=\"" << text.leftPx
+        << "\" y=\"" << text.topPx + picture.metrics.ascentPerSize * text.sizePx
+        << "\" font-size=\"" << text.sizePx * picture.metrics.emPerSize << "\" fill=\""
+        << rgb(text.colour) << "\">" << escaped(text.text) << "</text>\n";
   }
   out << "</svg>\n";
   return out.str();
