@@ -95,6 +95,8 @@ void Viewer::drawFrame() {
   drawSplitters(state_, width, height);
   drawDockAreas(state_);
   drawAboutWindow(state_);
+  drawExportCrossSectionDialog(state_);
+  state_.frameHadOverlay |= state_.showExportCrossSection;  // over the canvas, as the browser
   if (const auto chosen = fileBrowser_.draw(); chosen && browserPurpose_) {
     state_.fileRequests.push_back({*browserPurpose_, chosen->string()});
   }
@@ -263,6 +265,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     const auto workStarted = ViewerStats::Clock::now();
     openDroppedFiles();
     finishSceneLoad();
+    finishExports();
     pollPreview();
     window_.beginFrame();
     drawFrame();

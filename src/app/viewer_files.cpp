@@ -58,11 +58,14 @@ void Viewer::askForPath(FileRequest::Kind kind) {
       fileBrowser_.show("Save render as (.png or .exr)", FileBrowser::Mode::Save, {".png", ".exr"},
                         here, render::nonClobberingPath(here, "lenslab-render", ".png").filename());
       break;
-    case Kind::SaveCrossSection:
+    case Kind::SaveCrossSection: {
+      // The export dialog's format gives the suggested name; typing the other extension works.
+      const char* extension = state_.crossSectionExport.svg ? ".svg" : ".png";
       fileBrowser_.show(
-          "Save cross-section as (.png or .svg)", FileBrowser::Mode::Save, {".png", ".svg"}, here,
-          render::nonClobberingPath(here, "lenslab-cross-section", ".svg").filename());
+          "Export cross-section as (.png or .svg)", FileBrowser::Mode::Save, {".png", ".svg"}, here,
+          render::nonClobberingPath(here, "lenslab-cross-section", extension).filename());
       break;
+    }
   }
 }
 
@@ -74,6 +77,10 @@ std::optional<std::string> Viewer::openDialog(const std::string& kind) {
       {"save-lens", Kind::SaveLens},
       {"save-render", Kind::SaveRender},
       {"save-cross-section", Kind::SaveCrossSection}};
+  if (kind == "export-cross-section") {  // the settings dialog, as File > Export cross-section...
+    state_.showExportCrossSection = true;
+    return std::nullopt;
+  }
   for (const auto& [name, value] : kKinds) {
     if (kind == name) {
       askForPath(value);
@@ -116,10 +123,8 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
     case Kind::SaveRender:
       return saveRender(path);
     case Kind::SaveCrossSection:
-      if (std::filesystem::path(path).extension() == ".svg") return saveCrossSection(path);
-      // A PNG is read from the screen: wait for a frame without the browser that asked for it.
-      state_.captures.push_back({PendingCapture::Kind::CrossSection, path, state_.frameNumber});
-      return std::nullopt;
+      // Drawn off screen at the export dialog's settings: the browser is in no frame of it.
+      return exportCrossSectionAs(path, state_.crossSectionExport);
   }
   return std::nullopt;
 }
@@ -243,6 +248,58 @@ std::optional<std::string> Viewer::saveRender(const std::string& path) {
   state_.log.info("Saved render (" + std::to_string(snapshot->samplesPerPixel) + " spp) to " +
                   path);
   return std::nullopt;
+}
+
+std::optional<std::string> Viewer::exportCrossSectionAs(const std::string& path,
+                                                        const CrossSectionExportSettings& settings,
+                                                        std::uint64_t* ticket) {
+  auto prepared = prepareCrossSectionExport(state_, path, settings);
+  if (auto* error = std::get_if<std::string>(&prepared)) return *error;
+  const std::uint64_t number = nextExportTicket_++;
+  if (ticket != nullptr) *ticket = number;
+  exports_.push_back(
+      {number, path,
+       std::async(std::launch::async, [job = std::get<CrossSectionExportJob>(std::move(prepared))] {
+         CrossSectionExportResult result = runCrossSectionExport(job);
+         Window::wakeFromAnyThread();  // the next frame logs it
+         return result;
+       })});
+  return std::nullopt;
+}
+
+void Viewer::finishExports() {
+  for (auto running = exports_.begin(); running != exports_.end();) {
+    if (running->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+      ++running;
+      continue;
+    }
+    const CrossSectionExportResult result = running->result.get();
+    if (result.error.empty()) {
+      state_.log.info("Exported cross-section to " + running->path + " (" + result.summary + ")");
+    } else {
+      state_.log.error(result.error);
+    }
+    exportOutcomes_[running->ticket] = result.error;
+    running = exports_.erase(running);
+  }
+}
+
+ScriptHost::ExportStarted Viewer::startCrossSectionExport(
+    const std::string& path, const CrossSectionExportRequest& request) {
+  CrossSectionExportSettings settings;  // the defaults, not the dialog's: scripts reproduce
+  if (request.widthPx) settings.slide.widthPx = *request.widthPx;
+  if (request.heightPx) settings.slide.heightPx = *request.heightPx;
+  if (request.dotsPerInch) settings.dotsPerInch = *request.dotsPerInch;
+  if (request.dark) settings.slide.theme = *request.dark ? SlideTheme::Dark : SlideTheme::Light;
+  ExportStarted started;
+  started.error = exportCrossSectionAs(path, settings, &started.ticket);
+  return started;
+}
+
+std::optional<std::string> Viewer::exportOutcome(std::uint64_t ticket) const {
+  const auto outcome = exportOutcomes_.find(ticket);
+  if (outcome == exportOutcomes_.end()) return std::nullopt;
+  return outcome->second;
 }
 
 std::optional<std::string> Viewer::saveCrossSection(const std::string& path) {

@@ -4,6 +4,8 @@
 // loop, drawing, shortcuts), viewer_files.cpp (opening and saving), viewer_preview.cpp (the
 // render preview and click-to-focus) and viewer_plots.cpp (exporting the analysis panels' plots).
 
+#include <future>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +63,9 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveRender(const std::string& path) override;
   std::optional<std::string> saveCrossSection(const std::string& path) override;
   PlotExport exportPlot(const std::string& panelId, const std::string& path) override;
+  ExportStarted startCrossSectionExport(const std::string& path,
+                                        const CrossSectionExportRequest& request) override;
+  std::optional<std::string> exportOutcome(std::uint64_t ticket) const override;
   // A window screenshot at the default, non-clobbering path (F12, the menu); "" or an error.
   std::string saveWindowScreenshotToDefault();
   std::optional<std::string> dumpUi(const std::string& path) override {
@@ -117,6 +122,20 @@ class Viewer final : public ScriptHost {
   // Adds a file the user opened to the recent files, by its absolute path.
   void rememberRecentFile(const std::string& path);
   std::optional<std::string> perform(const FileRequest& request);
+  // Starts writing the slide export on a thread of its own (nullopt: started; its ticket in
+  // *ticket); finishExports() logs where and what size once it is written.
+  std::optional<std::string> exportCrossSectionAs(const std::string& path,
+                                                  const CrossSectionExportSettings& settings,
+                                                  std::uint64_t* ticket = nullptr);
+  void finishExports();
+  struct RunningExport {
+    std::uint64_t ticket;
+    std::string path;
+    std::future<CrossSectionExportResult> result;
+  };
+  std::vector<RunningExport> exports_;
+  std::map<std::uint64_t, std::string> exportOutcomes_;  // finished ones: "" or the error
+  std::uint64_t nextExportTicket_ = 1;
 
   Window& window_;
   ViewerState& state_;

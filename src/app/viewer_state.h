@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/analysis/illumination_analysis.h"
+#include "app/cross_section_export.h"
 #include "app/document/lens_editor.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
@@ -135,6 +136,9 @@ struct ViewerState {
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;
+  // File > Export cross-section...: the dialog's settings, kept for the file browser's answer.
+  CrossSectionExportSettings crossSectionExport;
+  bool showExportCrossSection = false;
 };
 
 // Rebuilds what depends on the lens document when its generation changed: validation, the

@@ -541,28 +541,6 @@ TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
   EXPECT_GT(testing::meanBrightness(image("terrain.png")), 20.0);
 }
 
-TEST_F(ScriptedViewer, ACrossSectionSavedThroughTheFileBrowserDoesNotShowIt) {
-  // As from File > Save cross-section: the browser opens, the user types a name and confirms.
-  // The picture must be taken from a later frame, without the browser over the canvas.
-  const auto result = runScript(
-      "wait-frames 3\n"
-      "screenshot-cross-section direct.png\n"
-      "open-dialog save-cross-section\n"
-      "wait-frames 3\n"
-      "dump-ui dialog.json\n"
-      "dialog-choose via-browser.png\n"
-      "wait-until-file via-browser.png\n"
-      "quit\n");
-  ASSERT_EQ(result.exitCode, 0) << result.err;
-  const auto dialog = json("dialog.json");
-  ASSERT_TRUE(dialog["widgets"].contains("file-browser")) << dialog["widgets"];
-  const auto direct = image("direct.png"), viaBrowser = image("via-browser.png");
-  ASSERT_TRUE(direct.valid() && viaBrowser.valid());
-  // The browser (centred on the window) covers much of the canvas; the saved picture has none
-  // of it.
-  EXPECT_LT(testing::countDifferentPixels(direct, viaBrowser), 50u);
-}
-
 TEST_F(ScriptedViewer, ScriptEditsAreLogged) {
   const auto result =
       runScript("set film-distance 40\nundo\nwait-frames 1\ndump-ui log.json\nquit\n");

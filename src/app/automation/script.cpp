@@ -42,6 +42,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"dialog-choose", {1, 1}},
       {"show-panel", {1, 1}},
       {"export-plot", {2, 2}},
+      {"export-cross-section", {1, 4}},
   };
   return table;
 }
@@ -73,6 +74,42 @@ std::optional<long> parseInteger(const std::string& text) {
   if (error != std::errc() || stop != end || text.empty()) return std::nullopt;
   return value;
 }
+
+}  // namespace
+
+std::optional<CrossSectionExportRequest> parseExportArguments(
+    const std::vector<std::string>& arguments, std::size_t* badArgument) {
+  CrossSectionExportRequest request;
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    const std::string& argument = arguments[i];
+    const std::size_t times = argument.find('x');
+    bool good = true;
+    if (argument == "light" || argument == "dark") {
+      good = !request.dark;
+      request.dark = argument == "dark";
+    } else if (times != std::string::npos) {
+      const auto width = parseInteger(argument.substr(0, times));
+      const auto height = parseInteger(argument.substr(times + 1));
+      good = !request.widthPx && width && height && *width > 0 && *height > 0 && *width <= 100000 &&
+             *height <= 100000;
+      if (good) {
+        request.widthPx = static_cast<int>(*width);
+        request.heightPx = static_cast<int>(*height);
+      }
+    } else {
+      const auto dpi = parseNumber(argument);
+      good = !request.dotsPerInch && dpi && *dpi > 0;
+      if (good) request.dotsPerInch = *dpi;
+    }
+    if (!good) {
+      if (badArgument != nullptr) *badArgument = i;
+      return std::nullopt;
+    }
+  }
+  return request;
+}
+
+namespace {
 
 // Where problemAt reports a problem with the command as a whole: column 1 of its line.
 constexpr std::size_t kLineStart = std::numeric_limits<std::size_t>::max();
@@ -165,14 +202,30 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
       return problemAt(command, 0, "'" + command.arguments[0] + "' is not a positive number");
     }
   }
+  if (command.verb == "export-cross-section") {
+    const std::vector<std::string> options(command.arguments.begin() + 1, command.arguments.end());
+    std::size_t bad = 0;
+    if (!parseExportArguments(options, &bad)) {
+      return problemAt(command, bad + 1,
+                       "'" + options[bad] +
+                           "' is not a size (1600x900), a DPI (300) or a theme (light or dark), "
+                           "or repeats one");
+    }
+    const std::string extension = std::filesystem::path(command.arguments[0]).extension();
+    if (extension != ".png" && extension != ".svg") {
+      return problemAt(command, 0, "'" + command.arguments[0] + "' does not end in .png or .svg");
+    }
+  }
   if (command.verb == "open-dialog") {
-    static const char* const kKinds[] = {"open-lens", "open-scene", "save-lens", "save-render",
-                                         "save-cross-section"};
+    static const char* const kKinds[] = {"open-lens",          "open-scene",
+                                         "save-lens",          "save-render",
+                                         "save-cross-section", "export-cross-section"};
     if (std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
       return problemAt(
           command, 0,
           "unknown dialog '" + command.arguments[0] +
-              "' (expected open-lens, open-scene, save-lens, save-render or save-cross-section)");
+              "' (expected open-lens, open-scene, save-lens, save-render, save-cross-section or "
+              "export-cross-section)");
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
@@ -294,7 +347,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   const std::string& verb = command.verb;
   const bool isCapture = verb == "screenshot" || verb == "screenshot-render" ||
                          verb == "screenshot-cross-section" || verb == "dump-ui" ||
-                         verb == "check-window";
+                         verb == "export-cross-section" || verb == "check-window";
   if (isCapture && changedThisStep_) return false;  // let a frame show the change first
   const bool isWait = verb.rfind("wait-", 0) == 0;
   if (!isCapture && !isWait) changedThisStep_ = true;
@@ -375,6 +428,19 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "screenshot") return check(host.saveWindowScreenshot(a[0]));
   if (verb == "screenshot-render") return check(host.saveRender(a[0]));
   if (verb == "screenshot-cross-section") return check(host.saveCrossSection(a[0]));
+  if (verb == "export-cross-section") {
+    if (!awaitedExport_) {
+      const std::vector<std::string> options(a.begin() + 1, a.end());
+      const ScriptHost::ExportStarted started =
+          host.startCrossSectionExport(a[0], *parseExportArguments(options));
+      if (started.error) return check(started.error);
+      awaitedExport_ = started.ticket;
+    }
+    const std::optional<std::string> outcome = host.exportOutcome(*awaitedExport_);
+    if (!outcome) return false;  // still being written
+    awaitedExport_.reset();
+    return check(outcome->empty() ? std::nullopt : outcome);
+  }
   if (verb == "dump-ui") return check(host.dumpUi(a[0]));
   if (verb == "check-window") return check(host.checkWindow());
   if (verb == "quit") {

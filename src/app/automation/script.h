@@ -19,6 +19,10 @@
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
+//   export-cross-section FILE [WIDTHxHEIGHT] [DPI] [light|dark]
+//                               (the cross-section for slides, off screen: PNG or SVG from the
+//                                extension; default 1920x1080, 144 DPI, light; labels, scale
+//                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
 //
 // "set layout" takes the lens table's and the preview's shares of the width and the log's share
@@ -49,6 +53,17 @@ struct ScriptCommand {
   // Where an argument is; column 1 for an argument the command does not have.
   SourceLocation at(std::size_t argument) const;
 };
+
+// export-cross-section's optional arguments; unset ones take the export's defaults.
+struct CrossSectionExportRequest {
+  std::optional<int> widthPx, heightPx;
+  std::optional<double> dotsPerInch;
+  std::optional<bool> dark;
+};
+
+// Reads "1600x900", "300" and "light"/"dark" in any order; nullopt when one is none of these.
+std::optional<CrossSectionExportRequest> parseExportArguments(
+    const std::vector<std::string>& arguments, std::size_t* badArgument = nullptr);
 
 struct ParsedScript {
   std::vector<ScriptCommand> commands;
@@ -108,6 +123,17 @@ class ScriptHost {
   // the script.
   virtual std::optional<std::string> checkWindow() { return "there is no window to check"; }
   virtual void zoomCrossSection(double /*factor*/) {}
+  // Starts writing the export on a thread of its own; the script waits for exportOutcome():
+  // nullopt while it runs, then "" or why it failed.
+  struct ExportStarted {
+    std::optional<std::string> error;  // it could not even start (bad path or settings)
+    std::uint64_t ticket = 0;
+  };
+  virtual ExportStarted startCrossSectionExport(const std::string& path,
+                                                const CrossSectionExportRequest& /*request*/) {
+    return {"cannot export " + path + " here"};
+  }
+  virtual std::optional<std::string> exportOutcome(std::uint64_t /*ticket*/) const { return ""; }
   virtual std::optional<std::string> showPanel(const std::string& id) {
     return "there is no panel " + id + " here";
   }
@@ -157,6 +183,7 @@ class ScriptRunner {
   bool changedThisStep_ = false;
   int framesWaited_ = 0;
   std::optional<CommandTicket> awaitedCommand_;  // issued by the current command, not yet applied
+  std::optional<std::uint64_t> awaitedExport_;   // export-cross-section's, still being written
   bool failed_ = false;
 };
 

@@ -50,6 +50,7 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
                     {stop.zMm, sign * stop.outerRadiusMm}};
       bar.colour = palette::kStop;
       bar.widthPx = 3.0f;
+      bar.part = DrawingPart::Stop;
       bounds.include(bar.points[1]);
       drawing.lines.push_back(std::move(bar));
     }
@@ -61,12 +62,14 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
   axis.points = {{bounds.maxZ + margin, 0.0}, {bounds.minZ - margin, 0.0}};
   axis.colour = palette::kAxis;
   axis.dashed = true;
+  axis.part = DrawingPart::Axis;
   drawing.lines.push_back(std::move(axis));
 
   Polyline film;
   film.points = {{0.0, -filmHalfDiagonalMm}, {0.0, filmHalfDiagonalMm}};
   film.colour = palette::kFilm;
   film.widthPx = 2.0f;
+  film.part = DrawingPart::Film;
   drawing.lines.push_back(std::move(film));
   return drawing;
 }
@@ -77,8 +80,10 @@ namespace lenslab::app {
 
 namespace {
 
-Polyline rayLine(const optics::FanRay& ray, Colour colour, float width) {
+Polyline rayLine(const optics::FanRay& ray, Colour colour, float width, DrawingPart part) {
   Polyline line;
+  line.part = part;
+  line.blocked = !ray.filmPoint.has_value();
   // A point that is not finite ends the line there: the ray is drawn up to it, never joined
   // across the canvas to what follows (the clipper also drops non-finite segments).
   bool broken = false;
@@ -105,15 +110,20 @@ void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool
       if (!passed && !showBlocked) continue;
       Colour shade = colour;
       if (!passed) shade.a = 110;
-      drawing.lines.push_back(rayLine(ray, shade, 1.0f));
+      Polyline line = rayLine(ray, shade, 1.0f, DrawingPart::Ray);
+      line.fanIndex = static_cast<int>(f);
+      drawing.lines.push_back(std::move(line));
     }
     if (fan.chief) {
-      Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f);
+      Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f, DrawingPart::ChiefRay);
+      chief.fanIndex = static_cast<int>(f);
       chief.dashed = true;
       drawing.lines.push_back(std::move(chief));
     }
   }
-  if (fans.marginal) drawing.lines.push_back(rayLine(*fans.marginal, palette::kMarginalRay, 1.6f));
+  if (fans.marginal)
+    drawing.lines.push_back(
+        rayLine(*fans.marginal, palette::kMarginalRay, 1.6f, DrawingPart::MarginalRay));
 }
 
 }  // namespace lenslab::app

@@ -15,6 +15,9 @@ struct Colour {
   std::uint8_t r = 0, g = 0, b = 0, a = 255;
 };
 
+// What a line shows, so an export can recolour it for its theme and group it by part.
+enum class DrawingPart { GlassEdge, Stop, Axis, Film, Ray, ChiefRay, MarginalRay };
+
 // Points are (z, y) in the lens frame: z along the axis (film at 0, object side positive).
 struct Polyline {
   std::vector<optics::OutlinePoint> points;
@@ -22,6 +25,9 @@ struct Polyline {
   float widthPx = 1.0f;
   bool closed = false;
   bool dashed = false;
+  DrawingPart part = DrawingPart::GlassEdge;
+  int fanIndex = -1;     // a fan's ray: which fan (its field), for the colour
+  bool blocked = false;  // a ray that does not reach the film
 };
 
 struct FilledQuads {

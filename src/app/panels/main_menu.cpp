@@ -40,9 +40,7 @@ void fileMenu(ViewerState& state) {
   if (ImGui::MenuItem("Save render as PNG or EXR...")) {
     state.fileRequests.push_back({Kind::SaveRender, {}});
   }
-  if (ImGui::MenuItem("Save cross-section as PNG or SVG...")) {
-    state.fileRequests.push_back({Kind::SaveCrossSection, {}});
-  }
+  if (ImGui::MenuItem("Export cross-section...")) state.showExportCrossSection = true;
   ImGui::Separator();
   if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.quitRequested = true;
 }

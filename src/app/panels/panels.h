@@ -18,6 +18,8 @@ void showPanel(ViewerState& state, const PanelSpec& panel);
 // The draggable gaps between the areas; dragging one moves the layout fractions.
 void drawSplitters(ViewerState& state, float windowWidth, float windowHeight);
 void drawAboutWindow(ViewerState& state);
+// File > Export cross-section...: size, DPI, theme and labels, then the file browser.
+void drawExportCrossSectionDialog(ViewerState& state);
 
 // The registered panels (panel_registry.cpp).
 void drawLensTablePanel(ViewerState& state, const PanelPlace& place);
