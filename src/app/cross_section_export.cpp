@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "app/drawing/png_dpi.h"
 #include "app/drawing/slide_raster.h"
@@ -10,6 +11,7 @@
 #include "common/atomic_file.h"
 #include "common/distance_text.h"
 #include "optics/lens_loader.h"
+#include "optics/limiting_aperture.h"
 
 namespace lenslab::app {
 
@@ -78,8 +80,14 @@ SlideCaption crossSectionCaption(const ViewerState& state) {
     if (firstOrder.afocal) {
       add("afocal");
     } else {
-      // As `lenslab info` prints "f-number (infinity)".
-      std::snprintf(text, sizeof text, "f/%.4f", firstOrder.fNumber);
+      // As `lenslab info` prints "f-number (infinity)": EFL over the paraxial beam that passes
+      // every clear aperture (the iris's entrance pupil, or less when a rim limits first).
+      const optics::LimitingAperture limit =
+          optics::findLimitingAperture(*state.lensSystem, std::numeric_limits<double>::infinity());
+      const double fNumber = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
+                                 ? limit.paraxial->workingFNumber
+                                 : firstOrder.fNumber;
+      std::snprintf(text, sizeof text, "f/%.4f", fNumber);
       add(text);
       std::snprintf(text, sizeof text, "EFL %.2f mm", firstOrder.eflMm);
       add(text);
