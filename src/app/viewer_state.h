@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/document/lens_editor.h"
+#include "app/document/opening_focus.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
 #include "app/lens_table_state.h"
@@ -84,7 +85,12 @@ struct ViewerState {
   // "In focus" for lensSystem (a real-ray search: computed once per lens, not every frame).
   std::shared_ptr<const optics::LensSystem> inFocusLens;
   std::string inFocusText;
+  // The "Focus at" field: the distance in focus (from the film) once the lens has one, else the
+  // last typed; its text while it is typed into, and what it showed last frame (dump-ui).
   double focusDistanceInputMm = 3000.0;
+  char focusDistanceText[32] = {};
+  bool focusFieldEditing = false;
+  std::string focusAtShown;
   // A value is being dragged this frame (film, stop, a splitter): the preview renders at reduced
   // resolution until it is released.
   bool dragging = false;
@@ -110,6 +116,9 @@ struct ViewerState {
   bool pinholeCamera = false;
   PreviewState preview;
   std::string scenePath;
+  // Where the open scene's camera is focused: a lens opened over it is focused there
+  // (document/opening_focus.h).
+  SceneFocus sceneFocus;
   std::string loadingScenePath;  // a scene being opened (off the UI thread); empty when none
   std::vector<FileRequest> fileRequests;
   // Requests made by menus and shortcuts, carried out by the main loop between frames.

@@ -50,6 +50,8 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"lens_table_cells_cut_off", state.lensTable.cellsCutOff},
       {"film_distance_mm", filmDistance},
       {"stop_diameter_mm", stopDiameter},
+      {"focus_at_text", state.focusAtShown},
+      {"in_focus_text", state.inFocusText},
       {"preview",
        {{"image_width", state.preview.imageWidth},
         {"image_height", state.preview.imageHeight},

@@ -13,6 +13,8 @@ namespace {
 void fileMenu(ViewerState& state) {
   using Kind = FileRequest::Kind;
   if (ImGui::MenuItem("Open lens...", "Ctrl+O")) state.fileRequests.push_back({Kind::OpenLens, {}});
+  ImGui::MenuItem(kKeepFilmDistanceLabel, nullptr, &state.settings.keepLensFilmDistance);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kKeepFilmDistanceTooltip);
   if (ImGui::MenuItem("Open scene...")) state.fileRequests.push_back({Kind::OpenScene, {}});
   if (ImGui::BeginMenu("Open recent", !state.settings.recentFiles.empty())) {
     for (const std::string& path : state.settings.recentFiles) {
