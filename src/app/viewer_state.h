@@ -95,6 +95,7 @@ struct ViewerState {
   // resolution until it is released.
   bool dragging = false;
   LensTableState lensTable;
+  float lensPanelScrollMaxY = 0.0f;  // how far the lens panel scrolls (dump-ui: reachability)
   CrossSectionView crossSectionView;
   bool crossSectionNeedsFit = true;
   std::pair<float, float> crossSectionCanvasSize{0.0f, 0.0f};  // as last drawn

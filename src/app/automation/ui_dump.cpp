@@ -48,6 +48,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"scene_path", state.scenePath},
       {"scene_loading", state.loadingScenePath},
       {"lens_table_cells_cut_off", state.lensTable.cellsCutOff},
+      {"lens_panel_scroll_max_y", state.lensPanelScrollMaxY},
       {"film_distance_mm", filmDistance},
       {"stop_diameter_mm", stopDiameter},
       {"focus_at_text", state.focusAtShown},

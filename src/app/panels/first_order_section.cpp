@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "app/panels/panels.h"
@@ -37,6 +38,17 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
+// The Stop mm control's row: the stop, or while a second row has radius 0 (a typo, or a stop
+// being moved) the row that was the stop of the last valid lens, so that the control stays.
+std::optional<std::size_t> stopRowForControls(const ViewerState& state) {
+  const optics::Prescription& lens = state.lens.prescription();
+  if (const auto stop = lens.stopIndex()) return stop;
+  if (!state.lensSystem) return std::nullopt;
+  const std::size_t intended = state.lensSystem->stopIndex();
+  if (intended < lens.surfaces.size() && lens.surfaces[intended].isStop()) return intended;
+  return std::nullopt;
+}
+
 void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   // Film distance and stop diameter as drags: each drag is one undo step.
   const auto& surfaces = state.lens.prescription().surfaces;
@@ -52,13 +64,23 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     ImGui::SetTooltip("Film distance: last surface to film (drag or type)");
   if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
   state.dragging |= ImGui::IsItemActive();
-  if (const auto stop = state.lens.prescription().stopIndex()) {
+  if (const auto stop = stopRowForControls(state)) {
     float diameter = static_cast<float>(surfaces[*stop].apertureDiameterMm);
     row.next(px(110) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Stop mm").x);
     ImGui::SetNextItemWidth(px(110));
     if (ImGui::DragFloat("Stop mm", &diameter, 0.02f, 0.05f, 500.0f, "%.2f")) {
-      state.lens.issue(SetStopDiameter{diameter}, "stop-diameter-drag");
+      // With one stop, the stop's diameter; while another row also has radius 0, the
+      // aperture of the row that is the stop (SetStopDiameter would pick the first).
+      if (state.lens.prescription().stopIndex()) {
+        state.lens.issue(SetStopDiameter{diameter}, "stop-diameter-drag");
+      } else {
+        state.lens.issue(SetSurfaceField{*stop, SurfaceField::ApertureDiameterMm, diameter},
+                         "stop-diameter-drag");
+      }
     }
+    const ImVec2 stopMin = ImGui::GetItemRectMin(), stopMax = ImGui::GetItemRectMax();
+    state.uiRects["first-order/stop-diameter"] = {stopMin.x, stopMin.y, stopMax.x - stopMin.x,
+                                                  stopMax.y - stopMin.y};
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop diameter (drag or type)");
     if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
     state.dragging |= ImGui::IsItemActive();
