@@ -52,10 +52,10 @@ std::shared_ptr<const optics::LensSystem> realisticLens(const SceneDescription& 
   const double stopDiameterMm = camera.apertureDiameterMm;
   if (stopDiameterMm > 0.0) {
     if (stopDiameterMm > system->stopDiameterMm()) {
-      diagnostics.warning(camera.location, "aperture diameter " + std::to_string(stopDiameterMm) +
-                                               " mm is larger than the lens's stop; the stop's " +
-                                               std::to_string(system->stopDiameterMm()) +
-                                               " mm is used");
+      diagnostics.warning(camera.location, "aperture diameter " + millimetresText(stopDiameterMm) +
+                                               " is larger than the lens's stop; the stop's " +
+                                               millimetresText(system->stopDiameterMm()) +
+                                               " is used");
     } else {
       system = system->withStopDiameter(stopDiameterMm);
     }
