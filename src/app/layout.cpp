@@ -4,8 +4,8 @@
 
 namespace lenslab::app {
 
-LayoutFractions clampFractions(LayoutFractions fractions, float width, float height,
-                               float uiScale) {
+LayoutFractions clampFractions(LayoutFractions fractions, float width, float height, float uiScale,
+                               float minLensTableWidth) {
   const float minExtent = kMinPanelExtent * uiScale;
   // Columns: the lens table, the cross-section and the preview each keep the minimum extent.
   if (width > 0) {
@@ -21,6 +21,13 @@ LayoutFractions clampFractions(LayoutFractions fractions, float width, float hei
       left -= excess * left / total;
       right -= excess * right / total;
     }
+    const float wantedLeft = std::min(minLensTableWidth / width, 1.0f - 2 * minShare);
+    if (left < wantedLeft) {
+      // The cross-section and the preview keep their shares of what is left.
+      right = std::max(minShare, right * (1.0f - wantedLeft) / (1.0f - left));
+      right = std::min(right, std::max(minShare, 1.0f - minShare - wantedLeft));
+      left = wantedLeft;
+    }
   }
   // Rows: the log keeps half the minimum, the upper panels the full minimum.
   if (height > 0) {
@@ -32,10 +39,12 @@ LayoutFractions clampFractions(LayoutFractions fractions, float width, float hei
 }
 
 PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,
-                          const LayoutFractions& requested, bool includeLog, float uiScale) {
+                          const LayoutFractions& requested, bool includeLog, float uiScale,
+                          float minLensTableWidth) {
   const float top = menuBarHeight;
   const float usableHeight = std::max(0.0f, windowHeight - top);
-  const LayoutFractions fractions = clampFractions(requested, windowWidth, usableHeight, uiScale);
+  const LayoutFractions fractions =
+      clampFractions(requested, windowWidth, usableHeight, uiScale, minLensTableWidth);
   const float gap = kSplitterThickness * uiScale;
 
   const float logHeight = includeLog ? fractions.logHeight * usableHeight : 0.0f;

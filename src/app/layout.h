@@ -16,6 +16,7 @@ struct LayoutFractions {
   float lensTableWidth = 0.30f;  // left column (lens table) share of the width
   float previewWidth = 0.36f;    // right column (render preview) share of the width
   float logHeight = 0.20f;       // bottom strip (log) share of the height below the menu
+  bool operator==(const LayoutFractions&) const = default;
 };
 
 struct PanelLayout {
@@ -34,13 +35,15 @@ inline constexpr float kSplitterThickness = 6.0f;
 inline constexpr float kMinPanelExtent = 80.0f;
 
 // Keeps each fraction within what leaves every panel at least kMinPanelExtent (times the UI
-// scale) wide/high.
+// scale) wide/high. `minLensTableWidth` (pixels): the lens table's column is made at least that
+// wide, so that every column of its table shows, as far as the other two columns keep their
+// minimum (the preview gives way first; in a narrower window the table scrolls sideways).
 LayoutFractions clampFractions(LayoutFractions fractions, float width, float height,
-                               float uiScale = 1.0f);
+                               float uiScale = 1.0f, float minLensTableWidth = 0.0f);
 
 // With includeLog false the upper panels take the whole height and the log rects are empty.
 PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,
                           const LayoutFractions& fractions, bool includeLog = true,
-                          float uiScale = 1.0f);
+                          float uiScale = 1.0f, float minLensTableWidth = 0.0f);
 
 }  // namespace lenslab::app

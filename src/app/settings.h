@@ -19,6 +19,9 @@ struct Settings {
   // The tab each dock area shows, by area name ("bottom": "log"); see panels/panel_registry.h.
   std::map<std::string, std::string> selectedTabs;
   std::vector<std::string> recentFiles;  // most recent first
+  // Open lenses at their file's film distance instead of focused at the scene's focus distance
+  // (File menu; document/opening_focus.h).
+  bool keepLensFilmDistance = false;
 };
 
 // Puts `path` first in the recent-files list (removing an earlier mention), keeping at most

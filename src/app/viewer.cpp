@@ -88,8 +88,14 @@ void Viewer::drawFrame() {
   refreshLens(state_);
   handleShortcuts();
   const float menuHeight = drawMainMenu(state_);
+  // The default layout (a first start, View > Reset layout) widens the lens table's panel to
+  // show every column of its table (at UI scale 2 its 30% showed three); a layout the user has
+  // chosen is kept, the table scrolling sideways in a panel dragged narrower.
+  const float lensTableWidth =
+      state_.settings.layout == LayoutFractions{} ? lensTablePanelMinWidth() : 0.0f;
   state_.settings.layout =
-      clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight), uiScale());
+      clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight), uiScale(),
+                     lensTableWidth);
   state_.layout = computeLayout(width, height, menuHeight, state_.settings.layout,
                                 state_.showBottomArea, uiScale());
   drawSplitters(state_, width, height);

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "app/drawing/svg_export.h"
 #include "app/platform/screenshot.h"
@@ -46,6 +47,8 @@ void Viewer::askForPath(FileRequest::Kind kind) {
     case Kind::Open:
     case Kind::OpenLens:
       fileBrowser_.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
+      fileBrowser_.addOption(kKeepFilmDistanceLabel, &state_.settings.keepLensFilmDistance,
+                             kKeepFilmDistanceTooltip);
       break;
     case Kind::OpenScene:
       fileBrowser_.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
@@ -136,7 +139,8 @@ std::string Viewer::saveWindowScreenshotToDefault() {
   return {};
 }
 
-ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSession) {
+ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSession,
+                                        bool keepFilmDistance) {
   optics::LoadedLens loaded = optics::loadLens(path);
   if (!loaded.ok()) {
     // The current lens stays; every problem goes to the log with its file:line:column.
@@ -146,11 +150,34 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
     }
     return {message};
   }
-  const CommandTicket ticket =
-      state_.lens.issue(ReplaceLens{std::move(loaded.file.prescription), path,
-                                    std::move(loaded.file.headerComments), startsSession});
+  // Focused as a camera would be, in the one command that opens it: one undo step.
+  ReplaceLens opening{std::move(loaded.file.prescription), path,
+                      std::move(loaded.file.headerComments), startsSession};
+  const OpeningFocus focus = focusForOpening(
+      *loaded.system, state_.sceneFocus, keepFilmDistance || state_.settings.keepLensFilmDistance);
+  if (focus.filmDistanceMm) {
+    opening.prescription.surfaces.back().thicknessMm = *focus.filmDistanceMm;
+  }
+  if (startsSession && keepLensOnSceneLoad && !keepFilmDistance) {
+    sessionLensToFocus_ = SessionLens{opening, loaded.system};
+  }
+  const CommandTicket ticket = state_.lens.issue(std::move(opening));
   state_.log.info("Opened lens " + path);
+  if (!focus.message.empty()) state_.log.info(focus.message);
   return {std::nullopt, ticket};
+}
+
+void Viewer::focusSessionLens() {
+  std::optional<SessionLens> session = std::exchange(sessionLensToFocus_, std::nullopt);
+  // Edited meanwhile: the user's edits stay.
+  if (!session || state_.lens.canUndo()) return;
+  const OpeningFocus focus =
+      focusForOpening(*session->system, state_.sceneFocus, state_.settings.keepLensFilmDistance);
+  if (focus.message.empty()) return;
+  state_.log.info(focus.message);
+  if (!focus.filmDistanceMm) return;
+  session->opening.prescription.surfaces.back().thicknessMm = *focus.filmDistanceMm;
+  state_.lens.issue(std::move(session->opening));
 }
 
 void Viewer::startLoadingScene(const std::string& path, SceneOrigin origin) {
@@ -191,6 +218,12 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   for (const std::string& warning : loaded.warnings) state_.log.warning(warning);
   preview_.setScene(loaded);
   state_.scenePath = path;
+  if (const auto focusMm = render::focusDistanceMmOf(*loaded.description)) {
+    state_.sceneFocus = {focusMm, ""};
+  } else {
+    state_.sceneFocus = {std::nullopt, "the scene sets a film distance, not a focus distance"};
+  }
+  focusSessionLens();
   const render::CameraFraming framing = render::framingOf(*loaded.description);
   state_.filmDiagonalMm = framing.filmDiagonalMm;
   state_.sceneSamplesRearDisk = framing.lensSampling == render::LensSampling::RearElementDisk;

@@ -69,10 +69,8 @@ void Viewer::focusOnClick() {
   }
   state_.lens.issue(SetFilmDistance{*focus.valueMm});
   state_.focusDistanceInputMm = *distance;
-  char message[128];
-  std::snprintf(message, sizeof message, "Focused at %.3f m (film distance %.3f mm)",
-                *distance / 1000.0, *focus.valueMm);
-  state_.log.info(message);
+  state_.log.info("Focused at " + distanceText(*distance) + " (film distance " +
+                  millimetresText(*focus.valueMm) + ")");
 }
 
 }  // namespace lenslab::app

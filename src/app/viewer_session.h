@@ -38,12 +38,18 @@ class Viewer final : public ScriptHost {
   // until the new one is ready, and a failure leaves it in place.
   void startLoadingScene(const std::string& path, SceneOrigin origin);
 
-  // Reads a lens file and issues the command that opens it (applied with the frame). With
-  // `startsSession`, it is the lens the session starts with: nothing to undo.
-  Issued openLensFile(const std::string& path, bool startsSession = false);
+  // Reads a lens file and issues the command that opens it (applied with the frame), focused at
+  // the scene's focus distance unless `keepFilmDistance` or the setting asks for the file's
+  // (document/opening_focus.h). With `startsSession`, it is the lens the session starts with:
+  // nothing to undo.
+  Issued openLensFile(const std::string& path, bool startsSession = false,
+                      bool keepFilmDistance = false);
 
   // ScriptHost
-  Issued loadLens(const std::string& path) override { return openLensFile(path); }
+  Issued loadLens(const std::string& path, bool keepFilmDistance) override {
+    return openLensFile(path, false, keepFilmDistance);
+  }
+  void setKeepFilmDistance(bool keep) override { state_.settings.keepLensFilmDistance = keep; }
   void startLoadingScene(const std::string& path) override {
     startLoadingScene(path, SceneOrigin::Script);
   }
@@ -159,6 +165,18 @@ class Viewer final : public ScriptHost {
  public:
   // With a lens given on the command line, opening a scene keeps it instead of the scene's.
   bool keepLensOnSceneLoad = false;
+
+ private:
+  // The lens given on the command line opens before its scene has loaded: it is focused at the
+  // scene's focus distance once the scene is there (unless it has been edited meanwhile).
+  struct SessionLens {
+    ReplaceLens opening;
+    std::shared_ptr<const optics::LensSystem> system;
+  };
+  std::optional<SessionLens> sessionLensToFocus_;
+  void focusSessionLens();
+
+ public:
   // The first preview pass to wait for before --screenshot saves (at most this long).
   static constexpr double kScreenshotPreviewWaitSeconds = 60.0;
   const ViewerStats& stats() const { return stats_; }

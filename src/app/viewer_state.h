@@ -13,6 +13,7 @@
 #include "app/analysis/illumination_analysis.h"
 #include "app/cross_section_export.h"
 #include "app/document/lens_editor.h"
+#include "app/document/opening_focus.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
 #include "app/lens_table_state.h"
@@ -90,11 +91,17 @@ struct ViewerState {
   // once per lens, as "In focus").
   std::shared_ptr<const optics::LensSystem> beamLens;
   std::string axialBeamText, unvignettedText, fNumberText;
+  // The "Focus at" field: the distance in focus (from the film) once the lens has one, else the
+  // last typed; its text while it is typed into, and what it showed last frame (dump-ui).
   double focusDistanceInputMm = 3000.0;
+  char focusDistanceText[32] = {};
+  bool focusFieldEditing = false;
+  std::string focusAtShown;
   // A value is being dragged this frame (film, stop, a splitter): the preview renders at reduced
   // resolution until it is released.
   bool dragging = false;
   LensTableState lensTable;
+  float lensPanelScrollMaxY = 0.0f;  // how far the lens panel scrolls (dump-ui: reachability)
   CrossSectionView crossSectionView;
   bool crossSectionNeedsFit = true;
   std::pair<float, float> crossSectionCanvasSize{0.0f, 0.0f};  // as last drawn
@@ -116,6 +123,9 @@ struct ViewerState {
   bool pinholeCamera = false;
   PreviewState preview;
   std::string scenePath;
+  // Where the open scene's camera is focused: a lens opened over it is focused there
+  // (document/opening_focus.h).
+  SceneFocus sceneFocus;
   std::string loadingScenePath;  // a scene being opened (off the UI thread); empty when none
   std::vector<FileRequest> fileRequests;
   // Requests made by menus and shortcuts, carried out by the main loop between frames.

@@ -71,8 +71,8 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
       const std::string where = std::isinf(*objectDistance)
                                     ? std::string("infinity")
                                     : distanceText(*objectDistance) + " from the film";
-      std::printf("film distance %.6f mm (rear vertex to film) focuses an object at %s\n",
-                  *film.valueMm, where.c_str());
+      std::printf("film distance %s (rear vertex to film) focuses an object at %s\n",
+                  millimetresText(*film.valueMm).c_str(), where.c_str());
     }
     return 0;
   }
@@ -91,10 +91,12 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
                      .dump(2)
               << "\n";
   } else if (std::isinf(*object.valueMm)) {
-    std::printf("film distance %.6f mm focuses at infinity\n", arguments.filmDistanceMm);
+    std::printf("film distance %s focuses at infinity\n",
+                millimetresText(arguments.filmDistanceMm).c_str());
   } else {
-    std::printf("film distance %.6f mm focuses an object at %s from the film\n",
-                arguments.filmDistanceMm, distanceText(*object.valueMm).c_str());
+    std::printf("film distance %s focuses an object at %s from the film\n",
+                millimetresText(arguments.filmDistanceMm).c_str(),
+                distanceText(*object.valueMm).c_str());
   }
   return 0;
 }

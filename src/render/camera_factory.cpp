@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "common/distance_text.h"
 #include "optics/focus.h"
 #include "optics/lens_loader.h"
 #include "render/matched_pinhole_camera.h"
@@ -33,7 +34,7 @@ std::shared_ptr<const optics::LensSystem> focusAt(std::shared_ptr<const optics::
   const optics::FocusResult focus = optics::filmDistanceForObjectDistance(*system, distanceMm);
   if (!focus.ok()) {
     diagnostics.error(cameraAt,
-                      "the lens cannot focus at " + std::to_string(distance) + ": " + focus.whyNot);
+                      "the lens cannot focus at " + distanceText(distanceMm) + ": " + focus.whyNot);
     return nullptr;
   }
   return system->withFilmDistance(*focus.valueMm);
@@ -51,10 +52,10 @@ std::shared_ptr<const optics::LensSystem> realisticLens(const SceneDescription& 
   const double stopDiameterMm = camera.apertureDiameterMm;
   if (stopDiameterMm > 0.0) {
     if (stopDiameterMm > system->stopDiameterMm()) {
-      diagnostics.warning(camera.location, "aperture diameter " + std::to_string(stopDiameterMm) +
-                                               " mm is larger than the lens's stop; the stop's " +
-                                               std::to_string(system->stopDiameterMm()) +
-                                               " mm is used");
+      diagnostics.warning(camera.location, "aperture diameter " + millimetresText(stopDiameterMm) +
+                                               " is larger than the lens's stop; the stop's " +
+                                               millimetresText(system->stopDiameterMm()) +
+                                               " is used");
     } else {
       system = system->withStopDiameter(stopDiameterMm);
     }
@@ -166,6 +167,18 @@ std::optional<SceneLens> lensOfScene(const SceneDescription& scene, Diagnostics&
   const auto lens = realisticLens(scene, {}, diagnostics);
   if (!lens) return std::nullopt;
   return SceneLens{lens->prescription(), scene.camera.lensPath.lexically_normal()};
+}
+
+std::optional<double> focusDistanceMmOf(const SceneDescription& scene) {
+  const CameraDescription& camera = scene.camera;
+  if (camera.type == "realistic" && camera.courseParameters) return std::nullopt;
+  const double distance =
+      camera.type == "realistic"
+          ? camera.focusDistance
+          : camera.focalDistance.value_or(std::numeric_limits<double>::infinity());
+  // Outside the course's framing the film is at the camera-space origin, whatever the lens
+  // (CameraFraming::lensFrame), so the distance from the film is the camera-space z in mm.
+  return distance / framingOf(scene).sceneUnitsPerMm;
 }
 
 }  // namespace lenslab::render

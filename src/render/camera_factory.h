@@ -73,4 +73,10 @@ struct SceneLens {
 // built.
 std::optional<SceneLens> lensOfScene(const SceneDescription& scene, Diagnostics& diagnostics);
 
+// Where the scene's camera is focused, as an object distance from the film in lens millimetres,
+// for another lens put in its place: pbrt-v3's realistic "focusdistance", or a perspective
+// camera's "focaldistance" (infinity without one, as makeCamera focuses a lens there). nullopt
+// for the course's realistic camera, which sets a film distance rather than a focus distance.
+std::optional<double> focusDistanceMmOf(const SceneDescription& scene);
+
 }  // namespace lenslab::render

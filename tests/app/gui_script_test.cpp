@@ -429,12 +429,19 @@ TEST_F(ScriptedViewer, ADroppedBrokenFileKeepsTheCurrentLensAndSaysWhy) {
 
 // The first frame on screen is laid out like every later one: ImGui sizes tables and scrollbars
 // from the frame before, so unprepared, the first frame showed the first-order data a letter per
-// line. The lens is given on the command line, so the scene's camera does not replace it.
+// line. The lens is given on the command line, so the scene's camera does not replace it, and
+// kept at its file's film distance (the settings), so focusing it once the scene has loaded does
+// not change the panel either.
 TEST_F(ScriptedViewer, TheFirstFrameIsLaidOutLikeTheNext) {
+  std::filesystem::create_directories(scratch / "config" / "lenslab");
+  std::ofstream(scratch / "config" / "lenslab" / "settings.json")
+      << "{\"keep_lens_film_distance\": true}\n";
   const auto result = runScript(
       "screenshot first.png\nwait-spp 1\nwait-frames 3\nscreenshot later.png\n"
       "dump-ui later.json\nquit\n",
-      "", "--lens '" + std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat'");
+      "export LENSLAB_SETTINGS_IN_SCRIPTS=1 XDG_CONFIG_HOME='" + (scratch / "config").string() +
+          "'; ",
+      "--lens '" + std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat'");
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const auto first = image("first.png"), later = image("later.png");
   ASSERT_TRUE(first.valid() && later.valid());

@@ -48,5 +48,21 @@ TEST(Layout, SplittersAndMinimumsGrowWithTheUiScale) {
   EXPECT_GE(squeezed.lensTable.height, 2 * kMinPanelExtent - 2 * kSplitterThickness - 1);
 }
 
+TEST(Layout, TheLensTablesMinimumWidensItsColumnAndTheOthersKeepTheirShares) {
+  // 720 px of 1600: 0.45 of the width. The cross-section (0.34) and the preview (0.36) share
+  // the remaining 0.55 as they shared 0.70: the preview 0.36 * 0.55 / 0.70.
+  const LayoutFractions wide = clampFractions(LayoutFractions{}, 1600, 900, 2.0f, 720.0f);
+  EXPECT_FLOAT_EQ(wide.lensTableWidth, 0.45f);
+  EXPECT_NEAR(wide.previewWidth, 0.36f * 0.55f / 0.70f, 1e-6);
+  // Already wide enough: unchanged.
+  const LayoutFractions kept = clampFractions(LayoutFractions{}, 1600, 900, 1.0f, 300.0f);
+  EXPECT_FLOAT_EQ(kept.lensTableWidth, 0.30f);
+  EXPECT_FLOAT_EQ(kept.previewWidth, 0.36f);
+  // More than the window allows: the other two keep their minimum (80 px at scale 1 each).
+  const LayoutFractions capped = clampFractions(LayoutFractions{}, 800, 600, 1.0f, 5000.0f);
+  EXPECT_FLOAT_EQ(capped.lensTableWidth, 1.0f - 2 * 80.0f / 800.0f);
+  EXPECT_FLOAT_EQ(capped.previewWidth, 80.0f / 800.0f);
+}
+
 }  // namespace
 }  // namespace lenslab::app

@@ -9,8 +9,8 @@ namespace {
 
 class FakeHost : public ScriptHost {
  public:
-  Issued loadLens(const std::string& path) override {
-    calls.push_back("load-lens " + path);
+  Issued loadLens(const std::string& path, bool keepFilmDistance) override {
+    calls.push_back("load-lens " + path + (keepFilmDistance ? " keep-film-distance" : ""));
     if (path == "broken.dat") return {std::string("broken.dat:3:7: not a number")};
     return {std::nullopt,
             lens.issue(ReplaceLens{lens.prescription(), path}, {}, CommandSource::Script)};
@@ -83,7 +83,42 @@ class FakeHost : public ScriptHost {
   std::string sceneError;
   double exposure = 0;
   bool pinhole = false;
+  void setKeepFilmDistance(bool keep) override { keepFilmDistance = keep; }
+  std::optional<bool> keepFilmDistance;
 };
+
+TEST(ScriptRun, KeepFilmDistanceAsALoadLensOptionAndAsASetting) {
+  const ParsedScript script = parseScript(
+      "load-lens a.dat keep-film-distance\n"
+      "load-lens b.dat\n"
+      "set keep-film-distance on\n",
+      "t");
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  while (host.frame(runner)) {
+  }
+  EXPECT_TRUE(host.errors.empty());
+  EXPECT_EQ(host.calls,
+            (std::vector<std::string>{"load-lens a.dat keep-film-distance", "load-lens b.dat"}));
+  EXPECT_EQ(host.keepFilmDistance, true);
+}
+
+TEST(ScriptParse, KeepFilmDistanceTakesOnlyItsOwnWords) {
+  const ParsedScript script = parseScript(
+      "load-lens a.dat sharp\n"
+      "set keep-film-distance maybe\n",
+      "t.script");
+  ASSERT_EQ(script.diagnostics.all().size(), 2u);
+  EXPECT_EQ(
+      script.diagnostics.all()[0].format().rfind("t.script:1:17: error: unknown option 'sharp'", 0),
+      0u)
+      << script.diagnostics.all()[0].format();
+  EXPECT_EQ(script.diagnostics.all()[1].format().rfind(
+                "t.script:2:5: error: expected: set keep-film-distance on|off", 0),
+            0u)
+      << script.diagnostics.all()[1].format();
+}
 
 TEST(ScriptParse, ReportsFileLineColumnForEachBadLine) {
   const ParsedScript script = parseScript(

@@ -18,6 +18,7 @@ TEST(Settings, RoundTripsThroughTheFile) {
   settings.windowHeight = 777;
   settings.layout.previewWidth = 0.4f;
   settings.recentFiles = {"/a/lens.dat", "/b/scene.pbrt"};
+  settings.keepLensFilmDistance = true;  // the default is false
   ASSERT_EQ(saveSettings(file, settings), "");
   std::string warning;
   const Settings loaded = loadSettings(file, &warning);
@@ -26,6 +27,7 @@ TEST(Settings, RoundTripsThroughTheFile) {
   EXPECT_EQ(loaded.windowHeight, 777);
   EXPECT_FLOAT_EQ(loaded.layout.previewWidth, 0.4f);
   EXPECT_EQ(loaded.recentFiles, settings.recentFiles);
+  EXPECT_TRUE(loaded.keepLensFilmDistance);
 }
 
 TEST(Settings, CorruptFileGivesDefaultsAndAWarning) {

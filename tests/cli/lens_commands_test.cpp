@@ -127,6 +127,20 @@ TEST_F(LensCommands, FocusTextGivesDistancesWithTheirUnits) {
       << back.out;
 }
 
+// Film distances print the digits they have (six significant at most), not "36.770000 mm".
+TEST_F(LensCommands, FocusTextGivesFilmDistancesWithTheirOwnDigits) {
+  const std::string lens = lensPath("dgauss-50mm.dat");
+  const auto given = testing::runProcess(lenslab("focus --film-distance 36.77 " + lens), scratch);
+  ASSERT_EQ(given.exitCode, 0) << given.err;
+  EXPECT_EQ(given.out.rfind("film distance 36.77 mm focuses", 0), 0u) << given.out;
+  const auto found = testing::runProcess(lenslab("focus --object-distance inf " + lens), scratch);
+  ASSERT_EQ(found.exitCode, 0) << found.err;
+  // "film distance 36.8439 mm (rear vertex to film) ...": a number of at most six digits.
+  const std::string number = found.out.substr(14, found.out.find(" mm") - 14);
+  EXPECT_LE(number.size(), 7u) << found.out;
+  EXPECT_EQ(number.find("0000"), std::string::npos) << found.out;
+}
+
 TEST_F(LensCommands, FocusWithNoSolutionSaysSoAndFails) {
   const auto result = testing::runProcess(
       lenslab("focus --object-distance 100 " + lensPath("dgauss-50mm.dat")), scratch);

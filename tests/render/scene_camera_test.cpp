@@ -154,7 +154,28 @@ TEST(LensOfScene, ALensThatCannotFocusThereIsReported) {
   ASSERT_TRUE(loaded.description);
   Diagnostics diagnostics;
   EXPECT_FALSE(lensOfScene(*loaded.description, diagnostics));
-  EXPECT_NE(diagnostics.formatAll().find("the lens cannot focus at"), std::string::npos)
+  // The distance with its unit, from the film: not "cannot focus at 0.010000".
+  EXPECT_NE(diagnostics.formatAll().find("the lens cannot focus at 10.0 mm: "), std::string::npos)
+      << diagnostics.formatAll();
+}
+
+TEST(LensOfScene, AnApertureWiderThanTheStopIsReportedInMillimetresAsWritten) {
+  const auto directory = lenslab::testing::makeTestDirectory("lens-of-scene-wide-aperture");
+  writeFile(directory / "dgauss.dat", kDoubleGauss50);
+  const auto path =
+      writeFile(directory / "wide.pbrt", sceneText("\"string lensfile\" \"dgauss.dat\" "
+                                                   "\"float aperturediameter\" [40] "
+                                                   "\"float focusdistance\" [3]",
+                                                   2.0));
+  const LoadedScene loaded = load(path);
+  ASSERT_TRUE(loaded.description);
+  Diagnostics diagnostics;
+  EXPECT_TRUE(lensOfScene(*loaded.description, diagnostics));
+  // kDoubleGauss50's stop row: 17.1 mm.
+  EXPECT_NE(
+      diagnostics.formatAll().find(
+          "aperture diameter 40 mm is larger than the lens's stop; the stop's 17.1 mm is used"),
+      std::string::npos)
       << diagnostics.formatAll();
 }
 

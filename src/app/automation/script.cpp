@@ -19,7 +19,7 @@ struct VerbShape {
 // Argument counts per verb; "set" is checked further by its own rules below.
 const std::map<std::string, VerbShape>& verbs() {
   static const std::map<std::string, VerbShape> table = {
-      {"load-lens", {1, 1}},
+      {"load-lens", {1, 2}},
       {"load-scene", {1, 1}},
       {"save-lens", {1, 1}},
       {"set", {2, 4}},
@@ -161,6 +161,12 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  if (a[0] == "keep-film-distance") {
+    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
+      return problemAt(command, 0, "expected: set keep-film-distance on|off");
+    }
+    return std::nullopt;
+  }
   if (a[0] == "layout") {
     if (a.size() != 4) return problemAt(command, 0, "expected: set layout LENS PREVIEW LOG");
     for (std::size_t i = 1; i < 4; ++i) {
@@ -174,8 +180,8 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
   return problemAt(
       command, 0,
       "unknown setting '" + a[0] +
-          "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays or "
-          "layout)");
+          "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays, "
+          "layout or keep-film-distance)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
@@ -196,6 +202,10 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     return problemAt(command, kLineStart, message.str());
   }
   if (command.verb == "set") return checkSet(command);
+  if (command.verb == "load-lens" && count == 2 && command.arguments[1] != "keep-film-distance") {
+    return problemAt(command, 1,
+                     "unknown option '" + command.arguments[1] + "' (expected keep-film-distance)");
+  }
   if (command.verb == "zoom-cross-section") {
     const auto factor = parseNumber(command.arguments[0]);
     if (!factor || !(*factor > 0)) {
@@ -353,7 +363,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (!isCapture && !isWait) changedThisStep_ = true;
   if (verb == "load-lens") {
     if (!awaitedCommand_) {
-      const ScriptHost::Issued issued = host.loadLens(a[0]);
+      const ScriptHost::Issued issued = host.loadLens(a[0], a.size() == 2);
       if (issued.error) return check(issued.error);
       awaitedCommand_ = issued.ticket;
     }
@@ -391,6 +401,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     }
     if (a[0] == "blocked-rays") {
       host.showBlockedRays(a[1] == "show");
+      return true;
+    }
+    if (a[0] == "keep-film-distance") {
+      host.setKeepFilmDistance(a[1] == "on");
       return true;
     }
     if (a[0] == "layout") {

@@ -24,10 +24,13 @@
 //                                extension; default 1920x1080, 144 DPI, light; labels, scale
 //                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
+//   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
+//   set keep-film-distance on|off       (File > Keep lens file's film distance; persisted)
 //
 // "set layout" takes the lens table's and the preview's shares of the width and the log's share
 // of the height, as fractions. "load-scene" waits until the scene has loaded (it loads off the
-// UI thread) and fails with its errors.
+// UI thread) and fails with its errors. "load-lens" focuses the lens at the scene's focus
+// distance, as opening it from the File menu does, unless keep-film-distance is given or set.
 //
 // A wait that lasts longer than two minutes fails the script.
 
@@ -85,8 +88,9 @@ class ScriptHost {
     std::optional<std::string> error;  // the command could not even be issued (unreadable file)
     CommandTicket ticket = 0;
   };
-  // Reads the lens file and issues the command that opens it.
-  virtual Issued loadLens(const std::string& path) = 0;
+  // Reads the lens file and issues the command that opens it: focused at the scene's focus
+  // distance, or at the file's film distance with `keepFilmDistance` (or the setting).
+  virtual Issued loadLens(const std::string& path, bool keepFilmDistance) = 0;
   // Issues an edit, undo or redo.
   virtual CommandTicket issue(const EditCommand& command) = 0;
   // nullopt until the command has been applied; then "" or why the document refused it.
@@ -148,6 +152,8 @@ class ScriptHost {
     return {true, "there is no plot " + panelId + " here"};
   }
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
+  // The persisted "keep the lens file's film distance" choice (opening_focus.h).
+  virtual void setKeepFilmDistance(bool /*keep*/) {}
 };
 
 // Runs a parsed script a step per frame: it executes commands until one has to wait (for

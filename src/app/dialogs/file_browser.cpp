@@ -31,7 +31,12 @@ void FileBrowser::show(std::string purpose, Mode mode, std::vector<std::string> 
                    ? std::filesystem::absolute(startDirectory, error)
                    : std::filesystem::current_path(error);
   copyToBuffer(nameBuffer_, sizeof nameBuffer_, suggestedName);
+  option_.reset();
   readDirectory();
+}
+
+void FileBrowser::addOption(std::string label, bool* value, std::string tooltip) {
+  option_ = Option{std::move(label), std::move(tooltip), value};
 }
 
 bool FileBrowser::matchesFilter(const std::filesystem::path& path) const {
@@ -90,7 +95,7 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
       directory_ = directoryBuffer_;
       readDirectory();
     }
-    const float footer = ImGui::GetFrameHeightWithSpacing() * 2;
+    const float footer = ImGui::GetFrameHeightWithSpacing() * (option_ ? 3.0f : 2.0f);
     ImGui::BeginChild("entries", ImVec2(0, -footer), true);
     if (!listingError_.empty()) {
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", listingError_.c_str());
@@ -120,6 +125,12 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
     const bool confirm = ImGui::Button(mode_ == Mode::Open ? "Open" : "Save", ImVec2(px(70), 0));
     ImGui::SameLine();
     if (ImGui::Button("Cancel", ImVec2(px(70), 0))) visible_ = false;
+    if (option_ && option_->value != nullptr) {
+      ImGui::Checkbox(option_->label.c_str(), option_->value);
+      if (ImGui::IsItemHovered() && !option_->tooltip.empty()) {
+        ImGui::SetTooltip("%s", option_->tooltip.c_str());
+      }
+    }
     if ((submitted || confirm || std::exchange(submitRequested_, false)) &&
         nameBuffer_[0] != '\0') {
       const std::filesystem::path typed = nameBuffer_;

@@ -24,6 +24,10 @@ class FileBrowser {
   // As if the user typed `name` and pressed Save/Open: the next draw() returns it.
   void submit(const std::string& name);
   const std::string& purpose() const { return purpose_; }
+  // A checkbox under the file name for a choice that goes with the file (Open lens: keep the
+  // file's film distance), bound to `value`, which must outlive the browser; until the next
+  // show().
+  void addOption(std::string label, bool* value, std::string tooltip);
 
   // Draws the window when visible; returns the chosen path once, when the user confirms.
   std::optional<std::filesystem::path> draw();
@@ -47,6 +51,11 @@ class FileBrowser {
   char directoryBuffer_[1024] = {};
   bool submitRequested_ = false;
   Rect rect_;
+  struct Option {
+    std::string label, tooltip;
+    bool* value = nullptr;
+  };
+  std::optional<Option> option_;
 };
 
 }  // namespace lenslab::app

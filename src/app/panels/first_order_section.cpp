@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "app/panels/panels.h"
@@ -39,6 +40,17 @@ std::string format(const char* pattern, double value) {
   return text;
 }
 
+// The Stop mm control's row: the stop, or while a second row has radius 0 (a typo, or a stop
+// being moved) the row that was the stop of the last valid lens, so that the control stays.
+std::optional<std::size_t> stopRowForControls(const ViewerState& state) {
+  const optics::Prescription& lens = state.lens.prescription();
+  if (const auto stop = lens.stopIndex()) return stop;
+  if (!state.lensSystem) return std::nullopt;
+  const std::size_t intended = state.lensSystem->stopIndex();
+  if (intended < lens.surfaces.size() && lens.surfaces[intended].isStop()) return intended;
+  return std::nullopt;
+}
+
 void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   // Film distance and stop diameter as drags: each drag is one undo step.
   const auto& surfaces = state.lens.prescription().surfaces;
@@ -54,31 +66,65 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     ImGui::SetTooltip("Film distance: last surface to film (drag or type)");
   if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
   state.dragging |= ImGui::IsItemActive();
-  if (const auto stop = state.lens.prescription().stopIndex()) {
+  if (const auto stop = stopRowForControls(state)) {
     float diameter = static_cast<float>(surfaces[*stop].apertureDiameterMm);
     row.next(px(110) + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Stop mm").x);
     ImGui::SetNextItemWidth(px(110));
     if (ImGui::DragFloat("Stop mm", &diameter, 0.02f, 0.05f, 500.0f, "%.2f")) {
-      state.lens.issue(SetStopDiameter{diameter}, "stop-diameter-drag");
+      // With one stop, the stop's diameter; while another row also has radius 0, the
+      // aperture of the row that is the stop (SetStopDiameter would pick the first).
+      if (state.lens.prescription().stopIndex()) {
+        state.lens.issue(SetStopDiameter{diameter}, "stop-diameter-drag");
+      } else {
+        state.lens.issue(SetSurfaceField{*stop, SurfaceField::ApertureDiameterMm, diameter},
+                         "stop-diameter-drag");
+      }
     }
+    const ImVec2 stopMin = ImGui::GetItemRectMin(), stopMax = ImGui::GetItemRectMax();
+    state.uiRects["first-order/stop-diameter"] = {stopMin.x, stopMin.y, stopMax.x - stopMin.x,
+                                                  stopMax.y - stopMin.y};
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop diameter (drag or type)");
     if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
     state.dragging |= ImGui::IsItemActive();
   }
   WrapRow focusRow;
-  const char* kFocusLabel = "Focus at (mm from film)";
+  const char* kFocusLabel = "Focus at";
   focusRow.next(ImGui::CalcTextSize(kFocusLabel).x + ImGui::GetStyle().FramePadding.x * 2);
-  const bool focus = ImGui::Button(kFocusLabel);
+  bool focus = ImGui::Button(kFocusLabel);
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   state.uiRects["first-order/focus"] = {min.x, min.y, max.x - min.x, max.y - min.y};
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Moves the film so that an object this far from the film is sharp\n"
-        "(real-ray best focus). Click the render preview to focus on a point.");
+        "(real-ray best focus): 3.6 m, 250 mm, 3000 (mm) or infinity.\n"
+        "Shows the distance in focus. Click the render preview to focus on a point.");
   }
+  // The distance with its unit, as "In focus" writes it; typed text is read on Enter or when
+  // the field is left.
   focusRow.next(px(110));
   ImGui::SetNextItemWidth(px(110));
-  ImGui::InputDouble("##focus-distance", &state.focusDistanceInputMm, 0, 0, "%.0f");
+  const std::string shown = distanceText(state.focusDistanceInputMm);
+  if (!state.focusFieldEditing) {
+    std::snprintf(state.focusDistanceText, sizeof state.focusDistanceText, "%s", shown.c_str());
+  }
+  state.focusAtShown = state.focusDistanceText;
+  focus |= ImGui::InputText("##focus-distance", state.focusDistanceText,
+                            sizeof state.focusDistanceText, ImGuiInputTextFlags_EnterReturnsTrue);
+  state.focusFieldEditing = ImGui::IsItemActive();
+  const ImVec2 fieldMin = ImGui::GetItemRectMin(), fieldMax = ImGui::GetItemRectMax();
+  state.uiRects["first-order/focus-distance"] = {fieldMin.x, fieldMin.y, fieldMax.x - fieldMin.x,
+                                                 fieldMax.y - fieldMin.y};
+  if (ImGui::IsItemDeactivated() || focus) {
+    if (const auto typed = parseDistanceMm(state.focusDistanceText)) {
+      state.focusDistanceInputMm = *typed;
+    } else {
+      state.log.error("Focus at: '" + std::string(state.focusDistanceText) +
+                      "' is not a distance (e.g. 3.6 m, 250 mm or infinity)");
+      focus = false;
+    }
+    std::snprintf(state.focusDistanceText, sizeof state.focusDistanceText, "%s",
+                  distanceText(state.focusDistanceInputMm).c_str());
+  }
   if (focus) {
     const optics::FocusResult result =
         optics::filmDistanceForObjectDistance(lens, state.focusDistanceInputMm);
@@ -100,6 +146,8 @@ const std::string& inFocusText(ViewerState& state) {
         optics::objectDistanceForFilmDistance(lens, lens.filmDistanceMm());
     state.inFocusText = inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
                                      : "nothing (" + inFocus.whyNot + ")";
+    // "Focus at" shows the distance actually in focus.
+    if (inFocus.ok()) state.focusDistanceInputMm = *inFocus.valueMm;
   }
   return state.inFocusText;
 }
@@ -156,6 +204,7 @@ void drawFirstOrderSection(ViewerState& state) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "Showing the last valid lens.");
   }
   // The controls first: they are what is used while editing; the figures can scroll.
+  inFocusText(state);  // once per lens; also what "Focus at" shows
   drawControls(state, lens);
   if (!ImGui::CollapsingHeader("First-order data", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const optics::FirstOrderData& data = lens.firstOrder();

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "app/drawing/value_text.h"
@@ -154,7 +155,40 @@ void drawToolbar(ViewerState& state) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reverse the lens front to back");
 }
 
+// Each value column is at least as wide as the shortest text its cells fall back to (three
+// significant digits, and a sign for the radius: fittingText), so that 3.76 never reads "3.";
+// the columns share out any width beyond in proportion to those (the radius, the widest, gets
+// the most digits).
+constexpr const char* kNames[] = {"Radius", "Thick.", "n_d", "V_d", "Aper."};
+// (Air gaps under a millimetre are common: "0.818" is as short as a thickness gets.)
+constexpr const char* kNarrowestValues[] = {"-14.5", "0.818", "1.67", "64.2", "25.2"};
+constexpr float kFixedColumnWidth = 34.0f;  // the row number and the stop check box, at scale 1
+
+float narrowestColumnWidth(int column) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize(kNarrowestValues[column]).x +
+         2.0f * (style.FramePadding.x + style.CellPadding.x);
+}
+
+// The narrowest the table can be with every column readable.
+float tableMinWidth() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float valuesWidth = 0.0f;
+  for (int column = 0; column < 5; ++column) valuesWidth += narrowestColumnWidth(column);
+  // The two fixed columns with their cell padding, and the eight borders (a pixel each, and a
+  // pixel of rounding per column).
+  return valuesWidth + 2.0f * (px(kFixedColumnWidth) + 2.0f * style.CellPadding.x) + 16.0f;
+}
+
 }  // namespace
+
+float lensTablePanelMinWidth() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // The table, the window's padding and the panel's vertical scroll bar (the panel scrolls as a
+  // whole when the rows and the first-order data do not fit).
+  return tableMinWidth() + 2.0f * style.WindowPadding.x + style.ScrollbarSize +
+         2.0f * style.WindowBorderSize;
+}
 
 void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   if (!beginPanel("Lens", place)) {
@@ -175,40 +209,32 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   }
   drawToolbar(state);
 
-  constexpr ImGuiTableFlags kTableFlags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg |
-                                          ImGuiTableFlags_SizingStretchProp |
-                                          ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY;
-  // The table takes the rows it needs (up to 55% of the panel); first-order data goes below.
-  const float rowHeight = ImGui::GetFrameHeightWithSpacing() + 1.0f;
-  const float wanted = rowHeight * static_cast<float>(surfaces.size() + 1) + px(6.0f);
-  const float tableHeight =
-      std::clamp(wanted, px(80.0f), std::max(px(80.0f), ImGui::GetContentRegionAvail().y * 0.55f));
-  // The value columns share out the panel's width in these proportions (the radius needs the most
-  // digits), each at least as wide as the shortest text the cells fall back to (three significant
-  // digits, and a sign for the radius: fittingText). In a narrower panel (a small window, or a
-  // large UI scale) the table scrolls sideways, the row numbers staying in view, rather than
-  // cutting digits off: 3.76 must not read "3.".
-  static constexpr const char* kNames[] = {"Radius", "Thick.", "n_d", "V_d", "Aper."};
-  static constexpr float kShares[] = {1.2f, 1.05f, 0.9f, 0.9f, 1.0f};
-  static constexpr const char* kNarrowestValues[] = {"-14.5", "36.8", "1.67", "64.2", "25.2"};
+  // One scroll region, the panel's own: the table takes the height of all its rows, and the
+  // first-order data follows it. (A table and a data pane that each scrolled showed five rows of
+  // a 13-surface lens and hid the data.) It scrolls sideways only in a panel narrower than its
+  // columns (the layout keeps the panel wider where the window allows: lensTablePanelMinWidth).
+  const float minWidth = tableMinWidth();
+  const bool sideways = minWidth > ImGui::GetContentRegionAvail().x;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float cellPadding = 2.0f * (style.FramePadding.x + style.CellPadding.x);
-  float sharesSum = 0.0f, valuesWidth = 0.0f;
-  for (float share : kShares) sharesSum += share;
-  for (int column = 0; column < 5; ++column) {
-    const float narrowest = ImGui::CalcTextSize(kNarrowestValues[column]).x + cellPadding;
-    valuesWidth = std::max(valuesWidth, narrowest * sharesSum / kShares[column]);
+  ImGuiTableFlags tableFlags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+  ImVec2 outerSize(0, 0);
+  if (sideways) {
+    tableFlags |= ImGuiTableFlags_ScrollX;
+    // A scrolling table is a child window of a given height: every row, and the scroll bar.
+    const float rowHeight = ImGui::GetFrameHeight() + 2.0f * style.CellPadding.y + 1.0f;
+    outerSize.y = rowHeight * static_cast<float>(surfaces.size() + 1) + style.ScrollbarSize +
+                  2.0f * style.CellPadding.y;
   }
-  const float fixedColumnWidth = px(34.0f);
-  const float tableWidth =
-      valuesWidth + 2.0f * (fixedColumnWidth + 2.0f * style.CellPadding.x) + style.ScrollbarSize;
-  const float innerWidth = std::max(tableWidth, ImGui::GetContentRegionAvail().x);
-  if (ImGui::BeginTable("surfaces", 7, kTableFlags, ImVec2(0, tableHeight), innerWidth)) {
+  const float fixedColumnWidth = px(kFixedColumnWidth);
+  const float innerWidth = sideways ? minWidth : 0.0f;
+  if (ImGui::BeginTable("surfaces", 7, tableFlags, outerSize, innerWidth)) {
     state.lensTable.cellsCutOff = 0;
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
     for (int column = 0; column < 5; ++column) {
-      ImGui::TableSetupColumn(kNames[column], ImGuiTableColumnFlags_WidthStretch, kShares[column]);
+      ImGui::TableSetupColumn(kNames[column], ImGuiTableColumnFlags_WidthStretch,
+                              narrowestColumnWidth(column));
     }
     ImGui::TableSetupColumn("Stop", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
     ImGui::TableHeadersRow();
@@ -245,11 +271,13 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
       const ImVec2 cellMin = ImGui::GetWindowDrawList()->GetClipRectMin();
       const ImVec2 cellMax = ImGui::GetWindowDrawList()->GetClipRectMax();
       if (ImGui::Checkbox("##stop", &isStop) && isStop) state.lens.issue(MakeStop{row});
-      if (row == 0) {
+      {
+        // Every row's check box and cell, for the layout tests.
+        const std::string name = "lens-table/" + std::to_string(row + 1) + "/stop";
         const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-        state.uiRects["lens-table/1/stop"] = {min.x, min.y, max.x - min.x, max.y - min.y};
-        state.uiRects["lens-table/1/stop-cell"] = {cellMin.x, cellMin.y, cellMax.x - cellMin.x,
-                                                   cellMax.y - cellMin.y};
+        state.uiRects[name] = {min.x, min.y, max.x - min.x, max.y - min.y};
+        state.uiRects[name + "-cell"] = {cellMin.x, cellMin.y, cellMax.x - cellMin.x,
+                                         cellMax.y - cellMin.y};
       }
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip(surface.isStop()
@@ -270,9 +298,17 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   }
   ImGui::PopTextWrapPos();
   ImGui::Separator();
-  ImGui::BeginChild("first-order-data");
   drawFirstOrderSection(state);
-  ImGui::EndChild();
+  {
+    // The panel's visible rectangle (what its scrolling shows), for the layout tests.
+    // Below the title bar (if any), left of the vertical scroll bar (if shown).
+    const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    const float top = place.titleBar ? ImGui::GetFrameHeight() : 0.0f;
+    const float scrollBar = ImGui::GetScrollMaxY() > 0.0f ? ImGui::GetStyle().ScrollbarSize : 0.0f;
+    state.uiRects["lens-table/visible"] = {position.x, position.y + top, size.x - scrollBar,
+                                           size.y - top};
+    state.lensPanelScrollMaxY = ImGui::GetScrollMaxY();
+  }
   ImGui::End();
 }
 

@@ -13,6 +13,8 @@ namespace {
 void fileMenu(ViewerState& state) {
   using Kind = FileRequest::Kind;
   if (ImGui::MenuItem("Open lens...", "Ctrl+O")) state.fileRequests.push_back({Kind::OpenLens, {}});
+  ImGui::MenuItem(kKeepFilmDistanceLabel, nullptr, &state.settings.keepLensFilmDistance);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kKeepFilmDistanceTooltip);
   if (ImGui::MenuItem("Open scene...")) state.fileRequests.push_back({Kind::OpenScene, {}});
   // The bundled scenes: the default, and the vignetting demos (a flat field, and one with a
   // chart) that show a lens's fall-off and nothing else.

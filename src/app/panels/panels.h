@@ -29,6 +29,10 @@ void drawLogPanel(ViewerState& state, const PanelPlace& place);
 void drawLensFilePanel(ViewerState& state, const PanelPlace& place);
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place);
 
+// How wide the lens table's panel must be for every column of its table to show (the layout
+// keeps it at least that wide where the window allows).
+float lensTablePanelMinWidth();
+
 // The lens's first-order data, focus and aperture controls (inside the lens panel).
 void drawFirstOrderSection(ViewerState& state);
 
