@@ -9,8 +9,8 @@ namespace {
 
 class FakeHost : public ScriptHost {
  public:
-  Issued loadLens(const std::string& path, bool keepFilmDistance) override {
-    calls.push_back("load-lens " + path + (keepFilmDistance ? " keep-film-distance" : ""));
+  Issued loadLens(const std::string& path, bool keepFileFilmDistance) override {
+    calls.push_back("load-lens " + path + (keepFileFilmDistance ? " keep-film-distance" : ""));
     if (path == "broken.dat") return {std::string("broken.dat:3:7: not a number")};
     return {std::nullopt,
             lens.issue(ReplaceLens{lens.prescription(), path}, {}, CommandSource::Script)};

@@ -273,11 +273,11 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
       if (ImGui::Checkbox("##stop", &isStop) && isStop) state.lens.issue(MakeStop{row});
       {
         // Every row's check box and cell, for the layout tests.
-        const std::string name = "lens-table/" + std::to_string(row + 1) + "/stop";
+        const std::string widget = "lens-table/" + std::to_string(row + 1) + "/stop";
         const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-        state.uiRects[name] = {min.x, min.y, max.x - min.x, max.y - min.y};
-        state.uiRects[name + "-cell"] = {cellMin.x, cellMin.y, cellMax.x - cellMin.x,
-                                         cellMax.y - cellMin.y};
+        state.uiRects[widget] = {min.x, min.y, max.x - min.x, max.y - min.y};
+        state.uiRects[widget + "-cell"] = {cellMin.x, cellMin.y, cellMax.x - cellMin.x,
+                                           cellMax.y - cellMin.y};
       }
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip(surface.isStop()
