@@ -169,8 +169,9 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
 
 void Viewer::focusSessionLens() {
   std::optional<SessionLens> session = std::exchange(sessionLensToFocus_, std::nullopt);
-  // Edited meanwhile: the user's edits stay.
-  if (!session || state_.lens.canUndo()) return;
+  // Edited meanwhile: the user's edits stay. Kept at the file's film distance: the opening
+  // already said so.
+  if (!session || state_.lens.canUndo() || state_.settings.keepLensFilmDistance) return;
   const OpeningFocus focus =
       focusForOpening(*session->system, state_.sceneFocus, state_.settings.keepLensFilmDistance);
   if (focus.message.empty()) return;

@@ -1,4 +1,5 @@
-// Exporting the analysis panels' plots (the Viewer's part; the plots themselves are in plot/).
+// The analysis panels' part of the Viewer: exporting their plots (the plots themselves are in
+// plot/) and telling scripts when the figures computed off the UI thread have caught up.
 
 #include <filesystem>
 
@@ -38,6 +39,25 @@ ScriptHost::PlotExport Viewer::exportPlot(const std::string& panelId, const std:
   if (!error.empty()) return {true, error};
   state_.log.info("Saved the " + spec.title + " plot to " + path);
   return {true, std::nullopt};
+}
+
+bool Viewer::analysesSettled() const {
+  const auto& lens = state_.lensSystem;
+  if (!lens) return true;
+  // The first-order figures, copied into the state by the lens panel (beam figures wait for a
+  // drag to end).
+  const auto& shown = state_.lensFigures.shown;
+  if (!shown || shown->lens != lens || (!shown->hasBeamFigures && !state_.dragging)) return false;
+  // ImGui sizes a window's scrolling from the previous frame's content: new texts settle the
+  // frame after the one that first drew them.
+  if (state_.frameNumber < state_.lensFigures.shownInFrame + 2) return false;
+  // The illumination curve, when its panel asked for this lens.
+  const IlluminationView& illumination = state_.illumination;
+  if (illumination.requestedLens == lens) {
+    const auto result = illumination.job->latest();
+    if (!result || result->lens != lens) return false;
+  }
+  return true;
 }
 
 }  // namespace lenslab::app

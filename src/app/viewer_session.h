@@ -2,7 +2,8 @@
 // The viewer session: owns the state's window-side parts (preview renderer, statistics), runs
 // the frame loop, and is what scripts drive. Its methods live in four files: viewer.cpp (the
 // loop, drawing, shortcuts), viewer_files.cpp (opening and saving), viewer_preview.cpp (the
-// render preview and click-to-focus) and viewer_plots.cpp (exporting the analysis panels' plots).
+// render preview and click-to-focus) and viewer_plots.cpp (the analysis panels: plot export and
+// whether their figures have caught up).
 
 #include <future>
 #include <map>
@@ -69,6 +70,7 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveRender(const std::string& path) override;
   std::optional<std::string> saveCrossSection(const std::string& path) override;
   PlotExport exportPlot(const std::string& panelId, const std::string& path) override;
+  bool analysesSettled() const override;
   ExportStarted startCrossSectionExport(const std::string& path,
                                         const CrossSectionExportRequest& request) override;
   std::optional<std::string> exportOutcome(std::uint64_t ticket) const override;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/analysis/illumination_analysis.h"
+#include "app/analysis/lens_figures.h"
 #include "app/cross_section_export.h"
 #include "app/document/lens_editor.h"
 #include "app/document/opening_focus.h"
@@ -84,12 +85,14 @@ struct ViewerState {
   optics::RayFans rayFans;         // for lensSystem, when lensSystemIsCurrent
   std::uint64_t fansRevision = 0;  // bumped whenever rayFans is replaced
   CrossSectionCache crossSection;
-  // "In focus" for lensSystem (a real-ray search: computed once per lens, not every frame).
-  std::shared_ptr<const optics::LensSystem> inFocusLens;
+  // The figures that take real-ray searches, for lensSystem: computed off the UI thread once per
+  // lens (analysis/lens_figures.h); the texts are the newest finished ones.
+  struct {
+    LensFiguresView view;
+    std::shared_ptr<const LensFigures> shown;
+    std::uint64_t shownInFrame = 0;  // frameNumber when `shown` was first drawn
+  } lensFigures;
   std::string inFocusText;
-  // What limits the axial beam and the unvignetted field, for lensSystem (real-ray searches:
-  // once per lens, as "In focus").
-  std::shared_ptr<const optics::LensSystem> beamLens;
   std::string axialBeamText, unvignettedText, fNumberText;
   // The "Focus at" field: the distance in focus (from the film) once the lens has one, else the
   // last typed; its text while it is typed into, and what it showed last frame (dump-ui).

@@ -231,12 +231,15 @@ TEST_F(CrossSectionExport, TheLightThemeIsWhiteWithGlassAndOutlinesWhereTheLensI
 }
 
 TEST_F(CrossSectionExport, TheSvgLabelsSurfacesStopFilmFieldsAndTheFNumber) {
-  const auto result = runScript("wait-frames 2\nexport-cross-section slide.svg\nquit\n");
+  // The lens as the viewer shows it (opened over the scene, it is focused at the scene's
+  // distance), saved for the fans traced here.
+  const auto result =
+      runScript("wait-frames 2\nexport-cross-section slide.svg\nsave-lens shown.dat\nquit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const std::string svg = file("slide.svg");
   EXPECT_NE(svg.find("width=\"1920\" height=\"1080\""), std::string::npos);
   const auto texts = svgTexts(svg);
-  const optics::LoadedLens loaded = optics::loadLens(kLens);
+  const optics::LoadedLens loaded = optics::loadLens(scratch / "shown.dat");
   ASSERT_TRUE(loaded.ok());
   std::set<std::string> expectedNumbers, numbers;
   for (std::size_t i = 1; i <= loaded.file.prescription.surfaces.size(); ++i) {

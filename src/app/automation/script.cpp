@@ -358,7 +358,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   const bool isCapture = verb == "screenshot" || verb == "screenshot-render" ||
                          verb == "screenshot-cross-section" || verb == "dump-ui" ||
                          verb == "export-cross-section" || verb == "check-window";
-  if (isCapture && changedThisStep_) return false;  // let a frame show the change first
+  // Let a frame show the change first, and the figures computed off the UI thread catch up.
+  if (isCapture && (changedThisStep_ || !host.analysesSettled())) return false;
   const bool isWait = verb.rfind("wait-", 0) == 0;
   if (!isCapture && !isWait) changedThisStep_ = true;
   if (verb == "load-lens") {

@@ -142,6 +142,10 @@ class ScriptHost {
     return "there is no panel " + id + " here";
   }
   virtual void showBlockedRays(bool /*show*/) {}
+  // The figures computed off the UI thread for the current lens (the first-order data's real-ray
+  // searches, a shown analysis panel) have finished and are on screen. Screenshots and dump-ui
+  // wait for it, so that they show a settled state rather than the previous lens's figures.
+  virtual bool analysesSettled() const { return true; }
   // Writes an analysis panel's plot; ready is false while its computation for the current lens
   // is still running (the script waits).
   struct PlotExport {

@@ -11,8 +11,6 @@
 #include "app/platform/ui_scale.h"
 #include "common/distance_text.h"
 #include "optics/focus.h"
-#include "optics/limiting_aperture.h"
-#include "optics/unvignetted_field.h"
 
 namespace lenslab::app {
 
@@ -137,58 +135,24 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   }
 }
 
-// "In focus" is a real-ray search: once per lens, not once per frame.
-const std::string& inFocusText(ViewerState& state) {
-  if (state.inFocusLens != state.lensSystem) {
-    state.inFocusLens = state.lensSystem;
-    const optics::LensSystem& lens = *state.lensSystem;
-    const optics::FocusResult inFocus =
-        optics::objectDistanceForFilmDistance(lens, lens.filmDistanceMm());
-    state.inFocusText = inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
-                                     : "nothing (" + inFocus.whyNot + ")";
-    // "Focus at" shows the distance actually in focus.
-    if (inFocus.ok()) state.focusDistanceInputMm = *inFocus.valueMm;
+// The figures that take real-ray searches (analysis/lens_figures.h): asked for once per lens and
+// computed off the UI thread; the newest finished ones are copied into the state, which the
+// section and dump-ui show.
+void updateLensFigures(ViewerState& state) {
+  requestLensFigures(state.lensFigures.view, state.lensSystem, state.dragging);
+  const auto figures = latestLensFigures(state.lensFigures.view);
+  if (!figures || figures == state.lensFigures.shown) return;
+  state.lensFigures.shown = figures;
+  state.lensFigures.shownInFrame = state.frameNumber;
+  state.inFocusText = figures->inFocusText;
+  // "Focus at" shows the distance actually in focus.
+  if (figures->inFocusMm && figures->lens == state.lensSystem) {
+    state.focusDistanceInputMm = *figures->inFocusMm;
   }
-  return state.inFocusText;
-}
-
-// Which aperture limits the axial beam and the unvignetted field, in the words `lenslab info`
-// uses (limiting_aperture.h, unvignetted_field.h): real-ray searches, once per lens.
-void updateBeamTexts(ViewerState& state) {
-  if (state.beamLens == state.lensSystem) return;
-  // Tens of milliseconds of real rays: not on every frame of a drag of the film or the stop;
-  // the figures catch up when it is released.
-  if (state.dragging && state.beamLens) return;
-  state.beamLens = state.lensSystem;
-  const optics::LensSystem& lens = *state.lensSystem;
-  const optics::LimitingAperture limit =
-      optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity());
-  const int surface = limit.limitingSurface();
-  char text[160];
-  if (!limit.real || surface < 0) {
-    state.axialBeamText = "no axial beam passes the lens";
-  } else if (limit.limitedByStop(lens.stopIndex())) {
-    std::snprintf(text, sizeof text, "the iris (surface %zu) limits it: working f/%.2f (real rays)",
-                  lens.stopIndex() + 1, limit.real->workingFNumber);
-    state.axialBeamText = text;
-  } else {
-    std::snprintf(text, sizeof text,
-                  "surface %d limits the axial beam %s the iris: working f/%.2f (real rays)",
-                  surface + 1, surface < static_cast<int>(lens.stopIndex()) ? "before" : "after",
-                  limit.real->workingFNumber);
-    state.axialBeamText = text;
-  }
-  // The paraxial f-number of the beam that passes (EFL / limited entrance pupil), as `info`
-  // prints it: not the iris's alone, which opened past the rims reads f/0.87 for an f/2 lens.
-  state.fNumberText = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
-                          ? format("f/%.2f", limit.paraxial->workingFNumber)
-                          : format("f/%.2f", lens.firstOrder().fNumber);
-  const auto unvignetted = optics::unvignettedFieldOfViewDeg(lens);
-  if (unvignetted) {
-    std::snprintf(text, sizeof text, "%.1f deg from infinity", *unvignetted);
-    state.unvignettedText = text;
-  } else {
-    state.unvignettedText = "- (no axial beam passes)";
+  if (figures->hasBeamFigures) {
+    state.fNumberText = figures->fNumberText;
+    state.axialBeamText = figures->axialBeamText;
+    state.unvignettedText = figures->unvignettedText;
   }
 }
 
@@ -204,11 +168,10 @@ void drawFirstOrderSection(ViewerState& state) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "Showing the last valid lens.");
   }
   // The controls first: they are what is used while editing; the figures can scroll.
-  inFocusText(state);  // once per lens; also what "Focus at" shows
+  updateLensFigures(state);  // also what "Focus at" shows
   drawControls(state, lens);
   if (!ImGui::CollapsingHeader("First-order data", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const optics::FirstOrderData& data = lens.firstOrder();
-  updateBeamTexts(state);
   constexpr ImGuiTableFlags kFlags = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg;
   // Short figures two to a row; the long ones take a whole row.
   if (ImGui::BeginTable("first-order", 4, kFlags)) {
@@ -249,6 +212,12 @@ void drawFirstOrderSection(ViewerState& state) {
                   data.rearPrincipalPlaneMm);
     textRow("Principal planes", planes);
     textRow("Axial beam", state.axialBeamText);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "The aperture that limits the beam from an axial object at infinity, and the working\n"
+          "f-number of the widest ray that passes it: 1 / (2 n' sin u'), real rays (as `lenslab\n"
+          "info` reports them).");
+    }
     textRow("FOV unvignetted", state.unvignettedText);
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip(
@@ -256,7 +225,7 @@ void drawFirstOrderSection(ViewerState& state) {
           "admits is blocked by another (as `lenslab info` reports it).");
     }
     textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
-    textRow("In focus", inFocusText(state));
+    textRow("In focus", state.inFocusText);
     ImGui::EndTable();
   }
 }

@@ -1,0 +1,82 @@
+#include "app/analysis/lens_figures.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "common/distance_text.h"
+#include "optics/focus.h"
+#include "optics/limiting_aperture.h"
+#include "optics/unvignetted_field.h"
+
+namespace lenslab::app {
+
+LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSystem,
+                               bool withBeamFigures) {
+  LensFigures figures;
+  figures.lens = lensSystem;
+  if (!lensSystem) return figures;
+  const optics::LensSystem& lens = *lensSystem;
+  const optics::FocusResult inFocus =
+      optics::objectDistanceForFilmDistance(lens, lens.filmDistanceMm());
+  figures.inFocusText = inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
+                                     : "nothing (" + inFocus.whyNot + ")";
+  figures.inFocusMm = inFocus.valueMm;
+  if (!withBeamFigures) return figures;
+
+  figures.hasBeamFigures = true;
+  const optics::LimitingAperture limit =
+      optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity());
+  const int surface = limit.limitingSurface();
+  char text[160];
+  if (!limit.real || surface < 0) {
+    figures.axialBeamText = "no axial beam passes the lens";
+  } else if (limit.limitedByStop(lens.stopIndex())) {
+    std::snprintf(text, sizeof text, "the iris (surface %zu): working f/%.2f", lens.stopIndex() + 1,
+                  limit.real->workingFNumber);
+    figures.axialBeamText = text;
+  } else {
+    std::snprintf(text, sizeof text, "surface %d, %s the iris: working f/%.2f", surface + 1,
+                  surface < static_cast<int>(lens.stopIndex()) ? "before" : "after",
+                  limit.real->workingFNumber);
+    figures.axialBeamText = text;
+  }
+  // The paraxial f-number of the beam that passes (EFL / limited entrance pupil), as `info`
+  // prints it: not the iris's alone, which opened past the rims reads f/0.87 for an f/2 lens.
+  const double fNumber = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
+                             ? limit.paraxial->workingFNumber
+                             : lens.firstOrder().fNumber;
+  std::snprintf(text, sizeof text, "f/%.2f", fNumber);
+  figures.fNumberText = text;
+  if (const auto unvignetted = optics::unvignettedFieldOfViewDeg(lens)) {
+    std::snprintf(text, sizeof text, "%.1f deg from infinity", *unvignetted);
+    figures.unvignettedText = text;
+  } else {
+    figures.unvignettedText = "- (no axial beam passes)";
+  }
+  return figures;
+}
+
+void requestLensFigures(LensFiguresView& view,
+                        const std::shared_ptr<const optics::LensSystem>& lens, bool dragging) {
+  if (!lens) return;
+  const bool withBeam = !dragging;
+  if (lens == view.requestedLens && (view.requestedBeamFigures || !withBeam)) return;
+  if (!view.job) view.job = std::make_unique<LatestJob<LensFigures>>();
+  view.requestedLens = lens;
+  view.requestedBeamFigures = withBeam;
+  view.job->request(++view.requests,
+                    [lens, withBeam] { return computeLensFigures(lens, withBeam); });
+}
+
+std::shared_ptr<const LensFigures> latestLensFigures(const LensFiguresView& view) {
+  return view.job ? view.job->latest() : nullptr;
+}
+
+bool lensFiguresCurrent(const LensFiguresView& view,
+                        const std::shared_ptr<const optics::LensSystem>& lens) {
+  const auto latest = latestLensFigures(view);
+  return latest && latest->lens == lens && latest->hasBeamFigures;
+}
+
+}  // namespace lenslab::app

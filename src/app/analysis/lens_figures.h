@@ -1,0 +1,54 @@
+#pragma once
+// The first-order section's figures that take real-ray searches, in the words `lenslab info`
+// uses: the object distance in focus (focus.h), the aperture that limits the axial beam with its
+// working f-number (limiting_aperture.h) and the unvignetted field (unvignetted_field.h). Each
+// takes a few milliseconds per lens, so they are computed off the UI thread (a LatestJob) and
+// the section shows the newest finished ones.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/analysis/latest_job.h"
+#include "optics/lens_system.h"
+
+namespace lenslab::app {
+
+struct LensFigures {
+  std::shared_ptr<const optics::LensSystem> lens;  // the lens they describe
+  std::string inFocusText;                         // "3.600 m from the film", "nothing (why)"
+  std::optional<double> inFocusMm;                 // the object distance in focus, from the film
+  // The beam figures; absent when they were not asked for (while a value is dragged).
+  bool hasBeamFigures = false;
+  std::string fNumberText;      // "f/2.07": EFL over the paraxial beam that passes every rim
+  std::string axialBeamText;    // "surface 3, before the iris: working f/2.03"
+  std::string unvignettedText;  // "1.1 deg from infinity"
+};
+
+// Pure: the figures of `lens` (the beam ones too when withBeamFigures).
+LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lens,
+                               bool withBeamFigures);
+
+struct LensFiguresView {
+  std::shared_ptr<const optics::LensSystem> requestedLens;
+  bool requestedBeamFigures = false;
+  std::uint64_t requests = 0;
+  std::unique_ptr<LatestJob<LensFigures>> job;
+  // The lens whose finished figures were last copied into the state.
+  std::shared_ptr<const optics::LensSystem> shownLens;
+};
+
+// Asks for the figures of `lens` when they have not been asked for yet; while `dragging`, only
+// the in-focus distance (the beam figures catch up when the drag ends).
+void requestLensFigures(LensFiguresView& view,
+                        const std::shared_ptr<const optics::LensSystem>& lens, bool dragging);
+
+// The newest finished figures (null before the first).
+std::shared_ptr<const LensFigures> latestLensFigures(const LensFiguresView& view);
+
+// The figures of `lens`, beam figures included, have finished.
+bool lensFiguresCurrent(const LensFiguresView& view,
+                        const std::shared_ptr<const optics::LensSystem>& lens);
+
+}  // namespace lenslab::app
