@@ -44,6 +44,7 @@ Settings loadSettings(const std::filesystem::path& file, std::string* warning) {
     }
     settings.selectedTabs = json.value("selected_tabs", std::map<std::string, std::string>{});
     settings.recentFiles = json.value("recent_files", std::vector<std::string>{});
+    settings.autoExposure = json.value("auto_exposure", defaults.autoExposure);
     if (settings.windowWidth < 200 || settings.windowHeight < 150) {
       settings.windowWidth = defaults.windowWidth;
       settings.windowHeight = defaults.windowHeight;
@@ -65,6 +66,7 @@ std::string saveSettings(const std::filesystem::path& file, const Settings& sett
         {"log_height", settings.layout.logHeight}}},
       {"selected_tabs", settings.selectedTabs},
       {"recent_files", settings.recentFiles},
+      {"auto_exposure", settings.autoExposure},
   };
   std::error_code error;
   std::filesystem::create_directories(file.parent_path(), error);

@@ -19,6 +19,8 @@ struct Settings {
   // The tab each dock area shows, by area name ("bottom": "log"); see panels/panel_registry.h.
   std::map<std::string, std::string> selectedTabs;
   std::vector<std::string> recentFiles;  // most recent first
+  // The preview meters its exposure (render/auto_exposure.h) for scenes that set none.
+  bool autoExposure = true;
 };
 
 // Puts `path` first in the recent-files list (removing an earlier mention), keeping at most

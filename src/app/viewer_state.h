@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
@@ -25,7 +26,15 @@ namespace lenslab::app {
 // A file operation asked for by a menu, the file browser, a drop or the recent-files list;
 // carried out by the viewer between frames.
 struct FileRequest {
-  enum class Kind { Open, OpenLens, OpenScene, SaveLens, SaveRender, SaveCrossSection };
+  enum class Kind {
+    Open,
+    OpenLens,
+    OpenScene,
+    SaveLens,
+    SaveRender,
+    SaveCrossSection,
+    ExportRenderPath  // the file the Export render window names
+  };
   Kind kind;
   std::string path;  // empty: ask with the file browser first
 };
@@ -105,8 +114,10 @@ struct ViewerState {
   PanelLayout layout;
   // Screen rectangles of named widgets, recorded while drawing, for `dump-ui` (tests click them).
   std::map<std::string, Rect> uiRects;
-  // Render preview settings.
+  // Render preview settings. The picture is shown (and saved, and exported) at exposureStops plus
+  // the metered auto exposure when settings.autoExposure is on: shownExposureStops().
   double exposureStops = 0.0;
+  ExportDialogState exportDialog;  // File > Export render...
   bool pinholeCamera = false;
   PreviewState preview;
   std::string scenePath;
@@ -126,6 +137,12 @@ struct ViewerState {
   std::map<std::string, std::string> tabsToSelect;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
 };
+
+// The exposure the preview shows: the user's, plus the metered one when auto exposure is on.
+inline double shownExposureStops(const ViewerState& state) {
+  return state.exposureStops +
+         (state.settings.autoExposure ? state.preview.autoExposureStops : 0.0);
+}
 
 // Rebuilds what depends on the lens document when its generation changed: validation, the
 // LensSystem (when valid), the first-order figures and the ray fans.
