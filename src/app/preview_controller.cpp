@@ -4,6 +4,7 @@
 #include <cmath>
 #include <thread>
 
+#include "render/auto_exposure.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
 #include "render/pbrt_parser.h"
@@ -55,6 +56,21 @@ void PreviewController::setScene(const LoadedScene& loaded) {
   description_ = loaded.description;
   scene_ = loaded.scene;
   ++sceneVersion_;
+  requestMetering();
+}
+
+void PreviewController::meter(const render::RenderSnapshot& snapshot) {
+  // Only this change's full passes, each once: a draft or coarse look is another image.
+  if (!meterPending_ || snapshot.generation != generation_ || snapshot.coarse) return;
+  if (meterGeneration_ != 0 && meterGeneration_ != snapshot.generation) {
+    meterPending_ = false;  // the job metered was replaced (an edit): hold what it gave
+    return;
+  }
+  if (snapshot.samplesPerPixel <= meteredSpp_) return;
+  meterGeneration_ = snapshot.generation;
+  meteredStops_ = render::autoExposureStops({snapshot.width, snapshot.height, snapshot.rgb});
+  meteredSpp_ = snapshot.samplesPerPixel;
+  if (meteredSpp_ >= kMeterUntilSpp || snapshot.complete) meterPending_ = false;
 }
 
 void PreviewController::setDisplayRegion(float widthPx, float heightPx,
@@ -105,6 +121,22 @@ render::RenderJob PreviewController::makeJob(int width, int height, int samplesP
   return job;
 }
 
+std::optional<render::RenderJob> PreviewController::exportJob(
+    const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, int width, int height,
+    int samplesPerPixel) const {
+  if (!description_ || !scene_ || !lens) return std::nullopt;
+  render::RenderJob job;
+  job.camera = pinhole ? render::makeMatchingPinholeCamera(*description_, lens, width, height)
+                       : render::makeLensCamera(*description_, lens, width, height);
+  job.scene = scene_;
+  job.settings.samplesPerPixel = samplesPerPixel;
+  job.settings.integrator.kind = description_->integrator.kind;
+  job.settings.integrator.maxDepth = description_->integrator.maxDepth;
+  // Below the UI thread's priority, like the preview's workers: the viewer stays responsive.
+  job.settings.lowPriority = true;
+  return job;
+}
+
 std::optional<std::uint64_t> PreviewController::update(
     const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft) {
   if (!description_ || !scene_ || !lens) return std::nullopt;
@@ -137,7 +169,8 @@ bool PreviewController::busy() const {
   return !snapshot || snapshot->generation != generation_ || !snapshot->complete;
 }
 
-void PreviewController::poll(PreviewState& preview, double exposureStops, ViewerStats& stats) {
+void PreviewController::poll(PreviewState& preview, double manualStops, bool autoExposure,
+                             ViewerStats& stats) {
   const auto snapshot = renderer_.snapshot();
   preview.rendering = busy();
   // The image on screen belongs to an earlier change until this change's first image arrives.
@@ -146,6 +179,9 @@ void PreviewController::poll(PreviewState& preview, double exposureStops, Viewer
   if (!snapshot) return;
   const bool fresh =
       snapshot->generation != shownGeneration_ || snapshot->samplesPerPixel != shownSpp_;
+  if (autoExposure) meter(*snapshot);  // also a finished image, when switched on
+  preview.autoExposureStops = autoExposure ? meteredStops_ : 0.0;
+  const double exposureStops = manualStops + preview.autoExposureStops;
   if (!fresh && exposureStops == shownExposure_) return;
   // A pass of a job already replaced (finished as the change came in) is out of date too: the
   // image shown stays until the change's own first look, without an encode and a repaint.

@@ -80,10 +80,29 @@ class PreviewController {
       std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
   // Reads the newest snapshot into `preview` when there is a new one (re-encoding on an exposure
   // change; otherwise no work) and tells `stats` when the change's coarse image and its first
-  // full pass appear.
-  void poll(PreviewState& preview, double exposureStops, ViewerStats& stats);
+  // full pass appear. The image is shown at exposureStops, plus the metered exposure with
+  // `autoExposure`.
+  void poll(PreviewState& preview, double exposureStops, bool autoExposure, ViewerStats& stats);
+  // Auto exposure meters the full passes of one job, the first to show a full pass after it is
+  // asked for, until they reach kMeterUntilSpp or the job is replaced, then holds: the picture
+  // does not flicker as it refines, and an edit (stopping down) changes its brightness as it
+  // would on a camera set after metering. A new scene asks for it; the viewer does for a lens
+  // file opened and when it is switched on.
+  static constexpr int kMeterUntilSpp = 16;
+  void requestMetering() {
+    meterPending_ = true;
+    meteredSpp_ = 0;
+    meterGeneration_ = 0;
+  }
+  double meteredStops() const { return meteredStops_; }
   // The newest snapshot, for saving the render as PNG or EXR.
   std::shared_ptr<const render::RenderSnapshot> latest() const { return renderer_.snapshot(); }
+  // A job for File > Export render: `lens` (the preview's, as it is now) and this scene at
+  // width x height, spp samples per pixel, seed 0 and the scene's integrator, as `lenslab render`
+  // renders it. Nothing without a scene or lens.
+  std::optional<render::RenderJob> exportJob(const std::shared_ptr<const optics::LensSystem>& lens,
+                                             bool pinhole, int width, int height,
+                                             int samplesPerPixel) const;
   // True while workers are rendering a job that is not complete.
   bool busy() const;
   // Full-resolution image size for the current scene.
@@ -121,6 +140,12 @@ class PreviewController {
   double shownExposure_ = 0;
   bool coarseReported_ = false, firstPassReported_ = false;
   StaleDimming staleDimming_{kDimStaleAfterSeconds};
+  // Auto exposure (requestMetering).
+  bool meterPending_ = true;
+  int meteredSpp_ = 0;
+  std::uint64_t meterGeneration_ = 0;  // the job metered; 0 before its first pass
+  double meteredStops_ = 0;
+  void meter(const render::RenderSnapshot& snapshot);
 };
 
 }  // namespace lenslab::app

@@ -26,6 +26,9 @@ struct PreviewState {
   // the preview renders at the size it is shown, not more.
   float regionWidthPx = 0, regionHeightPx = 0;
   std::string status;  // why there is no picture, or which lens it shows
+  // The metered exposure the image is shown with on top of the user's (0 when auto exposure is
+  // off); see PreviewController::kMeterUntilSpp.
+  double autoExposureStops = 0;
   // A click on the image, in image pixels (x right, y down), to focus on. Consumed by the viewer.
   std::optional<std::pair<double, double>> focusClick;
 };

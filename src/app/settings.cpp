@@ -46,6 +46,7 @@ Settings loadSettings(const std::filesystem::path& file, std::string* warning) {
     settings.recentFiles = json.value("recent_files", std::vector<std::string>{});
     settings.keepLensFilmDistance =
         json.value("keep_lens_film_distance", defaults.keepLensFilmDistance);
+    settings.autoExposure = json.value("auto_exposure", defaults.autoExposure);
     if (settings.windowWidth < 200 || settings.windowHeight < 150) {
       settings.windowWidth = defaults.windowWidth;
       settings.windowHeight = defaults.windowHeight;
@@ -68,6 +69,7 @@ std::string saveSettings(const std::filesystem::path& file, const Settings& sett
       {"selected_tabs", settings.selectedTabs},
       {"recent_files", settings.recentFiles},
       {"keep_lens_film_distance", settings.keepLensFilmDistance},
+      {"auto_exposure", settings.autoExposure},
   };
   std::error_code error;
   std::filesystem::create_directories(file.parent_path(), error);

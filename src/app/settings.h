@@ -22,6 +22,8 @@ struct Settings {
   // Open lenses at their file's film distance instead of focused at the scene's focus distance
   // (File menu; document/opening_focus.h).
   bool keepLensFilmDistance = false;
+  // The preview meters its exposure (render/auto_exposure.h) for scenes that set none.
+  bool autoExposure = true;
 };
 
 // Puts `path` first in the recent-files list (removing an earlier mention), keeping at most

@@ -14,6 +14,12 @@ struct ViewerOptions {
   // Test mode: draw `frames` frames, write the framebuffer to this PNG, and exit.
   std::optional<std::string> screenshotPath;
   int frames = 10;
+  // After the frames, the screenshot waits for the preview's first pass (not the black canvas)
+  // for at most screenshotWaitSeconds, and is then taken anyway. With waitSpp (--wait-spp), it
+  // waits until the preview has that many samples per pixel, and fails (exit code 1, no file)
+  // if that takes longer or the preview cannot render.
+  int waitSpp = 0;
+  double screenshotWaitSeconds = 60.0;
   // Window size in screen coordinates; empty: the size saved in the settings.
   std::optional<int> width, height;
 };

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -61,6 +62,11 @@ void Viewer::askForPath(FileRequest::Kind kind) {
       fileBrowser_.show("Save render as (.png or .exr)", FileBrowser::Mode::Save, {".png", ".exr"},
                         here, render::nonClobberingPath(here, "lenslab-render", ".png").filename());
       break;
+    case Kind::ExportRenderPath:
+      fileBrowser_.show("Export render as (.png, .exr or .pfm)", FileBrowser::Mode::Save,
+                        {".png", ".exr", ".pfm"}, here,
+                        render::nonClobberingPath(here, "lenslab-export", ".png").filename());
+      break;
     case Kind::SaveCrossSection: {
       // The export dialog's format gives the suggested name; typing the other extension works.
       const char* extension = state_.crossSectionExport.svg ? ".svg" : ".png";
@@ -74,6 +80,10 @@ void Viewer::askForPath(FileRequest::Kind kind) {
 
 std::optional<std::string> Viewer::openDialog(const std::string& kind) {
   using Kind = FileRequest::Kind;
+  if (kind == "export-render") {  // the Export render window, not a file browser
+    state_.exportDialog.openRequested = true;
+    return std::nullopt;
+  }
   static const std::pair<const char*, Kind> kKinds[] = {
       {"open-lens", Kind::OpenLens},
       {"open-scene", Kind::OpenScene},
@@ -125,6 +135,9 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
       return remember(saveLens(path));
     case Kind::SaveRender:
       return saveRender(path);
+    case Kind::ExportRenderPath:
+      state_.exportDialog.path = path;
+      return std::nullopt;
     case Kind::SaveCrossSection:
       // Drawn off screen at the export dialog's settings: the browser is in no frame of it.
       return exportCrossSectionAs(path, state_.crossSectionExport);
@@ -230,6 +243,16 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   state_.sceneSamplesRearDisk = framing.lensSampling == render::LensSampling::RearElementDisk;
   state_.crossSectionNeedsFit = true;
   state_.log.info("Opened scene " + path);
+  // A scene that sets its exposure (Film "scale") is shown at it, without auto exposure.
+  if (const auto scale = loaded.description->film.scale) {
+    state_.exposureStops = std::log2(*scale);
+    state_.settings.autoExposure = false;
+    char message[160];
+    std::snprintf(message, sizeof message,
+                  "The scene sets its exposure (Film \"scale\" %g: %+.2f EV): auto exposure off",
+                  *scale, state_.exposureStops);
+    state_.log.info(message);
+  }
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
   // lens on the command line. The lens is built the way `lenslab render` builds it (lensOfScene).
   if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
@@ -277,7 +300,8 @@ std::optional<std::string> Viewer::saveRender(const std::string& path) {
     return "cannot save " + path + ": there is no render yet";
   }
   const render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
-  const render::WriteResult result = render::writeImage(path, image, state_.exposureStops);
+  // At the exposure the preview shows (the user's, plus auto exposure's when on).
+  const render::WriteResult result = render::writeImage(path, image, shownExposureStops(state_));
   if (!result.ok) return result.error;
   state_.log.info("Saved render (" + std::to_string(snapshot->samplesPerPixel) + " spp) to " +
                   path);

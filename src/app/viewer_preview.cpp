@@ -18,7 +18,17 @@ std::optional<int> Viewer::previewSpp() const {
   return preview_.currentSpp(state_.lensSystem, state_.pinholeCamera);
 }
 
+void Viewer::meterWhenAsked() {
+  const bool on = state_.settings.autoExposure;
+  if (on && (!meteringWasOn_ || state_.lens.path() != meteredLensPath_)) {
+    preview_.requestMetering();
+  }
+  meteringWasOn_ = on;
+  meteredLensPath_ = state_.lens.path();
+}
+
 void Viewer::updatePreview() {
+  meterWhenAsked();
   preview_.setDisplayRegion(state_.preview.regionWidthPx, state_.preview.regionHeightPx);
   if (const auto change =
           preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
@@ -34,7 +44,8 @@ void Viewer::updatePreview() {
 }
 
 void Viewer::pollPreview() {
-  preview_.poll(state_.preview, state_.exposureStops, stats_);
+  preview_.poll(state_.preview, state_.exposureStops, state_.settings.autoExposure, stats_);
+  pollExport();
   if (!state_.loadingScenePath.empty()) {
     state_.preview.status =
         "Loading " + std::filesystem::path(state_.loadingScenePath).filename().string() + "...";

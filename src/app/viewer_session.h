@@ -1,9 +1,9 @@
 #pragma once
 // The viewer session: owns the state's window-side parts (preview renderer, statistics), runs
-// the frame loop, and is what scripts drive. Its methods live in four files: viewer.cpp (the
+// the frame loop, and is what scripts drive. Its methods live in five files: viewer.cpp (the
 // loop, drawing, shortcuts), viewer_files.cpp (opening and saving), viewer_preview.cpp (the
-// render preview and click-to-focus) and viewer_plots.cpp (the analysis panels: plot export and
-// whether their figures have caught up).
+// render preview and click-to-focus), viewer_export.cpp (File > Export render...) and
+// viewer_plots.cpp (the analysis panels: plot export and whether their figures have caught up).
 
 #include <future>
 #include <map>
@@ -18,6 +18,7 @@
 #include "app/platform/frame_damage.h"
 #include "app/platform/window.h"
 #include "app/preview_controller.h"
+#include "app/render_export.h"
 #include "app/scene_loader.h"
 #include "app/viewer.h"
 #include "app/viewer_state.h"
@@ -98,6 +99,12 @@ class Viewer final : public ScriptHost {
   void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
   std::optional<std::string> showPanel(const std::string& id) override;
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
+  // File > Export render... (viewer_export.cpp).
+  std::optional<std::string> startExportRender(const std::string& path, int width, int height,
+                                               int samplesPerPixel) override;
+  ExportOutcome exportRenderOutcome() const override;
+  std::optional<std::string> cancelExportRender() override;
+  void setAutoExposure(bool on) override { state_.settings.autoExposure = on; }
   void setLayout(double lensTable, double preview, double log) override {
     state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),
                               static_cast<float>(log)};
@@ -112,6 +119,13 @@ class Viewer final : public ScriptHost {
   // After drawing: starts the render jobs this frame's edits call for.
   void updatePreview();
   void focusOnClick();
+  // The Export render window's requests, and the running export's progress and log line.
+  void carryOutExportRequests();
+  void pollExport();
+  // The scene's film resolution (for the export's default size); 0 x 0 without a scene.
+  std::pair<int, int> filmSize() const;
+  // Auto exposure meters again when it is switched on and when a lens file is opened.
+  void meterWhenAsked();
   void openDroppedFiles();
   void carryOutRequests();
   // Takes the pending window and cross-section captures once a frame without overlays is drawn.
@@ -159,6 +173,10 @@ class Viewer final : public ScriptHost {
   void checkWindowPixels();
   bool drawnThisFrame_ = false;
   SceneLoader sceneLoader_{&Window::wakeFromAnyThread};
+  RenderExport export_{&Window::wakeFromAnyThread};
+  std::uint64_t exportsLogged_ = 0;  // finished exports already logged
+  bool meteringWasOn_ = false;
+  std::string meteredLensPath_;
   FileBrowser fileBrowser_;
   std::optional<FileRequest::Kind> browserPurpose_;  // what the browser's answer is for
   SceneOrigin sceneOrigin_ = SceneOrigin::Default;
@@ -179,8 +197,6 @@ class Viewer final : public ScriptHost {
   void focusSessionLens();
 
  public:
-  // The first preview pass to wait for before --screenshot saves (at most this long).
-  static constexpr double kScreenshotPreviewWaitSeconds = 60.0;
   const ViewerStats& stats() const { return stats_; }
 };
 

@@ -13,6 +13,7 @@
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
 #include "app/cross_section_export.h"
+#include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
 #include "app/document/opening_focus.h"
 #include "app/drawing/cross_section_view.h"
@@ -29,7 +30,15 @@ namespace lenslab::app {
 // A file operation asked for by a menu, the file browser, a drop or the recent-files list;
 // carried out by the viewer between frames.
 struct FileRequest {
-  enum class Kind { Open, OpenLens, OpenScene, SaveLens, SaveRender, SaveCrossSection };
+  enum class Kind {
+    Open,
+    OpenLens,
+    OpenScene,
+    SaveLens,
+    SaveRender,
+    SaveCrossSection,
+    ExportRenderPath  // the file the Export render window names
+  };
   Kind kind;
   std::string path;  // empty: ask with the file browser first
 };
@@ -121,8 +130,10 @@ struct ViewerState {
   PanelLayout layout;
   // Screen rectangles of named widgets, recorded while drawing, for `dump-ui` (tests click them).
   std::map<std::string, Rect> uiRects;
-  // Render preview settings.
+  // Render preview settings. The picture is shown (and saved, and exported) at exposureStops plus
+  // the metered auto exposure when settings.autoExposure is on: shownExposureStops().
   double exposureStops = 0.0;
+  ExportDialogState exportDialog;  // File > Export render...
   bool pinholeCamera = false;
   PreviewState preview;
   std::string scenePath;
@@ -153,6 +164,12 @@ struct ViewerState {
   CrossSectionExportSettings crossSectionExport;
   bool showExportCrossSection = false;
 };
+
+// The exposure the preview shows: the user's, plus the metered one when auto exposure is on.
+inline double shownExposureStops(const ViewerState& state) {
+  return state.exposureStops +
+         (state.settings.autoExposure ? state.preview.autoExposureStops : 0.0);
+}
 
 // Rebuilds what depends on the lens document when its generation changed: validation, the
 // LensSystem (when valid), the first-order figures and the ray fans.

@@ -30,6 +30,8 @@ struct ViewerArguments {
   std::string scriptPath;
   std::string statsJsonPath;
   int frames = 10;
+  int waitSpp = 0;  // 0: not given (the first pass, at most 60 s)
+  double waitSeconds = 0;
   std::string size;
 };
 
@@ -50,6 +52,14 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
                  "On exit, write the viewer's frame times and edit-to-preview latency as JSON");
   app.add_option("--frames", arguments.frames, "Frames to draw before --screenshot (default 10)")
       ->check(CLI::Range(1, 100000));
+  app.add_option("--wait-spp", arguments.waitSpp,
+                 "--screenshot waits until the preview has N samples per pixel (default 1), "
+                 "and fails if it takes longer than --wait-timeout")
+      ->check(CLI::Range(1, 1 << 20));
+  app.add_option("--wait-timeout", arguments.waitSeconds,
+                 "Seconds --screenshot waits for --wait-spp (default 300, or 60 for the first "
+                 "pass)")
+      ->check(CLI::Range(1.0, 86400.0));
   app.add_option("--size", arguments.size, "Window size WIDTHxHEIGHT, e.g. 1280x800");
 }
 
@@ -76,6 +86,11 @@ int runViewer(const ViewerArguments& arguments) {
     return kUsageError;
   }
   options.frames = arguments.frames;
+  if (arguments.waitSpp > 0) {
+    options.waitSpp = arguments.waitSpp;
+    options.screenshotWaitSeconds = 300.0;
+  }
+  if (arguments.waitSeconds > 0) options.screenshotWaitSeconds = arguments.waitSeconds;
   options.scriptPath = arguments.scriptPath;
   options.statsJsonPath = arguments.statsJsonPath;
   if (!arguments.screenshotPath.empty()) options.screenshotPath = arguments.screenshotPath;

@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -77,7 +78,9 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
                       "Output image; format from the extension: .png .exr .pfm "
                       "(default: the scene's film filename, else out.png)");
   command->add_option("--stats-json", arguments->statsJsonPath, "Write timing statistics here");
-  command->add_option("--exposure", arguments->exposureStops, "PNG exposure in stops")
+  command
+      ->add_option("--exposure", arguments->exposureStops,
+                   "PNG exposure in stops (default: log2 of the Film's \"scale\", else 0)")
       ->check(FiniteNumber());
   command->add_flag("--quiet", arguments->quiet, "No progress bar");
   return arguments;
@@ -159,7 +162,13 @@ int runRenderCommand(const RenderArguments& arguments) {
     return kFailure;
   }
   render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
-  const render::WriteResult written = render::writeImage(outPath, image, arguments.exposureStops);
+  // A PNG's exposure: --exposure, else the one the scene sets (Film "scale", as the viewer shows
+  // it); EXR and PFM hold the radiance.
+  double exposureStops = arguments.exposureStops;
+  if (arguments.command->count("--exposure") == 0 && description.film.scale) {
+    exposureStops = std::log2(*description.film.scale);
+  }
+  const render::WriteResult written = render::writeImage(outPath, image, exposureStops);
   if (!written.ok) {
     std::fprintf(stderr, "lenslab render: %s\n", written.error.c_str());
     return kFailure;

@@ -20,6 +20,7 @@ using Clock = std::chrono::steady_clock;
 
 struct Tile {
   int x0, y0, x1, y1;
+  int pixelCount() const { return (x1 - x0) * (y1 - y0); }
 };
 
 std::vector<Tile> makeTiles(int width, int height, int size) {
@@ -166,8 +167,8 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
 // Runs one wave over all tiles on the arena. False when cancelled.
 bool runWave(tbb::task_arena& arena, const RenderJob& job, const Wave& wave,
              const std::vector<Tile>& tiles, std::vector<double>& sums,
-             std::vector<RenderStatistics>& tileStatistics,
-             const std::function<bool()>& cancelled) {
+             std::vector<RenderStatistics>& tileStatistics, const std::function<bool()>& cancelled,
+             std::atomic<std::uint64_t>* pixelSamplesDone = nullptr) {
   std::atomic<bool> stopped{false};
   arena.execute([&] {
     tbb::parallel_for(
@@ -177,6 +178,11 @@ bool runWave(tbb::task_arena& arena, const RenderJob& job, const Wave& wave,
             if (!renderTile(job, wave, tiles[t], sums, cancelled, tileStatistics[t])) {
               stopped = true;
               return;
+            }
+            if (pixelSamplesDone != nullptr) {
+              pixelSamplesDone->fetch_add(static_cast<std::uint64_t>(tiles[t].pixelCount()) *
+                                              static_cast<std::uint64_t>(wave.count),
+                                          std::memory_order_relaxed);
             }
           }
         },
@@ -254,7 +260,8 @@ bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
 // cancelled, publishing after each wave.
 void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t generation,
                  const std::function<bool()>& cancelled,
-                 const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
+                 const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish,
+                 std::atomic<std::uint64_t>* pixelSamplesDone = nullptr) {
   const Clock::time_point started = Clock::now();
   job.camera->prepare();  // here, on the job's thread: not on a viewer's UI thread, not in a wave
   const int width = job.camera->width();
@@ -290,7 +297,9 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
       }
       wave.pixels = WavePixels::AllButBlockCentres;
     }
-    if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return;
+    if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled, pixelSamplesDone)) {
+      return;
+    }
     done += count;
     auto snapshot = makeSnapshot(width, height, sums, done, generation);
     snapshot->samplesPerPixel = done;
@@ -411,6 +420,7 @@ void ProgressiveRenderer::runJob(const RenderJob& job, std::uint64_t generation)
     arena_.reset();  // its workers leave before the new arena's start
     arena_ = std::make_unique<WorkerArena>(threads, job.settings.lowPriority);
   }
+  pixelSamplesDone_.store(0);
   renderWaves(
       arena_->arena, job, generation,
       [&] { return requestedGeneration_.load(std::memory_order_relaxed) != generation; },
@@ -423,7 +433,8 @@ void ProgressiveRenderer::runJob(const RenderJob& job, std::uint64_t generation)
         }
         changed_.notify_all();
         if (listener) listener();
-      });
+      },
+      &pixelSamplesDone_);
 }
 
 std::shared_ptr<const RenderSnapshot> renderToCompletion(

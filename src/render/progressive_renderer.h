@@ -89,6 +89,10 @@ class ProgressiveRenderer {
   // True while a job is being rendered (false once it completed or was cancelled and its
   // workers returned).
   bool busy() const { return busy_.load(); }
+  // Pixel samples the running (or last) job has rendered so far, counted per finished tile: a
+  // progress finer than the snapshots, whose waves double (1, 1, 2, 4, ... spp). The coarse
+  // look's samples are not counted until its wave's other pixels are.
+  std::uint64_t pixelSamplesDone() const { return pixelSamplesDone_.load(); }
   // Called on the renderer's thread after every published snapshot (e.g. to wake a UI loop that
   // sleeps between frames). Keep it short and thread-safe.
   void setPublishListener(std::function<void()> listener);
@@ -106,6 +110,7 @@ class ProgressiveRenderer {
   std::atomic<std::uint64_t> requestedGeneration_{0};
   std::uint64_t finishedGeneration_ = 0;
   std::atomic<bool> busy_{false};
+  std::atomic<std::uint64_t> pixelSamplesDone_{0};
   std::function<void()> publishListener_;
   // Kept between jobs with the same thread count and priority: a viewer starts a job on every
   // edit, and a new arena would start its worker threads again.

@@ -46,6 +46,9 @@ struct FilmDescription {
   int yResolution = 480;
   double diagonalMm = 35.0;
   std::string filename;
+  // pbrt's Film "scale": pixel values are multiplied by it. A scene that gives it sets its own
+  // exposure (log2(scale) stops): the viewer's auto exposure is off for it.
+  std::optional<double> scale;
 };
 
 enum class IntegratorKind { Path, DirectLighting };

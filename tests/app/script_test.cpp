@@ -305,5 +305,74 @@ TEST(ScriptRun, AHostWithoutAWindowRefusesDialogs) {
   EXPECT_TRUE(runner.failed());
 }
 
+// Pictures for slides: export-render waits for its export (a cancel fails it), start-export-render
+// does not, wait-export accepts a cancel; set auto-exposure reaches the host.
+class ExportHost : public FakeHost {
+ public:
+  std::optional<std::string> startExportRender(const std::string& path, int width, int height,
+                                               int samplesPerPixel) override {
+    calls.push_back("export " + path + " " + std::to_string(width) + "x" + std::to_string(height) +
+                    " " + std::to_string(samplesPerPixel));
+    outcome = ExportOutcome{true, false, ""};
+    return std::nullopt;
+  }
+  ExportOutcome exportRenderOutcome() const override { return outcome; }
+  std::optional<std::string> cancelExportRender() override {
+    if (!outcome.running) return std::string("there is no export rendering to cancel");
+    outcome = ExportOutcome{false, true, ""};
+    return std::nullopt;
+  }
+  void setAutoExposure(bool on) override { autoExposure = on; }
+  ExportOutcome outcome{false, false, "no export was started"};
+  bool autoExposure = true;
+};
+
+TEST(ScriptRun, ExportRenderWaitsUntilWrittenAndACancelFailsIt) {
+  const ParsedScript script = parseScript(
+      "set auto-exposure off\nexport-render a.png 640x400 16\nexport-render b.exr film 4\n", "t");
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  ExportHost host;
+  ScriptRunner runner(script.commands);
+  EXPECT_TRUE(runner.step(host));  // started; waiting
+  EXPECT_FALSE(host.autoExposure);
+  ASSERT_EQ(host.calls, std::vector<std::string>{"export a.png 640x400 16"});
+  EXPECT_TRUE(runner.step(host));  // still rendering: not started twice
+  EXPECT_EQ(host.calls.size(), 1u);
+  host.outcome = {false, false, ""};  // written
+  EXPECT_TRUE(runner.step(host));     // the next export (the film's size: 0x0) started
+  ASSERT_EQ(host.calls.size(), 2u);
+  EXPECT_EQ(host.calls[1], "export b.exr 0x0 4");
+  host.outcome = {false, true, ""};  // cancelled (by a click): the script fails
+  EXPECT_FALSE(runner.step(host));
+  EXPECT_TRUE(runner.failed());
+  ASSERT_EQ(host.errors.size(), 1u);
+  EXPECT_EQ(host.errors[0].rfind("t:3:15: error: export-render: the export was cancelled", 0), 0u)
+      << host.errors[0];
+}
+
+TEST(ScriptRun, StartExportRenderGoesOnAndWaitExportAcceptsACancel) {
+  const ParsedScript script =
+      parseScript("start-export-render a.png 64x40 1\ncancel-export\nwait-export\nquit\n", "t");
+  ExportHost host;
+  ScriptRunner runner(script.commands);
+  EXPECT_FALSE(runner.step(host));  // started, cancelled, waited, quit: all in one frame
+  EXPECT_FALSE(runner.failed());
+  EXPECT_EQ(host.exitCode, 0);
+}
+
+TEST(ScriptParse, ExportCommandsAreChecked) {
+  const ParsedScript bad = parseScript(
+      "export-render a.png 640 16\nexport-render a.png 0x400 16\nexport-render a.png 64x40 0\n"
+      "start-export-render a.png\nset auto-exposure maybe\n",
+      "t");
+  ASSERT_EQ(bad.diagnostics.all().size(), 5u) << bad.diagnostics.formatAll();
+  EXPECT_EQ(bad.diagnostics.all()[0].format(),
+            "t:1:21: error: '640' is not WIDTHxHEIGHT (e.g. 640x400) or film");
+  EXPECT_EQ(bad.diagnostics.all()[1].format().rfind("t:2:21: error: '0x400': each side", 0), 0u)
+      << bad.diagnostics.all()[1].format();
+  EXPECT_EQ(bad.diagnostics.all()[2].format().rfind("t:3:27: error: '0' is not a sample", 0), 0u)
+      << bad.diagnostics.all()[2].format();
+}
+
 }  // namespace
 }  // namespace lenslab::app

@@ -210,8 +210,6 @@ TEST(UnusedParameters, EachDirectiveSaysWhatIsUsedInstead) {
         "supported; the aspect ratio of the resolution is used",
         ":2:62: warning: parameter \"float cropwindow\" of Film \"image\" is not supported; the "
         "whole image is rendered",
-        ":2:93: warning: parameter \"float scale\" of Film \"image\" is not supported; pixel "
-        "values are not scaled",
         ":3:64: warning: parameter \"integer pixelsamples\" of Sampler \"stratified\" is not "
         "supported; xsamples * ysamples samples per pixel are taken",
         ":4:29: warning: parameter \"string strategy\" of Integrator \"directlighting\" is not "
@@ -228,9 +226,11 @@ TEST(UnusedParameters, EachDirectiveSaysWhatIsUsedInstead) {
         "ignored"}) {
     EXPECT_EQ(count(all, of + std::string(expected).substr(1)), 1u) << expected << "\n" << all;
   }
-  EXPECT_EQ(count(all, "warning"), 11u) << all;  // nothing else, nothing twice
+  // Film "scale" is read (the scene's exposure: FilmScaleIsTheScenesExposure).
+  EXPECT_EQ(count(all, "warning"), 10u) << all;  // nothing else, nothing twice
   EXPECT_EQ(scene.pixelSamples, 6);              // pbrt's stratified sampler: xsamples * ysamples
   EXPECT_EQ(scene.integrator.maxDepth, 3);
+  EXPECT_EQ(scene.film.scale.value_or(0.0), 2.0);  // the scene's exposure: +1 EV
 }
 
 TEST(UnusedParameters, StratifiedDefaultsFollowThePbrtVersion) {

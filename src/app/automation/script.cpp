@@ -1,5 +1,7 @@
 #include "app/automation/script.h"
 
+#include "app/render_export.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -7,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace lenslab::app {
 
@@ -43,6 +46,11 @@ const std::map<std::string, VerbShape>& verbs() {
       {"show-panel", {1, 1}},
       {"export-plot", {2, 2}},
       {"export-cross-section", {1, 4}},
+      // Pictures for slides (issue 20).
+      {"export-render", {3, 3}},
+      {"start-export-render", {3, 3}},
+      {"wait-export", {0, 0}},
+      {"cancel-export", {0, 0}},
   };
   return table;
 }
@@ -167,6 +175,12 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  if (a[0] == "auto-exposure") {
+    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
+      return problemAt(command, 0, "expected: set auto-exposure on|off");
+    }
+    return std::nullopt;
+  }
   if (a[0] == "layout") {
     if (a.size() != 4) return problemAt(command, 0, "expected: set layout LENS PREVIEW LOG");
     for (std::size_t i = 1; i < 4; ++i) {
@@ -206,6 +220,17 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     return problemAt(command, 1,
                      "unknown option '" + command.arguments[1] + "' (expected keep-film-distance)");
   }
+  if (command.verb == "export-render" || command.verb == "start-export-render") {
+    std::string error;
+    if (command.arguments[1] != "film" && !parseExportSize(command.arguments[1], &error)) {
+      return problemAt(command, 1, error + " or film");
+    }
+    const auto spp = parseInteger(command.arguments[2]);
+    if (!spp || *spp < 1 || *spp > (1 << 20)) {
+      return problemAt(command, 2,
+                       "'" + command.arguments[2] + "' is not a sample count from 1 to 1048576");
+    }
+  }
   if (command.verb == "zoom-cross-section") {
     const auto factor = parseNumber(command.arguments[0]);
     if (!factor || !(*factor > 0)) {
@@ -227,15 +252,15 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     }
   }
   if (command.verb == "open-dialog") {
-    static const char* const kKinds[] = {"open-lens",          "open-scene",
-                                         "save-lens",          "save-render",
-                                         "save-cross-section", "export-cross-section"};
+    static const char* const kKinds[] = {
+        "open-lens",     "open-scene",         "save-lens",           "save-render",
+        "export-render", "save-cross-section", "export-cross-section"};
     if (std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
       return problemAt(
           command, 0,
           "unknown dialog '" + command.arguments[0] +
-              "' (expected open-lens, open-scene, save-lens, save-render, save-cross-section or "
-              "export-cross-section)");
+              "' (expected open-lens, open-scene, save-lens, save-render, export-render, "
+              "save-cross-section or export-cross-section)");
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
@@ -329,6 +354,7 @@ bool ScriptRunner::step(ScriptHost& host) {
     if (failed_) return false;
     ++next_;
     framesWaited_ = 0;
+    exportStarted_ = false;
     waitStarted_.reset();
   }
   return false;
@@ -345,6 +371,18 @@ bool ScriptRunner::waitForCommand(const ScriptCommand& command, ScriptHost& host
   if (!outcome) return false;  // applied with the next frame
   awaitedCommand_.reset();
   if (!outcome->empty()) fail(host, command, command.verb + ": " + *outcome);
+  return true;
+}
+
+bool ScriptRunner::waitForExport(const ScriptCommand& command, ScriptHost& host,
+                                 bool cancelIsFine) {
+  const ScriptHost::ExportOutcome outcome = host.exportRenderOutcome();
+  if (outcome.running) return false;
+  if (!outcome.error.empty()) {
+    fail(host, command, command.verb + ": " + outcome.error);
+  } else if (outcome.cancelled && !cancelIsFine) {
+    fail(host, command, command.verb + ": the export was cancelled; nothing was written");
+  }
   return true;
 }
 
@@ -408,6 +446,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
       host.setKeepFilmDistance(a[1] == "on");
       return true;
     }
+    if (a[0] == "auto-exposure") {
+      host.setAutoExposure(a[1] == "on");
+      return true;
+    }
     if (a[0] == "layout") {
       host.setLayout(*parseNumber(a[1]), *parseNumber(a[2]), *parseNumber(a[3]));
       return true;
@@ -440,6 +482,22 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     return *spp >= *parseInteger(a[0]);
   }
   if (verb == "wait-until-file") return std::filesystem::exists(a[0]);
+  if (verb == "export-render" || verb == "start-export-render") {
+    if (!exportStarted_) {
+      int width = 0, height = 0;  // 0 x 0: the scene's film
+      if (a[1] != "film") std::tie(width, height) = *parseExportSize(a[1], nullptr);
+      if (const auto error =
+              host.startExportRender(a[0], width, height, static_cast<int>(*parseInteger(a[2])))) {
+        fail(host, command, verb + ": " + *error);
+        return true;
+      }
+      exportStarted_ = true;
+      if (verb == "start-export-render") return true;
+    }
+    return waitForExport(command, host, /*cancelIsFine=*/false);
+  }
+  if (verb == "wait-export") return waitForExport(command, host, /*cancelIsFine=*/true);
+  if (verb == "cancel-export") return check(host.cancelExportRender());
   if (verb == "screenshot") return check(host.saveWindowScreenshot(a[0]));
   if (verb == "screenshot-render") return check(host.saveRender(a[0]));
   if (verb == "screenshot-cross-section") return check(host.saveCrossSection(a[0]));

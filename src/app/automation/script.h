@@ -15,7 +15,8 @@
 //                                once it is computed for the current lens)
 //   drop FILE                   (as if the file were dropped onto the window)
 //   open-dialog KIND            (KIND: open-lens open-scene save-lens save-render
-//                                save-cross-section; shows the file browser as the menu does)
+//                                save-cross-section export-render; shows the file browser, or
+//                                the Export render window, as the menu does)
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
@@ -26,6 +27,16 @@
 //   dump-ui FILE.json           quit [CODE]
 //   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
 //   set keep-film-distance on|off       (File > Keep lens file's film distance; persisted)
+//
+// Pictures for slides (File > Export render..., auto exposure):
+//   export-render FILE SIZE SPP  renders the current lens and scene in the background at SIZE
+//                               (WIDTHxHEIGHT, or film: the scene's film resolution) and SPP
+//                               samples per pixel, and waits until FILE (.png at the exposure
+//                               shown, .exr, .pfm) is written; a cancel or an error fails it
+//   start-export-render FILE SIZE SPP   the same without waiting (the viewer stays live)
+//   wait-export                 waits until the export is written or cancelled
+//   cancel-export               cancels the running export: nothing is written
+//   set auto-exposure on|off    meters the preview's exposure (render/auto_exposure.h)
 //
 // "set layout" takes the lens table's and the preview's shares of the width and the log's share
 // of the height, as fractions. "load-scene" waits until the scene has loaded (it loads off the
@@ -155,6 +166,20 @@ class ScriptHost {
   virtual PlotExport exportPlot(const std::string& panelId, const std::string& /*path*/) {
     return {true, "there is no plot " + panelId + " here"};
   }
+  // File > Export render...: starts exporting the current lens and scene to `path` at width x
+  // height (0 x 0: the scene's film) and `samplesPerPixel`, in the background.
+  virtual std::optional<std::string> startExportRender(const std::string& /*path*/, int /*width*/,
+                                                       int /*height*/, int /*samplesPerPixel*/) {
+    return "cannot export a render here";
+  }
+  struct ExportOutcome {
+    bool running = false;
+    bool cancelled = false;
+    std::string error;  // why it failed; empty when written, cancelled or running
+  };
+  virtual ExportOutcome exportRenderOutcome() const { return {false, false, "no export started"}; }
+  virtual std::optional<std::string> cancelExportRender() { return "there is no export to cancel"; }
+  virtual void setAutoExposure(bool /*on*/) {}
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
   // The persisted "keep the lens file's film distance" choice (opening_focus.h).
   virtual void setKeepFilmDistance(bool /*keep*/) {}
@@ -179,6 +204,8 @@ class ScriptRunner {
   bool editAndWait(const ScriptCommand& command, ScriptHost& host, const EditCommand& edit);
   // Waits for awaitedCommand_ to be applied.
   bool waitForCommand(const ScriptCommand& command, ScriptHost& host);
+  // Waits until the export ends; a failure (or a cancel, unless `cancelIsFine`) fails the script.
+  bool waitForExport(const ScriptCommand& command, ScriptHost& host, bool cancelIsFine);
   // Reports `message` as an error at the command's first argument.
   void fail(ScriptHost& host, const ScriptCommand& command, const std::string& message);
 
@@ -194,6 +221,7 @@ class ScriptRunner {
   int framesWaited_ = 0;
   std::optional<CommandTicket> awaitedCommand_;  // issued by the current command, not yet applied
   std::optional<std::uint64_t> awaitedExport_;   // export-cross-section's, still being written
+  bool exportStarted_ = false;                   // by the current export-render command
   bool failed_ = false;
 };
 

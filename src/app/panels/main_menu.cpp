@@ -39,7 +39,11 @@ void fileMenu(ViewerState& state) {
   if (ImGui::MenuItem("Save window screenshot", "F12")) state.windowScreenshotRequested = true;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   state.uiRects["menu/File/Save window screenshot"] = {min.x, min.y, max.x - min.x, max.y - min.y};
-  if (ImGui::MenuItem("Save render as PNG or EXR...")) {
+  if (ImGui::MenuItem("Export render...")) state.exportDialog.openRequested = true;
+  const ImVec2 exportMin = ImGui::GetItemRectMin(), exportMax = ImGui::GetItemRectMax();
+  state.uiRects["menu/File/Export render"] = {exportMin.x, exportMin.y, exportMax.x - exportMin.x,
+                                              exportMax.y - exportMin.y};
+  if (ImGui::MenuItem("Save preview as PNG or EXR...")) {
     state.fileRequests.push_back({Kind::SaveRender, {}});
   }
   if (ImGui::MenuItem("Export cross-section...")) state.showExportCrossSection = true;

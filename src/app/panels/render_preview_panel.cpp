@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -22,6 +23,25 @@ void drawControls(ViewerState& state) {
   ImGui::SetNextItemWidth(px(140));
   if (ImGui::SliderFloat("Exposure", &exposure, -6.0f, 6.0f, "%+.1f EV")) {
     state.exposureStops = exposure;
+  }
+  // Auto exposure adds the metered stops to the slider's; the sum is what is shown and saved.
+  char autoLabel[48];
+  if (state.settings.autoExposure) {
+    std::snprintf(autoLabel, sizeof autoLabel, "Auto %+.1f EV###auto-exposure",
+                  preview.autoExposureStops);
+  } else {
+    std::snprintf(autoLabel, sizeof autoLabel, "Auto###auto-exposure");
+  }
+  row.next(WrapRow::checkboxWidth(autoLabel));
+  ImGui::Checkbox(autoLabel, &state.settings.autoExposure);
+  {
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    state.uiRects["preview/auto-exposure"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Auto exposure: the brightest 1%% of the picture is shown near white.\n"
+        "Metered when a scene or lens is opened, then held while you edit.");
   }
   int camera = state.pinholeCamera ? 1 : 0;
   row.next(WrapRow::checkboxWidth("Lens"));

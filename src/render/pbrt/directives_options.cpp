@@ -28,14 +28,15 @@ bool film(const DirectiveCall& call) {
   const auto x = set->getInt("xresolution", film.xResolution, 1, kMaxResolution, diagnostics);
   const auto y = set->getInt("yresolution", film.yResolution, 1, kMaxResolution, diagnostics);
   const auto diagonal = positiveParam(*set, "diagonal", film.diagonalMm, diagnostics, 1e9);
-  if (!x || !y || !diagonal) return false;
+  const auto scale = positiveParam(*set, "scale", 1.0, diagnostics, 1e9);
+  if (!x || !y || !diagonal || !scale) return false;
+  if (set->find("scale")) film.scale = *scale;
   film.xResolution = *x;
   film.yResolution = *y;
   film.diagonalMm = *diagonal;
   film.filename = set->getString("filename", film.filename);
   set->unsupported("cropwindow", "the whole image is rendered");
   set->unsupported("pixelbounds", "the whole image is rendered");
-  set->unsupported("scale", "pixel values are not scaled (use --exposure for PNG output)");
   set->unsupported("maxsampleluminance", "samples are not clamped");
   state.scene.parsedParams.push_back(std::move(*set));
   return true;
