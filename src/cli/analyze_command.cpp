@@ -6,7 +6,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "cli/distance_argument.h"
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
 #include "cli/usage_error.h"
@@ -90,10 +89,11 @@ void printText(const AnalyzeArguments& arguments, const optics::LensSystem& lens
 int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
   std::optional<double> objectDistanceMm;
   if (objectGiven) {
-    objectDistanceMm = parseObjectDistanceMm(arguments.objectDistance);
+    objectDistanceMm = parseDistanceMm(arguments.objectDistance);
     if (!objectDistanceMm) {
-      printUsageError("lenslab analyze", "--object-distance: '" + arguments.objectDistance +
-                                             "' is not a positive distance in mm (or 'inf')");
+      printUsageError("lenslab analyze",
+                      "--object-distance: '" + arguments.objectDistance +
+                          "' is not a positive distance (mm, or with a unit: 3.6 m; or 'inf')");
       return kUsageError;
     }
   }
@@ -155,9 +155,9 @@ void addAnalyzeCommand(CLI::App& app, SubcommandRunner& run) {
                    ->add_option("--film-distance", arguments->filmDistanceMm,
                                 "Film distance in mm (rear vertex to film; default: the file's)")
                    ->check(PositiveFiniteNumber());
-  auto* object =
-      analyze->add_option("--object-distance", arguments->objectDistance,
-                          "Focus first: object distance in mm from the film plane, or 'inf'");
+  auto* object = analyze->add_option(
+      "--object-distance", arguments->objectDistance,
+      "Focus first: object distance from the film plane (mm, or 3.6 m), or 'inf'");
   object->excludes(film);
   analyze
       ->add_option("--film-diagonal", arguments->filmDiagonalMm,

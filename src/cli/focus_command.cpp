@@ -24,18 +24,6 @@ struct FocusArguments {
   bool json = false;
 };
 
-std::optional<double> parseDistance(const std::string& text) {
-  if (text == "inf" || text == "infinity") return std::numeric_limits<double>::infinity();
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(text, &used);
-    if (used != text.size() || !std::isfinite(value) || value <= 0.0) return std::nullopt;
-    return value;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
 nlohmann::json number(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
@@ -43,10 +31,11 @@ nlohmann::json number(double value) {
 int runFocus(const FocusArguments& arguments, bool objectGiven) {
   std::optional<double> objectDistance;
   if (objectGiven) {
-    objectDistance = parseDistance(arguments.objectDistance);
+    objectDistance = parseDistanceMm(arguments.objectDistance);
     if (!objectDistance) {
-      printUsageError("lenslab focus", "--object-distance: '" + arguments.objectDistance +
-                                           "' is not a positive distance in mm (or 'inf')");
+      printUsageError("lenslab focus",
+                      "--object-distance: '" + arguments.objectDistance +
+                          "' is not a positive distance (mm, or with a unit: 3.6 m; or 'inf')");
       return 2;
     }
   }
@@ -109,7 +98,7 @@ void addFocusCommand(CLI::App& app, SubcommandRunner& run) {
       "focus", "Real-ray focus: the film distance for an object distance, or the reverse");
   focus->add_option("LENS", arguments->lensPath, "Lens file (.dat, pbrt format)")->required();
   auto* object = focus->add_option("--object-distance", arguments->objectDistance,
-                                   "Object distance in mm from the film plane, or 'inf'");
+                                   "Object distance from the film plane (mm, or 3.6 m), or 'inf'");
   auto* film = focus
                    ->add_option("--film-distance", arguments->filmDistanceMm,
                                 "Film distance in mm (rear vertex to film): print the object "
