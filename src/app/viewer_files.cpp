@@ -67,6 +67,11 @@ void Viewer::askForPath(FileRequest::Kind kind) {
                         {".png", ".exr", ".pfm"}, here,
                         render::nonClobberingPath(here, "lenslab-export", ".png").filename());
       break;
+    case Kind::SaveIlluminationPlot:
+      fileBrowser_.show("Save the illumination plot as (.svg, .png or .csv)",
+                        FileBrowser::Mode::Save, {".svg", ".png", ".csv"}, here,
+                        render::nonClobberingPath(here, "lenslab-illumination", ".svg").filename());
+      break;
     case Kind::SaveCrossSection: {
       // The export dialog's format gives the suggested name; typing the other extension works.
       const char* extension = state_.crossSectionExport.svg ? ".svg" : ".png";
@@ -89,7 +94,8 @@ std::optional<std::string> Viewer::openDialog(const std::string& kind) {
       {"open-scene", Kind::OpenScene},
       {"save-lens", Kind::SaveLens},
       {"save-render", Kind::SaveRender},
-      {"save-cross-section", Kind::SaveCrossSection}};
+      {"save-cross-section", Kind::SaveCrossSection},
+      {"save-illumination-plot", Kind::SaveIlluminationPlot}};
   if (kind == "export-cross-section") {  // the settings dialog, as File > Export cross-section...
     state_.showExportCrossSection = true;
     return std::nullopt;
@@ -138,6 +144,13 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
     case Kind::ExportRenderPath:
       state_.exportDialog.path = path;
       return std::nullopt;
+    case Kind::SaveIlluminationPlot: {
+      // Computed off the UI thread: written when the curve for the current lens is ready (the
+      // panel that asked is showing it, so it normally is).
+      const PlotExport attempt = exportPlot("illumination", path);
+      if (!attempt.ready) return "the illumination curve is still being computed; try again";
+      return attempt.error;
+    }
     case Kind::SaveCrossSection:
       // Drawn off screen at the export dialog's settings: the browser is in no frame of it.
       return exportCrossSectionAs(path, state_.crossSectionExport);

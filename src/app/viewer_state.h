@@ -37,7 +37,8 @@ struct FileRequest {
     SaveLens,
     SaveRender,
     SaveCrossSection,
-    ExportRenderPath  // the file the Export render window names
+    ExportRenderPath,     // the file the Export render window names
+    SaveIlluminationPlot  // the Illumination panel's plot (.svg, .png or .csv)
   };
   Kind kind;
   std::string path;  // empty: ask with the file browser first

@@ -50,6 +50,10 @@ TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
                                                 "show-panel illumination\n"
                                                 "export-plot illumination wide.csv\n"
                                                 "export-plot illumination wide.svg\n"
+                                                "export-plot illumination wide.png\n"
+                                                "open-dialog save-illumination-plot\n"
+                                                "dialog-choose via-browser.csv\n"
+                                                "wait-until-file via-browser.csv\n"
                                                 "save-lens wide-as-shown.dat\n"
                                                 "wait-frames 3\n"
                                                 "screenshot panel.png\n"
@@ -106,6 +110,18 @@ TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
   EXPECT_GT(orange, 0.001);
   EXPECT_GT(blue, 0.002);
   EXPECT_GT(white, 0.002);
+  // The PNG for slides: 1200 x 750 on white, the curves in their colours darkened for the white
+  // page (total black, cos4 dark orange, vignetting dark blue).
+  const auto png = testing::PngImage::load(scratch / "wide.png");
+  ASSERT_TRUE(png.valid());
+  EXPECT_EQ(png.width, 1200);
+  EXPECT_EQ(png.height, 750);
+  EXPECT_EQ(png.at(2, 2).maxDifference({255, 255, 255}), 0);
+  EXPECT_GT(png.fractionNear(0, 0, 1200, 750, {0xb2, 0x7d, 0x31}, 30), 0.0005);
+  EXPECT_GT(png.fractionNear(0, 0, 1200, 750, {0x41, 0x8c, 0xb2}, 30), 0.0005);
+  // The file browser's answer writes the same numbers.
+  EXPECT_EQ(testing::readWholeFile(scratch / "via-browser.csv"),
+            testing::readWholeFile(scratch / "wide.csv"));
   // The SVG for slides names its curves.
   const std::string svg = testing::readWholeFile(scratch / "wide.svg");
   EXPECT_NE(svg.find(">vignetting (apertures)</text>"), std::string::npos);
@@ -118,7 +134,7 @@ TEST(IlluminationPanel, ExportRefusesOtherFormatsAndPanels) {
   const auto format =
       testing::runProcess(viewer(scratch, "--size 1000x700 --script bad-format.script"), scratch);
   EXPECT_EQ(format.exitCode, 1);
-  EXPECT_NE(format.err.find("use .svg or .csv"), std::string::npos) << format.err;
+  EXPECT_NE(format.err.find("use .svg, .png or .csv"), std::string::npos) << format.err;
   std::ofstream(scratch / "bad-panel.script") << "export-plot spots plot.svg\n";
   const auto panel =
       testing::runProcess(viewer(scratch, "--size 1000x700 --script bad-panel.script"), scratch);

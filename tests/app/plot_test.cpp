@@ -114,7 +114,7 @@ std::vector<std::string> texts(const std::string& svg) {
 }
 
 TEST(PlotSvg, LabelsTicksLegendAndCurvesWhereTheAxesSay) {
-  const std::string svg = plotSvg(sampleSpec(), 1200, 750);
+  const std::string svg = plotSvg(sampleSpec(), 1200, 750, 16.0f);
   const auto words = texts(svg);
   auto has = [&](const std::string& w) {
     return std::find(words.begin(), words.end(), w) != words.end();

@@ -61,6 +61,8 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
       rearDisk.y.push_back(*p.rearDiskTotal);
     }
   }
+  // The axis ends at the film corner (or its field angle), not at the next round tick.
+  if (!total.x.empty() && total.x.back() > 0.0) spec.x.max = total.x.back();
   spec.series = {total, cos4, vignetting};
   if (sceneSamplesRearDisk) {
     spec.series.push_back(rearDisk);

@@ -252,15 +252,20 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     }
   }
   if (command.verb == "open-dialog") {
-    static const char* const kKinds[] = {
-        "open-lens",     "open-scene",         "save-lens",           "save-render",
-        "export-render", "save-cross-section", "export-cross-section"};
+    static const char* const kKinds[] = {"open-lens",
+                                         "open-scene",
+                                         "save-lens",
+                                         "save-render",
+                                         "export-render",
+                                         "save-cross-section",
+                                         "export-cross-section",
+                                         "save-illumination-plot"};
     if (std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
       return problemAt(
           command, 0,
           "unknown dialog '" + command.arguments[0] +
               "' (expected open-lens, open-scene, save-lens, save-render, export-render, "
-              "save-cross-section or export-cross-section)");
+              "save-cross-section, export-cross-section or save-illumination-plot)");
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||

@@ -11,12 +11,13 @@
 //   zoom-cross-section FACTOR   (about the canvas centre)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
-//   export-plot ID FILE         (an analysis panel's plot, ID illumination, as .svg or .csv,
-//                                once it is computed for the current lens)
+//   export-plot ID FILE         (an analysis panel's plot, ID illumination, as .svg, .png (1200
+//                                x 750, 144 DPI) or .csv, once computed for the current lens)
 //   drop FILE                   (as if the file were dropped onto the window)
 //   open-dialog KIND            (KIND: open-lens open-scene save-lens save-render
-//                                save-cross-section export-render; shows the file browser, or
-//                                the Export render window, as the menu does)
+//                                save-cross-section export-render export-cross-section
+//                                save-illumination-plot; shows the file browser, or the export
+//                                window, as the menu does)
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE

@@ -15,6 +15,13 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
   requestIllumination(view, state.lensSystem, state.filmDiagonalMm);
   if (beginPanel("Illumination", place)) {
     ImGui::Checkbox("Against field angle", &view.againstFieldAngle);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Save plot...")) {
+      state.fileRequests.push_back({FileRequest::Kind::SaveIlluminationPlot, {}});
+    }
+    const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
+    state.uiRects["illumination/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
+                                          saveMax.y - saveMin.y};
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && result->lens == state.lensSystem &&
                          result->filmDiagonalMm == state.filmDiagonalMm;

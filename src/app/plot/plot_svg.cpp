@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/plot/plot_layout.h"
+#include "app/plot/plot_picture.h"
 #include "common/atomic_file.h"
 
 namespace lenslab::app {
@@ -59,6 +60,7 @@ std::uint32_t onWhite(std::uint32_t rgba) {
 }  // namespace
 
 std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontPx) {
+  if (!(fontPx > 0.0f)) fontPx = static_cast<float>(plotExportFontPx(heightPx));
   // Sans-serif text averages about 0.55 em per character; 0.6 leaves room.
   const TextWidthPx width = [&](const std::string& text) {
     return 0.6f * fontPx * static_cast<float>(text.size());

@@ -9,7 +9,8 @@
 
 namespace lenslab::app {
 
-std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontPx = 16.0f);
+// fontPx 0: a fortieth of the height, as the PNG (plot_picture.h).
+std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontPx = 0.0f);
 
 // Atomic (temporary file + rename). Returns an error message naming the path, or "".
 std::string writePlotSvg(const std::filesystem::path& path, const PlotSpec& spec, int widthPx,

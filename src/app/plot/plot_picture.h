@@ -1,0 +1,29 @@
+#pragma once
+// A plot as a picture for a slide, in the light theme, laid out as plot_layout.h says: the same
+// SlidePicture the cross-section export draws (drawing/slide_layout.h), so the one off-screen
+// rasteriser (drawing/slide_raster.h) makes its PNG, with its DPI, at any size.
+
+#include <filesystem>
+#include <string>
+
+#include "app/drawing/slide_layout.h"
+#include "app/plot/plot_spec.h"
+
+namespace lenslab::app {
+
+// The text size of an exported plot: a fortieth of its height (19 px at 750, 27 at 1080), so
+// that it reads on a slide; never below 12 px.
+inline double plotExportFontPx(int heightPx) {
+  return heightPx / 40.0 < 12.0 ? 12.0 : heightPx / 40.0;
+}
+
+// Text kinds: "title", "note", "y-label", "x-label", "x-tick", "y-tick", "legend".
+SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double fontPx,
+                         const SlideTextMetrics& metrics);
+
+// Rasterised with the UI's font and written atomically with its DPI; "" or an error naming the
+// path.
+std::string writePlotPng(const std::filesystem::path& path, const PlotSpec& spec, int widthPx,
+                         int heightPx, double dotsPerInch);
+
+}  // namespace lenslab::app
