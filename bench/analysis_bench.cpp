@@ -6,11 +6,15 @@
 // double-Gauss 50 mm and the wide 22 mm.
 // BM_FilmPointIllumination/<lens>: one film point at 0.7 of the half diagonal (what a pixel
 // click asks for).
+// BM_FilmPointBundle/<lens>: that film point's bundle (optics/film_point_bundle.h): 25
+// meridional rays, the chief ray and the shares by surface. Target (issue 21): bundle and
+// footprint together <= 3 ms.
 
 #include <benchmark/benchmark.h>
 
 #include <string>
 
+#include "optics/film_point_bundle.h"
 #include "optics/lens_loader.h"
 #include "optics/relative_illumination.h"
 
@@ -43,6 +47,15 @@ void BM_FilmPointIllumination(benchmark::State& state, const std::string& lensFi
   }
 }
 
+void BM_FilmPointBundle(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state) {
+    const auto bundle = lenslab::optics::traceFilmPointBundle(*lens, 0.7 * kHalfDiagonalMm);
+    benchmark::DoNotOptimize(bundle);
+  }
+}
+
 const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
                             {"fisheye10", "fisheye-10mm.dat"},
                             {"telephoto250", "telephoto-250mm.dat"},
@@ -55,6 +68,9 @@ const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("BM_FilmPointIllumination/") + name).c_str(),
                                  BM_FilmPointIllumination, std::string(file))
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("BM_FilmPointBundle/") + name).c_str(),
+                                 BM_FilmPointBundle, std::string(file))
         ->Unit(benchmark::kMicrosecond);
   }
   return true;

@@ -72,6 +72,9 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> saveCrossSection(const std::string& path) override;
   PlotExport exportPlot(const std::string& panelId, const std::string& path) override;
   bool analysesSettled() const override;
+  void setFilmPoint(std::optional<double> heightMm) override {
+    state_.filmPointHeightMm = heightMm;
+  }
   ExportStarted startCrossSectionExport(const std::string& path,
                                         const CrossSectionExportRequest& request) override;
   std::optional<std::string> exportOutcome(std::uint64_t ticket) const override;

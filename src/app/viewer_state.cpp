@@ -52,13 +52,30 @@ void refreshLens(ViewerState& state) {
   }
 }
 
+const optics::FilmPointBundle* filmPointBundle(ViewerState& state) {
+  if (!state.filmPointHeightMm || !state.lensSystem || !state.lensSystemIsCurrent) return nullptr;
+  auto& traced = state.filmPointBundle;
+  if (traced.lens != state.lensSystem || traced.heightMm != *state.filmPointHeightMm) {
+    // About half a millisecond (bench/README.md): traced here, when the lens or the point moves.
+    traced.lens = state.lensSystem;
+    traced.heightMm = *state.filmPointHeightMm;
+    traced.bundle = optics::traceFilmPointBundle(*state.lensSystem, traced.heightMm);
+  }
+  return &traced.bundle;
+}
+
 const CrossSectionCache& crossSection(ViewerState& state) {
   CrossSectionCache& cache = state.crossSection;
   const bool showBlocked = state.fanSettings.showBlocked;
+  const optics::FilmPointBundle* bundle = filmPointBundle(state);
+  const std::optional<double> bundleHeight =
+      bundle ? std::optional(bundle->imageHeightMm) : std::nullopt;
   if (cache.lensGeneration == state.lens.generation() && cache.fansRevision == state.fansRevision &&
-      cache.filmDiagonalMm == state.filmDiagonalMm && cache.showBlocked == showBlocked) {
+      cache.filmDiagonalMm == state.filmDiagonalMm && cache.showBlocked == showBlocked &&
+      cache.filmPointHeightMm == bundleHeight) {
     return cache;
   }
+  cache.filmPointHeightMm = bundleHeight;
   cache.lensGeneration = state.lens.generation();
   cache.fansRevision = state.fansRevision;
   cache.filmDiagonalMm = state.filmDiagonalMm;
@@ -80,7 +97,11 @@ const CrossSectionCache& crossSection(ViewerState& state) {
     }
     cache.fitBounds.include({std::min(raysStartZ, front + 0.5 * length), 0.0});
   }
-  drawRayFans(cache.drawing, state.rayFans, showBlocked);
+  if (bundle) {
+    drawFilmPointBundle(cache.drawing, *bundle);
+  } else {
+    drawRayFans(cache.drawing, state.rayFans, showBlocked);
+  }
   return cache;
 }
 

@@ -70,6 +70,7 @@ struct CrossSectionCache {
   std::uint64_t fansRevision = ~std::uint64_t{0};
   double filmDiagonalMm = 0;
   bool showBlocked = true;
+  std::optional<double> filmPointHeightMm;
   optics::LensOutline outline;
   CrossSectionDrawing drawing;
   BoundsMm fitBounds;  // the lens, the film and room for the incoming rays
@@ -156,6 +157,14 @@ struct ViewerState {
   // script's show-panel, the View menu); each is dropped once its tab shows.
   std::map<std::string, std::string> tabsToSelect;
   unsigned long long logShownRevision = 0;  // the log revision the panel last scrolled to
+  // The bundle of one film point, drawn in the cross-section in place of the fans (Illumination
+  // panel's slider, script's set film-point): its height, and the bundle traced for lensSystem.
+  std::optional<double> filmPointHeightMm;
+  struct {
+    std::shared_ptr<const optics::LensSystem> lens;
+    double heightMm = -1.0;
+    optics::FilmPointBundle bundle;
+  } filmPointBundle;
   // The Illumination panel's curve (computed off the UI thread) and choices.
   IlluminationView illumination;
   // The scene's camera samples the rear element's disk, as the course's scenes do
@@ -175,6 +184,10 @@ inline double shownExposureStops(const ViewerState& state) {
 // Rebuilds what depends on the lens document when its generation changed: validation, the
 // LensSystem (when valid), the first-order figures and the ray fans.
 void refreshLens(ViewerState& state);
+
+// The bundle of state.filmPointHeightMm for the current lens (traced when either changes); null
+// when no film point is chosen or the document is not a valid lens.
+const optics::FilmPointBundle* filmPointBundle(ViewerState& state);
 
 // The cross-section's drawing for the current lens, fans and film, from the cache.
 const CrossSectionCache& crossSection(ViewerState& state);

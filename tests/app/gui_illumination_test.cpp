@@ -145,3 +145,58 @@ TEST(IlluminationPanel, ExportRefusesOtherFormatsAndPanels) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// A film point's bundle in the cross-section: the rays that reach it in green, the others in the
+// colours of the rims that stop them, with a legend of shares that add up to the whole; the fans
+// come back when the point is turned off.
+TEST(FilmPointBundleView, TheCrossSectionShowsWhatReachesAFilmPointAndWhatStopsTheRest) {
+  const auto scratch = testing::makeTestDirectory("film-point-bundle");
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/wide-22mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
+                                             << "show-panel illumination\n"
+                                                "set film-point 18\n"
+                                                "wait-frames 2\n"
+                                                "screenshot bundle.png\n"
+                                                "dump-ui bundle.json\n"
+                                                "set film-point off\n"
+                                                "wait-frames 2\n"
+                                                "screenshot fans.png\n"
+                                                "dump-ui fans.json\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::ifstream bundleFile(scratch / "bundle.json"), fansFile(scratch / "fans.json");
+  const nlohmann::json bundle = nlohmann::json::parse(bundleFile);
+  const nlohmann::json fans = nlohmann::json::parse(fansFile);
+  const auto& point = bundle["state"]["film_point"];
+  ASSERT_TRUE(point.is_object()) << bundle["state"];
+  EXPECT_EQ(point["height_mm"].get<double>(), 18.0);
+  double sum = point["passing"].get<double>();
+  for (const auto& share : point["blocked"]) {
+    EXPECT_GE(share["surface"].get<int>(), 1);  // counted from 1
+    sum += share["fraction"].get<double>();
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  // At 18 mm the wide-angle's rims take a good part of the iris's light.
+  EXPECT_GT(point["passing"].get<double>(), 0.2);
+  EXPECT_LT(point["passing"].get<double>(), 0.9);
+  EXPECT_FALSE(fans["state"].contains("film_point"));
+  ASSERT_TRUE(bundle["widgets"].contains("illumination/film-point"));
+
+  // Green rays (the bundle's passing colour) in the canvas with the point, none without it.
+  const auto& canvas = bundle["widgets"]["cross-section/canvas"];
+  const int x0 = canvas["x"].get<int>(), y0 = canvas["y"].get<int>();
+  const int x1 = x0 + canvas["width"].get<int>(), y1 = y0 + canvas["height"].get<int>();
+  const auto withBundle = testing::PngImage::load(scratch / "bundle.png");
+  const auto withFans = testing::PngImage::load(scratch / "fans.png");
+  ASSERT_TRUE(withBundle.valid() && withFans.valid());
+  EXPECT_GT(withBundle.fractionNear(x0, y0, x1, y1, {120, 235, 140}, 20), 0.002);
+  EXPECT_LT(withFans.fractionNear(x0, y0, x1, y1, {120, 235, 140}, 20), 0.0002);
+}
+
+}  // namespace
+}  // namespace lenslab

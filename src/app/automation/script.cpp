@@ -169,6 +169,12 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  if (a[0] == "film-point") {
+    if (a.size() != 2 || (a[1] != "off" && !(parseNumber(a[1]) && *parseNumber(a[1]) >= 0))) {
+      return problemAt(command, 0, "expected: set film-point MM|off (MM from the axis, >= 0)");
+    }
+    return std::nullopt;
+  }
   if (a[0] == "keep-film-distance") {
     if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
       return problemAt(command, 0, "expected: set keep-film-distance on|off");
@@ -445,6 +451,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     }
     if (a[0] == "blocked-rays") {
       host.showBlockedRays(a[1] == "show");
+      return true;
+    }
+    if (a[0] == "film-point") {
+      host.setFilmPoint(a[1] == "off" ? std::nullopt : parseNumber(a[1]));
       return true;
     }
     if (a[0] == "keep-film-distance") {

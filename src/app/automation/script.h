@@ -27,6 +27,8 @@
 //                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
 //   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
+//   set film-point MM|off       (the cross-section shows the bundle of the film point MM from
+//                                the axis instead of the fans, as the Illumination panel's slider)
 //   set keep-film-distance on|off       (File > Keep lens file's film distance; persisted)
 //
 // Pictures for slides (File > Export render..., auto exposure):
@@ -181,6 +183,8 @@ class ScriptHost {
   virtual ExportOutcome exportRenderOutcome() const { return {false, false, "no export started"}; }
   virtual std::optional<std::string> cancelExportRender() { return "there is no export to cancel"; }
   virtual void setAutoExposure(bool /*on*/) {}
+  // The film point whose bundle the cross-section shows (mm from the axis), or none.
+  virtual void setFilmPoint(std::optional<double> /*heightMm*/) {}
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
   // The persisted "keep the lens file's film distance" choice (opening_focus.h).
   virtual void setKeepFilmDistance(bool /*keep*/) {}

@@ -32,7 +32,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
   if (!lens.surfaces.empty()) filmDistance = lens.surfaces.back().thicknessMm;
   if (const auto stop = lens.stopIndex()) stopDiameter = lens.surfaces[*stop].apertureDiameterMm;
   const CrossSectionView& view = state.crossSectionView;
-  const nlohmann::json about = {
+  nlohmann::json about = {
       {"lens_path", state.lens.path()},
       {"lens_modified", state.lens.modified()},
       {"lens_valid", state.lensSystemIsCurrent},
@@ -81,6 +81,17 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"centre_z_mm", view.centreZMm},
         {"centre_y_mm", view.centreYMm}}},
   };
+  // The film point's bundle as the cross-section shows it (surfaces from 1).
+  const auto& traced = state.filmPointBundle;
+  if (state.filmPointHeightMm && traced.lens && traced.lens == state.lensSystem) {
+    nlohmann::json blocked = nlohmann::json::array();
+    for (const optics::BundleShare& share : traced.bundle.blocked)
+      blocked.push_back({{"surface", share.surface + 1}, {"fraction", share.fraction}});
+    about["film_point"] = {{"height_mm", traced.heightMm},
+                           {"passing", traced.bundle.passing},
+                           {"blocked", blocked},
+                           {"rays", traced.bundle.rays.size()}};
+  }
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
                                {"widgets", widgets},
                                {"state", about}};

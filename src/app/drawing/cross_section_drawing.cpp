@@ -126,4 +126,17 @@ void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool
         rayLine(*fans.marginal, palette::kMarginalRay, 1.6f, DrawingPart::MarginalRay));
 }
 
+void drawFilmPointBundle(CrossSectionDrawing& drawing, const optics::FilmPointBundle& bundle) {
+  for (const optics::FanRay& ray : bundle.rays) {
+    const Colour colour = ray.filmPoint ? palette::kBundlePassing
+                                        : palette::stoppingSurfaceColour(ray.path.stopSurface);
+    drawing.lines.push_back(rayLine(ray, colour, 1.2f, DrawingPart::Ray));
+  }
+  if (bundle.chief) {
+    Polyline chief = rayLine(*bundle.chief, palette::kChiefRay, 1.2f, DrawingPart::ChiefRay);
+    chief.dashed = true;
+    drawing.lines.push_back(std::move(chief));
+  }
+}
+
 }  // namespace lenslab::app

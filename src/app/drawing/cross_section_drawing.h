@@ -4,8 +4,10 @@
 // never disagree. No ImGui here, so it is unit-tested.
 
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
+#include "optics/film_point_bundle.h"
 #include "optics/lens_outline.h"
 #include "optics/ray_fan.h"
 
@@ -59,6 +61,16 @@ inline constexpr Colour kFilm{240, 240, 240, 255};
 inline constexpr Colour kFieldColours[] = {
     {80, 220, 120, 255}, {250, 180, 60, 255}, {235, 90, 200, 255}, {90, 170, 255, 255}};
 inline constexpr Colour kChiefRay{255, 255, 255, 255};
+// A film point's bundle: the rays that reach it, and those stopped, in the colour of the surface
+// that stops them (cycled by surface number).
+inline constexpr Colour kBundlePassing{120, 235, 140, 255};
+inline constexpr Colour kStoppingSurfaceColours[] = {
+    {255, 110, 90, 255},  {255, 190, 60, 255}, {200, 120, 255, 255}, {80, 180, 255, 255},
+    {255, 120, 200, 255}, {170, 220, 60, 255}, {255, 150, 120, 255}, {120, 140, 255, 255}};
+inline Colour stoppingSurfaceColour(int surface) {
+  constexpr int kCount = static_cast<int>(std::size(kStoppingSurfaceColours));
+  return kStoppingSurfaceColours[((surface % kCount) + kCount) % kCount];
+}
 inline constexpr Colour kMarginalRay{90, 230, 240, 255};
 }  // namespace palette
 
@@ -68,5 +80,10 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
 // Adds the fans' rays: each ends at the film, or at the surface that blocked it (blocked rays are
 // fainter, and left out when showBlocked is false). Chief rays dashed, the marginal ray cyan.
 void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked);
+
+// Adds a film point's bundle (optics/film_point_bundle.h) in place of the fans: rays that reach
+// the point in kBundlePassing, stopped rays up to their rim in that surface's colour, the chief
+// ray dashed.
+void drawFilmPointBundle(CrossSectionDrawing& drawing, const optics::FilmPointBundle& bundle);
 
 }  // namespace lenslab::app

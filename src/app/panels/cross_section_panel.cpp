@@ -124,6 +124,38 @@ void drawFanControls(ViewerState& state) {
     ImGui::TextColored(ImVec4(colour.r / 255.f, colour.g / 255.f, colour.b / 255.f, 1.f), "%s",
                        text);
   };
+  if (const optics::FilmPointBundle* bundle = filmPointBundle(state)) {
+    // A film point's bundle instead of the fans: what reaches it, and what stops the rest.
+    char text[96];
+    std::snprintf(text, sizeof text, "film point %.1f mm:", bundle->imageHeightMm);
+    legendRow.next(ImGui::CalcTextSize(text).x);
+    ImGui::TextDisabled("%s", text);
+    if (bundle->empty()) {
+      legend(palette::kAxis, "no ray from it reaches the stop");
+    } else {
+      std::snprintf(text, sizeof text, "reaches it %.0f%%", 100.0 * bundle->passing);
+      legend(palette::kBundlePassing, text);
+      const std::size_t surfaces = state.lensSystem->surfaces().size();
+      for (const optics::BundleShare& share : bundle->blocked) {
+        const char* where = share.surface == 0                                ? " (front)"
+                            : share.surface + 1 == static_cast<int>(surfaces) ? " (rear)"
+                            : share.surface == static_cast<int>(state.lensSystem->stopIndex())
+                                ? " (stop)"
+                                : "";
+        std::snprintf(text, sizeof text, "surface %d%s: %.0f%%", share.surface + 1, where,
+                      100.0 * share.fraction);
+        legend(palette::stoppingSurfaceColour(share.surface), text);
+      }
+    }
+    legend(palette::kChiefRay, "chief (dashed)");
+    static constexpr const char* kBundleHint =
+        "of the light the iris admits toward that point (Illumination panel)";
+    legendRow.next(ImGui::CalcTextSize(kBundleHint).x);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", kBundleHint);
+    ImGui::PopTextWrapPos();
+    return;
+  }
   legendRow.next(ImGui::CalcTextSize("field:").x);
   ImGui::TextDisabled("field:");
   // Each fan's fraction of the film's half diagonal, with its real field angle (or object

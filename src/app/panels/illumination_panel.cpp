@@ -6,6 +6,7 @@
 #include "app/analysis/illumination_analysis.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
+#include "app/platform/ui_scale.h"
 #include "app/plot/plot_widget.h"
 
 namespace lenslab::app {
@@ -22,6 +23,23 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
     const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
     state.uiRects["illumination/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
                                           saveMax.y - saveMin.y};
+    // A film point's bundle in the cross-section (in place of the fans).
+    bool showBundle = state.filmPointHeightMm.has_value();
+    if (ImGui::Checkbox("Bundle of film point", &showBundle)) {
+      state.filmPointHeightMm =
+          showBundle ? std::optional(0.7 * 0.5 * state.filmDiagonalMm) : std::nullopt;
+    }
+    if (state.filmPointHeightMm) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(px(220));
+      float height = static_cast<float>(*state.filmPointHeightMm);
+      if (ImGui::SliderFloat("mm from the axis##film-point", &height, 0.0f,
+                             static_cast<float>(0.5 * state.filmDiagonalMm), "%.1f")) {
+        state.filmPointHeightMm = height;
+      }
+      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+      state.uiRects["illumination/film-point"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+    }
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && result->lens == state.lensSystem &&
                          result->filmDiagonalMm == state.filmDiagonalMm;

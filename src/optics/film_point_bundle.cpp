@@ -1,0 +1,185 @@
+#include "optics/film_point_bundle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "optics/chief_ray.h"
+#include "optics/lens_system.h"
+#include "optics/unclipped_trace.h"
+
+namespace lenslab::optics {
+
+namespace {
+
+class FilmPoint {
+ public:
+  FilmPoint(const LensSystem& lens, double imageHeightMm)
+      : lens_(lens), point_(0.0, -imageHeightMm, 0.0), planeZ_(lens.rearVertexZ()) {
+    double widest = 0.0;
+    for (const SurfaceGeometry& s : lens.surfaces()) widest = std::max(widest, s.semiApertureMm);
+    searchRadiusMm_ = 3.0 * widest + imageHeightMm;
+    stopRadiusMm_ = lens.surfaces()[lens.stopIndex()].semiApertureMm;
+    const double length = lens.frontVertexZ() - lens.rearVertexZ();
+    startZMm_ = lens.frontVertexZ() + std::max(5.0, 0.25 * length);
+  }
+
+  double searchRadiusMm() const { return searchRadiusMm_; }
+  const glm::dvec3& point() const { return point_; }
+
+  LensRay toPlane(double x, double y) const {
+    return {point_, glm::normalize(glm::dvec3{x, y, planeZ_} - point_)};
+  }
+  // The ray through (x, y) crosses the stop inside its opening, rims ignored.
+  bool reachesStop(double x, double y) const {
+    const auto at = traceFromFilmUnclipped(lens_, toPlane(x, y), lens_.stopIndex());
+    return at && std::hypot(at->origin.x, at->origin.y) <= stopRadiusMm_;
+  }
+  // The ray through (x, y) passes every rim.
+  bool passes(double x, double y) const { return lens_.traceFromFilm(toPlane(x, y)).has_value(); }
+  // cos^4 / Z^2 per unit area of the rear-vertex plane (relative_illumination.h).
+  double density(double x, double y) const {
+    const double dy = y - point_.y;
+    const double d2 = x * x + dy * dy + planeZ_ * planeZ_;
+    return planeZ_ * planeZ_ / (d2 * d2);
+  }
+
+  // The ray through (x, y) followed from the scene: the surface that stops it (-1: it passes),
+  // and its path when asked.
+  struct Fate {
+    int stoppedBy = -1;
+    std::optional<FanRay> ray;
+  };
+  Fate follow(double x, double y, bool withPath) const {
+    const LensRay fromFilm = toPlane(x, y);
+    const auto out = traceFromFilmUnclipped(lens_, fromFilm, 0);
+    if (!out) {
+      // It misses a surface or is reflected inside: whatever stops it first from the film side.
+      const RayPath path = lens_.traceFromFilmPath(fromFilm);
+      return {std::max(0, path.stopSurface), std::nullopt};
+    }
+    // The same line, from a point in front of the lens back toward the film.
+    const double t =
+        out->direction.z > 0.05 ? (startZMm_ - out->origin.z) / out->direction.z : 10.0;
+    const LensRay fromScene{out->origin + std::max(0.0, t) * out->direction, -out->direction};
+    Fate fate;
+    if (!withPath) {
+      if (lens_.traceFromScene(fromScene)) return fate;
+      fate.stoppedBy = lens_.traceFromScenePath(fromScene).stopSurface;
+      return fate;
+    }
+    FanRay ray;
+    ray.path = lens_.traceFromScenePath(fromScene);
+    if (ray.path.stop == RayStop::Passed) {
+      ray.filmPoint = point_;
+    } else {
+      fate.stoppedBy = ray.path.stopSurface;
+    }
+    fate.ray = std::move(ray);
+    return fate;
+  }
+
+ private:
+  const LensSystem& lens_;
+  glm::dvec3 point_;
+  double planeZ_;
+  double searchRadiusMm_ = 0.0, stopRadiusMm_ = 0.0, startZMm_ = 0.0;
+};
+
+// Where `inside(t)` turns false in [0, reach], given inside(0); reach when it never does.
+template <class Inside>
+double boundary(const Inside& inside, double reach, double tolerance) {
+  if (inside(reach)) return reach;
+  double lo = 0.0, hi = reach;
+  while (hi - lo > tolerance) {
+    const double mid = 0.5 * (lo + hi);
+    (inside(mid) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightMm,
+                                     const BundleSettings& settings) {
+  FilmPointBundle bundle;
+  bundle.imageHeightMm = imageHeightMm;
+  const FilmPoint film(lens, imageHeightMm);
+  // The chief ray: by symmetry, the aim of the point (h, 0) turned to (0, -h).
+  const auto aim = aimChiefRay(lens, imageHeightMm);
+  if (!aim) return bundle;
+  const double centreY = -aim->planeXMm;
+  if (!film.reachesStop(0.0, centreY)) return bundle;
+  const double reach = film.searchRadiusMm();
+  const double tolerance = 1e-4 * reach;
+
+  // Meridional rays, evenly across the bundle's extent in y.
+  const double up =
+      boundary([&](double t) { return film.reachesStop(0.0, centreY + t); }, reach, tolerance);
+  const double down =
+      boundary([&](double t) { return film.reachesStop(0.0, centreY - t); }, reach, tolerance);
+  const int count = std::max(2, settings.meridionalRays);
+  for (int i = 0; i < count; ++i) {
+    const double y = centreY - down + (up + down) * (i + 0.5) / count;
+    if (auto fate = film.follow(0.0, y, true); fate.ray) bundle.rays.push_back(*fate.ray);
+  }
+  bundle.chief = film.follow(0.0, centreY, true).ray;
+
+  // The shares, direction by direction about the chief ray's point on the rear-vertex plane:
+  // the bundle reaches out to where the stop's opening ends, and passes out to where the first
+  // rim cuts in (both found by bisection, so that a thin cut ring is not missed). The light of
+  // the passing part comes from Gauss-Legendre nodes; the cut part is split in four, each
+  // quarter named by the rim that stops its middle ray.
+  const int angles = std::max(8, settings.angularSteps);
+  std::map<int, double> stopped;
+  double total = 0.0, passing = 0.0;
+  // 4-point Gauss-Legendre on [0, 1] (Abramowitz and Stegun, table 25.4).
+  constexpr double kNodes[] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
+                               0.9305681557970263};
+  constexpr double kWeights[] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
+                                 0.1739274225687269};
+  for (int k = 0; k < angles; ++k) {
+    const double angle = 2.0 * std::numbers::pi * (k + 0.5) / angles;
+    const double ux = std::cos(angle), uy = std::sin(angle);
+    auto at = [&](double t) { return glm::dvec2{t * ux, centreY + t * uy}; };
+    const double admitted =
+        boundary([&](double t) { return film.reachesStop(at(t).x, at(t).y); }, reach, tolerance);
+    const double passes = std::min(
+        admitted,
+        boundary([&](double t) { return film.passes(at(t).x, at(t).y); }, reach, tolerance));
+    // Light between radii r0 and r1 along this direction: integral of density r dr.
+    auto light = [&](double r0, double r1) {
+      double sum = 0.0;
+      for (int i = 0; i < 4; ++i) {
+        const double r = r0 + (r1 - r0) * kNodes[i];
+        sum += kWeights[i] * film.density(at(r).x, at(r).y) * r;
+      }
+      return sum * (r1 - r0);
+    };
+    const double inner = passes > 0.0 ? light(0.0, passes) : 0.0;
+    passing += inner;
+    total += inner;
+    for (int q = 0; q < 4 && admitted > passes; ++q) {
+      const double r0 = passes + (admitted - passes) * q / 4.0;
+      const double r1 = passes + (admitted - passes) * (q + 1) / 4.0;
+      const double part = light(r0, r1);
+      total += part;
+      const glm::dvec2 middle = at(0.5 * (r0 + r1));
+      const int stoppedBy = film.follow(middle.x, middle.y, false).stoppedBy;
+      if (stoppedBy < 0)
+        passing += part;  // the pass region is not star-shaped here: count what passes
+      else
+        stopped[stoppedBy] += part;
+    }
+  }
+  if (total > 0.0) {
+    bundle.passing = passing / total;
+    for (const auto& [surface, light] : stopped) bundle.blocked.push_back({surface, light / total});
+    std::sort(bundle.blocked.begin(), bundle.blocked.end(),
+              [](const BundleShare& a, const BundleShare& b) { return a.fraction > b.fraction; });
+  }
+  return bundle;
+}
+
+}  // namespace lenslab::optics
