@@ -36,6 +36,18 @@ class FilmPoint {
     const auto at = traceFromFilmUnclipped(lens_, toPlane(x, y), lens_.stopIndex());
     return at && std::hypot(at->origin.x, at->origin.y) <= stopRadiusMm_;
   }
+  // Where the ray through (x, y) crosses the stop plane, rims ignored.
+  std::optional<glm::dvec2> onStop(double x, double y) const {
+    const auto at = traceFromFilmUnclipped(lens_, toPlane(x, y), lens_.stopIndex());
+    if (!at) return std::nullopt;
+    return glm::dvec2{at->origin.x, at->origin.y};
+  }
+  // The ray through (x, y) meets surface `k` inside its clear aperture, the others ignored.
+  bool insideRim(double x, double y, int k) const {
+    const auto at = traceFromFilmUnclipped(lens_, toPlane(x, y), static_cast<std::size_t>(k));
+    return at && std::hypot(at->origin.x, at->origin.y) <=
+                     lens_.surfaces()[static_cast<std::size_t>(k)].semiApertureMm;
+  }
   // The ray through (x, y) passes every rim.
   bool passes(double x, double y) const { return lens_.traceFromFilm(toPlane(x, y)).has_value(); }
   // cos^4 / Z^2 per unit area of the rear-vertex plane (relative_illumination.h).
@@ -157,6 +169,8 @@ FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightM
       }
       return sum * (r1 - r0);
     };
+    if (const auto point = film.onStop(at(passes).x, at(passes).y))
+      bundle.passingOnStop.push_back(*point);
     const double inner = passes > 0.0 ? light(0.0, passes) : 0.0;
     passing += inner;
     total += inner;
@@ -178,6 +192,40 @@ FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightM
     for (const auto& [surface, light] : stopped) bundle.blocked.push_back({surface, light / total});
     std::sort(bundle.blocked.begin(), bundle.blocked.end(),
               [](const BundleShare& a, const BundleShare& b) { return a.fraction > b.fraction; });
+  }
+  // The edges of the rims that cut the bundle, on the stop: in each direction, where a ray first
+  // leaves that rim's opening, out to the iris's edge.
+  bundle.stopRadiusMm = lens.surfaces()[lens.stopIndex()].semiApertureMm;
+  for (const BundleShare& share : bundle.blocked) {
+    if (share.surface == static_cast<int>(lens.stopIndex())) continue;
+    FilmPointBundle::RimEdge edge{share.surface, {}};
+    std::vector<std::optional<glm::dvec2>> around(static_cast<std::size_t>(angles));
+    for (int k = 0; k < angles; ++k) {
+      const double angle = 2.0 * std::numbers::pi * (k + 0.5) / angles;
+      const double ux = std::cos(angle), uy = std::sin(angle);
+      const double r = boundary(
+          [&](double t) { return film.insideRim(t * ux, centreY + t * uy, share.surface); }, reach,
+          tolerance);
+      if (r >= reach) continue;  // this rim does not cut in this direction
+      around[static_cast<std::size_t>(k)] = film.onStop(r * ux, centreY + r * uy);
+    }
+    // Runs of consecutive directions, starting after a gap so that none is split at k = 0.
+    std::size_t start = 0;
+    while (start < around.size() && around[start]) ++start;
+    const bool closedLoop = start == around.size();
+    std::vector<glm::dvec2> run;
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      const auto& point = around[(start + i) % around.size()];
+      if (point) {
+        run.push_back(*point);
+      } else if (!run.empty()) {
+        edge.runs.push_back(std::move(run));
+        run.clear();
+      }
+    }
+    if (closedLoop && !run.empty()) run.push_back(run.front());
+    if (!run.empty()) edge.runs.push_back(std::move(run));
+    bundle.rimEdgesOnStop.push_back(std::move(edge));
   }
   return bundle;
 }

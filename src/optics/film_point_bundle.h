@@ -36,6 +36,19 @@ struct FilmPointBundle {
   double passing = 0.0;              // share of the bundle's light that reaches the film point
   std::vector<BundleShare> blocked;  // by surface, largest first; shares of the bundle's light
   bool empty() const { return rays.empty(); }  // no ray from this point reaches the stop
+
+  // The footprint on the stop ("cat's eye"): where the bundle crosses the stop plane, in mm from
+  // the axis (x, y), as seen from the film point. The iris is the circle of stopRadiusMm; the
+  // part of it whose rays pass is the polygon `passingOnStop`; each surface that cuts the bundle
+  // cuts it along its edge, drawn as `rimEdgesOnStop` (points where a ray grazes that rim).
+  double stopRadiusMm = 0.0;
+  std::vector<glm::dvec2> passingOnStop;
+  struct RimEdge {
+    int surface = -1;
+    // Connected runs of the edge (a rim cuts some directions and not others), each in order.
+    std::vector<std::vector<glm::dvec2>> runs;
+  };
+  std::vector<RimEdge> rimEdgesOnStop;
 };
 
 struct BundleSettings {

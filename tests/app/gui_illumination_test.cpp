@@ -196,6 +196,18 @@ TEST(FilmPointBundleView, TheCrossSectionShowsWhatReachesAFilmPointAndWhatStopsT
   ASSERT_TRUE(withBundle.valid() && withFans.valid());
   EXPECT_GT(withBundle.fractionNear(x0, y0, x1, y1, {120, 235, 140}, 20), 0.002);
   EXPECT_LT(withFans.fractionNear(x0, y0, x1, y1, {120, 235, 140}, 20), 0.0002);
+  // Beside the plot, the iris seen from the point: its passing part shaded green (the bundle's
+  // colour over the canvas, a third opaque), the iris's circle in the stop's yellow.
+  ASSERT_TRUE(bundle["widgets"].contains("illumination/footprint"));
+  EXPECT_FALSE(fans["widgets"].contains("illumination/footprint"));
+  const auto& footprint = bundle["widgets"]["illumination/footprint"];
+  const int fx0 = footprint["x"].get<int>(), fy0 = footprint["y"].get<int>();
+  const int fx1 = fx0 + footprint["width"].get<int>(), fy1 = fy0 + footprint["height"].get<int>();
+  const testing::Rgb shaded{static_cast<std::uint8_t>((120 * 90 + 18 * 165) / 255),
+                            static_cast<std::uint8_t>((235 * 90 + 20 * 165) / 255),
+                            static_cast<std::uint8_t>((140 * 90 + 26 * 165) / 255)};
+  EXPECT_GT(withBundle.fractionNear(fx0, fy0, fx1, fy1, shaded, 12), 0.03);
+  EXPECT_GT(withBundle.fractionNear(fx0, fy0, fx1, fy1, {235, 200, 80}, 40), 0.003);
 }
 
 }  // namespace

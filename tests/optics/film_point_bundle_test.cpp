@@ -76,6 +76,15 @@ TEST(FilmPointBundle, RaysEndAtTheFilmPointOrAtTheRimThatStopsThem) {
   EXPECT_GT(passed, 0);
   EXPECT_GT(blocked, 0);
   ASSERT_TRUE(bundle.chief.has_value());
+  // The footprint: what passes lies inside the iris, and each rim that cuts the bundle (the
+  // iris aside, which is the circle itself) has an edge drawn.
+  for (const glm::dvec2& p : bundle.passingOnStop)
+    EXPECT_LE(glm::length(p), bundle.stopRadiusMm * 1.001);
+  std::size_t rims = 0;
+  for (const BundleShare& share : bundle.blocked)
+    rims += share.surface != static_cast<int>(lens->stopIndex());
+  EXPECT_EQ(bundle.rimEdgesOnStop.size(), rims);
+  for (const auto& edge : bundle.rimEdgesOnStop) EXPECT_FALSE(edge.runs.empty()) << edge.surface;
 }
 
 TEST(FilmPointBundle, TheFrontmostRimIsNamedAndAStoppedDownAxisPassesWhole) {
@@ -92,6 +101,11 @@ TEST(FilmPointBundle, TheFrontmostRimIsNamedAndAStoppedDownAxisPassesWhole) {
   const FilmPointBundle small = traceFilmPointBundle(*stopped, 0.0);
   EXPECT_NEAR(small.passing, 1.0, 1e-12);
   EXPECT_TRUE(small.blocked.empty());
+  // Its footprint on the stop is the iris's own circle, 4 mm across the axis.
+  EXPECT_DOUBLE_EQ(small.stopRadiusMm, 4.0);
+  ASSERT_EQ(small.passingOnStop.size(), 32u);
+  for (const glm::dvec2& p : small.passingOnStop) EXPECT_NEAR(glm::length(p), 4.0, 0.01);
+  EXPECT_TRUE(small.rimEdgesOnStop.empty());
 }
 
 }  // namespace

@@ -9,7 +9,67 @@
 #include "app/platform/ui_scale.h"
 #include "app/plot/plot_widget.h"
 
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
 namespace lenslab::app {
+
+namespace {
+
+ImU32 toImU32(Colour colour, int alpha = 255) {
+  return IM_COL32(colour.r, colour.g, colour.b, alpha);
+}
+
+// The stop as seen from the film point ("cat's eye"): the iris's circle, the part whose rays
+// pass, and the edges of the rims that cut the rest, in the cross-section's surface colours.
+void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, ImVec2 size) {
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("footprint", size);
+  state.uiRects["illumination/footprint"] = {origin.x, origin.y, size.x, size.y};
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 end{origin.x + size.x, origin.y + size.y};
+  draw->AddRectFilled(origin, end, toImU32(palette::kBackground));
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  char text[96];
+  std::snprintf(text, sizeof text, "the iris seen from %.1f mm", bundle.imageHeightMm);
+  draw->AddText({origin.x + 4, origin.y + 2}, ImGui::GetColorU32(ImGuiCol_TextDisabled), text);
+  std::snprintf(text, sizeof text, "%.0f%% of its light passes", 100.0 * bundle.passing);
+  draw->AddText({origin.x + 4, end.y - line}, toImU32(palette::kBundlePassing), text);
+  if (bundle.empty() || !(bundle.stopRadiusMm > 0)) return;
+  const ImVec2 centre{origin.x + 0.5f * size.x, origin.y + 0.5f * size.y};
+  const float scale =
+      0.36f * std::min(size.x, size.y - 2 * line) / static_cast<float>(bundle.stopRadiusMm);
+  // Stop-plane (x, y) to the screen: as seen from the film, y up.
+  auto screen = [&](glm::dvec2 p) {
+    return ImVec2{centre.x + scale * static_cast<float>(p.x),
+                  centre.y - scale * static_cast<float>(p.y)};
+  };
+  draw->PushClipRect(origin, end, true);
+  std::vector<ImVec2> passing;
+  for (const glm::dvec2& p : bundle.passingOnStop) passing.push_back(screen(p));
+  if (passing.size() >= 3) {
+    draw->AddConvexPolyFilled(passing.data(), static_cast<int>(passing.size()),
+                              toImU32(palette::kBundlePassing, 90));
+    draw->AddPolyline(passing.data(), static_cast<int>(passing.size()),
+                      toImU32(palette::kBundlePassing), ImDrawFlags_Closed, 1.5f);
+  }
+  for (const auto& edge : bundle.rimEdgesOnStop) {
+    for (const auto& run : edge.runs) {
+      std::vector<ImVec2> points;
+      for (const glm::dvec2& p : run) points.push_back(screen(p));
+      if (points.size() < 2) continue;
+      draw->AddPolyline(points.data(), static_cast<int>(points.size()),
+                        toImU32(palette::stoppingSurfaceColour(edge.surface)), ImDrawFlags_None,
+                        1.5f);
+    }
+  }
+  draw->AddCircle(centre, scale * static_cast<float>(bundle.stopRadiusMm), toImU32(palette::kStop),
+                  64, 1.5f);
+  draw->PopClipRect();
+}
+
+}  // namespace
 
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
   IlluminationView& view = state.illumination;
@@ -59,9 +119,17 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::TextDisabled("%s", spec.note.c_str());
       spec.title.clear();
       spec.note.clear();
-      const PlotWidgetResult plot =
-          drawPlotWidget("illumination-plot", spec, ImGui::GetContentRegionAvail());
+      // With a film point chosen, its footprint on the stop beside the plot.
+      const optics::FilmPointBundle* bundle = filmPointBundle(state);
+      ImVec2 room = ImGui::GetContentRegionAvail();
+      const float footprintSide = bundle ? std::min(room.y, 0.4f * room.x) : 0.0f;
+      if (bundle) room.x -= footprintSide + ImGui::GetStyle().ItemSpacing.x;
+      const PlotWidgetResult plot = drawPlotWidget("illumination-plot", spec, room);
       state.uiRects["illumination-plot"] = plot.area;
+      if (bundle) {
+        ImGui::SameLine();
+        drawFootprint(state, *bundle, {footprintSide, room.y});
+      }
     }
   }
   ImGui::End();
