@@ -69,8 +69,8 @@ void printText(const AnalyzeArguments& arguments, const optics::LensSystem& lens
                const std::optional<double>& objectDistanceMm,
                const optics::RelativeIllumination& curve) {
   std::printf("%s: relative illumination, film distance %s, film diagonal %s\n",
-              arguments.lensPath.c_str(), distanceText(lens.filmDistanceMm()).c_str(),
-              distanceText(arguments.filmDiagonalMm).c_str());
+              arguments.lensPath.c_str(), millimetresText(lens.filmDistanceMm()).c_str(),
+              millimetresText(arguments.filmDiagonalMm).c_str());
   if (objectDistanceMm) {
     const std::string where =
         std::isinf(*objectDistanceMm) ? "infinity" : distanceText(*objectDistanceMm);

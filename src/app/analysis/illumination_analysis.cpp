@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "common/distance_text.h"
+
 namespace lenslab::app {
 
 void requestIllumination(IlluminationView& view,
@@ -29,10 +31,8 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   spec.y.label = "relative to the axis";
   spec.y.min = 0.0;
   spec.y.max = 1.05;
-  char note[160];
-  std::snprintf(note, sizeof note, "film diagonal %.1f mm; film distance %.2f mm",
-                result.filmDiagonalMm, result.lens ? result.lens->filmDistanceMm() : 0.0);
-  spec.note = note;
+  spec.note = "film diagonal " + millimetresText(result.filmDiagonalMm) + "; film distance " +
+              millimetresText(result.lens ? result.lens->filmDistanceMm() : 0.0);
   if (!result.curve) {
     spec.note += "; no light reaches the centre of the film";
     return spec;
