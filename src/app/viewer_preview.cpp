@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -62,6 +63,19 @@ void Viewer::pollPreview() {
 
 void Viewer::focusOnClick() {
   const auto click = std::exchange(state_.preview.focusClick, std::nullopt);
+  if (click && state_.filmPointHeightMm) {
+    // With a film point's bundle shown, a click chooses the film point instead: the picture's
+    // diagonal is the film's, and the bundle depends only on the distance from the centre.
+    const double width = std::max(1, state_.preview.imageWidth);
+    const double height = std::max(1, state_.preview.imageHeight);
+    const double mmPerPixel = state_.filmDiagonalMm / std::hypot(width, height);
+    const double radiusMm =
+        std::hypot(click->first - 0.5 * width, click->second - 0.5 * height) * mmPerPixel;
+    state_.filmPointHeightMm = std::min(radiusMm, 0.5 * state_.filmDiagonalMm);
+    state_.log.info("Film point " + millimetresText(*state_.filmPointHeightMm) +
+                    " from the centre: its bundle is in the cross-section");
+    return;
+  }
   if (!click || !state_.lensSystem || !preview_.hasScene()) return;
   const auto [width, height] = preview_.previewSize(false);
   const double x = click->first * width / std::max(1, state_.preview.imageWidth);

@@ -8,8 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/background_process.h"
 #include "support/png_image.h"
 #include "support/run_process.h"
+#include "support/xdotool_session.h"
 
 namespace lenslab {
 namespace {
@@ -208,6 +210,59 @@ TEST(FilmPointBundleView, TheCrossSectionShowsWhatReachesAFilmPointAndWhatStopsT
                             static_cast<std::uint8_t>((140 * 90 + 26 * 165) / 255)};
   EXPECT_GT(withBundle.fractionNear(fx0, fy0, fx1, fy1, shaded, 12), 0.03);
   EXPECT_GT(withBundle.fractionNear(fx0, fy0, fx1, fy1, {235, 200, 80}, 40), 0.003);
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// With a film point's bundle shown, a real click on the preview chooses the film point: its
+// distance from the picture's centre, in the film's millimetres (the picture's diagonal is the
+// film's), instead of focusing there.
+TEST(FilmPointBundleView, AClickOnThePreviewChoosesTheFilmPoint) {
+  const auto scratch = testing::makeTestDirectory("film-point-click");
+  std::ofstream(scratch / "commands.script") << "show-panel illumination\n"
+                                                "set film-point 5\n"
+                                                "wait-frames 3\n"
+                                                "dump-ui before.json\n"
+                                                "wait-until-file go\n"
+                                                "wait-frames 5\n"
+                                                "dump-ui after.json\n"
+                                                "quit\n";
+  testing::BackgroundProcess viewerProcess(
+      "cd '" + scratch.string() + "' && exec '" + LENSLAB_BINARY +
+      "' --size 1400x900 --script commands.script 2>stderr.txt");
+  ASSERT_TRUE(testing::waitForFile(scratch / "before.json", std::chrono::seconds(30)));
+  const nlohmann::json before = testing::readJson(scratch / "before.json");
+  ASSERT_TRUE(before["widgets"].contains("preview/image")) << before["widgets"];
+  // Nine tenths across and half way down: 0.4 of the picture's width from its centre.
+  const auto point = testing::pointIn(before, "preview/image", 0.9, 0.5);
+  const auto clicked =
+      testing::runProcess(testing::kFocusViewerWindow + "xdotool mousemove --window $W " +
+                              point.text() + " && sleep 0.2 && xdotool click 1",
+                          scratch);
+  ASSERT_EQ(clicked.exitCode, 0) << clicked.err;
+  std::ofstream(scratch / "go") << "go";
+  const auto exitCode = viewerProcess.wait(std::chrono::seconds(60));
+  ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
+  EXPECT_EQ(*exitCode, 0) << testing::readWholeFile(scratch / "stderr.txt");
+  const nlohmann::json after = testing::readJson(scratch / "after.json");
+  const double width = after["state"]["preview"]["image_width"].get<double>();
+  const double height = after["state"]["preview"]["image_height"].get<double>();
+  const double diagonal = after["state"]["film_diagonal_mm"].get<double>();
+  const auto& image = before["widgets"]["preview/image"];
+  // Where the click landed, in the picture's pixels, from its centre.
+  const double dx = (point.x - image["x"].get<double>()) / image["width"].get<double>() - 0.5;
+  const double dy = (point.y - image["y"].get<double>()) / image["height"].get<double>() - 0.5;
+  const double expected =
+      std::hypot(dx * width, dy * height) * diagonal / std::hypot(width, height);
+  ASSERT_TRUE(after["state"]["film_point"].is_object()) << after["state"];
+  EXPECT_NEAR(after["state"]["film_point"]["height_mm"].get<double>(), expected, 0.1);
+  EXPECT_GT(expected, 10.0);
+  // The click did not focus: the film distance is the one before.
+  EXPECT_EQ(after["state"]["film_distance_mm"], before["state"]["film_distance_mm"]);
 }
 
 }  // namespace

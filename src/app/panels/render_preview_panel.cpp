@@ -128,7 +128,8 @@ void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place) {
       }
       state.uiRects["preview/image"] = {topLeft.x, topLeft.y, width, height};
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("Click to focus here");
+        ImGui::SetTooltip(state.filmPointHeightMm ? "Click to show this film point's bundle"
+                                                  : "Click to focus here");
         if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
           const ImVec2 mouse = ImGui::GetIO().MousePos;
           preview.focusClick = {(mouse.x - topLeft.x) / width * preview.imageWidth,
