@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "optics/chief_ray.h"
+#include "optics/film_point_rays.h"
 #include "optics/lens_system.h"
 #include "optics/unclipped_trace.h"
 
@@ -17,9 +18,7 @@ class FilmPoint {
  public:
   FilmPoint(const LensSystem& lens, double imageHeightMm)
       : lens_(lens), point_(0.0, -imageHeightMm, 0.0), planeZ_(lens.rearVertexZ()) {
-    double widest = 0.0;
-    for (const SurfaceGeometry& s : lens.surfaces()) widest = std::max(widest, s.semiApertureMm);
-    searchRadiusMm_ = 3.0 * widest + imageHeightMm;
+    searchRadiusMm_ = rearPlaneSearchRadiusMm(lens, imageHeightMm);
     stopRadiusMm_ = lens.surfaces()[lens.stopIndex()].semiApertureMm;
     const double length = lens.frontVertexZ() - lens.rearVertexZ();
     startZMm_ = lens.frontVertexZ() + std::max(5.0, 0.25 * length);
@@ -51,11 +50,7 @@ class FilmPoint {
   // The ray through (x, y) passes every rim.
   bool passes(double x, double y) const { return lens_.traceFromFilm(toPlane(x, y)).has_value(); }
   // cos^4 / Z^2 per unit area of the rear-vertex plane (relative_illumination.h).
-  double density(double x, double y) const {
-    const double dy = y - point_.y;
-    const double d2 = x * x + dy * dy + planeZ_ * planeZ_;
-    return planeZ_ * planeZ_ / (d2 * d2);
-  }
+  double density(double x, double y) const { return kolbDensityPerMm2(x, y - point_.y, planeZ_); }
 
   // The ray through (x, y) followed from the scene: the surface that stops it (-1: it passes),
   // and its path when asked.
@@ -99,18 +94,6 @@ class FilmPoint {
   double searchRadiusMm_ = 0.0, stopRadiusMm_ = 0.0, startZMm_ = 0.0;
 };
 
-// Where `inside(t)` turns false in [0, reach], given inside(0); reach when it never does.
-template <class Inside>
-double boundary(const Inside& inside, double reach, double tolerance) {
-  if (inside(reach)) return reach;
-  double lo = 0.0, hi = reach;
-  while (hi - lo > tolerance) {
-    const double mid = 0.5 * (lo + hi);
-    (inside(mid) ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 }  // namespace
 
 FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightMm,
@@ -127,10 +110,10 @@ FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightM
   const double tolerance = 1e-4 * reach;
 
   // Meridional rays, evenly across the bundle's extent in y.
-  const double up =
-      boundary([&](double t) { return film.reachesStop(0.0, centreY + t); }, reach, tolerance);
-  const double down =
-      boundary([&](double t) { return film.reachesStop(0.0, centreY - t); }, reach, tolerance);
+  const double up = boundaryWithin(reach, tolerance,
+                                   [&](double t) { return film.reachesStop(0.0, centreY + t); });
+  const double down = boundaryWithin(reach, tolerance,
+                                     [&](double t) { return film.reachesStop(0.0, centreY - t); });
   const int count = std::max(2, settings.meridionalRays);
   for (int i = 0; i < count; ++i) {
     const double y = centreY - down + (up + down) * (i + 0.5) / count;
@@ -155,11 +138,11 @@ FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightM
     const double angle = 2.0 * std::numbers::pi * (k + 0.5) / angles;
     const double ux = std::cos(angle), uy = std::sin(angle);
     auto at = [&](double t) { return glm::dvec2{t * ux, centreY + t * uy}; };
-    const double admitted =
-        boundary([&](double t) { return film.reachesStop(at(t).x, at(t).y); }, reach, tolerance);
-    const double passes = std::min(
-        admitted,
-        boundary([&](double t) { return film.passes(at(t).x, at(t).y); }, reach, tolerance));
+    const double admitted = boundaryWithin(
+        reach, tolerance, [&](double t) { return film.reachesStop(at(t).x, at(t).y); });
+    const double passes = std::min(admitted, boundaryWithin(reach, tolerance, [&](double t) {
+                                     return film.passes(at(t).x, at(t).y);
+                                   }));
     // Light between radii r0 and r1 along this direction: integral of density r dr.
     auto light = [&](double r0, double r1) {
       double sum = 0.0;
@@ -203,9 +186,9 @@ FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightM
     for (int k = 0; k < angles; ++k) {
       const double angle = 2.0 * std::numbers::pi * (k + 0.5) / angles;
       const double ux = std::cos(angle), uy = std::sin(angle);
-      const double r = boundary(
-          [&](double t) { return film.insideRim(t * ux, centreY + t * uy, share.surface); }, reach,
-          tolerance);
+      const double r = boundaryWithin(reach, tolerance, [&](double t) {
+        return film.insideRim(t * ux, centreY + t * uy, share.surface);
+      });
       if (r >= reach) continue;  // this rim does not cut in this direction
       around[static_cast<std::size_t>(k)] = film.onStop(r * ux, centreY + r * uy);
     }

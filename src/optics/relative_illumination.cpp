@@ -7,6 +7,7 @@
 #include <set>
 
 #include "optics/chief_ray.h"
+#include "optics/film_point_rays.h"
 #include "optics/lens_system.h"
 #include "optics/unclipped_trace.h"
 
@@ -38,12 +39,7 @@ class PassRegion {
  public:
   PassRegion(const LensSystem& lens, double filmHeightMm, std::optional<double> diskRadiusMm)
       : lens_(lens), h_(filmHeightMm), planeZ_(lens.rearVertexZ()), diskRadiusMm_(diskRadiusMm) {
-    double widest = 0.0;
-    for (const SurfaceGeometry& s : lens.surfaces()) widest = std::max(widest, s.semiApertureMm);
-    // No ray that passes crosses the rear-vertex plane farther out than this: the lens is at most
-    // `widest` from the axis, and the plane lies between the film and the lens except for the
-    // rear surface's sag, which the factor covers.
-    searchRadiusMm_ = 3.0 * widest + std::abs(filmHeightMm);
+    searchRadiusMm_ = rearPlaneSearchRadiusMm(lens, filmHeightMm);
   }
 
   double searchRadiusMm() const { return searchRadiusMm_; }
@@ -68,9 +64,7 @@ class PassRegion {
 
   // The integrand Z^2 / d^4 (cos^4 theta / Z^2).
   double irradianceDensity(double x, double y) const {
-    const double dx = x - h_;
-    const double d2 = dx * dx + y * y + planeZ_ * planeZ_;
-    return planeZ_ * planeZ_ / (d2 * d2);
+    return kolbDensityPerMm2(x - h_, y, planeZ_);
   }
 
  private:
@@ -81,17 +75,6 @@ class PassRegion {
   double searchRadiusMm_ = 0.0;
 };
 
-// Where passes(t) turns false in [lo, hi], given passes(lo) and !passes(hi): the middle of the
-// last bracket, within tolerance / 2 and without the inward bias of its lower end.
-template <class Passes>
-double bisect(double lo, double hi, double tolerance, const Passes& passes) {
-  while (hi - lo > tolerance) {
-    const double mid = 0.5 * (lo + hi);
-    (passes(mid) ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 // The boundary's distance from the centre along one direction, given that the centre passes:
 // nullopt when the ray at `reach` still passes. Neighbouring directions have nearby boundaries, so
 // a bracket of +-3% around the previous one usually holds and saves about six bisection steps.
@@ -101,13 +84,13 @@ std::optional<double> boundaryRadius(const Passes& passes, double reach, double 
   if (previous && *previous < reach) {
     const double inner = 0.97 * *previous, outer = std::min(reach, 1.03 * *previous);
     const bool innerPasses = passes(inner);
-    if (innerPasses && !passes(outer)) return bisect(inner, outer, tolerance, passes);
-    if (!innerPasses) return bisect(0.0, inner, tolerance, passes);
+    if (innerPasses && !passes(outer)) return bisectBoundary(inner, outer, tolerance, passes);
+    if (!innerPasses) return bisectBoundary(0.0, inner, tolerance, passes);
     if (passes(reach)) return std::nullopt;
-    return bisect(outer, reach, tolerance, passes);
+    return bisectBoundary(outer, reach, tolerance, passes);
   }
   if (passes(reach)) return std::nullopt;
-  return bisect(0.0, reach, tolerance, passes);
+  return bisectBoundary(0.0, reach, tolerance, passes);
 }
 
 // A point of the meridional line y = 0 whose ray passes, near `guessX`; nullopt when none does.
@@ -155,11 +138,8 @@ FilmPointIllumination filmPointIllumination(const LensSystem& lens, double image
   auto passesAlongX = [&](double sign) {
     return [&, sign](double t) { return region.passes(*start + sign * t, 0.0); };
   };
-  const double right =
-      region.passes(*start + reach, 0.0) ? reach : bisect(0.0, reach, tolerance, passesAlongX(1.0));
-  const double left = region.passes(*start - reach, 0.0)
-                          ? reach
-                          : bisect(0.0, reach, tolerance, passesAlongX(-1.0));
+  const double right = boundaryWithin(reach, tolerance, passesAlongX(1.0));
+  const double left = boundaryWithin(reach, tolerance, passesAlongX(-1.0));
   const double centreX = *start + 0.5 * (right - left);
   result.regionCentreXMm = centreX;
 
