@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <map>
 
+#include "app/drawing/im_colour.h"
+
 namespace lenslab::app {
 
 namespace {
@@ -25,8 +27,6 @@ std::string findFontFile() {
 // DejaVu Sans: ImGui sizes a font by its ascender-to-descender height (1901 + 483 font units);
 // CSS sizes it by its em (2048 units).
 constexpr double kDejaVuEmPerSize = 2048.0 / (1901.0 + 483.0);
-
-ImU32 toImColour(const Colour& colour) { return IM_COL32(colour.r, colour.g, colour.b, colour.a); }
 
 ImVec2 toImVec(const CanvasPoint& point) {
   return ImVec2(static_cast<float>(point.x), static_cast<float>(point.y));

@@ -2,40 +2,9 @@
 
 #include <sstream>
 
+#include "app/drawing/svg_text.h"
+
 namespace lenslab::app {
-
-namespace {
-
-std::string rgb(const Colour& colour) {
-  std::ostringstream text;
-  text << "rgb(" << int(colour.r) << "," << int(colour.g) << "," << int(colour.b) << ")";
-  return text.str();
-}
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 std::string slideSvg(const SlidePicture& picture, const std::string& title) {
   std::ostringstream out;
@@ -44,17 +13,17 @@ std::string slideSvg(const SlidePicture& picture, const std::string& title) {
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << picture.widthPx << "\" height=\""
       << picture.heightPx << "\" viewBox=\"0 0 " << picture.widthPx << " " << picture.heightPx
       << "\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n"
-      << "<title>" << escaped(title) << "</title>\n"
+      << "<title>" << svgEscaped(title) << "</title>\n"
       << "<desc>lenslab cross-section: front of the lens on the left, " << picture.pixelsPerMm
       << " px per mm; the film on the axis at (" << picture.originPx.x << ", " << picture.originPx.y
       << ")</desc>\n"
       << "<rect class=\"background\" x=\"0\" y=\"0\" width=\"" << picture.widthPx << "\" height=\""
-      << picture.heightPx << "\" fill=\"" << rgb(picture.background) << "\"/>\n";
+      << picture.heightPx << "\" fill=\"" << svgRgb(picture.background) << "\"/>\n";
   // Fills of one colour and group go in one path: drawn as separate polygons, the glass's quads
   // showed their shared edges as faint seams (each edge anti-aliased twice).
   for (std::size_t first = 0; first < picture.fills.size();) {
     const SlideFill& fill = picture.fills[first];
-    out << "<path class=\"" << fill.group << "\" fill=\"" << rgb(fill.colour)
+    out << "<path class=\"" << fill.group << "\" fill=\"" << svgRgb(fill.colour)
         << "\" fill-opacity=\"" << fill.colour.a / 255.0 << "\" stroke=\"none\" d=\"";
     std::size_t next = first;
     for (; next < picture.fills.size(); ++next) {
@@ -71,7 +40,7 @@ std::string slideSvg(const SlidePicture& picture, const std::string& title) {
     first = next;
   }
   for (const SlideLine& line : picture.lines) {
-    out << "<polyline class=\"" << line.group << "\" fill=\"none\" stroke=\"" << rgb(line.colour)
+    out << "<polyline class=\"" << line.group << "\" fill=\"none\" stroke=\"" << svgRgb(line.colour)
         << "\" stroke-opacity=\"" << line.colour.a / 255.0 << "\" stroke-width=\"" << line.widthPx
         << "\" stroke-linejoin=\"round\"";
     if (line.dashed) out << " stroke-dasharray=\"" << line.dashPx << "," << line.gapPx << "\"";
@@ -84,7 +53,7 @@ std::string slideSvg(const SlidePicture& picture, const std::string& title) {
     out << "<text class=\"" << text.kind << "\" xml:space=\"preserve\" x=\"" << text.leftPx
         << "\" y=\"" << text.topPx + picture.metrics.ascentPerSize * text.sizePx
         << "\" font-size=\"" << text.sizePx * picture.metrics.emPerSize << "\" fill=\""
-        << rgb(text.colour) << "\">" << escaped(text.text) << "</text>\n";
+        << svgRgb(text.colour) << "\">" << svgEscaped(text.text) << "</text>\n";
   }
   out << "</svg>\n";
   return out.str();

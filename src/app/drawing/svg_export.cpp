@@ -1,6 +1,7 @@
 #include "app/drawing/svg_export.h"
 
 #include "app/drawing/canvas_clip.h"
+#include "app/drawing/svg_text.h"
 #include "common/atomic_file.h"
 
 #include <algorithm>
@@ -9,12 +10,6 @@
 namespace lenslab::app {
 
 namespace {
-
-std::string rgb(const Colour& colour) {
-  std::ostringstream text;
-  text << "rgb(" << int(colour.r) << "," << int(colour.g) << "," << int(colour.b) << ")";
-  return text.str();
-}
 
 // SVG's y axis points down; the lens frame's z runs right-to-left on screen. One user unit is
 // one millimetre.
@@ -51,7 +46,7 @@ std::string crossSectionSvg(const CrossSectionDrawing& drawing, const SvgFrame& 
       << " " << height << "\">\n"
       << "<title>lenslab cross-section (units: mm; front of the lens on the left)</title>\n"
       << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << width << "\" height=\"" << height
-      << "\" fill=\"" << rgb(palette::kBackground) << "\"/>\n";
+      << "\" fill=\"" << svgRgb(palette::kBackground) << "\"/>\n";
   std::vector<CanvasPoint> corners;
   for (const FilledQuads& fill : drawing.fills) {
     std::ostringstream path;
@@ -66,7 +61,7 @@ std::string crossSectionSvg(const CrossSectionDrawing& drawing, const SvgFrame& 
       path << "Z ";
     }
     if (path.tellp() == 0) continue;  // the element is out of the frame
-    out << "<path fill=\"" << rgb(fill.colour) << "\" fill-opacity=\"" << fill.colour.a / 255.0
+    out << "<path fill=\"" << svgRgb(fill.colour) << "\" fill-opacity=\"" << fill.colour.a / 255.0
         << "\" stroke=\"none\" d=\"" << path.str() << "\"/>\n";
   }
   std::vector<CanvasPoint> points;
@@ -79,7 +74,7 @@ std::string crossSectionSvg(const CrossSectionDrawing& drawing, const SvgFrame& 
     const bool wholePolygon = line.closed && runs.size() == 1 && runs[0].size() == points.size();
     for (const std::vector<CanvasPoint>& run : runs) {
       out << "<" << (wholePolygon ? "polygon" : "polyline") << " fill=\"none\" stroke=\""
-          << rgb(line.colour) << "\" stroke-opacity=\"" << line.colour.a / 255.0
+          << svgRgb(line.colour) << "\" stroke-opacity=\"" << line.colour.a / 255.0
           << "\" stroke-width=\"" << line.widthPx * mmPerPixel << "\"";
       if (line.dashed) {
         out << " stroke-dasharray=\"" << 8 * mmPerPixel << "," << 5 * mmPerPixel << "\"";

@@ -8,6 +8,7 @@
 
 #include "app/drawing/canvas_clip.h"
 #include "app/drawing/cross_section_drawing.h"
+#include "app/drawing/im_colour.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
@@ -20,8 +21,6 @@ namespace {
 
 constexpr float kGrabDistancePx = 6.0f;  // at UI scale 1
 constexpr float kDashPx = 8.0f, kGapPx = 5.0f;
-
-ImU32 toImColour(const Colour& colour) { return IM_COL32(colour.r, colour.g, colour.b, colour.a); }
 
 ImVec2 toImVec(const CanvasPoint& point) {
   return ImVec2(static_cast<float>(point.x), static_cast<float>(point.y));

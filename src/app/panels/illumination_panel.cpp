@@ -4,6 +4,7 @@
 // newest finished curve and says when it is catching up with an edit.
 
 #include "app/analysis/illumination_analysis.h"
+#include "app/drawing/im_colour.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
@@ -17,10 +18,6 @@ namespace lenslab::app {
 
 namespace {
 
-ImU32 toImU32(Colour colour, int alpha = 255) {
-  return IM_COL32(colour.r, colour.g, colour.b, alpha);
-}
-
 // The stop as seen from the film point ("cat's eye"): the iris's circle, the part whose rays
 // pass, and the edges of the rims that cut the rest, in the cross-section's surface colours.
 void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, ImVec2 size) {
@@ -29,13 +26,13 @@ void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, Im
   state.uiRects["illumination/footprint"] = {origin.x, origin.y, size.x, size.y};
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end{origin.x + size.x, origin.y + size.y};
-  draw->AddRectFilled(origin, end, toImU32(palette::kBackground));
+  draw->AddRectFilled(origin, end, toImColour(palette::kBackground));
   const float line = ImGui::GetTextLineHeightWithSpacing();
   char text[96];
   std::snprintf(text, sizeof text, "the iris seen from %.1f mm", bundle.imageHeightMm);
   draw->AddText({origin.x + 4, origin.y + 2}, ImGui::GetColorU32(ImGuiCol_TextDisabled), text);
   std::snprintf(text, sizeof text, "%.0f%% of its light passes", 100.0 * bundle.passing);
-  draw->AddText({origin.x + 4, end.y - line}, toImU32(palette::kBundlePassing), text);
+  draw->AddText({origin.x + 4, end.y - line}, toImColour(palette::kBundlePassing), text);
   if (bundle.empty() || !(bundle.stopRadiusMm > 0)) return;
   const ImVec2 centre{origin.x + 0.5f * size.x, origin.y + 0.5f * size.y};
   const float scale =
@@ -50,9 +47,9 @@ void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, Im
   for (const glm::dvec2& p : bundle.passingOnStop) passing.push_back(screen(p));
   if (passing.size() >= 3) {
     draw->AddConvexPolyFilled(passing.data(), static_cast<int>(passing.size()),
-                              toImU32(palette::kBundlePassing, 90));
+                              toImColour(palette::kBundlePassing, 90));
     draw->AddPolyline(passing.data(), static_cast<int>(passing.size()),
-                      toImU32(palette::kBundlePassing), ImDrawFlags_Closed, 1.5f);
+                      toImColour(palette::kBundlePassing), ImDrawFlags_Closed, 1.5f);
   }
   for (const auto& edge : bundle.rimEdgesOnStop) {
     for (const auto& run : edge.runs) {
@@ -60,12 +57,12 @@ void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, Im
       for (const glm::dvec2& p : run) points.push_back(screen(p));
       if (points.size() < 2) continue;
       draw->AddPolyline(points.data(), static_cast<int>(points.size()),
-                        toImU32(palette::stoppingSurfaceColour(edge.surface)), ImDrawFlags_None,
+                        toImColour(palette::stoppingSurfaceColour(edge.surface)), ImDrawFlags_None,
                         1.5f);
     }
   }
-  draw->AddCircle(centre, scale * static_cast<float>(bundle.stopRadiusMm), toImU32(palette::kStop),
-                  64, 1.5f);
+  draw->AddCircle(centre, scale * static_cast<float>(bundle.stopRadiusMm),
+                  toImColour(palette::kStop), 64, 1.5f);
   draw->PopClipRect();
 }
 

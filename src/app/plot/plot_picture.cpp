@@ -15,9 +15,9 @@ namespace {
 constexpr Colour kInk{0x20, 0x20, 0x20, 255}, kMuted{0x55, 0x55, 0x55, 255},
     kGrid{0xd8, 0xd8, 0xd8, 255}, kWhite{255, 255, 255, 255}, kLegendEdge{0x99, 0x99, 0x99, 255};
 
-// Series colours are chosen for the dark theme; on white, near-white becomes near-black and the
-// rest is darkened to keep its contrast (as plot_svg does).
-Colour onWhite(std::uint32_t rgba) {
+}  // namespace
+
+Colour seriesColourOnWhite(std::uint32_t rgba) {
   const auto r = static_cast<std::uint8_t>((rgba >> 24) & 0xff),
              g = static_cast<std::uint8_t>((rgba >> 16) & 0xff),
              b = static_cast<std::uint8_t>((rgba >> 8) & 0xff);
@@ -25,8 +25,6 @@ Colour onWhite(std::uint32_t rgba) {
   return {static_cast<std::uint8_t>(r * 7 / 10), static_cast<std::uint8_t>(g * 7 / 10),
           static_cast<std::uint8_t>(b * 7 / 10), 255};
 }
-
-}  // namespace
 
 SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double fontPx,
                          const SlideTextMetrics& metrics) {
@@ -94,7 +92,7 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
       points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
     }
     for (auto& run : clipPolyline(points, picture.drawingArea)) {
-      line(std::move(run), onWhite(series.rgba), 2.0, series.dashed, "series");
+      line(std::move(run), seriesColourOnWhite(series.rgba), 2.0, series.dashed, "series");
     }
   }
   if (frame.legend.width > 0) {
@@ -112,8 +110,8 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
       const PlotSeries& series = spec.series[i];
       const double y = l.y + 0.25 * fontPx + frame.lineHeightPx * (static_cast<double>(i) + 0.5);
       const double x = l.x + 0.5 * fontPx;
-      line({{x, y}, {x + kLegendSampleEm * fontPx, y}}, onWhite(series.rgba), 2.0, series.dashed,
-           "legend");
+      line({{x, y}, {x + kLegendSampleEm * fontPx, y}}, seriesColourOnWhite(series.rgba), 2.0,
+           series.dashed, "legend");
       text(series.name, x + (kLegendSampleEm + 0.5) * fontPx, y - 0.5 * fontPx, kInk, "legend");
     }
     picture.lines.push_back(std::move(edge));

@@ -17,6 +17,10 @@ inline double plotExportFontPx(int heightPx) {
   return heightPx / 40.0 < 12.0 ? 12.0 : heightPx / 40.0;
 }
 
+// A series' colour (chosen for the dark theme) as drawn on a white page: near-white becomes
+// near-black, the rest is darkened to 70% to keep its contrast. The PNG and the SVG use it.
+Colour seriesColourOnWhite(std::uint32_t rgba);
+
 // Text kinds: "title", "note", "y-label", "x-label", "x-tick", "y-tick", "legend".
 SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double fontPx,
                          const SlideTextMetrics& metrics);

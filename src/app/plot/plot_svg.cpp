@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/drawing/svg_text.h"
 #include "app/plot/plot_layout.h"
 #include "app/plot/plot_picture.h"
 #include "common/atomic_file.h"
@@ -12,33 +13,11 @@ namespace lenslab::app {
 
 namespace {
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-std::string colour(std::uint32_t rgba) {
+// A series' colour as it is drawn on the white page, as "#rrggbb".
+std::string inkOnWhite(std::uint32_t rgba) {
+  const Colour ink = seriesColourOnWhite(rgba);
   char text[16];
-  std::snprintf(text, sizeof text, "#%02x%02x%02x", (rgba >> 24) & 0xff, (rgba >> 16) & 0xff,
-                (rgba >> 8) & 0xff);
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", ink.r, ink.g, ink.b);
   return text;
 }
 
@@ -46,15 +25,6 @@ std::string number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", value);
   return text;
-}
-
-// Series colours are chosen for the dark theme; on white, near-white becomes near-black and the
-// rest is darkened to keep its contrast.
-std::uint32_t onWhite(std::uint32_t rgba) {
-  const std::uint32_t r = (rgba >> 24) & 0xff, g = (rgba >> 16) & 0xff, b = (rgba >> 8) & 0xff;
-  if (r > 0xc0 && g > 0xc0 && b > 0xc0) return 0x202020ffu;
-  auto darker = [](std::uint32_t channel) { return channel * 7 / 10; };
-  return (darker(r) << 24) | (darker(g) << 16) | (darker(b) << 8) | 0xffu;
 }
 
 }  // namespace
@@ -75,12 +45,12 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
   const float ascent = 0.8f * fontPx;  // text y is its baseline
   if (!spec.title.empty())
     svg << "<text x=\"" << number(frame.area.x) << "\" y=\"" << number(frame.titleY + ascent)
-        << "\" font-weight=\"bold\" fill=\"#000000\">" << escaped(spec.title) << "</text>\n";
+        << "\" font-weight=\"bold\" fill=\"#000000\">" << svgEscaped(spec.title) << "</text>\n";
   if (!spec.note.empty())
     svg << "<text x=\"" << number(frame.area.x) << "\" y=\"" << number(frame.noteY + ascent)
-        << "\" fill=\"#444444\">" << escaped(spec.note) << "</text>\n";
+        << "\" fill=\"#444444\">" << svgEscaped(spec.note) << "</text>\n";
   svg << "<text class=\"y-label\" x=\"" << number(frame.area.x) << "\" y=\""
-      << number(frame.yLabelY + ascent) << "\" fill=\"#000000\">" << escaped(spec.y.label)
+      << number(frame.yLabelY + ascent) << "\" fill=\"#000000\">" << svgEscaped(spec.y.label)
       << "</text>\n";
   // Grid and ticks.
   svg << "<g stroke=\"#d8d8d8\" stroke-width=\"1\">\n";
@@ -111,7 +81,7 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
   }
   svg << "<text class=\"x-label\" x=\"" << number(frame.area.x + 0.5f * frame.area.width)
       << "\" y=\"" << number(frame.xLabelY + ascent)
-      << "\" text-anchor=\"middle\" fill=\"#000000\">" << escaped(spec.x.label) << "</text>\n";
+      << "\" text-anchor=\"middle\" fill=\"#000000\">" << svgEscaped(spec.x.label) << "</text>\n";
   // Curves, clipped to the box.
   svg << "<clipPath id=\"plot-area\"><rect x=\"" << number(frame.area.x) << "\" y=\""
       << number(frame.area.y) << "\" width=\"" << number(frame.area.width) << "\" height=\""
@@ -124,9 +94,9 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       points +=
           number(frame.toScreenX(series.x[i])) + "," + number(frame.toScreenY(series.y[i])) + " ";
     }
-    svg << "<polyline class=\"series\" data-name=\"" << escaped(series.name) << "\" stroke=\""
-        << colour(onWhite(series.rgba)) << "\""
-        << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"" << points << "\"/>\n";
+    svg << "<polyline class=\"series\" data-name=\"" << svgEscaped(series.name) << "\" stroke=\""
+        << inkOnWhite(series.rgba) << "\"" << (series.dashed ? " stroke-dasharray=\"6 4\"" : "")
+        << " points=\"" << points << "\"/>\n";
   }
   svg << "</g>\n";
   if (frame.legend.width > 0) {
@@ -140,11 +110,11 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       const float x = box.x + 0.5f * fontPx;
       svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
           << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
-          << colour(onWhite(series.rgba)) << "\" stroke-width=\"2\""
+          << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
           << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
       svg << "<text class=\"legend\" x=\"" << number(x + (kLegendSampleEm + 0.5f) * fontPx)
           << "\" y=\"" << number(y + 0.35f * fontPx) << "\" fill=\"#000000\">"
-          << escaped(series.name) << "</text>\n";
+          << svgEscaped(series.name) << "</text>\n";
     }
   }
   svg << "</svg>\n";
