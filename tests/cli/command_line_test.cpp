@@ -4,14 +4,11 @@
 
 #include <algorithm>
 
+#include "cli/headless_lenslab.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
-
-std::string lenslab(const std::string& arguments) {
-  return std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + LENSLAB_BINARY + "' " + arguments;
-}
 
 class CommandLine : public ::testing::Test {
  protected:

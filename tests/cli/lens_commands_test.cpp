@@ -7,18 +7,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/headless_lenslab.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
-
-std::string lenslab(const std::string& arguments) {
-  return std::string("env -u DISPLAY -u WAYLAND_DISPLAY '") + LENSLAB_BINARY + "' " + arguments;
-}
-
-std::string lensPath(const std::string& name) {
-  return std::string(LENSLAB_SOURCE_DIR) + "/lenses/" + name;
-}
 
 class LensCommands : public ::testing::Test {
  protected:
