@@ -9,6 +9,7 @@
 #include <map>
 
 #include "app/drawing/im_colour.h"
+#include "app/resources.h"
 
 namespace lenslab::app {
 
@@ -16,8 +17,7 @@ namespace {
 
 // The UI's font (platform/window.cpp loads the same files).
 std::string findFontFile() {
-  for (const char* candidate :
-       {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
+  for (const char* candidate : kUiFontFiles) {
     std::error_code error;
     if (std::filesystem::exists(candidate, error)) return candidate;
   }

@@ -16,6 +16,7 @@
 #include "app/drawing/cross_section_drawing.h"
 #include "app/platform/partial_repaint.h"
 #include "app/platform/ui_scale.h"
+#include "app/resources.h"
 
 namespace lenslab::app {
 
@@ -35,8 +36,7 @@ void recordGlfwError(int /*code*/, const char* description) {
 void loadFonts(float contentScale) {
   ImGuiIO& io = ImGui::GetIO();
   const float pixels = 15.0f * contentScale;
-  for (const char* candidate :
-       {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"}) {
+  for (const char* candidate : kUiFontFiles) {
     if (std::filesystem::exists(candidate) &&
         io.Fonts->AddFontFromFileTTF(candidate, pixels) != nullptr) {
       return;
