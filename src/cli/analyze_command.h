@@ -1,9 +1,9 @@
 #pragma once
-// `lenslab analyze LENS [--json] [--film-distance MM | --object-distance MM|inf]
-// [--film-diagonal MM] [--stop-diameter MM] [--points N]`: analyses of a lens at one film distance.
-// Today: relative illumination (optics/relative_illumination.h), with the names `total`, `cos4`,
-// `vignetting` and `clipped_by` that the viewer's panels use, plus `rear_disk_total`: total as the
-// course scenes' rear-disk sampling integrates it. Later analyses add their own keys.
+// `lenslab analyze LENS [--json] [--film-distance MM] [--object-distance MM|inf]
+// [--film-diagonal MM] [--stop-diameter MM] [--points N] [--fields F,F,..] [--wavelength NM]
+// [--only KEY,KEY]`: analyses of a lens at one film distance. The analyses and their JSON keys
+// are registered in cli/analyze/analysis_reports.cpp; each names its fields by
+// field_angle_deg and image_height_mm (optics/analysis/field_point.h).
 
 #include <CLI/CLI.hpp>
 

@@ -90,13 +90,33 @@ TEST_F(AnalyzeCommand, TextTableAndBadOptions) {
       lenslab("analyze --object-distance near " + lensPath("wide-22mm.dat")), scratch);
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("--object-distance: 'near'"), std::string::npos) << bad.err;
-  const auto both = testing::runProcess(
-      lenslab("analyze --object-distance inf --film-distance 20 " + lensPath("wide-22mm.dat")),
-      scratch);
-  EXPECT_EQ(both.exitCode, 2);
+  // Both: the film stays where it is told, and the object distance only places the object.
+  const auto both =
+      analyzeJson("--object-distance 5000 --film-distance 20 " + lensPath("wide-22mm.dat"));
+  EXPECT_EQ(both.at("film_distance_mm").get<double>(), 20.0);
+  EXPECT_EQ(both.at("object_distance_mm").get<double>(), 5000.0);
+  EXPECT_FALSE(both.at("object_at_infinity").get<bool>());
+  for (const char* option : {"--only relative_illumination,nonsense", "--fields 0,1.2",
+                             "--fields 0,nan", "--wavelength 200", "--wavelength 1200"}) {
+    const auto refused = testing::runProcess(
+        lenslab(std::string("analyze ") + option + " " + lensPath("wide-22mm.dat")), scratch);
+    EXPECT_EQ(refused.exitCode, 2) << option;
+    EXPECT_NE(refused.err.find(std::string(option).substr(0, 6)), std::string::npos) << refused.err;
+  }
   const auto missing = testing::runProcess(lenslab("analyze nothing-here.dat"), scratch);
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_NE(missing.err.find("nothing-here.dat"), std::string::npos) << missing.err;
+}
+
+// --only limits the JSON to the keys it names; the setup is always there.
+TEST_F(AnalyzeCommand, OnlyRunsTheNamedAnalyses) {
+  const auto json = analyzeJson("--only relative_illumination --fields 0,0.5 --wavelength 656.27 " +
+                                lensPath("dgauss-50mm.dat"));
+  EXPECT_TRUE(json.contains("relative_illumination"));
+  EXPECT_EQ(json.at("field_fractions"), nlohmann::json::array({0.0, 0.5}));
+  EXPECT_EQ(json.at("wavelength_nm").get<double>(), 656.27);
+  EXPECT_TRUE(json.at("object_at_infinity").get<bool>());
+  EXPECT_TRUE(json.at("object_distance_mm").is_null());
 }
 
 }  // namespace
