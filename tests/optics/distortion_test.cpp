@@ -133,6 +133,52 @@ TEST(Distortion, SingletWithARemoteStopMatchesThirdOrder) {
   }
 }
 
+// A thin lens with the stop at the lens: the chief ray crosses the lens at its centre, where the
+// two faces are parallel, so it leaves at the angle it entered and lands at d tan(theta), d the
+// lens-to-film distance, up to the sideways step of the 0.4 mm of glass it crosses, whose part
+// beyond first order is about t (1 - 1/n) theta^2 / f, 0.02 % at 11 degrees. The paraxial chief
+// ray on the film is f tan(theta) d / f: so no distortion wherever the film is, even 2 mm from
+// the focus (where f tan(theta) alone would read (d - f) / f = 2 %).
+TEST(Distortion, ChiefRayLeavingAtItsEntranceAngleHasNone) {
+  Prescription p;
+  p.surfaces = {{0.0, 0.001, 0.0, std::nullopt, 4.0},
+                {100.0, 0.4, 1.5, std::nullopt, 12.0},
+                {-100.0, 1.0, 1.0, std::nullopt, 12.0}};
+  const double focus = testing::seidelByHand(p, 0.01).imageDistanceMm;
+  for (double defocusMm : {0.0, 2.0, -2.0}) {
+    p.surfaces.back().thicknessMm = focus + defocusMm;
+    const auto lens = build(p);
+    ASSERT_TRUE(lens);
+    AnalysisSetup setup;
+    setup.filmHalfDiagonalMm = 20.0;  // about 11 degrees
+    const auto curve = distortionCurve(*lens, setup, 32);
+    ASSERT_TRUE(curve);
+    for (const DistortionPoint& point : curve->points) {
+      ASSERT_TRUE(point.percent) << point.whyNot;
+      EXPECT_NEAR(*point.percent, 0.0, 0.02) << defocusMm << " " << point.imageHeightMm;
+    }
+    EXPECT_NEAR(curve->filmHeightScale, 1.0 + defocusMm / lens->firstOrder().eflMm, 1e-3);
+  }
+}
+
+// The double-Gauss at the course's film distance (0.66 mm in front of its paraxial focus) and
+// with the film moved: near the axis distortion tends to 0, and the curve barely moves with the
+// film (its shape is the lens's, not the focus's).
+TEST(Distortion, StartsFromZeroWhereverTheFilmIs) {
+  std::vector<double> corner;
+  for (double film : {0.0, 38.0, 35.0}) {
+    const auto lens = testing::loadLens(testing::bundledLensDir() / "dgauss-50mm.dat", film);
+    ASSERT_TRUE(lens);
+    AnalysisSetup setup;
+    const auto curve = distortionCurve(*lens, setup, 64);
+    ASSERT_TRUE(curve);
+    EXPECT_NEAR(*curve->points[1].percent, 0.0, 0.01) << film;
+    corner.push_back(*curve->points.back().percent);
+  }
+  EXPECT_NEAR(corner[1], corner[0], 0.1);
+  EXPECT_NEAR(corner[2], corner[0], 0.1);
+}
+
 TEST(Distortion, AnAfocalLensHasNoReference) {
   Prescription opening;
   opening.surfaces = {{0.0, 30.0, 0.0, std::nullopt, 20.0}};

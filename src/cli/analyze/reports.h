@@ -6,5 +6,8 @@
 namespace lenslab::cli {
 
 ReportPart relativeIlluminationReport(const AnalyzeContext& context);
+ReportPart distortionReport(const AnalyzeContext& context);
+ReportPart distortionGridReport(const AnalyzeContext& context);
+ReportPart fieldCurvatureReport(const AnalyzeContext& context);
 
 }  // namespace lenslab::cli

@@ -30,11 +30,12 @@ DistortionPoint distortionAt(const LensSystem& lens, const ParaxialImage& refere
     return point;
   }
   const double yMm = out->origin.y - out->direction.y * (out->origin.z / out->direction.z);
-  const double idealMm = reference.magnification
-                             ? *reference.magnification * field->objectPoint()->y
-                             : reference.eflMm * std::tan(field->fieldAngleDeg() * kRadians);
-  point.imageHeightMm = yMm;
-  point.fieldAngleDeg = field->fieldAngleDeg();
+  const double gaussianMm = reference.magnification
+                                ? *reference.magnification * field->objectPoint()->y
+                                : reference.eflMm * std::tan(field->fieldAngleDeg() * kRadians);
+  const double idealMm = gaussianMm * reference.filmHeightScale + 0.0;  // + 0: no -0 on the axis
+  point.imageHeightMm = yMm + 0.0;
+  point.fieldAngleDeg = field->fieldAngleDeg() + 0.0;
   point.idealHeightMm = idealMm;
   // On the axis both heights vanish; the ratio's limit is 1 (distortion is even in theta).
   point.percent = imageHeightMm == 0.0 ? 0.0 : 100.0 * (yMm - idealMm) / idealMm;
@@ -74,6 +75,7 @@ std::optional<DistortionCurve> distortionCurve(const LensSystem& lens, const Ana
   curve.objectAtInfinity = !reference->magnification.has_value();
   curve.eflMm = reference->eflMm;
   curve.magnification = reference->magnification;
+  curve.filmHeightScale = reference->filmHeightScale;
   curve.points.reserve(static_cast<std::size_t>(points));
   for (int i = 0; i < points; ++i) {
     const double h = setup.filmHalfDiagonalMm * i / (points - 1);

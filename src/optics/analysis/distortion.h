@@ -3,17 +3,22 @@
 // the film's corner, and the image of a square grid through the lens.
 //
 // percent = 100 (y - y0) / y0, with y the real chief ray's height on the film (traced, not
-// assumed) and y0 the Gaussian (paraxial) image height of the same object point
+// assumed) and y0 the paraxial chief ray's height on the film for the same object point
 // (analysis/paraxial_image.h):
 // - object at infinity: y0 = f tan(theta), f the EFL and theta the chief ray's angle in object
-//   space (FieldPoint::fieldAngleDeg), so "f-tan(theta) distortion";
+//   space (FieldPoint::fieldAngleDeg): "f-tan(theta) distortion";
 // - object at a finite distance: y0 = m Y, m the paraxial magnification of the object plane and
-//   Y the height of the chief ray's object point. This is the same Gaussian image height for a
-//   near object (f tan(theta) would mix the pupil's position into the reference).
-// y0 is the height in the Gaussian image plane: with the film elsewhere (a lens focused at
-// another distance) the chief ray's slope times that defocus is part of y - y0, as it is in a
-// picture taken on that film. On the axis percent is 0 by definition (the limit of a smooth
-// even function of theta).
+//   Y the height of the chief ray's object point: the same Gaussian image height for a near
+//   object (f tan(theta) would mix the entrance pupil's position into the reference).
+// Both are heights in the Gaussian image plane. With the film elsewhere (the course lenses' film
+// distances are the full-aperture best focus, a fraction of a millimetre in front of the
+// paraxial one) the paraxial chief ray, which leaves through the centre of the exit pupil, meets
+// the film at that height times (exit pupil to film) / (exit pupil to Gaussian focus), and y0
+// is scaled by that (ParaxialImage::filmHeightScale): a focus shift scales the whole picture and
+// is not distortion, which therefore still starts from 0 on the axis (the double-Gauss at its
+// film distance would otherwise read +1.2 % there). With the film at the Gaussian focus y0 is
+// exactly f tan(theta) or m Y. On the axis percent is 0 by definition (the limit of an even
+// function of the field).
 
 #include <optional>
 #include <string>
@@ -30,7 +35,7 @@ struct DistortionPoint {
   double imageHeightMm = 0.0;  // the requested image height (the real chief ray's, when found)
   // Each nullopt, with whyNot, when no chief ray reaches this image height.
   std::optional<double> fieldAngleDeg;
-  std::optional<double> idealHeightMm;  // y0
+  std::optional<double> idealHeightMm;  // y0, on the film
   std::optional<double> percent;
   std::string whyNot;
 };
@@ -40,6 +45,7 @@ struct DistortionCurve {
   bool objectAtInfinity = true;
   double eflMm = 0.0;
   std::optional<double> magnification;  // finite object only
+  double filmHeightScale = 1.0;         // ParaxialImage::filmHeightScale
 };
 
 // `points` (at least 2) image heights from 0 to setup.filmHalfDiagonalMm. nullopt, with

@@ -49,7 +49,7 @@ FieldCurvaturePoint fieldFoci(const LensSystem& lens, double imageHeightMm,
   const auto field =
       FieldPoint::resolve(lens, imageHeightMm, objectDistanceFromFilmMm, &point.whyNot);
   if (!field) return point;
-  point.fieldAngleDeg = field->fieldAngleDeg();
+  point.fieldAngleDeg = field->fieldAngleDeg() + 0.0;  // + 0: no -0 on the axis
   point.tangentialMm = pairFocusBehindFilm(lens, *field, {0.0, kPupilStep}, 1);
   point.sagittalMm = pairFocusBehindFilm(lens, *field, {kPupilStep, 0.0}, 0);
   if (!point.tangentialMm || !point.sagittalMm) {

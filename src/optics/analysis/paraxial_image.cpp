@@ -27,6 +27,10 @@ std::optional<ParaxialImage> paraxialImage(const LensSystem& lens,
     imageBehindRearFocusMm = -m * firstOrder.eflMm;
   }
   image.focusBehindFilmMm = firstOrder.bflMm + imageBehindRearFocusMm - lens.filmDistanceMm();
+  const PupilData& exitPupil = firstOrder.exitPupil;
+  const double pupilToFocusMm = exitPupil.zMm + image.focusBehindFilmMm;  // film at z = 0
+  if (!exitPupil.atInfinity && std::abs(pupilToFocusMm) > 1e-9 * std::abs(image.eflMm))
+    image.filmHeightScale = exitPupil.zMm / pupilToFocusMm;
   for (const SurfaceGeometry& s : lens.surfaces())
     image.petzvalSumPerMm +=
         s.curvaturePerMm * (s.indexRear - s.indexFront) / (s.indexFront * s.indexRear);

@@ -25,6 +25,11 @@ struct ParaxialImage {
   // The Gaussian image plane relative to the film, along the light: positive behind the film
   // (farther from the lens), negative in front of it.
   double focusBehindFilmMm = 0.0;
+  // The paraxial chief ray's height on the film over its height in the Gaussian image plane: it
+  // leaves through the centre of the exit pupil, so with the film a distance from the Gaussian
+  // focus the whole paraxial image is scaled by (exit pupil to film) / (exit pupil to focus).
+  // 1 with the film at the focus, or an exit pupil at infinity (telecentric in image space).
+  double filmHeightScale = 1.0;
   // Petzval sum P = sum over surfaces of phi / (n n'), phi = c (n' - n): the Petzval surface
   // sags by -P h^2 / 2 (toward the lens for P > 0) at image height h from the Gaussian focus
   // (Welford, Aberrations of Optical Systems, sec. 7.4).
