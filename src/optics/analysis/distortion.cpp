@@ -16,10 +16,12 @@ constexpr double kRadians = std::numbers::pi / 180.0;
 // The chief ray of the field at image height h, traced afresh to the film: its height there, its
 // angle in object space and the Gaussian image height of its object point.
 DistortionPoint distortionAt(const LensSystem& lens, const ParaxialImage& reference,
-                             double imageHeightMm, const FieldPoint::AxialBeam& axialBeam) {
+                             double imageHeightMm,
+                             const std::optional<double>& objectDistanceFromFilmMm) {
   DistortionPoint point;
   point.imageHeightMm = imageHeightMm;
-  const auto field = FieldPoint::resolve(lens, imageHeightMm, axialBeam, &point.whyNot);
+  const auto field =
+      FieldPoint::resolve(lens, imageHeightMm, objectDistanceFromFilmMm, &point.whyNot);
   if (!field) return point;
   const LensRay chief = field->chiefRay();
   const auto out = traceFromSceneUnclipped(lens, chief, lens.surfaces().size() - 1);
@@ -75,10 +77,9 @@ std::optional<DistortionCurve> distortionCurve(const LensSystem& lens, const Ana
   curve.magnification = reference->magnification;
   curve.filmHeightScale = reference->filmHeightScale;
   curve.points.reserve(static_cast<std::size_t>(points));
-  const auto axialBeam = FieldPoint::axialBeam(lens, setup.objectDistanceFromFilmMm);
   for (int i = 0; i < points; ++i) {
     const double h = setup.filmHalfDiagonalMm * i / (points - 1);
-    curve.points.push_back(distortionAt(lens, *reference, h, axialBeam));
+    curve.points.push_back(distortionAt(lens, *reference, h, setup.objectDistanceFromFilmMm));
   }
   return curve;
 }
@@ -96,10 +97,10 @@ std::optional<DistortionGrid> distortionGrid(const LensSystem& lens, const Analy
   // Real over Gaussian radius against the Gaussian radius, out to where the Gaussian image
   // reaches the corner (which, for pincushion, the real chief ray passes before it gets there).
   std::vector<double> idealRadii{0.0}, ratios{1.0};
-  const auto axialBeam = FieldPoint::axialBeam(lens, setup.objectDistanceFromFilmMm);
   const double stepMm = halfDiagonalMm / std::max(radialSamples - 1, 1);
   for (int i = 1; i <= 4 * radialSamples && idealRadii.back() < halfDiagonalMm; ++i) {
-    const DistortionPoint p = distortionAt(lens, *reference, i * stepMm, axialBeam);
+    const DistortionPoint p =
+        distortionAt(lens, *reference, i * stepMm, setup.objectDistanceFromFilmMm);
     if (!p.percent || !(*p.idealHeightMm > idealRadii.back())) break;
     idealRadii.push_back(*p.idealHeightMm);
     ratios.push_back(1.0 + *p.percent / 100.0);

@@ -44,14 +44,10 @@ std::optional<double> pairFocusBehindFilm(const LensSystem& lens, const FieldPoi
 
 FieldCurvaturePoint fieldFoci(const LensSystem& lens, double imageHeightMm,
                               const std::optional<double>& objectDistanceFromFilmMm) {
-  return fieldFoci(lens, imageHeightMm, FieldPoint::axialBeam(lens, objectDistanceFromFilmMm));
-}
-
-FieldCurvaturePoint fieldFoci(const LensSystem& lens, double imageHeightMm,
-                              const FieldPoint::AxialBeam& axialBeam) {
   FieldCurvaturePoint point;
   point.imageHeightMm = imageHeightMm;
-  const auto field = FieldPoint::resolve(lens, imageHeightMm, axialBeam, &point.whyNot);
+  const auto field =
+      FieldPoint::resolve(lens, imageHeightMm, objectDistanceFromFilmMm, &point.whyNot);
   if (!field) return point;
   point.fieldAngleDeg = field->fieldAngleDeg() + 0.0;  // + 0: no -0 on the axis
   point.tangentialMm = pairFocusBehindFilm(lens, *field, {0.0, kPupilStep}, 1);
@@ -73,10 +69,9 @@ std::optional<FieldCurvatureCurve> fieldCurvature(const LensSystem& lens,
   FieldCurvatureCurve curve;
   curve.gaussianFocusBehindFilmMm = reference->focusBehindFilmMm;
   curve.points.reserve(static_cast<std::size_t>(points));
-  const auto axialBeam = FieldPoint::axialBeam(lens, setup.objectDistanceFromFilmMm);
   for (int i = 0; i < points; ++i) {
     const double h = setup.filmHalfDiagonalMm * i / (points - 1);
-    FieldCurvaturePoint point = fieldFoci(lens, h, axialBeam);
+    FieldCurvaturePoint point = fieldFoci(lens, h, setup.objectDistanceFromFilmMm);
     point.petzvalMm = reference->focusBehindFilmMm - 0.5 * reference->petzvalSumPerMm * h * h;
     curve.points.push_back(std::move(point));
   }

@@ -53,8 +53,5 @@ std::optional<FieldCurvatureCurve> fieldCurvature(const LensSystem& lens,
 // One field's foci (the curve's element at image height imageHeightMm).
 FieldCurvaturePoint fieldFoci(const LensSystem& lens, double imageHeightMm,
                               const std::optional<double>& objectDistanceFromFilmMm);
-// The same with the axial beam found beforehand (FieldPoint::axialBeam).
-FieldCurvaturePoint fieldFoci(const LensSystem& lens, double imageHeightMm,
-                              const FieldPoint::AxialBeam& axialBeam);
 
 }  // namespace lenslab::optics

@@ -30,29 +30,9 @@ glm::dmat2 paraxialPupilMap(double entrancePupilRadiusMm) {
 
 }  // namespace
 
-FieldPoint::AxialBeam FieldPoint::axialBeam(const LensSystem& lens,
-                                            const std::optional<double>& objectDistanceFromFilmMm) {
-  AxialBeam beam;
-  beam.objectDistanceFromFilmMm = objectDistanceFromFilmMm;
-  // An object inside the lens is refused by resolve(); the beam is then never used.
-  const bool finite = objectDistanceFromFilmMm && std::isfinite(*objectDistanceFromFilmMm) &&
-                      *objectDistanceFromFilmMm > lens.frontVertexZ();
-  const double objectFromFrontVertexMm = finite ? *objectDistanceFromFilmMm - lens.frontVertexZ()
-                                                : std::numeric_limits<double>::infinity();
-  const LimitingAperture limit = findLimitingAperture(lens, objectFromFrontVertexMm);
-  if (limit.paraxial) beam.limitedEntrancePupilDiameterMm = limit.paraxial->entrancePupilDiameterMm;
-  return beam;
-}
-
 std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double imageHeightMm,
                                               const std::optional<double>& objectDistanceFromFilmMm,
                                               std::string* whyNot) {
-  return resolve(lens, imageHeightMm, axialBeam(lens, objectDistanceFromFilmMm), whyNot);
-}
-
-std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double imageHeightMm,
-                                              const AxialBeam& axialBeam, std::string* whyNot) {
-  const std::optional<double>& objectDistanceFromFilmMm = axialBeam.objectDistanceFromFilmMm;
   if (!std::isfinite(imageHeightMm) || imageHeightMm < 0.0) {
     say(whyNot, "the image height must be a finite distance from the axis");
     return std::nullopt;
@@ -109,10 +89,14 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
     field.objectPoint_ = onPlane(*objectDistanceFromFilmMm);
 
   // The pupil's edge is the axial beam that passes, not the iris alone.
+  const double objectFromFrontVertexMm = atInfinity
+                                             ? std::numeric_limits<double>::infinity()
+                                             : *objectDistanceFromFilmMm - lens.frontVertexZ();
+  const auto limit = findParaxialAxialLimit(lens, objectFromFrontVertexMm);
   const double irisPupilRadiusMm = 0.5 * firstOrder.entrancePupil.diameterMm;
   double limitedPupilRadiusMm = irisPupilRadiusMm;
-  if (axialBeam.limitedEntrancePupilDiameterMm > 0.0)
-    limitedPupilRadiusMm = 0.5 * axialBeam.limitedEntrancePupilDiameterMm;
+  if (limit && limit->entrancePupilDiameterMm > 0.0)
+    limitedPupilRadiusMm = 0.5 * limit->entrancePupilDiameterMm;
   if (!(limitedPupilRadiusMm > 0.0) || !std::isfinite(limitedPupilRadiusMm)) {
     say(whyNot, "the lens has no entrance pupil to aim at");
     return std::nullopt;

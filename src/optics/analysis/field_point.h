@@ -47,25 +47,11 @@ struct AnalysisSetup {
 
 class FieldPoint {
  public:
-  // What resolve() needs that does not depend on the field: the diameter of the axial beam that
-  // really passes (limiting_aperture.h), which takes most of resolve()'s time. An analysis that
-  // resolves many fields of one lens and object finds it once.
-  struct AxialBeam {
-    std::optional<double> objectDistanceFromFilmMm;
-    double limitedEntrancePupilDiameterMm = 0.0;  // 0 when unknown: the iris's pupil is used
-  };
-  static AxialBeam axialBeam(const LensSystem& lens,
-                             const std::optional<double>& objectDistanceFromFilmMm);
-
   // The field whose chief ray lands at image height imageHeightMm. nullopt with *whyNot set when
   // no ray from that film point reaches the centre of the stop (beyond the lens's coverage), the
   // object plane is not in front of the lens, or the lens has no entrance pupil to aim at.
   static std::optional<FieldPoint> resolve(const LensSystem& lens, double imageHeightMm,
                                            const std::optional<double>& objectDistanceFromFilmMm,
-                                           std::string* whyNot = nullptr);
-  // The same with the axial beam found beforehand (axialBeam(), for the same lens and object).
-  static std::optional<FieldPoint> resolve(const LensSystem& lens, double imageHeightMm,
-                                           const AxialBeam& axialBeam,
                                            std::string* whyNot = nullptr);
 
   double imageHeightMm() const { return imageHeightMm_; }
