@@ -11,6 +11,13 @@ const AnalysisReport kReports[] = {
     {"relative_illumination",
      "film irradiance from the axis to the corner: total, cos4, vignetting, clipped_by",
      relativeIlluminationReport},
+    {"seidel", "Seidel sums S1-S5, CL, CT per surface and total, with third-order figures",
+     seidelReport},
+    {"chromatic_focal_shift_mm", "paraxial image at F minus at C (mm)", chromaticFocalShiftReport},
+    {"chromatic_focal_shift_curve", "paraxial image 400-700 nm against the d line",
+     chromaticFocalShiftCurveReport},
+    {"lateral_color_um", "chief ray on the film at F minus at C, per field (um)",
+     lateralColorReport},
 };
 
 }  // namespace

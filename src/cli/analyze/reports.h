@@ -6,5 +6,10 @@
 namespace lenslab::cli {
 
 ReportPart relativeIlluminationReport(const AnalyzeContext& context);
+// colour slice (seidel_report.cpp, chromatic_report.cpp)
+ReportPart seidelReport(const AnalyzeContext& context);
+ReportPart chromaticFocalShiftReport(const AnalyzeContext& context);
+ReportPart chromaticFocalShiftCurveReport(const AnalyzeContext& context);
+ReportPart lateralColorReport(const AnalyzeContext& context);
 
 }  // namespace lenslab::cli
