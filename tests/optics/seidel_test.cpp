@@ -209,6 +209,40 @@ TEST(SeidelSums, AxialColourPredictsTheParaxialFocusShiftBetweenFAndC) {
   EXPECT_NEAR(sums->transverse.axialColourLongMm, bflF - bflC, 0.03 * std::abs(bflF - bflC));
 }
 
+// The symmetry principle: a system symmetric about its stop, imaging at magnification -1, has no
+// coma, distortion or lateral colour, surface by surface the contributions cancel in pairs; the
+// even aberrations add up. Tests the finite-object rays.
+TEST(SeidelSums, SymmetricSystemAtUnitMagnificationHasNoOddAberrations) {
+  Prescription p;
+  p.surfaces = {{40.0, 5.0, 1.62, 36.0, 24.0},
+                {kFlatRadius, 6.0, 1.0, std::nullopt, 24.0},
+                {0.0, 6.0, 1.0, std::nullopt, 10.0},
+                {kFlatRadius, 5.0, 1.62, 36.0, 24.0},
+                {-40.0, 50.0, 1.0, std::nullopt, 24.0}};
+  auto lens = build(p);
+  ASSERT_TRUE(lens);
+  const FirstOrderData& first = lens->firstOrder();
+  const double f = first.eflMm;
+  const double film = 2.0 * f + first.rearPrincipalPlaneMm;
+  const double objectFromFrontVertex = 2.0 * f - first.frontPrincipalPlaneMm;
+  lens = lens->withFilmDistance(film);
+  ASSERT_TRUE(lens);
+  const double objectFromFilm = lens->frontVertexZ() + objectFromFrontVertex;
+  std::string whyNot;
+  const auto sums = computeSeidelSums(*lens, objectFromFilm, 8.0, &whyNot);
+  ASSERT_TRUE(sums) << whyNot;
+  EXPECT_NEAR(sums->gaussianImageFromFilmMm, 0.0, 1e-9);
+  const double scale = std::abs(sums->surfaces[0].s2) + std::abs(sums->surfaces[0].s5);
+  ASSERT_GT(scale, 1e-4);
+  EXPECT_NEAR(sums->total.s2, 0.0, 1e-10 * scale);
+  EXPECT_NEAR(sums->total.s5, 0.0, 1e-10 * scale);
+  EXPECT_NEAR(sums->total.ct, 0.0, 1e-10 * scale);
+  EXPECT_NEAR(sums->surfaces[0].s2, -sums->surfaces[4].s2, 1e-10 * scale);
+  EXPECT_GT(sums->total.s1, 0.0);
+  EXPECT_GT(sums->total.s4, 0.0);
+  EXPECT_GT(sums->total.cl, 0.0);
+}
+
 TEST(SeidelSums, LensWithoutAbbeNumbersHasNoChromaticSums) {
   const auto lens = build(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
   ASSERT_TRUE(lens);
