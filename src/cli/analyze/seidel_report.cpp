@@ -1,7 +1,6 @@
 // `seidel`: the Seidel sums per surface and in total (optics/analysis/seidel.h), with their
 // third-order consequences on the Gaussian image plane, so that they can be set beside real rays.
 
-#include <algorithm>
 #include <cstdio>
 
 #include "cli/analyze/reports.h"
@@ -37,20 +36,12 @@ std::string termsLine(const std::string& name, const optics::SeidelTerms& t, boo
   return line + "\n";
 }
 
-// The chief ray goes to the largest field of the setup (the film's half diagonal when every field
-// is on the axis).
-double seidelFieldHeightMm(const optics::AnalysisSetup& setup) {
-  double largest = 0.0;
-  for (double fraction : setup.fieldFractions) largest = std::max(largest, fraction);
-  return (largest > 0.0 ? largest : 1.0) * setup.filmHalfDiagonalMm;
-}
-
 }  // namespace
 
 ReportPart seidelReport(const AnalyzeContext& context) {
   std::string whyNot;
   const auto sums = optics::computeSeidelSums(*context.lens, context.setup.objectDistanceFromFilmMm,
-                                              seidelFieldHeightMm(context.setup), &whyNot);
+                                              optics::seidelFieldHeightMm(context.setup), &whyNot);
   if (!sums) throw AnalysisUnavailable(whyNot);
   const bool chromatic = sums->chromatic;
   nlohmann::json surfaces = nlohmann::json::array();

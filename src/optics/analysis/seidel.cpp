@@ -1,5 +1,6 @@
 #include "optics/analysis/seidel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -36,6 +37,12 @@ Dispersion dispersionOf(const LensSystem& lens) {
 }
 
 }  // namespace
+
+double seidelFieldHeightMm(const AnalysisSetup& setup) {
+  double largest = 0.0;
+  for (double fraction : setup.fieldFractions) largest = std::max(largest, fraction);
+  return (largest > 0.0 ? largest : 1.0) * setup.filmHalfDiagonalMm;
+}
 
 SeidelTerms& SeidelTerms::operator+=(const SeidelTerms& other) {
   s1 += other.s1;

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "optics/analysis/field_point.h"
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
@@ -90,5 +91,9 @@ struct SeidelSums {
 std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
                                             const std::optional<double>& objectDistanceFromFilmMm,
                                             double fieldHeightMm, std::string* whyNot = nullptr);
+
+// The field the chief ray is scaled to for a setup: its largest field (the film's half diagonal
+// when every field is on the axis), as `lenslab analyze` and the Seidel panel take it.
+double seidelFieldHeightMm(const AnalysisSetup& setup);
 
 }  // namespace lenslab::optics
