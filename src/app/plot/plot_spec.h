@@ -1,6 +1,6 @@
 #pragma once
-// A 2D line plot as data: what every analysis panel hands to the one plot component (drawn live
-// by plot_widget.h with ImGui's draw lists, written for slides by plot_svg.h and as numbers by
+// A 2D line (or bar) plot as data: what every analysis panel hands to the one plot component (drawn
+// live by plot_widget.h with ImGui's draw lists, written for slides by plot_svg.h and as numbers by
 // plot_csv.h). No ImGui here.
 
 #include <cstdint>
@@ -10,11 +10,20 @@
 
 namespace lenslab::app {
 
+enum class PlotSeriesKind {
+  Line,
+  // Bars from 0 to y at each x, for a categorical x axis (PlotSpec::categories, x = the
+  // category's index). The bar series of a plot stand side by side within each category, in
+  // their order (grouped bars), each in its colour, with a filled swatch in the legend.
+  Bars,
+};
+
 struct PlotSeries {
   std::string name;                  // the legend's entry, and the CSV column
   std::vector<double> x, y;          // same length; x ascending
   std::uint32_t rgba = 0xff000000u;  // 0xRRGGBBAA
   bool dashed = false;
+  PlotSeriesKind kind = PlotSeriesKind::Line;
 };
 
 struct PlotAxis {
@@ -28,6 +37,10 @@ struct PlotSpec {
   PlotAxis x, y;
   std::vector<PlotSeries> series;
   std::string note;  // one line under the title: what the curves assume
+  // When set, the x axis is categorical: x = 0, 1, ... are these names (as tick labels, in the
+  // readout and in the CSV's first column), the axis runs from -0.5 to n - 0.5 and has no
+  // vertical grid lines.
+  std::vector<std::string> categories;
 };
 
 }  // namespace lenslab::app
