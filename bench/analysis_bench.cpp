@@ -12,13 +12,19 @@
 // BM_Distortion, BM_FieldCurves, BM_DistortionGrid (dgauss50): issue 22's distortion and field
 // curves, 64 points each from the axis to the corner (optics/analysis/), and the grid picture
 // (12 x 8 cells, 64 radial samples); all of issue 22's analyses together <= 30 ms.
+// BM_SeidelSums/<lens>, BM_ChromaticFocalShift/<lens>, BM_LateralColour/<lens>: the colour
+// slice of issue 22 (optics/analysis/seidel.h, chromatic.h) at infinity: the sums per surface,
+// the F - C shift with its 31-point 400-700 nm curve, lateral colour at fields 0, 0.7, 1.
 
 #include <benchmark/benchmark.h>
 
 #include <string>
+#include <utility>
 
+#include "optics/analysis/chromatic.h"
 #include "optics/analysis/distortion.h"
 #include "optics/analysis/field_curvature.h"
+#include "optics/analysis/seidel.h"
 #include "optics/film_point_bundle.h"
 #include "optics/lens_loader.h"
 #include "optics/relative_illumination.h"
@@ -83,6 +89,52 @@ void BM_DistortionGrid(benchmark::State& state) {
 BENCHMARK(BM_Distortion)->Name("BM_Distortion/dgauss50")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FieldCurves)->Name("BM_FieldCurves/dgauss50")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DistortionGrid)->Name("BM_DistortionGrid/dgauss50")->Unit(benchmark::kMillisecond);
+// Colour slice (issue 22).
+void BM_SeidelSums(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state) {
+    const auto sums = lenslab::optics::computeSeidelSums(*lens, std::nullopt, kHalfDiagonalMm);
+    benchmark::DoNotOptimize(sums);
+  }
+}
+
+void BM_ChromaticFocalShift(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state) {
+    const auto shift = lenslab::optics::chromaticFocalShift(*lens, std::nullopt, 31);
+    benchmark::DoNotOptimize(shift);
+  }
+}
+
+void BM_LateralColour(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  lenslab::optics::AnalysisSetup setup;
+  setup.filmHalfDiagonalMm = kHalfDiagonalMm;
+  for (auto _ : state) {
+    const auto colour = lenslab::optics::lateralColour(*lens, setup);
+    benchmark::DoNotOptimize(colour);
+  }
+}
+
+const char* kColourLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
+                                  {"cooke100", "cooke-triplet-100mm.dat"}};
+
+[[maybe_unused]] const bool kColourRegistered = [] {
+  for (const auto& [name, file] : kColourLenses) {
+    using Function = void (*)(benchmark::State&, const std::string&);
+    const std::pair<const char*, Function> benches[] = {
+        {"BM_SeidelSums/", BM_SeidelSums},
+        {"BM_ChromaticFocalShift/", BM_ChromaticFocalShift},
+        {"BM_LateralColour/", BM_LateralColour}};
+    for (const auto& [bench, function] : benches)
+      benchmark::RegisterBenchmark((std::string(bench) + name).c_str(), function, std::string(file))
+          ->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
 
 const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
                             {"fisheye10", "fisheye-10mm.dat"},

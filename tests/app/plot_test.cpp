@@ -172,5 +172,62 @@ TEST(PlotLayout, LegendAvoidsTheCurves) {
   EXPECT_LT(low.legend.y, low.area.y + 0.5f * low.area.height);
 }
 
+// Grouped bars on a categorical axis: two series over three categories ("1", "2", "total").
+PlotSpec barSpec() {
+  PlotSpec spec;
+  spec.title = "Seidel sums per surface";
+  spec.x.label = "surface";
+  spec.y.label = "sum (mm)";
+  spec.categories = {"1", "2", "total"};
+  spec.series = {{"S_I", {0, 1, 2}, {0.2, -0.1, 0.1}, 0xff6b6bffu, false, PlotSeriesKind::Bars},
+                 {"S_II", {0, 1, 2}, {0.05, 0.3, 0.35}, 0x5ec8ffffu, false, PlotSeriesKind::Bars}};
+  return spec;
+}
+
+TEST(PlotLayout, BarsStandOnZeroSideBySideInTheirCategory) {
+  const PlotFrame frame = layoutPlot(barSpec(), {0, 0, 900, 500}, 14.0f,
+                                     [](const std::string& s) { return 7.0f * s.size(); });
+  // One tick per category, the axis from -0.5 to 2.5; the labels are the names.
+  EXPECT_EQ(frame.xTicks.values, (std::vector<double>{0, 1, 2}));
+  EXPECT_DOUBLE_EQ(frame.xTicks.min, -0.5);
+  EXPECT_DOUBLE_EQ(frame.xTicks.max, 2.5);
+  EXPECT_EQ(xTickText(barSpec(), frame, 2.0), "total");
+  // The y axis includes zero and the most negative bar.
+  EXPECT_LE(frame.yTicks.min, -0.1);
+  ASSERT_EQ(frame.bars.size(), 6u);
+  // The slot of a category is one unit wide; its two bars take 0.4 each from -0.4 to +0.4.
+  const double unitPx = frame.area.width / 3.0;
+  const float zero = frame.toScreenY(0.0);
+  for (const PlotBar& bar : frame.bars) {
+    const double left = frame.area.x + unitPx * (bar.index + 0.5 - 0.4 + 0.4 * bar.series);
+    EXPECT_NEAR(bar.rect.x, left, 0.01);
+    EXPECT_NEAR(bar.rect.width, 0.4 * unitPx, 0.01);
+    const double value = barSpec().series[bar.series].y[bar.index];
+    const float top = frame.toScreenY(value);
+    EXPECT_NEAR(bar.rect.y, std::min(top, zero), 0.01);
+    EXPECT_NEAR(bar.rect.height, std::abs(top - zero), 0.01);
+  }
+  // The negative bar hangs below the zero line.
+  const PlotBar& negative = frame.bars[1];
+  EXPECT_EQ(negative.series, 0u);
+  EXPECT_EQ(negative.index, 1u);
+  EXPECT_NEAR(negative.rect.y, zero, 0.01);
+}
+
+TEST(PlotCsv, CategoriesNameTheRows) {
+  EXPECT_EQ(plotCsv(barSpec()), "surface,S_I,S_II\n1,0.2,0.05\n2,-0.1,0.3\ntotal,0.1,0.35\n");
+}
+
+TEST(PlotSvg, BarsAreRectanglesWithTheirNamesAndTheCategoriesLabelTheAxis) {
+  const std::string svg = plotSvg(barSpec(), 1200, 750, 16.0f);
+  const auto names = attributes(svg, "rect class=\"bar\"", "data-name");
+  EXPECT_EQ(names, (std::vector<std::string>{"S_I", "S_I", "S_I", "S_II", "S_II", "S_II"}));
+  const auto words = texts(svg);
+  for (const char* label : {"1", "2", "total", "S_I", "S_II", "surface"})
+    EXPECT_NE(std::find(words.begin(), words.end(), label), words.end()) << label;
+  EXPECT_NE(svg.find("class=\"zero\""), std::string::npos);
+  EXPECT_EQ(attributes(svg, "polyline", "points").size(), 0u);  // no line series
+}
+
 }  // namespace
 }  // namespace lenslab::app

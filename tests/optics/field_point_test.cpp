@@ -11,6 +11,7 @@
 
 #include "optics/analysis/field_point.h"
 #include "optics/field.h"
+#include "optics/glass.h"
 #include "optics/unclipped_trace.h"
 #include "test_lenses.h"
 
@@ -116,6 +117,31 @@ TEST(FieldPoint, SaysWhyAFieldCannotBeResolved) {
   EXPECT_NE(why.find("in front of the lens"), std::string::npos) << why;
   EXPECT_FALSE(FieldPoint::resolve(*lens, NAN, std::nullopt, &why));
   EXPECT_FALSE(why.empty());
+}
+
+// chiefRayAt: the same object through the stop's centre at another wavelength. At the field's
+// own wavelength it is the field's chief ray again; at F it keeps the object direction and still
+// crosses the stop at its centre.
+TEST(FieldPoint, ChiefRayAtAnotherWavelengthKeepsTheObjectAndCrossesTheStopCentre) {
+  const auto lens = testing::loadLens(testing::bundledLensDir() / "cooke-triplet-100mm.dat");
+  ASSERT_TRUE(lens);
+  const auto field = FieldPoint::resolve(*lens, 15.0, std::nullopt);
+  ASSERT_TRUE(field);
+  const auto again = field->chiefRayAt(*lens);
+  ASSERT_TRUE(again);
+  const auto onStop = traceFromSceneUnclipped(*lens, *again, lens->stopIndex());
+  ASSERT_TRUE(onStop);
+  EXPECT_NEAR(onStop->origin.y, 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(again->direction - field->chiefRay().direction), 0.0, 1e-9);
+  // At F the object direction is the same and the ray still passes the stop's centre.
+  const auto atF = lens->withWavelength(kWavelengthFNm);
+  const auto blue = field->chiefRayAt(*atF);
+  ASSERT_TRUE(blue);
+  EXPECT_NEAR(glm::length(blue->direction - field->chiefRay().direction), 0.0, 1e-12);
+  const auto blueOnStop = traceFromSceneUnclipped(*atF, *blue, atF->stopIndex());
+  ASSERT_TRUE(blueOnStop);
+  EXPECT_NEAR(blueOnStop->origin.y, 0.0, 1e-9);
+  EXPECT_NEAR(blueOnStop->origin.x, 0.0, 1e-12);
 }
 
 }  // namespace

@@ -54,7 +54,13 @@ std::string plotCsv(const PlotSpec& spec) {
     }
   }
   for (const auto& [x, cells] : rows) {
-    csv += number(x);
+    // A categorical axis names its rows ("1", "2", ..., "total") rather than numbering them.
+    const long index = std::lround(x);
+    if (!spec.categories.empty() && index >= 0 &&
+        index < static_cast<long>(spec.categories.size()) && x == static_cast<double>(index))
+      csv += field(spec.categories[static_cast<std::size_t>(index)]);
+    else
+      csv += number(x);
     for (const std::string& cell : cells) {
       csv.push_back(',');
       csv += cell;

@@ -25,6 +25,67 @@ double PlotFrame::fromScreenY(float px) const {
          (area.bottom() - px) / std::max(1.0f, area.height) * (yTicks.max - yTicks.min);
 }
 
+std::string xTickText(const PlotSpec& spec, const PlotFrame& frame, double value) {
+  if (!spec.categories.empty()) {
+    const long index = std::lround(value);
+    if (index >= 0 && index < static_cast<long>(spec.categories.size()))
+      return spec.categories[static_cast<std::size_t>(index)];
+    return "";
+  }
+  return tickLabel(value, frame.xTicks.decimals);
+}
+
+bool hasBars(const PlotSpec& spec) {
+  return std::any_of(spec.series.begin(), spec.series.end(),
+                     [](const PlotSeries& s) { return s.kind == PlotSeriesKind::Bars; });
+}
+
+namespace {
+
+// A categorical axis: one tick per category, thinned to every k-th when the names would crowd.
+AxisTicks categoryTicks(const PlotSpec& spec, float widthPx, float fontPx,
+                        const TextWidthPx& textWidth) {
+  AxisTicks ticks;
+  const std::size_t n = spec.categories.size();
+  ticks.min = -0.5;
+  ticks.max = static_cast<double>(n) - 0.5;
+  float widest = 0.0f;
+  for (const std::string& name : spec.categories) widest = std::max(widest, textWidth(name));
+  const float perCategory = widthPx / static_cast<float>(std::max<std::size_t>(n, 1));
+  const std::size_t every = std::max<std::size_t>(
+      1, static_cast<std::size_t>(std::ceil((widest + fontPx) / perCategory)));
+  for (std::size_t i = 0; i < n; i += every) ticks.values.push_back(static_cast<double>(i));
+  ticks.decimals = 0;
+  return ticks;
+}
+
+// Bars of every Bars series: within each category the group takes 80% of the slot.
+std::vector<PlotBar> layoutBars(const PlotSpec& spec, const PlotFrame& frame) {
+  std::vector<std::size_t> barSeries;
+  for (std::size_t s = 0; s < spec.series.size(); ++s)
+    if (spec.series[s].kind == PlotSeriesKind::Bars) barSeries.push_back(s);
+  std::vector<PlotBar> bars;
+  if (barSeries.empty()) return bars;
+  const double slot = 0.8 / static_cast<double>(barSeries.size());
+  const float zero = frame.toScreenY(0.0);
+  for (std::size_t k = 0; k < barSeries.size(); ++k) {
+    const PlotSeries& series = spec.series[barSeries[k]];
+    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
+      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
+      const double left = series.x[i] - 0.4 + slot * static_cast<double>(k);
+      const float x0 = frame.toScreenX(left), x1 = frame.toScreenX(left + slot);
+      const float y = std::clamp(frame.toScreenY(series.y[i]), frame.area.y, frame.area.bottom());
+      const float z = std::clamp(zero, frame.area.y, frame.area.bottom());
+      // At least one pixel wide, so a thin bar still shows.
+      bars.push_back(
+          {barSeries[k], i, {x0, std::min(y, z), std::max(1.0f, x1 - x0), std::abs(y - z)}});
+    }
+  }
+  return bars;
+}
+
+}  // namespace
+
 PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextWidthPx& textWidth) {
   PlotFrame frame;
   frame.outer = outer;
@@ -40,7 +101,11 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   frame.yLabelY = top + 0.25f * line;
   top += 1.5f * line;  // the y label, and room for the top tick's label to stand out
 
-  const auto range = dataRange(spec);
+  auto range = dataRange(spec);
+  if (range && hasBars(spec)) {  // bars stand on zero
+    range->yMin = std::min(range->yMin, 0.0);
+    range->yMax = std::max(range->yMax, 0.0);
+  }
   // First pass: the y ticks for the height left, to know how wide their labels are.
   const float bottomRoom = 2.0f * line + pad;  // tick labels, then the x label
   const float areaHeight = std::max(10.0f, outer.bottom() - bottomRoom - top);
@@ -54,9 +119,11 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   const float left = outer.x + pad + yLabelWidth + 0.5f * fontPx;
   const float right = outer.right() - pad - 0.5f * fontPx;
   frame.area = {left, top, std::max(10.0f, right - left), areaHeight};
-  frame.xTicks = niceTicks(range ? range->xMin : 0.0, range ? range->xMax : 1.0,
-                           std::max(2, static_cast<int>(frame.area.width / (6.0f * fontPx))),
-                           spec.x.min, spec.x.max);
+  frame.xTicks = spec.categories.empty()
+                     ? niceTicks(range ? range->xMin : 0.0, range ? range->xMax : 1.0,
+                                 std::max(2, static_cast<int>(frame.area.width / (6.0f * fontPx))),
+                                 spec.x.min, spec.x.max)
+                     : categoryTicks(spec, frame.area.width, fontPx, textWidth);
   if (spec.equalAspect && range) {
     // The larger of the two scales (data units per pixel) for both, 4% to spare, centred.
     const Rect& a = frame.area;
@@ -71,6 +138,7 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
         niceTicks(cy - halfY, cy + halfY, std::max(2, static_cast<int>(a.height / (2.5f * line))),
                   cy - halfY, cy + halfY);
   }
+  frame.bars = layoutBars(spec, frame);
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;
 
@@ -93,7 +161,13 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
           // segment (eight per segment) within half a line of it.
           const float margin = 0.5f * line;
           int covered = 0;
+          for (const PlotBar& bar : frame.bars) {  // a bar under the box counts as a segment
+            const Rect& r = bar.rect;
+            covered += 8 * (r.x < box.right() && r.right() > box.x && r.y < box.bottom() &&
+                            r.bottom() > box.y);
+          }
           for (const PlotSeries& series : spec.series) {
+            if (series.kind == PlotSeriesKind::Bars) continue;
             const std::size_t n = std::min(series.x.size(), series.y.size());
             for (std::size_t i = 0; i + 1 < n; ++i) {
               for (int k = 0; k < 8; ++k) {

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "app/layout.h"
 #include "app/plot/plot_scale.h"
@@ -17,6 +18,12 @@ namespace lenslab::app {
 // The width in pixels of a line of text at the layout's font size.
 using TextWidthPx = std::function<float(const std::string&)>;
 
+// A bar of a Bars series on screen (y down: the rectangle's top is the larger value).
+struct PlotBar {
+  std::size_t series = 0, index = 0;
+  Rect rect;
+};
+
 struct PlotFrame {
   Rect outer;
   Rect area;  // the axes' box
@@ -25,13 +32,19 @@ struct PlotFrame {
   float lineHeightPx = 16.0f;
   float titleY = 0.0f, noteY = 0.0f, yLabelY = 0.0f, xLabelY = 0.0f;  // baselines' tops
   float xTickLabelY = 0.0f;
-  Rect legend;  // empty when there is one series or no room
+  Rect legend;                // empty when there is one series or no room
+  std::vector<PlotBar> bars;  // every bar of the Bars series, clipped to nothing
 
   float toScreenX(double x) const;
   float toScreenY(double y) const;
   double fromScreenX(float px) const;
   double fromScreenY(float px) const;
 };
+
+// An x tick's label: the category's name on a categorical axis, else the number.
+std::string xTickText(const PlotSpec& spec, const PlotFrame& frame, double value);
+// True when a plot has Bars series (it then draws a line at y = 0).
+bool hasBars(const PlotSpec& spec);
 
 PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextWidthPx& textWidth);
 

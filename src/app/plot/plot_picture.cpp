@@ -60,8 +60,8 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
   text(spec.y.label, area.x, frame.yLabelY, kInk, "y-label");
   for (double value : frame.xTicks.values) {
     const double x = frame.toScreenX(value);
-    line({{x, area.y}, {x, area.bottom()}}, kGrid, 1.0, false, "grid");
-    const std::string label = tickLabel(value, frame.xTicks.decimals);
+    if (spec.categories.empty()) line({{x, area.y}, {x, area.bottom()}}, kGrid, 1.0, false, "grid");
+    const std::string label = xTickText(spec, frame, value);
     text(label, x - 0.5 * metrics.widthPx(label, fontPx), frame.xTickLabelY, kInk, "x-tick");
   }
   for (double value : frame.yTicks.values) {
@@ -84,8 +84,20 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
   text(spec.x.label, area.x + 0.5 * (area.width - metrics.widthPx(spec.x.label, fontPx)),
        frame.xLabelY, kInk, "x-label");
 
+  for (const PlotBar& bar : frame.bars) {
+    const Rect& r = bar.rect;
+    picture.fills.push_back(
+        {{{r.x, r.y}, {r.right(), r.y}, {r.right(), r.bottom()}, {r.x, r.bottom()}},
+         seriesColourOnWhite(spec.series[bar.series].rgba),
+         "bars"});
+  }
+  if (hasBars(spec)) {
+    const double zero = frame.toScreenY(0.0);
+    line({{area.x, zero}, {area.right(), zero}}, kInk, 1.0, false, "axes");
+  }
   // The curves, clipped to the axes' box.
   for (const PlotSeries& series : spec.series) {
+    if (series.kind == PlotSeriesKind::Bars) continue;
     for (const auto& [begin, end] : finiteRuns(series)) {
       std::vector<CanvasPoint> points;
       for (std::size_t i = begin; i < end; ++i)
@@ -109,8 +121,15 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
       const PlotSeries& series = spec.series[i];
       const double y = l.y + 0.25 * fontPx + frame.lineHeightPx * (static_cast<double>(i) + 0.5);
       const double x = l.x + 0.5 * fontPx;
-      line({{x, y}, {x + kLegendSampleEm * fontPx, y}}, seriesColourOnWhite(series.rgba), 2.0,
-           series.dashed, "legend");
+      if (series.kind == PlotSeriesKind::Bars) {
+        const double w = kLegendSampleEm * fontPx, h = 0.3 * fontPx;
+        picture.fills.push_back({{{x, y - h}, {x + w, y - h}, {x + w, y + h}, {x, y + h}},
+                                 seriesColourOnWhite(series.rgba),
+                                 "legend"});
+      } else {
+        line({{x, y}, {x + kLegendSampleEm * fontPx, y}}, seriesColourOnWhite(series.rgba), 2.0,
+             series.dashed, "legend");
+      }
       text(series.name, x + (kLegendSampleEm + 0.5) * fontPx, y - 0.5 * fontPx, kInk, "legend");
     }
     picture.lines.push_back(std::move(edge));

@@ -1,6 +1,6 @@
 #pragma once
-// A 2D line plot as data: what every analysis panel hands to the one plot component (drawn live
-// by plot_widget.h with ImGui's draw lists, written for slides by plot_svg.h and as numbers by
+// A 2D line (or bar) plot as data: what every analysis panel hands to the one plot component (drawn
+// live by plot_widget.h with ImGui's draw lists, written for slides by plot_svg.h and as numbers by
 // plot_csv.h). No ImGui here.
 
 #include <cstdint>
@@ -10,6 +10,14 @@
 
 namespace lenslab::app {
 
+enum class PlotSeriesKind {
+  Line,
+  // Bars from 0 to y at each x, for a categorical x axis (PlotSpec::categories, x = the
+  // category's index). The bar series of a plot stand side by side within each category, in
+  // their order (grouped bars), each in its colour, with a filled swatch in the legend.
+  Bars,
+};
+
 struct PlotSeries {
   std::string name;  // the legend's entry, and the CSV column
   // Same length; x ascending (y ascending when PlotSpec::seriesAlongY). A non-finite point
@@ -17,6 +25,7 @@ struct PlotSeries {
   std::vector<double> x, y;
   std::uint32_t rgba = 0xff000000u;  // 0xRRGGBBAA
   bool dashed = false;
+  PlotSeriesKind kind = PlotSeriesKind::Line;
 };
 
 struct PlotAxis {
@@ -36,6 +45,10 @@ struct PlotSpec {
   // The series are functions of y, x = f(y) (field curves, drawn with the field up the y axis):
   // the CSV's rows and the hover readout go by y.
   bool seriesAlongY = false;
+  // When set, the x axis is categorical: x = 0, 1, ... are these names (as tick labels, in the
+  // readout and in the CSV's first column), the axis runs from -0.5 to n - 0.5 and has no
+  // vertical grid lines.
+  std::vector<std::string> categories;
 };
 
 }  // namespace lenslab::app

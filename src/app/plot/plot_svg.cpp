@@ -55,6 +55,7 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
   // Grid and ticks.
   svg << "<g stroke=\"#d8d8d8\" stroke-width=\"1\">\n";
   for (double value : frame.xTicks.values) {
+    if (!spec.categories.empty()) break;  // a categorical axis has no vertical grid
     const float x = frame.toScreenX(value);
     svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(frame.area.y) << "\" x2=\""
         << number(x) << "\" y2=\"" << number(frame.area.bottom()) << "\"/>\n";
@@ -71,7 +72,7 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
   for (double value : frame.xTicks.values) {
     svg << "<text class=\"x-tick\" x=\"" << number(frame.toScreenX(value)) << "\" y=\""
         << number(frame.xTickLabelY + ascent) << "\" text-anchor=\"middle\" fill=\"#000000\">"
-        << tickLabel(value, frame.xTicks.decimals) << "</text>\n";
+        << svgEscaped(xTickText(spec, frame, value)) << "</text>\n";
   }
   for (double value : frame.yTicks.values) {
     svg << "<text class=\"y-tick\" x=\"" << number(frame.area.x - 0.4f * fontPx) << "\" y=\""
@@ -86,8 +87,22 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
   svg << "<clipPath id=\"plot-area\"><rect x=\"" << number(frame.area.x) << "\" y=\""
       << number(frame.area.y) << "\" width=\"" << number(frame.area.width) << "\" height=\""
       << number(frame.area.height) << "\"/></clipPath>\n";
+  for (const PlotBar& bar : frame.bars) {
+    const Rect& r = bar.rect;
+    svg << "<rect class=\"bar\" data-name=\"" << svgEscaped(spec.series[bar.series].name)
+        << "\" x=\"" << number(r.x) << "\" y=\"" << number(r.y) << "\" width=\"" << number(r.width)
+        << "\" height=\"" << number(r.height) << "\" fill=\""
+        << inkOnWhite(spec.series[bar.series].rgba) << "\"/>\n";
+  }
+  if (hasBars(spec)) {
+    const float zero = frame.toScreenY(0.0);
+    svg << "<line class=\"zero\" x1=\"" << number(frame.area.x) << "\" y1=\"" << number(zero)
+        << "\" x2=\"" << number(frame.area.right()) << "\" y2=\"" << number(zero)
+        << "\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
+  }
   svg << "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-width=\"2\">\n";
   for (const PlotSeries& series : spec.series) {
+    if (series.kind == PlotSeriesKind::Bars) continue;
     for (const auto& [begin, end] : finiteRuns(series)) {
       std::string points;
       for (std::size_t i = begin; i < end; ++i)
@@ -108,10 +123,15 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       const PlotSeries& series = spec.series[i];
       const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (i + 0.5f);
       const float x = box.x + 0.5f * fontPx;
-      svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
-          << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
-          << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
-          << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
+      if (series.kind == PlotSeriesKind::Bars)
+        svg << "<rect x=\"" << number(x) << "\" y=\"" << number(y - 0.3f * fontPx) << "\" width=\""
+            << number(kLegendSampleEm * fontPx) << "\" height=\"" << number(0.6f * fontPx)
+            << "\" fill=\"" << inkOnWhite(series.rgba) << "\"/>\n";
+      else
+        svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
+            << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
+            << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
+            << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
       svg << "<text class=\"legend\" x=\"" << number(x + (kLegendSampleEm + 0.5f) * fontPx)
           << "\" y=\"" << number(y + 0.35f * fontPx) << "\" fill=\"#000000\">"
           << svgEscaped(series.name) << "</text>\n";

@@ -71,8 +71,8 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
   draw->AddText({area.x, frame.yLabelY}, text, spec.y.label.c_str());
   for (double value : frame.xTicks.values) {
     const float x = frame.toScreenX(value);
-    draw->AddLine({x, area.y}, {x, area.bottom()}, grid);
-    const std::string label = tickLabel(value, frame.xTicks.decimals);
+    if (spec.categories.empty()) draw->AddLine({x, area.y}, {x, area.bottom()}, grid);
+    const std::string label = xTickText(spec, frame, value);
     const float w = ImGui::CalcTextSize(label.c_str()).x;
     draw->AddText({x - 0.5f * w, frame.xTickLabelY}, text, label.c_str());
   }
@@ -90,7 +90,16 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
                 spec.x.label.c_str());
 
   draw->PushClipRect({area.x, area.y}, {area.right(), area.bottom()}, true);
+  for (const PlotBar& bar : frame.bars) {
+    const Rect& r = bar.rect;
+    draw->AddRectFilled({r.x, r.y}, {r.right(), r.bottom()}, toImU32(spec.series[bar.series].rgba));
+  }
+  if (hasBars(spec)) {
+    const float zero = frame.toScreenY(0.0);
+    draw->AddLine({area.x, zero}, {area.right(), zero}, axes);
+  }
   for (const PlotSeries& series : spec.series) {
+    if (series.kind == PlotSeriesKind::Bars) continue;
     for (const auto& [begin, end] : finiteRuns(series)) {
       std::vector<ImVec2> points;
       for (std::size_t i = begin; i < end; ++i)
@@ -108,8 +117,13 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
       const PlotSeries& series = spec.series[i];
       const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (static_cast<float>(i) + 0.5f);
       const float x = box.x + 0.5f * fontPx;
-      polyline(draw, {{x, y}, {x + kLegendSampleEm * fontPx, y}}, toImU32(series.rgba),
-               series.dashed, 2.0f);
+      if (series.kind == PlotSeriesKind::Bars)
+        draw->AddRectFilled({x, y - 0.3f * fontPx},
+                            {x + kLegendSampleEm * fontPx, y + 0.3f * fontPx},
+                            toImU32(series.rgba));
+      else
+        polyline(draw, {{x, y}, {x + kLegendSampleEm * fontPx, y}}, toImU32(series.rgba),
+                 series.dashed, 2.0f);
       draw->AddText({x + (kLegendSampleEm + 0.5f) * fontPx, y - 0.5f * fontPx}, text,
                     series.name.c_str());
     }
@@ -128,12 +142,26 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
       draw->AddLine({area.x, mouse.y}, {area.right(), mouse.y}, IM_COL32(255, 255, 255, 120));
     else
       draw->AddLine({mouse.x, area.y}, {mouse.x, area.bottom()}, IM_COL32(255, 255, 255, 120));
-    const auto values = valuesAt(spec, at);
+    auto values = valuesAt(spec, at);
     ImGui::BeginTooltip();
-    if (spec.seriesAlongY)
+    if (!spec.categories.empty()) {
+      // The category under the mouse and each series' value there.
+      const long index =
+          std::clamp<long>(std::lround(x), 0, static_cast<long>(spec.categories.size()) - 1);
+      ImGui::Text("%s: %s", spec.x.label.c_str(),
+                  spec.categories[static_cast<std::size_t>(index)].c_str());
+      for (std::size_t i = 0; i < spec.series.size(); ++i) {
+        const PlotSeries& series = spec.series[i];
+        values[i].reset();
+        for (std::size_t k = 0; k < std::min(series.x.size(), series.y.size()); ++k)
+          if (std::lround(series.x[k]) == index && std::isfinite(series.y[k]))
+            values[i] = series.y[k];
+      }
+    } else if (spec.seriesAlongY) {
       ImGui::Text("%s: %s", spec.y.label.c_str(), tickLabel(at, frame.yTicks.decimals + 1).c_str());
-    else
+    } else {
       ImGui::Text("%s: %s", spec.x.label.c_str(), tickLabel(x, frame.xTicks.decimals + 1).c_str());
+    }
     for (std::size_t i = 0; i < spec.series.size(); ++i) {
       if (!values[i]) continue;
       ImGui::PushStyleColor(ImGuiCol_Text,

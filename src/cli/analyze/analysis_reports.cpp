@@ -17,6 +17,13 @@ const AnalysisReport kReports[] = {
      distortionGridReport},
     {"field_curvature", "tangential/sagittal focus vs field, mm behind the film (real-ray pairs)",
      fieldCurvatureReport},
+    {"seidel", "Seidel sums S1-S5, CL, CT per surface and total, with third-order figures",
+     seidelReport},
+    {"chromatic_focal_shift_mm", "paraxial image at F minus at C (mm)", chromaticFocalShiftReport},
+    {"chromatic_focal_shift_curve", "paraxial image 400-700 nm against the d line",
+     chromaticFocalShiftCurveReport},
+    {"lateral_color_um", "chief ray on the film at F minus at C, per field (um)",
+     lateralColorReport},
 };
 
 }  // namespace

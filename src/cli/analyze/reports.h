@@ -9,5 +9,10 @@ ReportPart relativeIlluminationReport(const AnalyzeContext& context);
 ReportPart distortionReport(const AnalyzeContext& context);
 ReportPart distortionGridReport(const AnalyzeContext& context);
 ReportPart fieldCurvatureReport(const AnalyzeContext& context);
+// colour slice (seidel_report.cpp, chromatic_report.cpp)
+ReportPart seidelReport(const AnalyzeContext& context);
+ReportPart chromaticFocalShiftReport(const AnalyzeContext& context);
+ReportPart chromaticFocalShiftCurveReport(const AnalyzeContext& context);
+ReportPart lateralColorReport(const AnalyzeContext& context);
 
 }  // namespace lenslab::cli

@@ -133,6 +133,32 @@ LensRay FieldPoint::ray(glm::dvec2 pupil) const {
   return rayThroughPupilPlane(pupilToEntrancePupilMm_ * pupil);
 }
 
+std::optional<LensRay> FieldPoint::chiefRayAt(const LensSystem& sameLensOtherWavelength) const {
+  const LensSystem& lens = sameLensOtherWavelength;
+  auto heightOnStop = [&](double offsetMm) -> std::optional<double> {
+    const auto atStop =
+        traceFromSceneUnclipped(lens, rayThroughPupilPlane({0.0, offsetMm}), lens.stopIndex());
+    if (!atStop) return std::nullopt;
+    return atStop->origin.y;
+  };
+  // Secant steps from this field's own chief ray (offset 0), which is nearly right: the other
+  // wavelength moves the ray on the stop by a fraction of a millimetre at most.
+  const double toleranceMm = 1e-10 * std::max(1.0, entrancePupilRadiusMm_);
+  double x0 = 0.0, x1 = 1e-3 * std::max(entrancePupilRadiusMm_, 1e-3);
+  auto y0 = heightOnStop(x0), y1 = heightOnStop(x1);
+  for (int step = 0; step < 40 && y0 && y1; ++step) {
+    if (std::abs(*y1) < toleranceMm) return rayThroughPupilPlane({0.0, x1});
+    const double slope = (*y1 - *y0) / (x1 - x0);
+    if (!(std::abs(slope) > 1e-15) || !std::isfinite(slope)) break;
+    x0 = x1;
+    y0 = y1;
+    x1 -= *y1 / slope;
+    y1 = heightOnStop(x1);
+  }
+  if (y1 && std::abs(*y1) < toleranceMm) return rayThroughPupilPlane({0.0, x1});
+  return std::nullopt;
+}
+
 LensRay FieldPoint::rayThroughPupilPlane(glm::dvec2 offsetMm) const {
   const glm::dvec3 onPupil = chiefOnPupil_ + glm::dvec3(offsetMm.x, offsetMm.y, 0.0);
   LensRay ray;

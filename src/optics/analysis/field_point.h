@@ -66,6 +66,13 @@ class FieldPoint {
   LensRay chiefRay() const { return ray(glm::dvec2(0.0)); }
   // The ray through pupil coordinate (px, py), as the header describes.
   LensRay ray(glm::dvec2 pupil) const;
+  // The chief ray of this field's object point (or object direction, at infinity) through the
+  // centre of the stop of `sameLensOtherWavelength`, the lens this field was resolved on at
+  // another wavelength (LensSystem::withWavelength): the same object, so the difference of the
+  // two on the film is lateral colour. Found by secant steps on the ray's height on the
+  // entrance-pupil plane (the meridional plane), clear apertures ignored as for the chief ray;
+  // nullopt when no ray of that object reaches the centre of that stop.
+  std::optional<LensRay> chiefRayAt(const LensSystem& sameLensOtherWavelength) const;
   // Semi-diameter of the axial beam on the entrance-pupil plane (the limited entrance pupil's
   // radius), for the Airy disk and the f-number of the beam.
   double entrancePupilRadiusMm() const { return entrancePupilRadiusMm_; }

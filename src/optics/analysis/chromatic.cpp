@@ -1,0 +1,103 @@
+#include "optics/analysis/chromatic.h"
+
+#include <cmath>
+
+#include "optics/analysis/paraxial_ray.h"
+#include "optics/glass.h"
+#include "optics/unclipped_trace.h"
+
+namespace lenslab::optics {
+
+namespace {
+
+void say(std::string* whyNot, std::string text) {
+  if (whyNot) *whyNot = std::move(text);
+}
+
+// Where a ray from the object side meets the film plane z = 0, clear apertures ignored.
+std::optional<double> heightOnFilmMm(const LensSystem& lens, const LensRay& ray) {
+  const auto out = traceFromSceneUnclipped(lens, ray, lens.surfaces().size() - 1);
+  if (!out || !(out->direction.z < 0.0)) return std::nullopt;
+  const double y = out->origin.y + out->direction.y * (-out->origin.z / out->direction.z);
+  return std::isfinite(y) ? std::optional<double>(y) : std::nullopt;
+}
+
+}  // namespace
+
+bool lensHasDispersion(const Prescription& prescription) {
+  for (const Surface& s : prescription.surfaces)
+    if (s.abbeD && *s.abbeD > 0.0 && s.mediumIndexD() > 1.0) return true;
+  return false;
+}
+
+std::optional<ChromaticFocalShift> chromaticFocalShift(
+    const LensSystem& lens, const std::optional<double>& objectDistanceFromFilmMm, int points,
+    double firstNm, double lastNm, std::string* whyNot) {
+  if (!lensHasDispersion(lens.prescription())) {
+    say(whyNot, "no glass of the lens has an Abbe number (V_d), so it has no dispersion");
+    return std::nullopt;
+  }
+  auto imageAt = [&](double wavelengthNm) -> std::optional<double> {
+    const auto atWavelength = lens.withWavelength(wavelengthNm);
+    if (!atWavelength) return std::nullopt;
+    return paraxialImageFromRearVertexMm(*atWavelength, objectDistanceFromFilmMm);
+  };
+  const auto atD = imageAt(kWavelengthDNm), atF = imageAt(kWavelengthFNm),
+             atC = imageAt(kWavelengthCNm);
+  if (!atD || !atF || !atC) {
+    say(whyNot,
+        "the lens forms no paraxial image of the object (afocal, or the object is not in "
+        "front of the lens)");
+    return std::nullopt;
+  }
+  ChromaticFocalShift out;
+  out.fMinusCMm = *atF - *atC;
+  out.imageAtDFromRearVertexMm = *atD;
+  points = std::max(points, 2);
+  for (int i = 0; i < points; ++i) {
+    const double wavelengthNm = firstNm + (lastNm - firstNm) * i / (points - 1);
+    const auto image = imageAt(wavelengthNm);
+    if (!image) {
+      say(whyNot, "the lens is afocal at " + std::to_string(wavelengthNm) + " nm");
+      return std::nullopt;
+    }
+    out.curve.push_back({wavelengthNm, *image - *atD});
+  }
+  return out;
+}
+
+std::vector<LateralColour> lateralColour(const LensSystem& lens, const AnalysisSetup& setup) {
+  std::vector<LateralColour> out;
+  const bool dispersive = lensHasDispersion(lens.prescription());
+  const auto atD = lens.withWavelength(kWavelengthDNm);
+  const auto atF = lens.withWavelength(kWavelengthFNm);
+  const auto atC = lens.withWavelength(kWavelengthCNm);
+  for (double fraction : setup.fieldFractions) {
+    LateralColour entry;
+    entry.fieldFraction = fraction;
+    entry.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
+    if (!dispersive) {
+      entry.whyNot = "no glass of the lens has an Abbe number (V_d)";
+    } else if (!atD || !atF || !atC) {
+      entry.whyNot = "the lens cannot be rebuilt at the F, d and C lines";
+    } else {
+      const auto field = FieldPoint::resolve(*atD, entry.imageHeightMm,
+                                             setup.objectDistanceFromFilmMm, &entry.whyNot);
+      if (field) {
+        entry.fieldAngleDeg = field->fieldAngleDeg();
+        const auto chiefF = field->chiefRayAt(*atF), chiefC = field->chiefRayAt(*atC);
+        if (chiefF) entry.chiefHeightFMm = heightOnFilmMm(*atF, *chiefF);
+        if (chiefC) entry.chiefHeightCMm = heightOnFilmMm(*atC, *chiefC);
+        if (entry.chiefHeightFMm && entry.chiefHeightCMm)
+          entry.lateralColourUm = 1000.0 * (*entry.chiefHeightFMm - *entry.chiefHeightCMm);
+        else
+          entry.whyNot =
+              "the chief ray at F or C does not reach the film through the stop's centre";
+      }
+    }
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
+}  // namespace lenslab::optics
