@@ -37,7 +37,6 @@ class AnalyzeCommand : public ::testing::Test {
 TEST_F(AnalyzeCommand, RelativeIlluminationOfABareOpeningFollowsTheClosedForm) {
   const std::string lens =
       writeFile("opening.dat", "# a 20 mm stop, 30 mm from the film\n0 30 0 20\n");
-  // Only this analysis: a bare opening has no power, so the aberration analyses are unavailable.
   const auto json = analyzeJson(lens + " --film-diagonal 60 --only relative_illumination");
   ASSERT_TRUE(json.contains("relative_illumination"));
   EXPECT_EQ(json.at("film_distance_mm").get<double>(), 30.0);
