@@ -212,6 +212,9 @@ TEST(PlotLayout, BarsStandOnZeroSideBySideInTheirCategory) {
   EXPECT_EQ(negative.series, 0u);
   EXPECT_EQ(negative.index, 1u);
   EXPECT_NEAR(negative.rect.y, zero, 0.01);
+  // The legend stands right of the box, where no bar is.
+  ASSERT_GT(frame.legend.width, 0.0f);
+  EXPECT_GE(frame.legend.x, frame.area.right());
 }
 
 TEST(PlotCsv, CategoriesNameTheRows) {

@@ -8,6 +8,9 @@ namespace {
 
 const AnalysisPlotSource kPlots[] = {
     {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
+    {"seidel", "Seidel sums", seidelCurrentPlot, seidelSettled},
+    {"colour", "chromatic focal shift", colourCurrentPlot, colourSettled},
+    {"lateral-colour", "lateral colour", lateralColourCurrentPlot, colourSettled},
 };
 
 }  // namespace

@@ -12,5 +12,11 @@ struct ViewerState;
 
 std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot);
 bool illuminationSettled(const ViewerState& state);
+// colour slice (panels/seidel_panel.cpp, panels/colour_panel.cpp)
+std::optional<PlotSpec> seidelCurrentPlot(ViewerState& state, std::string* whyNot);
+bool seidelSettled(const ViewerState& state);
+std::optional<PlotSpec> colourCurrentPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> lateralColourCurrentPlot(ViewerState& state, std::string* whyNot);
+bool colourSettled(const ViewerState& state);
 
 }  // namespace lenslab::app

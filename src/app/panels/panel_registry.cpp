@@ -14,6 +14,8 @@ constexpr PanelSpec kPanels[] = {
     {"log", "Log", DockArea::Bottom, drawLogPanel},
     {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
     {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
+    {"seidel", "Seidel", DockArea::Bottom, drawSeidelPanel},
+    {"colour", "Colour", DockArea::Bottom, drawColourPanel},
 };
 
 }  // namespace

@@ -119,6 +119,22 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   const float left = outer.x + pad + yLabelWidth + 0.5f * fontPx;
   const float right = outer.right() - pad - 0.5f * fontPx;
   frame.area = {left, top, std::max(10.0f, right - left), areaHeight};
+  // Bars fill their slots from the top of the box to the bottom, so no corner of the box is
+  // free: a bar chart's legend stands right of the box instead.
+  auto legendSize = [&] {
+    float nameWidth = 0.0f;
+    for (const PlotSeries& series : spec.series)
+      nameWidth = std::max(nameWidth, textWidth(series.name));
+    return std::pair{kLegendSampleEm * fontPx + 0.5f * fontPx + nameWidth + fontPx,
+                     line * static_cast<float>(spec.series.size()) + 0.5f * fontPx};
+  };
+  if (hasBars(spec) && spec.series.size() > 1) {
+    const auto [width, height] = legendSize();
+    if (width < 0.35f * frame.area.width && height < frame.area.height) {
+      frame.area.width -= width + 0.5f * fontPx;
+      frame.legend = {frame.area.right() + 0.5f * fontPx, frame.area.y, width, height};
+    }
+  }
   frame.xTicks = spec.categories.empty()
                      ? niceTicks(range ? range->xMin : 0.0, range ? range->xMax : 1.0,
                                  std::max(2, static_cast<int>(frame.area.width / (6.0f * fontPx))),
@@ -142,12 +158,8 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;
 
-  if (spec.series.size() > 1) {
-    float nameWidth = 0.0f;
-    for (const PlotSeries& series : spec.series)
-      nameWidth = std::max(nameWidth, textWidth(series.name));
-    const float width = kLegendSampleEm * fontPx + 0.5f * fontPx + nameWidth + fontPx;
-    const float height = line * static_cast<float>(spec.series.size()) + 0.5f * fontPx;
+  if (spec.series.size() > 1 && frame.legend.width <= 0.0f) {
+    const auto [width, height] = legendSize();
     if (width < 0.8f * frame.area.width && height < 0.9f * frame.area.height) {
       // The corner of the box that covers the fewest data points (top right first on ties).
       const float inset = 0.5f * fontPx;

@@ -171,7 +171,7 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
     out.total += t;
   }
 
-  out.entrancePupilRadiusMm = atInfinity ? marginalHeight : std::abs(marginalHeight);
+  out.entrancePupilRadiusMm = std::abs(marginalHeight);
   if (!atInfinity && firstOrder.entrancePupil.diameterMm > 0.0 &&
       !firstOrder.entrancePupil.atInfinity) {
     // The marginal ray's height on the entrance-pupil plane.

@@ -1,0 +1,260 @@
+// The Seidel and Colour panels in the real viewer: the bar chart and the colour plots drawn in the
+// bottom area (pixels of the screenshot), an edit of the lens changing the exported numbers, the
+// exports valid SVG and CSV, and a lens without V_d getting words instead of a colour plot.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "support/png_image.h"
+#include "support/run_process.h"
+
+namespace lenslab {
+namespace {
+
+struct CsvTable {
+  std::vector<std::string> header;
+  std::vector<std::string> names;  // first column
+  std::vector<std::vector<double>> rows;
+};
+
+CsvTable readCsv(const std::filesystem::path& path) {
+  CsvTable table;
+  std::ifstream in(path);
+  std::string line;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::stringstream stream(text);
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  if (std::getline(in, line)) table.header = split(line);
+  while (std::getline(in, line)) {
+    const auto cells = split(line);
+    if (cells.empty()) continue;
+    table.names.push_back(cells[0]);
+    std::vector<double> row;
+    for (std::size_t i = 1; i < cells.size(); ++i) row.push_back(std::stod(cells[i]));
+    table.rows.push_back(row);
+  }
+  return table;
+}
+
+// Well-formed XML in the small form the plot writer uses: every element closed in order, no text
+// outside the root, attributes quoted.
+bool wellFormedXml(const std::string& xml, std::string* why) {
+  std::vector<std::string> open;
+  const std::regex tag(
+      R"(<(/?)([A-Za-z][A-Za-z0-9_-]*)((\s+[A-Za-z_:][A-Za-z0-9_:.-]*="[^"<]*")*)\s*(/?)>)");
+  std::size_t position = 0;
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), tag); it != std::sregex_iterator();
+       ++it) {
+    const std::smatch& m = *it;
+    const std::string between = xml.substr(position, m.position() - position);
+    if (between.find('<') != std::string::npos || between.find('>') != std::string::npos) {
+      *why = "stray markup before offset " + std::to_string(m.position());
+      return false;
+    }
+    if (open.empty() && position > 0 && between.find_first_not_of(" \n") != std::string::npos) {
+      *why = "text outside the root";
+      return false;
+    }
+    position = m.position() + m.length();
+    const std::string name = m[2];
+    if (m[1] == "/") {
+      if (open.empty() || open.back() != name) {
+        *why = "</" + name + "> closes " + (open.empty() ? "nothing" : "<" + open.back() + ">");
+        return false;
+      }
+      open.pop_back();
+    } else if (m[5] != "/") {
+      open.push_back(name);
+    }
+  }
+  if (!open.empty()) *why = "<" + open.back() + "> never closed";
+  return open.empty() && xml.substr(position).find_first_not_of(" \n") == std::string::npos;
+}
+
+std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+  return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
+}
+
+// The Cooke triplet's rows (lenses/cooke-triplet-100mm.dat): radius and n_d after each surface.
+struct Row {
+  double radius, indexAfter;
+};
+constexpr Row kCooke[] = {{37.4, 1.61272}, {-341.48, 1.0},    {-42.65, 1.64769}, {36.4, 1.0},
+                          {0.0, 1.0},      {204.52, 1.61272}, {-37.05, 1.0}};
+
+TEST(ColourPanels, SeidelBarsAndColourPlotsFollowTheLensAndExport) {
+  const auto scratch = testing::makeTestDirectory("colour-panels");
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/cooke-triplet-100mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
+                                             << "set layout 0.3 0.36 0.45\n"
+                                                "show-panel seidel\n"
+                                                "export-plot seidel seidel.csv\n"
+                                                "export-plot seidel seidel.svg\n"
+                                                "export-plot seidel seidel.png\n"
+                                                "wait-frames 3\n"
+                                                "screenshot seidel.png.shot.png\n"
+                                                "dump-ui seidel-ui.json\n"
+                                                "show-panel colour\n"
+                                                "export-plot colour shift.csv\n"
+                                                "export-plot colour shift.svg\n"
+                                                "export-plot lateral-colour lateral.csv\n"
+                                                "export-plot lateral-colour lateral.svg\n"
+                                                "wait-frames 3\n"
+                                                "screenshot colour.png\n"
+                                                "dump-ui colour-ui.json\n"
+                                                "set surface 1 radius 34\n"
+                                                "export-plot seidel edited.csv\n"
+                                                "export-plot colour edited-shift.csv\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+
+  // Seidel CSV: a row per surface and the total; S_I..S_V columns.
+  const CsvTable seidel = readCsv(scratch / "seidel.csv");
+  ASSERT_EQ(seidel.header.size(), 6u);
+  EXPECT_EQ(seidel.header[0], "surface");
+  EXPECT_EQ(seidel.header[4], "S_IV Petzval");
+  ASSERT_EQ(seidel.names.size(), 8u);
+  EXPECT_EQ(seidel.names.front(), "1");
+  EXPECT_EQ(seidel.names.back(), "total");
+  for (std::size_t column = 0; column < 5; ++column) {
+    double sum = 0.0;
+    for (std::size_t surface = 0; surface < 7; ++surface) sum += seidel.rows[surface][column];
+    EXPECT_NEAR(seidel.rows[7][column], sum, 1e-6 * (1.0 + std::abs(sum))) << column;
+  }
+  // The Petzval terms are -H^2 c (1/n' - 1/n): in proportion to c (1/n' - 1/n) from the lens
+  // file, whatever the rays' scale H.
+  double previousIndex = 1.0;
+  std::vector<double> petzval;
+  for (const Row& row : kCooke) {
+    const double c = row.radius == 0.0 ? 0.0 : 1.0 / row.radius;
+    petzval.push_back(c * (1.0 / row.indexAfter - 1.0 / previousIndex));
+    previousIndex = row.indexAfter;
+  }
+  const double hSquared = -seidel.rows[0][3] / petzval[0];
+  ASSERT_GT(hSquared, 0.0);
+  for (std::size_t surface = 0; surface < 7; ++surface)
+    EXPECT_NEAR(seidel.rows[surface][3], -hSquared * petzval[surface], 1e-5) << surface;
+  EXPECT_EQ(seidel.rows[4][0], 0.0);  // the stop
+
+  // The edit (surface 1 from R 37.4 to 34) changes surface 1's spherical aberration.
+  const CsvTable edited = readCsv(scratch / "edited.csv");
+  ASSERT_EQ(edited.rows.size(), 8u);
+  EXPECT_GT(std::abs(edited.rows[0][0] - seidel.rows[0][0]), 0.01 * std::abs(seidel.rows[0][0]));
+
+  // Focal shift CSV: 400..700 nm in 31 rows, zero at the d line (between 580 and 590 nm).
+  const CsvTable shift = readCsv(scratch / "shift.csv");
+  ASSERT_EQ(shift.names.size(), 31u);
+  EXPECT_EQ(shift.header[0], "wavelength (nm)");
+  EXPECT_EQ(std::stod(shift.names.front()), 400.0);
+  EXPECT_EQ(std::stod(shift.names.back()), 700.0);
+  const double at580 = shift.rows[18][0], at590 = shift.rows[19][0];
+  EXPECT_LE(at580 * at590, 1e-12) << at580 << " " << at590;  // crosses zero at 587.56
+  const CsvTable editedShift = readCsv(scratch / "edited-shift.csv");
+  ASSERT_EQ(editedShift.rows.size(), 31u);
+  EXPECT_GT(std::abs(editedShift.rows[0][0] - shift.rows[0][0]), 1e-4);
+  // Lateral colour: zero on the axis, then the real-ray curve and its third-order line.
+  const CsvTable lateral = readCsv(scratch / "lateral.csv");
+  EXPECT_EQ(lateral.header[0], "image height (mm)");
+  ASSERT_GE(lateral.rows.size(), 24u);
+  EXPECT_NEAR(lateral.rows[0][0], 0.0, 1e-6);
+
+  // Valid SVGs: the bars (5 sums x 8 categories) and the curves.
+  for (const char* file : {"seidel.svg", "shift.svg", "lateral.svg"}) {
+    const std::string svg = testing::readWholeFile(scratch / file);
+    std::string why;
+    EXPECT_TRUE(wellFormedXml(svg, &why)) << file << ": " << why;
+  }
+  const std::string bars = testing::readWholeFile(scratch / "seidel.svg");
+  std::size_t count = 0;
+  for (std::size_t at = bars.find("class=\"bar\""); at != std::string::npos;
+       at = bars.find("class=\"bar\"", at + 1))
+    ++count;
+  EXPECT_EQ(count, 40u);
+  EXPECT_NE(bars.find(">S_II coma</text>"), std::string::npos);
+  EXPECT_NE(bars.find(">total</text>"), std::string::npos);
+  const auto png = testing::PngImage::load(scratch / "seidel.png");
+  ASSERT_TRUE(png.valid());
+  EXPECT_EQ(png.width, 1200);
+  // The bars on the slide: the spherical red and the Petzval blue, darkened for white.
+  EXPECT_GT(png.fractionNear(0, 0, 1200, 750, {0xb2, 0x4a, 0x4a}, 20), 0.001);
+  EXPECT_GT(png.fractionNear(0, 0, 1200, 750, {0x41, 0x8c, 0xb2}, 20), 0.001);
+
+  // On screen: the bars' colours inside the Seidel plot's box.
+  auto box = [](const std::filesystem::path& path, const char* widget) {
+    std::ifstream file(path);
+    const nlohmann::json ui = nlohmann::json::parse(file);
+    EXPECT_TRUE(ui["widgets"].contains(widget)) << widget;
+    const auto& b = ui["widgets"][widget];
+    return std::array<int, 4>{b["x"].get<int>(), b["y"].get<int>(),
+                              b["x"].get<int>() + b["width"].get<int>(),
+                              b["y"].get<int>() + b["height"].get<int>()};
+  };
+  const auto seidelBox = box(scratch / "seidel-ui.json", "seidel-plot");
+  ASSERT_GT(seidelBox[2] - seidelBox[0], 300);
+  ASSERT_GT(seidelBox[3] - seidelBox[1], 100);
+  const auto shot = testing::PngImage::load(scratch / "seidel.png.shot.png");
+  ASSERT_TRUE(shot.valid());
+  for (const testing::Rgb colour : {testing::Rgb{0xff, 0x6b, 0x6b}, testing::Rgb{0xff, 0xb3, 0x47},
+                                    testing::Rgb{0xf2, 0xe0, 0x5c}, testing::Rgb{0x5e, 0xc8, 0xff},
+                                    testing::Rgb{0xc0, 0x8c, 0xff}})
+    EXPECT_GT(shot.fractionNear(seidelBox[0], seidelBox[1], seidelBox[2], seidelBox[3], colour, 12),
+              0.0005)
+        << int(colour.r) << "," << int(colour.g) << "," << int(colour.b);
+  // The Colour panel: the white focal-shift curve and the pink lateral colour, each in its box.
+  const auto shiftBox = box(scratch / "colour-ui.json", "colour-plot");
+  const auto lateralBox = box(scratch / "colour-ui.json", "lateral-colour-plot");
+  const auto colourShot = testing::PngImage::load(scratch / "colour.png");
+  ASSERT_TRUE(colourShot.valid());
+  EXPECT_GT(colourShot.fractionNear(shiftBox[0], shiftBox[1], shiftBox[2], shiftBox[3],
+                                    {0xf0, 0xf0, 0xf0}, 30),
+            0.002);
+  EXPECT_GT(colourShot.fractionNear(lateralBox[0], lateralBox[1], lateralBox[2], lateralBox[3],
+                                    {0xff, 0x6f, 0xb0}, 30),
+            0.002);
+}
+
+TEST(ColourPanels, LensWithoutAbbeNumbersSaysSoAndHasNoColourPlot) {
+  const auto scratch = testing::makeTestDirectory("colour-panels-no-vd");
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
+                                             << "set layout 0.3 0.36 0.45\n"
+                                                "show-panel colour\n"
+                                                "wait-frames 3\n"
+                                                "screenshot colour.png\n"
+                                                "dump-ui ui.json\n"
+                                                "export-plot seidel seidel.csv\n"
+                                                "export-plot colour shift.csv\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  // The colour export is refused with the reason; the Seidel sums exist.
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("Abbe number"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch / "shift.csv"));
+  EXPECT_EQ(readCsv(scratch / "seidel.csv").names.size(), 12u);  // 11 surfaces and the total
+  std::ifstream file(scratch / "ui.json");
+  const nlohmann::json ui = nlohmann::json::parse(file);
+  EXPECT_TRUE(ui["widgets"].contains("colour/no-dispersion")) << ui["widgets"];
+  EXPECT_FALSE(ui["widgets"].contains("colour-plot"));
+  // The sentence is on screen: light text pixels where the panel says it.
+  const auto& words = ui["widgets"]["colour/no-dispersion"];
+  const auto shot = testing::PngImage::load(scratch / "colour.png");
+  ASSERT_TRUE(shot.valid());
+  const int x0 = words["x"].get<int>(), y0 = words["y"].get<int>();
+  EXPECT_GT(shot.fractionNear(x0, y0, x0 + words["width"].get<int>(),
+                              y0 + words["height"].get<int>(), {0xff, 0xff, 0xff}, 40),
+            0.02);
+}
+
+}  // namespace
+}  // namespace lenslab
