@@ -11,6 +11,9 @@ const AnalysisReport kReports[] = {
     {"relative_illumination",
      "film irradiance from the axis to the corner: total, cos4, vignetting, clipped_by",
      relativeIlluminationReport},
+    {"ray_fan", "transverse ray fans (tangential, sagittal) per field at d, F, C", rayFanReport},
+    {"spot", "spot diagrams per field: RMS/GEO radius, rays, Airy radius, through focus",
+     spotReport},
 };
 
 }  // namespace

@@ -6,5 +6,7 @@
 namespace lenslab::cli {
 
 ReportPart relativeIlluminationReport(const AnalyzeContext& context);
+ReportPart rayFanReport(const AnalyzeContext& context);
+ReportPart spotReport(const AnalyzeContext& context);
 
 }  // namespace lenslab::cli
