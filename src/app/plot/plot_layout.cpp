@@ -55,7 +55,7 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;
 
-  if (spec.series.size() > 1) {
+  if (spec.legend && spec.series.size() > 1) {
     float nameWidth = 0.0f;
     for (const PlotSeries& series : spec.series)
       nameWidth = std::max(nameWidth, textWidth(series.name));

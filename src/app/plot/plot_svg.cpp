@@ -88,15 +88,27 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       << number(frame.area.height) << "\"/></clipPath>\n";
   svg << "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-width=\"2\">\n";
   for (const PlotSeries& series : spec.series) {
-    std::string points;
-    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
-      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      points +=
-          number(frame.toScreenX(series.x[i])) + "," + number(frame.toScreenY(series.y[i])) + " ";
+    if (series.points) {
+      // One group of dots; r in the page's pixels, as the live widget's.
+      svg << "<g class=\"points\" data-name=\"" << svgEscaped(series.name) << "\" fill=\""
+          << inkOnWhite(series.rgba) << "\" stroke=\"none\">\n";
+      const std::string radius = number(std::max(1.5f, 0.12f * fontPx));
+      for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
+        if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
+          svg << "<circle cx=\"" << number(frame.toScreenX(series.x[i])) << "\" cy=\""
+              << number(frame.toScreenY(series.y[i])) << "\" r=\"" << radius << "\"/>\n";
+      svg << "</g>\n";
+      continue;
     }
-    svg << "<polyline class=\"series\" data-name=\"" << svgEscaped(series.name) << "\" stroke=\""
-        << inkOnWhite(series.rgba) << "\"" << (series.dashed ? " stroke-dasharray=\"6 4\"" : "")
-        << " points=\"" << points << "\"/>\n";
+    for (const auto& run : lineRuns<std::string>(series, [&](double x, double y) {
+           return number(frame.toScreenX(x)) + "," + number(frame.toScreenY(y));
+         })) {
+      std::string points;
+      for (const std::string& p : run) points += p + " ";
+      svg << "<polyline class=\"series\" data-name=\"" << svgEscaped(series.name) << "\" stroke=\""
+          << inkOnWhite(series.rgba) << "\"" << (series.dashed ? " stroke-dasharray=\"6 4\"" : "")
+          << " points=\"" << points << "\"/>\n";
+    }
   }
   svg << "</g>\n";
   if (frame.legend.width > 0) {
@@ -108,10 +120,15 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       const PlotSeries& series = spec.series[i];
       const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (i + 0.5f);
       const float x = box.x + 0.5f * fontPx;
-      svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
-          << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
-          << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
-          << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
+      if (series.points)
+        svg << "<circle cx=\"" << number(x + 0.5f * kLegendSampleEm * fontPx) << "\" cy=\""
+            << number(y) << "\" r=\"" << number(0.25f * fontPx) << "\" fill=\""
+            << inkOnWhite(series.rgba) << "\"/>\n";
+      else
+        svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
+            << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
+            << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
+            << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
       svg << "<text class=\"legend\" x=\"" << number(x + (kLegendSampleEm + 0.5f) * fontPx)
           << "\" y=\"" << number(y + 0.35f * fontPx) << "\" fill=\"#000000\">"
           << svgEscaped(series.name) << "</text>\n";

@@ -91,12 +91,18 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
 
   draw->PushClipRect({area.x, area.y}, {area.right(), area.bottom()}, true);
   for (const PlotSeries& series : spec.series) {
-    std::vector<ImVec2> points;
-    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
-      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
+    if (series.points) {
+      const float radius = std::max(1.5f, 0.12f * fontPx);
+      for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
+        if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
+          draw->AddCircleFilled({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])},
+                                radius, toImU32(series.rgba), 6);
+      continue;
     }
-    polyline(draw, points, toImU32(series.rgba), series.dashed, 2.0f);
+    for (const auto& run : lineRuns<ImVec2>(series, [&](double x, double y) {
+           return ImVec2{frame.toScreenX(x), frame.toScreenY(y)};
+         }))
+      polyline(draw, run, toImU32(series.rgba), series.dashed, 2.0f);
   }
   draw->PopClipRect();
 
@@ -108,8 +114,12 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
       const PlotSeries& series = spec.series[i];
       const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (static_cast<float>(i) + 0.5f);
       const float x = box.x + 0.5f * fontPx;
-      polyline(draw, {{x, y}, {x + kLegendSampleEm * fontPx, y}}, toImU32(series.rgba),
-               series.dashed, 2.0f);
+      if (series.points)
+        draw->AddCircleFilled({x + 0.5f * kLegendSampleEm * fontPx, y}, 0.25f * fontPx,
+                              toImU32(series.rgba), 8);
+      else
+        polyline(draw, {{x, y}, {x + kLegendSampleEm * fontPx, y}}, toImU32(series.rgba),
+                 series.dashed, 2.0f);
       draw->AddText({x + (kLegendSampleEm + 0.5f) * fontPx, y - 0.5f * fontPx}, text,
                     series.name.c_str());
     }
@@ -123,11 +133,26 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
     const double x = frame.fromScreenX(mouse.x);
     result.hoverX = x;
     draw->AddLine({mouse.x, area.y}, {mouse.x, area.bottom()}, IM_COL32(255, 255, 255, 120));
-    const auto values = valuesAt(spec, x);
+    const bool scatter = std::any_of(spec.series.begin(), spec.series.end(),
+                                     [](const PlotSeries& series) { return series.points; });
     ImGui::BeginTooltip();
+    if (scatter) {
+      // A scatter's readout is the point under the mouse.
+      const double y = frame.area.height > 0
+                           ? frame.yTicks.min + (frame.area.bottom() - mouse.y) /
+                                                    frame.area.height *
+                                                    (frame.yTicks.max - frame.yTicks.min)
+                           : 0.0;
+      ImGui::Text("%s: %s", spec.x.label.c_str(), tickLabel(x, frame.xTicks.decimals + 1).c_str());
+      ImGui::Text("%s: %s", spec.y.label.c_str(), tickLabel(y, frame.yTicks.decimals + 1).c_str());
+      ImGui::EndTooltip();
+      draw->PopClipRect();
+      return result;
+    }
+    const auto values = valuesAt(spec, x);
     ImGui::Text("%s: %s", spec.x.label.c_str(), tickLabel(x, frame.xTicks.decimals + 1).c_str());
     for (std::size_t i = 0; i < spec.series.size(); ++i) {
-      if (!values[i]) continue;
+      if (!values[i] || spec.series[i].points) continue;
       ImGui::PushStyleColor(ImGuiCol_Text,
                             ImGui::ColorConvertU32ToFloat4(toImU32(spec.series[i].rgba)));
       ImGui::Text("%s: %.4f", spec.series[i].name.c_str(), *values[i]);
