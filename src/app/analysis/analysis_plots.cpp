@@ -8,6 +8,10 @@ namespace {
 
 const AnalysisPlotSource kPlots[] = {
     {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
+    {"ray-fan", "ray fan", rayFanCurrentPlot, rayFanSettled},
+    {"ray-fan-tangential", "tangential fan", rayFanTangentialPlot, rayFanSettled},
+    {"ray-fan-sagittal", "sagittal fan", rayFanSagittalPlot, rayFanSettled},
+    {"spot", "spot diagram", spotCurrentPlot, spotSettled},
 };
 
 }  // namespace

@@ -12,5 +12,11 @@ struct ViewerState;
 
 std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot);
 bool illuminationSettled(const ViewerState& state);
+std::optional<PlotSpec> rayFanCurrentPlot(ViewerState& state, std::string* whyNot);
+bool rayFanSettled(const ViewerState& state);
+std::optional<PlotSpec> rayFanTangentialPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot);
+bool spotSettled(const ViewerState& state);
 
 }  // namespace lenslab::app

@@ -14,6 +14,8 @@ constexpr PanelSpec kPanels[] = {
     {"log", "Log", DockArea::Bottom, drawLogPanel},
     {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
     {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
+    {"ray-fan", "Ray fan", DockArea::Bottom, drawRayFanPanel},
+    {"spot", "Spot", DockArea::Bottom, drawSpotPanel},
 };
 
 }  // namespace
