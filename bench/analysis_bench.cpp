@@ -157,3 +157,51 @@ const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
 }();
 
 }  // namespace
+
+// Issue 22, ray fans and spot diagrams, the double-Gauss 50 mm at its file's film distance, three
+// fields (0, 0.7, 1 of a full-frame half diagonal), one thread:
+// BM_RayFans/dgauss50: tangential and sagittal fans of 64 points each (the file has no V_d, so
+// the d line alone; BM_RayFans/dgauss100 has d, F and C).
+// BM_SpotDiagrams/dgauss50: >= 500 passing rays a field, the beam's edge, and the five
+// through-focus planes.
+#include "optics/analysis/spot_diagram.h"
+#include "optics/analysis/transverse_ray_fan.h"
+
+namespace {
+
+lenslab::optics::AnalysisSetup threeFullFrameFields() {
+  lenslab::optics::AnalysisSetup setup;
+  setup.fieldFractions = {0.0, 0.7, 1.0};
+  setup.filmHalfDiagonalMm = kHalfDiagonalMm;
+  return setup;
+}
+
+void BM_RayFans(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        lenslab::optics::computeTransverseRayFans(*lens, threeFullFrameFields()));
+}
+
+void BM_SpotDiagrams(benchmark::State& state, const std::string& lensFile) {
+  const auto lens = loadBundled(state, lensFile);
+  if (!lens) return;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(lenslab::optics::computeSpotDiagrams(*lens, threeFullFrameFields()));
+}
+
+[[maybe_unused]] const bool kRaysRegistered = [] {
+  for (const auto& [name, file] :
+       {std::pair{"dgauss50", "dgauss-50mm.dat"}, std::pair{"dgauss100", "dgauss-100mm.dat"}}) {
+    benchmark::RegisterBenchmark((std::string("BM_RayFans/") + name).c_str(), BM_RayFans,
+                                 std::string(file))
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("BM_SpotDiagrams/") + name).c_str(), BM_SpotDiagrams,
+                                 std::string(file))
+        ->Unit(benchmark::kMillisecond);
+  }
+  return true;
+}();
+
+}  // namespace

@@ -13,6 +13,7 @@
 #include "app/analysis/colour_analysis.h"
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
+#include "app/analysis/ray_analysis.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
@@ -179,6 +180,8 @@ struct ViewerState {
   IlluminationView illumination;
   // The Seidel and Colour panels' figures (one worker for both) and the Seidel panel's choice.
   ColourView colour;
+  // The Ray fan and Spot panels' fans and spots (one worker for both) and the spot's film plane.
+  RayAnalysisView rayAnalysis;
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;

@@ -11,6 +11,10 @@ const AnalysisPlotSource kPlots[] = {
     {"seidel", "Seidel sums", seidelCurrentPlot, seidelSettled},
     {"colour", "chromatic focal shift", colourCurrentPlot, colourSettled},
     {"lateral-colour", "lateral colour", lateralColourCurrentPlot, colourSettled},
+    {"ray-fan", "ray fan", rayFanCurrentPlot, rayFanSettled},
+    {"ray-fan-tangential", "tangential fan", rayFanTangentialPlot, rayFanSettled},
+    {"ray-fan-sagittal", "sagittal fan", rayFanSagittalPlot, rayFanSettled},
+    {"spot", "spot diagram", spotCurrentPlot, spotSettled},
 };
 
 }  // namespace

@@ -18,5 +18,11 @@ bool seidelSettled(const ViewerState& state);
 std::optional<PlotSpec> colourCurrentPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> lateralColourCurrentPlot(ViewerState& state, std::string* whyNot);
 bool colourSettled(const ViewerState& state);
+std::optional<PlotSpec> rayFanCurrentPlot(ViewerState& state, std::string* whyNot);
+bool rayFanSettled(const ViewerState& state);
+std::optional<PlotSpec> rayFanTangentialPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot);
+bool spotSettled(const ViewerState& state);
 
 }  // namespace lenslab::app

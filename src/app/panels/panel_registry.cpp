@@ -16,6 +16,8 @@ constexpr PanelSpec kPanels[] = {
     {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
     {"seidel", "Seidel", DockArea::Bottom, drawSeidelPanel},
     {"colour", "Colour", DockArea::Bottom, drawColourPanel},
+    {"ray-fan", "Ray fan", DockArea::Bottom, drawRayFanPanel},
+    {"spot", "Spot", DockArea::Bottom, drawSpotPanel},
 };
 
 }  // namespace

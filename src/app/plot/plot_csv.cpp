@@ -29,9 +29,22 @@ std::string number(double value) {
   return text;
 }
 
+// A scatter cannot share rows by x (two rays may land at one x): one point a row.
+std::string pointsCsv(const PlotSpec& spec) {
+  std::string csv = "series," + field(spec.x.label) + "," + field(spec.y.label) + "\n";
+  for (const PlotSeries& series : spec.series)
+    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
+      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
+      csv += field(series.name) + "," + number(series.x[i]) + "," + number(series.y[i]) + "\n";
+    }
+  return csv;
+}
+
 }  // namespace
 
 std::string plotCsv(const PlotSpec& spec) {
+  for (const PlotSeries& series : spec.series)
+    if (series.points) return pointsCsv(spec);
   // Rows go by the independent variable: x, or y for series along y.
   const bool alongY = spec.seriesAlongY;
   std::string csv = field(alongY ? spec.y.label : spec.x.label);

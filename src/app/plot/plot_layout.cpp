@@ -128,7 +128,7 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
     return std::pair{kLegendSampleEm * fontPx + 0.5f * fontPx + nameWidth + fontPx,
                      line * static_cast<float>(spec.series.size()) + 0.5f * fontPx};
   };
-  if (hasBars(spec) && spec.series.size() > 1) {
+  if (spec.legend && hasBars(spec) && spec.series.size() > 1) {
     const auto [width, height] = legendSize();
     if (width < 0.35f * frame.area.width && height < frame.area.height) {
       frame.area.width -= width + 0.5f * fontPx;
@@ -158,7 +158,7 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;
 
-  if (spec.series.size() > 1 && frame.legend.width <= 0.0f) {
+  if (spec.legend && spec.series.size() > 1 && frame.legend.width <= 0.0f) {
     const auto [width, height] = legendSize();
     if (width < 0.8f * frame.area.width && height < 0.9f * frame.area.height) {
       // The corner of the box that covers the fewest data points (top right first on ties).

@@ -15,6 +15,16 @@ namespace {
 constexpr Colour kInk{0x20, 0x20, 0x20, 255}, kMuted{0x55, 0x55, 0x55, 255},
     kGrid{0xd8, 0xd8, 0xd8, 255}, kWhite{255, 255, 255, 255}, kLegendEdge{0x99, 0x99, 0x99, 255};
 
+// A dot of a scatter, as an octagon (the rasteriser fills convex polygons).
+std::vector<CanvasPoint> dot(CanvasPoint centre, double radius) {
+  std::vector<CanvasPoint> polygon;
+  for (int i = 0; i < 8; ++i) {
+    const double angle = i * 0.7853981633974483;
+    polygon.push_back({centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle)});
+  }
+  return polygon;
+}
+
 }  // namespace
 
 Colour seriesColourOnWhite(std::uint32_t rgba) {
@@ -98,6 +108,18 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
   // The curves, clipped to the axes' box.
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
+    if (series.points) {
+      const double radius = std::max(1.5, 0.12 * fontPx);
+      for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
+        if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
+        const CanvasPoint centre{frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])};
+        if (centre.x < area.x || centre.x > area.right() || centre.y < area.y ||
+            centre.y > area.bottom())
+          continue;
+        picture.fills.push_back({dot(centre, radius), seriesColourOnWhite(series.rgba), "series"});
+      }
+      continue;
+    }
     for (const auto& [begin, end] : finiteRuns(series)) {
       std::vector<CanvasPoint> points;
       for (std::size_t i = begin; i < end; ++i)
@@ -126,6 +148,9 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
         picture.fills.push_back({{{x, y - h}, {x + w, y - h}, {x + w, y + h}, {x, y + h}},
                                  seriesColourOnWhite(series.rgba),
                                  "legend"});
+      } else if (series.points) {
+        picture.fills.push_back({dot({x + 0.5 * kLegendSampleEm * fontPx, y}, 0.25 * fontPx),
+                                 seriesColourOnWhite(series.rgba), "legend"});
       } else {
         line({{x, y}, {x + kLegendSampleEm * fontPx, y}}, seriesColourOnWhite(series.rgba), 2.0,
              series.dashed, "legend");

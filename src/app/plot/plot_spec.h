@@ -3,6 +3,8 @@
 // live by plot_widget.h with ImGui's draw lists, written for slides by plot_svg.h and as numbers by
 // plot_csv.h). No ImGui here.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,12 +22,16 @@ enum class PlotSeriesKind {
 
 struct PlotSeries {
   std::string name;  // the legend's entry, and the CSV column
-  // Same length; x ascending (y ascending when PlotSpec::seriesAlongY). A non-finite point
-  // breaks the line, so one series may hold several polylines (a grid's lines).
+  // Same length. A line's x ascend (y ascend when PlotSpec::seriesAlongY), and a non-finite
+  // point breaks it: one series may hold several polylines (a grid's lines), and a ray the lens
+  // blocks is a gap, not joined across. A points series' are in any order.
   std::vector<double> x, y;
   std::uint32_t rgba = 0xff000000u;  // 0xRRGGBBAA
   bool dashed = false;
   PlotSeriesKind kind = PlotSeriesKind::Line;
+  // A scatter (a spot diagram's rays): a small dot at each point and no line; no hover readout.
+  // A plot with a points series writes its CSV one point a row (series, x, y).
+  bool points = false;
 };
 
 struct PlotAxis {
@@ -49,6 +55,7 @@ struct PlotSpec {
   // readout and in the CSV's first column), the axis runs from -0.5 to n - 0.5 and has no
   // vertical grid lines.
   std::vector<std::string> categories;
+  bool legend = true;  // false: none (small multiples, whose panel names the series beside them)
 };
 
 }  // namespace lenslab::app

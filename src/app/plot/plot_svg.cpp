@@ -103,6 +103,18 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
   svg << "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-width=\"2\">\n";
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
+    if (series.points) {
+      // One group of dots; r in the page's pixels, as the live widget's.
+      svg << "<g class=\"points\" data-name=\"" << svgEscaped(series.name) << "\" fill=\""
+          << inkOnWhite(series.rgba) << "\" stroke=\"none\">\n";
+      const std::string radius = number(std::max(1.5f, 0.12f * fontPx));
+      for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
+        if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
+          svg << "<circle cx=\"" << number(frame.toScreenX(series.x[i])) << "\" cy=\""
+              << number(frame.toScreenY(series.y[i])) << "\" r=\"" << radius << "\"/>\n";
+      svg << "</g>\n";
+      continue;
+    }
     for (const auto& [begin, end] : finiteRuns(series)) {
       std::string points;
       for (std::size_t i = begin; i < end; ++i)
@@ -127,6 +139,10 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
         svg << "<rect x=\"" << number(x) << "\" y=\"" << number(y - 0.3f * fontPx) << "\" width=\""
             << number(kLegendSampleEm * fontPx) << "\" height=\"" << number(0.6f * fontPx)
             << "\" fill=\"" << inkOnWhite(series.rgba) << "\"/>\n";
+      else if (series.points)
+        svg << "<circle cx=\"" << number(x + 0.5f * kLegendSampleEm * fontPx) << "\" cy=\""
+            << number(y) << "\" r=\"" << number(0.25f * fontPx) << "\" fill=\""
+            << inkOnWhite(series.rgba) << "\"/>\n";
       else
         svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
             << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""

@@ -100,6 +100,14 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
   }
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
+    if (series.points) {
+      const float radius = std::max(1.5f, 0.12f * fontPx);
+      for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
+        if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
+          draw->AddCircleFilled({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])},
+                                radius, toImU32(series.rgba), 6);
+      continue;
+    }
     for (const auto& [begin, end] : finiteRuns(series)) {
       std::vector<ImVec2> points;
       for (std::size_t i = begin; i < end; ++i)
@@ -121,6 +129,9 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
         draw->AddRectFilled({x, y - 0.3f * fontPx},
                             {x + kLegendSampleEm * fontPx, y + 0.3f * fontPx},
                             toImU32(series.rgba));
+      else if (series.points)
+        draw->AddCircleFilled({x + 0.5f * kLegendSampleEm * fontPx, y}, 0.25f * fontPx,
+                              toImU32(series.rgba), 8);
       else
         polyline(draw, {{x, y}, {x + kLegendSampleEm * fontPx, y}}, toImU32(series.rgba),
                  series.dashed, 2.0f);
@@ -136,6 +147,18 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
       mouse.y <= area.bottom()) {
     const double x = frame.fromScreenX(mouse.x);
     result.hoverX = x;
+    const bool scatter = std::any_of(spec.series.begin(), spec.series.end(),
+                                     [](const PlotSeries& series) { return series.points; });
+    if (scatter) {
+      // A scatter's readout is the point under the mouse.
+      ImGui::BeginTooltip();
+      ImGui::Text("%s: %s", spec.x.label.c_str(), tickLabel(x, frame.xTicks.decimals + 1).c_str());
+      ImGui::Text("%s: %s", spec.y.label.c_str(),
+                  tickLabel(frame.fromScreenY(mouse.y), frame.yTicks.decimals + 1).c_str());
+      ImGui::EndTooltip();
+      draw->PopClipRect();
+      return result;
+    }
     // Series along y are read across a horizontal line at the y under the mouse.
     const double at = spec.seriesAlongY ? frame.fromScreenY(mouse.y) : x;
     if (spec.seriesAlongY)

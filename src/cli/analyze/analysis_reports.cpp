@@ -24,6 +24,9 @@ const AnalysisReport kReports[] = {
      chromaticFocalShiftCurveReport},
     {"lateral_color_um", "chief ray on the film at F minus at C, per field (um)",
      lateralColorReport},
+    {"ray_fan", "transverse ray fans (tangential, sagittal) per field at d, F, C", rayFanReport},
+    {"spot", "spot diagrams per field: RMS/GEO radius, rays, Airy radius, through focus",
+     spotReport},
 };
 
 }  // namespace

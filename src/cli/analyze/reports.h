@@ -14,5 +14,7 @@ ReportPart seidelReport(const AnalyzeContext& context);
 ReportPart chromaticFocalShiftReport(const AnalyzeContext& context);
 ReportPart chromaticFocalShiftCurveReport(const AnalyzeContext& context);
 ReportPart lateralColorReport(const AnalyzeContext& context);
+ReportPart rayFanReport(const AnalyzeContext& context);
+ReportPart spotReport(const AnalyzeContext& context);
 
 }  // namespace lenslab::cli

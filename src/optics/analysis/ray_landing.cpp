@@ -1,0 +1,24 @@
+#include "optics/analysis/ray_landing.h"
+
+#include "optics/unclipped_trace.h"
+
+namespace lenslab::optics {
+
+std::optional<LensRay> exitTowardFilm(const LensSystem& lens, const LensRay& fromObject) {
+  const auto out = lens.traceFromScene(fromObject);
+  if (!out || !(out->direction.z < 0.0)) return std::nullopt;
+  return out;
+}
+
+glm::dvec2 onPlane(const LensRay& exitRay, double planeZMm) {
+  const double t = (planeZMm - exitRay.origin.z) / exitRay.direction.z;
+  return {exitRay.origin.x + t * exitRay.direction.x, exitRay.origin.y + t * exitRay.direction.y};
+}
+
+std::optional<LensRay> chiefExitRay(const LensSystem& lens, const FieldPoint& field) {
+  const auto out = traceFromSceneUnclipped(lens, field.chiefRay(), lens.surfaces().size() - 1);
+  if (!out || !(out->direction.z < 0.0)) return std::nullopt;
+  return out;
+}
+
+}  // namespace lenslab::optics
