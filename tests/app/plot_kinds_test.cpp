@@ -66,6 +66,14 @@ TEST(PlotKinds, EqualAspectGivesBothAxesOneScale) {
     EXPECT_GE(frame.toScreenY(12), frame.area.y);
     EXPECT_LE(frame.toScreenY(-12), frame.area.bottom());
   }
+  // As numbers: every point, by series and polyline.
+  spec.x.label = "x (mm)";
+  spec.y.label = "y (mm)";
+  spec.series.push_back({"lines", {0, 1, NAN, 2, 3}, {0, 0, NAN, 5, 5}});
+  EXPECT_EQ(plotCsv(spec),
+            "series,polyline,x (mm),y (mm)\nfilm,0,-18,-12\nfilm,0,18,-12\nfilm,0,18,12\n"
+            "film,0,-18,12\nfilm,0,-18,-12\nlines,0,0,0\nlines,0,1,0\nlines,1,2,5\n"
+            "lines,1,3,5\n");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 
+#include "app/plot/plot_scale.h"
 #include "common/atomic_file.h"
 
 namespace lenslab::app {
@@ -32,6 +33,21 @@ std::string number(double value) {
 }  // namespace
 
 std::string plotCsv(const PlotSpec& spec) {
+  if (spec.equalAspect) {
+    // A picture (a grid's lines) is points, not a function: one row per point, numbered by
+    // polyline within its series.
+    std::string csv = "series,polyline," + field(spec.x.label) + "," + field(spec.y.label) + "\n";
+    for (const PlotSeries& series : spec.series) {
+      int polyline = 0;
+      for (const auto& [begin, end] : finiteRuns(series)) {
+        for (std::size_t i = begin; i < end; ++i)
+          csv += field(series.name) + "," + std::to_string(polyline) + "," + number(series.x[i]) +
+                 "," + number(series.y[i]) + "\n";
+        ++polyline;
+      }
+    }
+    return csv;
+  }
   // Rows go by the independent variable: x, or y for series along y.
   const bool alongY = spec.seriesAlongY;
   std::string csv = field(alongY ? spec.y.label : spec.x.label);

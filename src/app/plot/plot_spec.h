@@ -31,7 +31,8 @@ struct PlotSpec {
   std::vector<PlotSeries> series;
   std::string note;  // one line under the title: what the curves assume
   // One data unit as long on both axes (a picture of the film rather than a graph): the axes'
-  // ranges grow around the data to fill the box.
+  // ranges grow around the data to fill the box, and the CSV lists points (series, polyline,
+  // x, y) rather than rows by x.
   bool equalAspect = false;
   // The series are functions of y, x = f(y) (field curves, drawn with the field up the y axis):
   // the CSV's rows and the hover readout go by y.
