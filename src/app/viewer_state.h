@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/analysis/distortion_analysis.h"
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
 #include "app/cross_section_export.h"
@@ -176,6 +177,8 @@ struct ViewerState {
   } filmPointBundle;
   // The Illumination panel's curve (computed off the UI thread) and choices.
   IlluminationView illumination;
+  // The Distortion and Field curves panels' results (one worker for both) and choices.
+  DistortionView distortion;
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;

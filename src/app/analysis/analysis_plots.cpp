@@ -8,6 +8,9 @@ namespace {
 
 const AnalysisPlotSource kPlots[] = {
     {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
+    {"distortion", "distortion", distortionCurrentPlot, distortionSettled},
+    {"distortion-grid", "distortion grid", distortionGridCurrentPlot, distortionSettled},
+    {"field-curves", "field curves", fieldCurvesCurrentPlot, distortionSettled},
 };
 
 }  // namespace

@@ -14,6 +14,8 @@ constexpr PanelSpec kPanels[] = {
     {"log", "Log", DockArea::Bottom, drawLogPanel},
     {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
     {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
+    {"distortion", "Distortion", DockArea::Bottom, drawDistortionPanel},
+    {"field-curves", "Field curves", DockArea::Bottom, drawFieldCurvesPanel},
 };
 
 }  // namespace
