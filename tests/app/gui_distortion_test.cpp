@@ -102,7 +102,7 @@ TEST(DistortionPanels, DrawExportAndFollowEdits) {
             std::string::npos);
 
   // On screen: the distortion curve (near-white) and the real grid (blue) in their boxes, the
-  // tangential (orange) and sagittal (blue) curves in theirs.
+  // tangential and sagittal curves (white) and the fields' marks in theirs.
   auto box = [](const nlohmann::json& ui, const char* name) {
     EXPECT_TRUE(ui["widgets"].contains(name)) << name;
     const auto& b = ui["widgets"][name];
@@ -124,8 +124,10 @@ TEST(DistortionPanels, DrawExportAndFollowEdits) {
   ASSERT_TRUE(fieldShot.valid());
   const auto f = box(fieldsUi, "field-curves-plot");
   ASSERT_GT(f[2] - f[0], 300);
-  EXPECT_GT(fieldShot.fractionNear(f[0], f[1], f[2], f[3], {0xff, 0xb3, 0x47}, 40), 0.001);
-  EXPECT_GT(fieldShot.fractionNear(f[0], f[1], f[2], f[3], {0x5e, 0xc8, 0xff}, 40), 0.001);
+  EXPECT_GT(fieldShot.fractionNear(f[0], f[1], f[2], f[3], {0xf0, 0xf0, 0xf0}, 30), 0.002);
+  // The fields 0.7 and 1 marked in their fans' colours (orange, magenta).
+  EXPECT_GT(fieldShot.fractionNear(f[0], f[1], f[2], f[3], {250, 180, 60}, 30), 0.001);
+  EXPECT_GT(fieldShot.fractionNear(f[0], f[1], f[2], f[3], {235, 90, 200}, 30), 0.001);
 }
 
 }  // namespace

@@ -1,8 +1,11 @@
 #include "app/analysis/distortion_analysis.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
+#include "app/drawing/cross_section_drawing.h"
 #include "common/distance_text.h"
 
 namespace lenslab::app {
@@ -10,6 +13,20 @@ namespace lenslab::app {
 namespace {
 
 constexpr double kBreak = std::numeric_limits<double>::quiet_NaN();  // breaks a plotted line
+
+// Field i's mark: a guide line in the colour of field i's fan in the cross-section.
+PlotSeries fieldMark(const DistortionResult::FieldMark& mark, std::size_t index,
+                     std::vector<double> x, std::vector<double> y) {
+  const Colour c = palette::kFieldColours[index % std::size(palette::kFieldColours)];
+  char name[32];
+  std::snprintf(name, sizeof name, "field %g", mark.fraction);
+  PlotSeries series{
+      name, std::move(x), std::move(y),
+      (std::uint32_t{c.r} << 24) | (std::uint32_t{c.g} << 16) | (std::uint32_t{c.b} << 8) | 0xffu,
+      false};
+  series.guide = true;
+  return series;
+}
 
 std::string objectText(const DistortionResult& result) {
   return result.objectDistanceFromFilmMm
@@ -31,6 +48,12 @@ void requestDistortion(DistortionView& view, const AnalysisRequest& request) {
     result.objectDistanceFromFilmMm = setup.objectDistanceFromFilmMm;
     const optics::LensSystem& lens = *request.lens;
     result.distortion = optics::distortionCurve(lens, setup, kDistortionPoints, &result.whyNot);
+    for (double fraction : setup.fieldFractions) {
+      const double h = fraction * setup.filmHalfDiagonalMm;
+      const auto field = optics::FieldPoint::resolve(lens, h, setup.objectDistanceFromFilmMm);
+      result.fieldMarks.push_back(
+          {fraction, h, field ? std::optional(field->fieldAngleDeg()) : std::nullopt});
+    }
     if (result.distortion) {
       result.grid = optics::distortionGrid(lens, setup, kGridFilmAspect, 8, kDistortionPoints);
       result.fieldCurves = optics::fieldCurvature(lens, setup, kDistortionPoints);
@@ -78,6 +101,17 @@ PlotSpec distortionPlot(const DistortionResult& result, bool againstFieldAngle) 
     }
   }
   spec.series = {series};
+  // The fields, across the curve's range.
+  double low = 0.0, high = 0.0;
+  for (double y : series.y)
+    if (std::isfinite(y)) low = std::min(low, y), high = std::max(high, y);
+  if (high - low < 1e-9) low -= 0.5, high += 0.5;
+  for (std::size_t i = 0; i < result.fieldMarks.size(); ++i) {
+    const auto& mark = result.fieldMarks[i];
+    if (againstFieldAngle && !mark.fieldAngleDeg) continue;
+    const double x = againstFieldAngle ? *mark.fieldAngleDeg : mark.imageHeightMm;
+    spec.series.push_back(fieldMark(mark, i, {x, x}, {low, high}));
+  }
   return spec;
 }
 
@@ -122,10 +156,11 @@ PlotSpec fieldCurvesPlot(const DistortionResult& result) {
     return spec;
   }
   spec.note = "real-ray pairs about each chief ray; " + objectText(result);
-  PlotSeries tangential{"tangential", {}, {}, 0xffb347ffu, true};
-  PlotSeries sagittal{"sagittal", {}, {}, 0x5ec8ffffu, false};
+  // White dashed and solid, as the books draw them; colours are the fields'.
+  PlotSeries tangential{"tangential", {}, {}, 0xf0f0f0ffu, true};
+  PlotSeries sagittal{"sagittal", {}, {}, 0xf0f0f0ffu, false};
   PlotSeries petzval{"Petzval (3rd order)", {}, {}, 0x8a8f99ffu, true};
-  PlotSeries film{"film", {}, {}, 0xd0d0d0ffu, false};
+  PlotSeries film{"film", {}, {}, 0x6e7480ffu, false};
   double top = 0.0;
   for (const optics::FieldCurvaturePoint& p : result.fieldCurves->points) {
     if (!p.fieldAngleDeg || !p.tangentialMm || !p.sagittalMm) {
@@ -148,6 +183,16 @@ PlotSpec fieldCurvesPlot(const DistortionResult& result) {
   film.y = {0.0, top};
   if (top > 0.0) spec.y.max = top;
   spec.series = {tangential, sagittal, petzval, film};
+  double left = 0.0, right = 0.0;
+  for (const PlotSeries& s : spec.series)
+    for (double x : s.x)
+      if (std::isfinite(x)) left = std::min(left, x), right = std::max(right, x);
+  for (std::size_t i = 0; i < result.fieldMarks.size(); ++i) {
+    const auto& mark = result.fieldMarks[i];
+    if (!mark.fieldAngleDeg) continue;
+    spec.series.push_back(
+        fieldMark(mark, i, {left, right}, {*mark.fieldAngleDeg, *mark.fieldAngleDeg}));
+  }
   return spec;
 }
 

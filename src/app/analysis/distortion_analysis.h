@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/analysis/analysis_setup.h"
 #include "app/analysis/latest_job.h"
@@ -24,6 +25,13 @@ struct DistortionResult {
   std::optional<optics::DistortionGrid> grid;
   std::optional<optics::FieldCurvatureCurve> fieldCurves;
   std::string whyNot;
+  // The panels' fields (the cross-section's fans'), marked on the curves in the fans' colours.
+  struct FieldMark {
+    double fraction = 0.0;
+    double imageHeightMm = 0.0;
+    std::optional<double> fieldAngleDeg;  // nullopt: no chief ray reaches it
+  };
+  std::vector<FieldMark> fieldMarks;
 };
 
 struct DistortionView {

@@ -1,7 +1,8 @@
 // Field curves: where the thin pencil about each field's chief ray comes to its tangential and its
 // sagittal focus, relative to the film, from the axis to the film corner, drawn the way lens
 // designers draw them: field angle up the y axis, focus shift along x, tangential dashed and
-// sagittal solid, with the third-order Petzval surface and the film. Computed off the UI thread
+// sagittal solid, with the third-order Petzval surface, the film and the fields in their fans'
+// colours. Computed off the UI thread
 // with the distortion (analysis/distortion_analysis.h).
 
 #include "app/analysis/distortion_analysis.h"

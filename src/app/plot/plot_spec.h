@@ -17,6 +17,9 @@ struct PlotSeries {
   std::vector<double> x, y;
   std::uint32_t rgba = 0xff000000u;  // 0xRRGGBBAA
   bool dashed = false;
+  // A guide, not data (a field's position marked on a curve): drawn and in the legend, left out
+  // of the CSV and the hover readout.
+  bool guide = false;
 };
 
 struct PlotAxis {
