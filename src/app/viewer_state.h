@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/analysis/colour_analysis.h"
+#include "app/analysis/distortion_analysis.h"
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
 #include "app/analysis/ray_analysis.h"
@@ -182,6 +183,8 @@ struct ViewerState {
   ColourView colour;
   // The Ray fan and Spot panels' fans and spots (one worker for both) and the spot's film plane.
   RayAnalysisView rayAnalysis;
+  // The Distortion and Field curves panels' results (one worker for both) and choices.
+  DistortionView distortion;
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;

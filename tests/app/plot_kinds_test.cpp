@@ -42,11 +42,16 @@ TEST(PlotKinds, SeriesAlongYAreReadByY) {
   spec.y.label = "field angle (deg)";
   spec.seriesAlongY = true;
   spec.series = {{"T", {0.0, -0.1, -0.4}, {0, 10, 20}}, {"S", {0.0, -0.05}, {0, 10}}};
+  // A field's mark is a guide: drawn, but neither a column nor a reading.
+  PlotSeries mark{"field 0.7", {-0.4, 0.0}, {15, 15}};
+  mark.guide = true;
+  spec.series.push_back(mark);
   EXPECT_EQ(plotCsv(spec), "field angle (deg),T,S\n0,0,0\n10,-0.1,-0.05\n20,-0.4,\n");
   const auto at15 = valuesAt(spec, 15.0);
   ASSERT_TRUE(at15[0]);
   EXPECT_NEAR(*at15[0], -0.25, 1e-12);
   EXPECT_FALSE(at15[1]);
+  EXPECT_FALSE(at15[2]);
 }
 
 // A 36 x 24 picture in a 1000 x 400 box: one millimetre is as many pixels across as up.
@@ -66,6 +71,14 @@ TEST(PlotKinds, EqualAspectGivesBothAxesOneScale) {
     EXPECT_GE(frame.toScreenY(12), frame.area.y);
     EXPECT_LE(frame.toScreenY(-12), frame.area.bottom());
   }
+  // As numbers: every point, by series and polyline.
+  spec.x.label = "x (mm)";
+  spec.y.label = "y (mm)";
+  spec.series.push_back({"lines", {0, 1, NAN, 2, 3}, {0, 0, NAN, 5, 5}});
+  EXPECT_EQ(plotCsv(spec),
+            "series,polyline,x (mm),y (mm)\nfilm,0,-18,-12\nfilm,0,18,-12\nfilm,0,18,12\n"
+            "film,0,-18,12\nfilm,0,-18,-12\nlines,0,0,0\nlines,0,1,0\nlines,1,2,5\n"
+            "lines,1,3,5\n");
 }
 
 }  // namespace

@@ -15,6 +15,9 @@ const AnalysisPlotSource kPlots[] = {
     {"ray-fan-tangential", "tangential fan", rayFanTangentialPlot, rayFanSettled},
     {"ray-fan-sagittal", "sagittal fan", rayFanSagittalPlot, rayFanSettled},
     {"spot", "spot diagram", spotCurrentPlot, spotSettled},
+    {"distortion", "distortion", distortionCurrentPlot, distortionSettled},
+    {"distortion-grid", "distortion grid", distortionGridCurrentPlot, distortionSettled},
+    {"field-curves", "field curves", fieldCurvesCurrentPlot, distortionSettled},
 };
 
 }  // namespace

@@ -24,5 +24,10 @@ std::optional<PlotSpec> rayFanTangentialPlot(ViewerState& state, std::string* wh
 std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot);
 bool spotSettled(const ViewerState& state);
+// Distortion, its grid and the field curves (panels/distortion_panel.cpp): one worker, one settled.
+std::optional<PlotSpec> distortionCurrentPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> distortionGridCurrentPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotSpec> fieldCurvesCurrentPlot(ViewerState& state, std::string* whyNot);
+bool distortionSettled(const ViewerState& state);
 
 }  // namespace lenslab::app

@@ -18,6 +18,8 @@ constexpr PanelSpec kPanels[] = {
     {"colour", "Colour", DockArea::Bottom, drawColourPanel},
     {"ray-fan", "Ray fan", DockArea::Bottom, drawRayFanPanel},
     {"spot", "Spot", DockArea::Bottom, drawSpotPanel},
+    {"distortion", "Distortion", DockArea::Bottom, drawDistortionPanel},
+    {"field-curves", "Field curves", DockArea::Bottom, drawFieldCurvesPanel},
 };
 
 }  // namespace

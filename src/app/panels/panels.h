@@ -32,6 +32,8 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place);
 void drawColourPanel(ViewerState& state, const PanelPlace& place);
 void drawRayFanPanel(ViewerState& state, const PanelPlace& place);
 void drawSpotPanel(ViewerState& state, const PanelPlace& place);
+void drawDistortionPanel(ViewerState& state, const PanelPlace& place);
+void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place);
 
 // The row that starts every analysis panel: the Fields box (fractions of the half diagonal,
 // shared with the cross-section's fans) and "Save plot..." for the plot `plotId`

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 
+#include "app/plot/plot_scale.h"
 #include "common/atomic_file.h"
 
 namespace lenslab::app {
@@ -45,24 +46,44 @@ std::string pointsCsv(const PlotSpec& spec) {
 std::string plotCsv(const PlotSpec& spec) {
   for (const PlotSeries& series : spec.series)
     if (series.points) return pointsCsv(spec);
+  if (spec.equalAspect) {
+    // A picture (a grid's lines) is points, not a function: one row per point, numbered by
+    // polyline within its series.
+    std::string csv = "series,polyline," + field(spec.x.label) + "," + field(spec.y.label) + "\n";
+    for (const PlotSeries& series : spec.series) {
+      if (series.guide) continue;
+      int polyline = 0;
+      for (const auto& [begin, end] : finiteRuns(series)) {
+        for (std::size_t i = begin; i < end; ++i)
+          csv += field(series.name) + "," + std::to_string(polyline) + "," + number(series.x[i]) +
+                 "," + number(series.y[i]) + "\n";
+        ++polyline;
+      }
+    }
+    return csv;
+  }
   // Rows go by the independent variable: x, or y for series along y.
   const bool alongY = spec.seriesAlongY;
   std::string csv = field(alongY ? spec.y.label : spec.x.label);
-  for (const PlotSeries& series : spec.series) {
+  // Guides are not data.
+  std::vector<const PlotSeries*> data;
+  for (const PlotSeries& series : spec.series)
+    if (!series.guide) data.push_back(&series);
+  for (const PlotSeries* series : data) {
     csv.push_back(',');
-    csv += field(series.name);
+    csv += field(series->name);
   }
   csv += "\n";
   // Rows by x (or y), in ascending order; each series fills its own column.
   std::map<double, std::vector<std::string>> rows;
-  for (std::size_t s = 0; s < spec.series.size(); ++s) {
-    const PlotSeries& series = spec.series[s];
+  for (std::size_t s = 0; s < data.size(); ++s) {
+    const PlotSeries& series = *data[s];
     const std::vector<double>& keys = alongY ? series.y : series.x;
     const std::vector<double>& values = alongY ? series.x : series.y;
     for (std::size_t i = 0; i < std::min(keys.size(), values.size()); ++i) {
       if (!std::isfinite(keys[i])) continue;
       auto& row = rows[keys[i]];
-      row.resize(spec.series.size());
+      row.resize(data.size());
       row[s] = number(values[i]);
     }
   }

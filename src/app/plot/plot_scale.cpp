@@ -74,7 +74,8 @@ std::vector<std::optional<double>> valuesAt(const PlotSpec& spec, double at) {
     const std::vector<double>& xs = spec.seriesAlongY ? series.y : series.x;
     const std::vector<double>& ys = spec.seriesAlongY ? series.x : series.y;
     std::optional<double> value;
-    const std::size_t n = std::min(xs.size(), ys.size());
+    // Guides (field marks) have no value to read.
+    const std::size_t n = series.guide ? 0 : std::min(xs.size(), ys.size());
     for (std::size_t i = 0; i + 1 < n && !value; ++i) {
       const double x0 = xs[i], x1 = xs[i + 1];
       if (at < x0 || at > x1) continue;

@@ -32,6 +32,9 @@ struct PlotSeries {
   // A scatter (a spot diagram's rays): a small dot at each point and no line; no hover readout.
   // A plot with a points series writes its CSV one point a row (series, x, y).
   bool points = false;
+  // A guide, not data (a field's position marked on a curve): drawn and in the legend, left out
+  // of the CSV and the hover readout.
+  bool guide = false;
 };
 
 struct PlotAxis {
@@ -46,7 +49,8 @@ struct PlotSpec {
   std::vector<PlotSeries> series;
   std::string note;  // one line under the title: what the curves assume
   // One data unit as long on both axes (a picture of the film rather than a graph): the axes'
-  // ranges grow around the data to fill the box.
+  // ranges grow around the data to fill the box, and the CSV lists points (series, polyline,
+  // x, y) rather than rows by x.
   bool equalAspect = false;
   // The series are functions of y, x = f(y) (field curves, drawn with the field up the y axis):
   // the CSV's rows and the hover readout go by y.
