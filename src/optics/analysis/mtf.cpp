@@ -69,6 +69,7 @@ FieldMtf wavefrontMtf(const Wavefront& wavefront, const MtfOptions& options) {
   field.diffractionLimitSagittal = resampled(limit.alongX, f, sagittalPerLag);
   field.rmsWavefrontErrorWaves = wavefront.rmsWaves;
   field.peakToValleyWaves = wavefront.peakToValleyWaves;
+  field.largestStepWaves = wavefront.largestStepWaves;
   field.passedFraction =
       wavefront.insideCount > 0 ? double(wavefront.passedCount) / wavefront.insideCount : 0.0;
   return field;
@@ -92,7 +93,7 @@ MtfResult diffractionMtf(const LensSystem& lens, const AnalysisSetup& setup,
         field = wavefrontMtf(*wavefront, options);
       else
         field.whyNot = whyNot;
-      field.fieldAngleDeg = point->fieldAngleDeg();
+      field.fieldAngleDeg = point->fieldAngleDeg() + 0.0;  // + 0.0: the axis as 0, not -0
     } else {
       field.whyNot = whyNot;
       field.fieldAngleDeg = std::numeric_limits<double>::quiet_NaN();

@@ -43,7 +43,8 @@ struct FieldMtf {
   std::vector<double> diffractionLimitTangential, diffractionLimitSagittal;
   double rmsWavefrontErrorWaves = 0.0;  // piston and tilt removed
   double peakToValleyWaves = 0.0;
-  double passedFraction = 0.0;  // of the pupil grid's samples in the unit disk
+  double largestStepWaves = 0.0;  // Wavefront::largestStepWaves: above ~0.5 the grid is coarse
+  double passedFraction = 0.0;    // of the pupil grid's samples in the unit disk
 };
 
 struct MtfResult {

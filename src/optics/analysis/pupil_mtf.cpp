@@ -30,9 +30,8 @@ FftwBuffer<T> allocate(std::size_t count) {
 }
 
 struct Plans {
-  fftw_plan rows = nullptr;     // the n rows that hold the pupil, in place, along x
-  fftw_plan columns = nullptr;  // all N columns, in place, along y
-  fftw_plan line = nullptr;     // a real line of N to its N/2 + 1 complex coefficients
+  fftw_plan lines = nullptr;  // n contiguous complex lines of N, in place
+  fftw_plan line = nullptr;   // a real line of N to its N/2 + 1 complex coefficients
 };
 
 // One set of plans per (n, N), made on scratch buffers and kept for the process's life.
@@ -43,47 +42,65 @@ const Plans& plansFor(int samples, int fftSize) {
   auto found = cache.find({samples, fftSize});
   if (found != cache.end()) return found->second;
 
-  const std::size_t cells = static_cast<std::size_t>(fftSize) * fftSize;
-  auto grid = allocate<fftw_complex>(cells);
+  auto lines = allocate<fftw_complex>(static_cast<std::size_t>(samples) * fftSize);
   auto line = allocate<double>(fftSize);
   auto lineOut = allocate<fftw_complex>(fftSize / 2 + 1);
   Plans plans;
   int length = fftSize;
-  // FFTW_ESTIMATE: planning in microseconds and the same plan (hence the same rounding) on
-  // every run; measured plans were no faster at these sizes (bench/README.md).
-  plans.rows = fftw_plan_many_dft(1, &length, samples, grid.get(), nullptr, 1, fftSize, grid.get(),
-                                  nullptr, 1, fftSize, FFTW_FORWARD, FFTW_ESTIMATE);
-  plans.columns = fftw_plan_many_dft(1, &length, fftSize, grid.get(), nullptr, fftSize, 1,
-                                     grid.get(), nullptr, fftSize, 1, FFTW_FORWARD, FFTW_ESTIMATE);
+  // FFTW_ESTIMATE: planning in microseconds, and the same plan (hence the same rounding) on
+  // every run.
+  plans.lines = fftw_plan_many_dft(1, &length, samples, lines.get(), nullptr, 1, fftSize,
+                                   lines.get(), nullptr, 1, fftSize, FFTW_FORWARD, FFTW_ESTIMATE);
   plans.line = fftw_plan_dft_r2c_1d(fftSize, line.get(), lineOut.get(), FFTW_ESTIMATE);
-  if (!plans.rows || !plans.columns || !plans.line)
+  if (!plans.lines || !plans.line)
     throw std::runtime_error("FFTW could not plan the pupil transforms");
   return cache.emplace(std::make_pair(samples, fftSize), plans).first->second;
 }
 
-// Each thread's buffers, grown to the largest size asked for.
+// Each thread's buffers, for the largest size asked for.
 struct Workspace {
-  int fftSize = 0;
-  FftwBuffer<fftw_complex> grid;
+  int samples = 0, fftSize = 0;
+  FftwBuffer<fftw_complex> lines;
   FftwBuffer<double> line;
   FftwBuffer<fftw_complex> lineOut;
-  std::vector<double> projectionX, projectionY;
+  std::vector<double> projection;
 
-  void resize(int size) {
-    if (size == fftSize) return;
+  void resize(int n, int size) {
+    if (n == samples && size == fftSize) return;
+    samples = n;
     fftSize = size;
-    grid = allocate<fftw_complex>(static_cast<std::size_t>(size) * size);
+    lines = allocate<fftw_complex>(static_cast<std::size_t>(n) * size);
     line = allocate<double>(size);
     lineOut = allocate<fftw_complex>(size / 2 + 1);
-    projectionX.assign(size, 0.0);
-    projectionY.assign(size, 0.0);
+    projection.assign(size, 0.0);
   }
 };
 
-// |FFT(line)| at lags 0..samples, divided by its value at lag 0.
-std::vector<double> modulation(const Plans& plans, Workspace& work,
-                               const std::vector<double>& projection, int samples) {
-  std::copy(projection.begin(), projection.end(), work.line.get());
+// The MTF along one axis: the pupil's lines across that axis (line v holds the samples
+// pupilAt(u, v), u = 0..n-1), transformed; their summed squared moduli are the line spread
+// function (up to the factor N); its |FFT| at lags 0..n over its value at lag 0.
+template <class PupilAt>
+std::vector<double> axisMtf(const Plans& plans, Workspace& work, int samples, int fftSize,
+                            PupilAt pupilAt) {
+  fftw_complex* lines = work.lines.get();
+  for (int v = 0; v < samples; ++v) {
+    fftw_complex* row = lines + static_cast<std::size_t>(v) * fftSize;
+    for (int u = 0; u < samples; ++u) {
+      const std::complex<double> value = pupilAt(u, v);
+      row[u][0] = value.real();
+      row[u][1] = value.imag();
+    }
+    std::memset(row + samples, 0, sizeof(fftw_complex) * (fftSize - samples));
+  }
+  fftw_execute_dft(plans.lines, lines, lines);
+
+  std::fill(work.projection.begin(), work.projection.end(), 0.0);
+  for (int v = 0; v < samples; ++v) {
+    const fftw_complex* row = lines + static_cast<std::size_t>(v) * fftSize;
+    for (int x = 0; x < fftSize; ++x)
+      work.projection[x] += row[x][0] * row[x][0] + row[x][1] * row[x][1];
+  }
+  std::copy(work.projection.begin(), work.projection.end(), work.line.get());
   fftw_execute_dft_r2c(plans.line, work.line.get(), work.lineOut.get());
   std::vector<double> mtf(samples + 1, 0.0);
   const double zero = work.lineOut[0][0];
@@ -101,35 +118,12 @@ AxisMtf pupilAxisMtf(const std::vector<std::complex<double>>& pupil, int samples
     throw std::invalid_argument("pupilAxisMtf: the pupil must be n x n with an FFT size >= 2n");
   const Plans& plans = plansFor(samples, fftSize);
   thread_local Workspace work;
-  work.resize(fftSize);
-
-  fftw_complex* grid = work.grid.get();
-  std::memset(grid, 0, sizeof(fftw_complex) * static_cast<std::size_t>(fftSize) * fftSize);
-  for (int j = 0; j < samples; ++j)
-    for (int i = 0; i < samples; ++i) {
-      const std::complex<double> value = pupil[static_cast<std::size_t>(j) * samples + i];
-      grid[static_cast<std::size_t>(j) * fftSize + i][0] = value.real();
-      grid[static_cast<std::size_t>(j) * fftSize + i][1] = value.imag();
-    }
-  fftw_execute_dft(plans.rows, grid, grid);
-  fftw_execute_dft(plans.columns, grid, grid);
-
-  // The PSF and its projections on the x and y axes.
-  std::fill(work.projectionX.begin(), work.projectionX.end(), 0.0);
-  std::fill(work.projectionY.begin(), work.projectionY.end(), 0.0);
-  for (int y = 0; y < fftSize; ++y) {
-    const fftw_complex* row = grid + static_cast<std::size_t>(y) * fftSize;
-    double rowSum = 0.0;
-    for (int x = 0; x < fftSize; ++x) {
-      const double psf = row[x][0] * row[x][0] + row[x][1] * row[x][1];
-      rowSum += psf;
-      work.projectionX[x] += psf;
-    }
-    work.projectionY[y] = rowSum;
-  }
+  work.resize(samples, fftSize);
+  const auto at = [&](int i, int j) { return pupil[static_cast<std::size_t>(j) * samples + i]; };
   AxisMtf mtf;
-  mtf.alongX = modulation(plans, work, work.projectionX, samples);
-  mtf.alongY = modulation(plans, work, work.projectionY, samples);
+  // Along x: the pupil's rows; along y: its columns.
+  mtf.alongX = axisMtf(plans, work, samples, fftSize, [&](int u, int v) { return at(u, v); });
+  mtf.alongY = axisMtf(plans, work, samples, fftSize, [&](int u, int v) { return at(v, u); });
   return mtf;
 }
 

@@ -102,31 +102,36 @@ std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint
 
   // Sums for the direction-cosine slopes (L = a px, M - Mc = b py).
   double sumLpx = 0.0, sumPx2 = 0.0, sumMpy = 0.0, sumPy2 = 0.0, sumPath = 0.0;
+  // Symmetry in x always (the field is in the y-z plane); on the axis also in y.
   const int half = samples / 2;
-  for (int j = 0; j < samples; ++j) {
+  const bool onAxis = field.imageHeightMm() == 0.0;
+  for (int j = onAxis ? half : 0; j < samples; ++j) {
     const double py = Wavefront::pupilCoordinate(j, samples);
+    const int rows[2] = {j, samples - 1 - j};
+    const int rowCount = onAxis ? 2 : 1;
     for (int i = half; i < samples; ++i) {
       const double px = Wavefront::pupilCoordinate(i, samples);
       if (px * px + py * py > 1.0) break;  // the rest of the row is outside too
-      ++front.insideCount;
+      const int copies = 2 * rowCount;
+      front.insideCount += copies;
       const auto path = pathToSphere(field.ray({px, py}));
       if (!path) continue;
       const glm::dvec3 direction = (path->onSphereMm - sphere.centreMm) / sphere.radiusMm;
-      // Both halves: the mirror sample has the same path and the mirrored direction.
-      for (const int column : {i, samples - 1 - i}) {
-        const std::size_t k = front.at(column, j);
-        front.passed[k] = 1;
-        opticalPathMm[k] = path->opticalPathMm;
-      }
-      front.passedCount += 2;
-      sumLpx += 2.0 * direction.x * px;
-      sumPx2 += 2.0 * px * px;
-      sumMpy += 2.0 * (direction.y - chiefDirectionOnSphere.y) * py;
-      sumPy2 += 2.0 * py * py;
-      sumPath += 2.0 * path->opticalPathMm;
+      // The mirror samples have the same path and mirrored directions, so the same products.
+      for (int r = 0; r < rowCount; ++r)
+        for (const int column : {i, samples - 1 - i}) {
+          const std::size_t k = front.at(column, rows[r]);
+          front.passed[k] = 1;
+          opticalPathMm[k] = path->opticalPathMm;
+        }
+      front.passedCount += copies;
+      sumLpx += copies * direction.x * px;
+      sumPx2 += copies * px * px;
+      sumMpy += copies * (direction.y - chiefDirectionOnSphere.y) * py;
+      sumPy2 += copies * py * py;
+      sumPath += copies * path->opticalPathMm;
     }
   }
-  front.insideCount *= 2;
   if (front.passedCount == 0) {
     say(whyNot, "no ray of this field passes the lens");
     return std::nullopt;
@@ -182,7 +187,22 @@ std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint
       highest = std::max(highest, residual);
     }
   front.rmsWaves = std::sqrt(sumSquares / front.passedCount);
-  front.peakToValleyWaves = highest - lowest;
+  // Steps between neighbours, less the fitted tilt's (a tilt only moves the PSF: its sampled
+  // autocorrelation is exact however steep it is).
+  const double tiltStepX = plane[1] * 2.0 / samples, tiltStepY = plane[2] * 2.0 / samples;
+  for (int j = 0; j < samples; ++j)
+    for (int i = 0; i < samples; ++i) {
+      const std::size_t k = front.at(i, j);
+      if (!front.passed[k]) continue;
+      const std::size_t right = k + 1, up = front.at(i, std::min(j + 1, samples - 1));
+      if (i + 1 < samples && front.passed[right])
+        front.largestStepWaves =
+            std::max(front.largestStepWaves,
+                     std::abs(front.opdWaves[right] - front.opdWaves[k] - tiltStepX));
+      if (j + 1 < samples && front.passed[up])
+        front.largestStepWaves = std::max(
+            front.largestStepWaves, std::abs(front.opdWaves[up] - front.opdWaves[k] - tiltStepY));
+    }
   return front;
 }
 

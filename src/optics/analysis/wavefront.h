@@ -19,7 +19,7 @@
 // - The grid is n x n samples over the square [-1, 1]^2 of pupil coordinates, at the centres of
 //   its cells (px = (2i + 1)/n - 1), n even; samples outside the unit disk are not traced.
 //   A rotationally symmetric lens and a field in the y-z plane give a wavefront symmetric in x,
-//   so only the half px > 0 is traced and mirrored.
+//   so only the half px > 0 is traced and mirrored (on the axis, only the quarter px, py > 0).
 // - The pupil coordinates map to the direction cosines (L, M) of the points on the reference
 //   sphere, as seen from its centre, nearly linearly (the sine condition); the fitted slopes
 //   (directionCosinePerPupil) scale the MTF's frequency axes. The grid is not resampled onto
@@ -57,6 +57,11 @@ struct Wavefront {
   // and tilt removed by a least-squares plane (they move the image, they do not blur it).
   double rmsWaves = 0.0;
   double peakToValleyWaves = 0.0;
+  // The largest OPD difference between neighbouring passing samples, tilt removed. The
+  // sampled pupil stands for the continuous one while this stays below about half a wave; a
+  // strongly defocused or aberrated field needs a finer grid (its MTF is then near 0 anyway,
+  // but less exact).
+  double largestStepWaves = 0.0;
 
   static double pupilCoordinate(int index, int samples) {
     return (2.0 * index + 1.0) / samples - 1.0;
