@@ -11,6 +11,7 @@ const AnalysisReport kReports[] = {
     {"relative_illumination",
      "film irradiance from the axis to the corner: total, cos4, vignetting, clipped_by",
      relativeIlluminationReport},
+    {"mtf", "diffraction MTF per field: tangential, sagittal, diffraction limit", mtfReport},
 };
 
 }  // namespace

@@ -6,5 +6,6 @@
 namespace lenslab::cli {
 
 ReportPart relativeIlluminationReport(const AnalyzeContext& context);
+ReportPart mtfReport(const AnalyzeContext& context);
 
 }  // namespace lenslab::cli
