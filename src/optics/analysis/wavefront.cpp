@@ -187,6 +187,7 @@ std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint
       highest = std::max(highest, residual);
     }
   front.rmsWaves = std::sqrt(sumSquares / front.passedCount);
+  front.peakToValleyWaves = highest - lowest;
   // Steps between neighbours, less the fitted tilt's (a tilt only moves the PSF: its sampled
   // autocorrelation is exact however steep it is).
   const double tiltStepX = plane[1] * 2.0 / samples, tiltStepY = plane[2] * 2.0 / samples;
