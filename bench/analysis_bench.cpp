@@ -9,11 +9,16 @@
 // BM_FilmPointBundle/<lens>: that film point's bundle (optics/film_point_bundle.h): 25
 // meridional rays, the chief ray and the shares by surface. Target (issue 21): bundle and
 // footprint together <= 3 ms.
+// BM_Distortion, BM_FieldCurves, BM_DistortionGrid (dgauss50): issue 22's distortion and field
+// curves, 64 points each from the axis to the corner (optics/analysis/), and the grid picture
+// (12 x 8 cells, 64 radial samples); all of issue 22's analyses together <= 30 ms.
 
 #include <benchmark/benchmark.h>
 
 #include <string>
 
+#include "optics/analysis/distortion.h"
+#include "optics/analysis/field_curvature.h"
 #include "optics/film_point_bundle.h"
 #include "optics/lens_loader.h"
 #include "optics/relative_illumination.h"
@@ -101,6 +106,29 @@ void BM_MtfPupilFft(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(lenslab::optics::pupilAxisMtf(pupil, n, 256));
 }
 BENCHMARK(BM_MtfPupilFft)->Unit(benchmark::kMillisecond);
+
+// Issue 22 (distortion, field curves): the double-Gauss at its film distance, object at infinity.
+void BM_Distortion(benchmark::State& state) {
+  const auto lens = loadBundled(state, "dgauss-50mm.dat");
+  if (!lens) return;
+  lenslab::optics::AnalysisSetup setup;
+  for (auto _ : state) benchmark::DoNotOptimize(lenslab::optics::distortionCurve(*lens, setup, 64));
+}
+void BM_FieldCurves(benchmark::State& state) {
+  const auto lens = loadBundled(state, "dgauss-50mm.dat");
+  if (!lens) return;
+  lenslab::optics::AnalysisSetup setup;
+  for (auto _ : state) benchmark::DoNotOptimize(lenslab::optics::fieldCurvature(*lens, setup, 64));
+}
+void BM_DistortionGrid(benchmark::State& state) {
+  const auto lens = loadBundled(state, "dgauss-50mm.dat");
+  if (!lens) return;
+  lenslab::optics::AnalysisSetup setup;
+  for (auto _ : state) benchmark::DoNotOptimize(lenslab::optics::distortionGrid(*lens, setup));
+}
+BENCHMARK(BM_Distortion)->Name("BM_Distortion/dgauss50")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FieldCurves)->Name("BM_FieldCurves/dgauss50")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DistortionGrid)->Name("BM_DistortionGrid/dgauss50")->Unit(benchmark::kMillisecond);
 
 const char* kLenses[][2] = {{"dgauss50", "dgauss-50mm.dat"},
                             {"fisheye10", "fisheye-10mm.dat"},

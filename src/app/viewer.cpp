@@ -106,7 +106,9 @@ void Viewer::drawFrame() {
   const auto [filmWidth, filmHeight] = filmSize();
   drawExportRenderDialog(state_, filmWidth, filmHeight);
   if (const auto chosen = fileBrowser_.draw(); chosen && browserPurpose_) {
-    state_.fileRequests.push_back({*browserPurpose_, chosen->string()});
+    FileRequest request = *browserPurpose_;
+    request.path = chosen->string();
+    state_.fileRequests.push_back(std::move(request));
   }
   if (fileBrowser_.visible()) state_.uiRects["file-browser"] = fileBrowser_.rect();
   state_.frameHadOverlay |= overlayShown(fileBrowser_);
@@ -122,7 +124,7 @@ void Viewer::carryOutRequests() {
   carryOutExportRequests();
   for (const FileRequest& request : std::exchange(state_.fileRequests, {})) {
     if (request.path.empty()) {
-      askForPath(request.kind);
+      askForPath(request);
     } else if (const auto error = perform(request)) {
       state_.log.error(*error);
     }

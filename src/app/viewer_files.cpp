@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "app/analysis/analysis_plots.h"
 #include "app/drawing/svg_export.h"
 #include "app/platform/screenshot.h"
 #include "app/platform/ui_scale.h"
@@ -38,13 +39,13 @@ FramebufferImage cropToRect(const FramebufferImage& image, const Rect& rect, flo
 
 }  // namespace
 
-void Viewer::askForPath(FileRequest::Kind kind) {
+void Viewer::askForPath(const FileRequest& request) {
   using Kind = FileRequest::Kind;
   const std::filesystem::path lenses = findResourceDirectory("lenses");
   const std::filesystem::path scenes = findResourceDirectory("scenes");
   const std::filesystem::path here = std::filesystem::current_path();
-  browserPurpose_ = kind;
-  switch (kind) {
+  browserPurpose_ = request;
+  switch (request.kind) {
     case Kind::Open:
     case Kind::OpenLens:
       fileBrowser_.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
@@ -67,11 +68,15 @@ void Viewer::askForPath(FileRequest::Kind kind) {
                         {".png", ".exr", ".pfm"}, here,
                         render::nonClobberingPath(here, "lenslab-export", ".png").filename());
       break;
-    case Kind::SaveIlluminationPlot:
-      fileBrowser_.show("Save the illumination plot as (.svg, .png or .csv)",
-                        FileBrowser::Mode::Save, {".svg", ".png", ".csv"}, here,
-                        render::nonClobberingPath(here, "lenslab-illumination", ".svg").filename());
+    case Kind::SavePlot: {
+      const AnalysisPlotSource* plot = findAnalysisPlot(request.plotId);
+      if (!plot) break;
+      fileBrowser_.show(
+          "Save the " + std::string(plot->title) + " plot as (.svg, .png or .csv)",
+          FileBrowser::Mode::Save, {".svg", ".png", ".csv"}, here,
+          render::nonClobberingPath(here, "lenslab-" + std::string(plot->id), ".svg").filename());
       break;
+    }
     case Kind::SaveCrossSection: {
       // The export dialog's format gives the suggested name; typing the other extension works.
       const char* extension = state_.crossSectionExport.svg ? ".svg" : ".png";
@@ -94,17 +99,22 @@ std::optional<std::string> Viewer::openDialog(const std::string& kind) {
       {"open-scene", Kind::OpenScene},
       {"save-lens", Kind::SaveLens},
       {"save-render", Kind::SaveRender},
-      {"save-cross-section", Kind::SaveCrossSection},
-      {"save-illumination-plot", Kind::SaveIlluminationPlot}};
+      {"save-cross-section", Kind::SaveCrossSection}};
   if (kind == "export-cross-section") {  // the settings dialog, as File > Export cross-section...
     state_.showExportCrossSection = true;
     return std::nullopt;
   }
   for (const auto& [name, value] : kKinds) {
     if (kind == name) {
-      askForPath(value);
+      askForPath({value, {}});
       return std::nullopt;
     }
+  }
+  // save-ID-plot: an analysis panel's plot.
+  if (const auto id = plotIdOfSaveDialog(kind)) {
+    if (!findAnalysisPlot(*id)) return "there is no plot '" + *id + "' (" + analysisPlotIds() + ")";
+    askForPath({Kind::SavePlot, {}, *id});
+    return std::nullopt;
   }
   return "unknown dialog '" + kind + "'";
 }
@@ -144,11 +154,12 @@ std::optional<std::string> Viewer::perform(const FileRequest& request) {
     case Kind::ExportRenderPath:
       state_.exportDialog.path = path;
       return std::nullopt;
-    case Kind::SaveIlluminationPlot: {
-      // Computed off the UI thread: written when the curve for the current lens is ready (the
+    case Kind::SavePlot: {
+      // Computed off the UI thread: written when the plot for the current lens is ready (the
       // panel that asked is showing it, so it normally is).
-      const PlotExport attempt = exportPlot("illumination", path);
-      if (!attempt.ready) return "the illumination curve is still being computed; try again";
+      const PlotExport attempt = exportPlot(request.plotId, path);
+      if (!attempt.ready)
+        return "the " + request.plotId + " plot is still being computed; try again";
       return attempt.error;
     }
     case Kind::SaveCrossSection:

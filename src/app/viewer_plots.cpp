@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "app/analysis/illumination_analysis.h"
+#include "app/analysis/analysis_plots.h"
 #include "app/plot/plot_csv.h"
 #include "app/plot/plot_picture.h"
 #include "app/plot/plot_svg.h"
@@ -20,29 +20,26 @@ constexpr double kPlotExportDpi = 144.0;
 
 }  // namespace
 
-ScriptHost::PlotExport Viewer::exportPlot(const std::string& panelId, const std::string& path) {
-  if (panelId != "illumination") return {true, "there is no plot '" + panelId + "' (illumination)"};
-  if (!state_.lensSystem) return {true, "there is no valid lens to analyse"};
-  IlluminationView& view = state_.illumination;
-  requestIllumination(view, state_.lensSystem, state_.filmDiagonalMm);
-  const auto result = view.job->latest();
-  if (!result || result->lens != state_.lensSystem ||
-      result->filmDiagonalMm != state_.filmDiagonalMm)
-    return {false, std::nullopt};
-  const PlotSpec spec =
-      illuminationPlot(*result, view.againstFieldAngle, state_.sceneSamplesRearDisk);
+ScriptHost::PlotExport Viewer::exportPlot(const std::string& plotId, const std::string& path) {
+  const AnalysisPlotSource* source = findAnalysisPlot(plotId);
+  if (!source) return {true, "there is no plot '" + plotId + "' (" + analysisPlotIds() + ")"};
+  std::string whyNot;
+  const std::optional<PlotSpec> spec = source->currentPlot(state_, &whyNot);
+  if (!whyNot.empty())
+    return {true, "cannot save the " + std::string(source->title) + " plot: " + whyNot};
+  if (!spec) return {false, std::nullopt};
   const std::string extension = std::filesystem::path(path).extension().string();
   std::string error;
   if (extension == ".svg")
-    error = writePlotSvg(path, spec, kPlotExportWidthPx, kPlotExportHeightPx);
+    error = writePlotSvg(path, *spec, kPlotExportWidthPx, kPlotExportHeightPx);
   else if (extension == ".png")
-    error = writePlotPng(path, spec, kPlotExportWidthPx, kPlotExportHeightPx, kPlotExportDpi);
+    error = writePlotPng(path, *spec, kPlotExportWidthPx, kPlotExportHeightPx, kPlotExportDpi);
   else if (extension == ".csv")
-    error = writePlotCsv(path, spec);
+    error = writePlotCsv(path, *spec);
   else
     return {true, "cannot write a plot as '" + extension + "' (use .svg, .png or .csv)"};
   if (!error.empty()) return {true, error};
-  state_.log.info("Saved the " + spec.title + " plot to " + path);
+  state_.log.info("Saved the " + spec->title + " plot to " + path);
   return {true, std::nullopt};
 }
 
@@ -56,12 +53,9 @@ bool Viewer::analysesSettled() const {
   // ImGui sizes a window's scrolling from the previous frame's content: new texts settle the
   // frame after the one that first drew them.
   if (state_.frameNumber < state_.lensFigures.shownInFrame + 2) return false;
-  // The illumination curve, when its panel asked for this lens.
-  const IlluminationView& illumination = state_.illumination;
-  if (illumination.requestedLens == lens) {
-    const auto result = illumination.job->latest();
-    if (!result || result->lens != lens) return false;
-  }
+  // Every analysis panel that asked for this lens.
+  for (const AnalysisPlotSource& plot : analysisPlots())
+    if (!plot.settled(state_)) return false;
   return true;
 }
 

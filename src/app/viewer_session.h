@@ -75,6 +75,9 @@ class Viewer final : public ScriptHost {
   void setFilmPoint(std::optional<double> heightMm) override {
     state_.filmPointHeightMm = heightMm;
   }
+  void setFieldFractions(const std::vector<double>& fractions) override {
+    state_.fanSettings.fieldFractions = fractions;
+  }
   ExportStarted startCrossSectionExport(const std::string& path,
                                         const CrossSectionExportRequest& request) override;
   std::optional<std::string> exportOutcome(std::uint64_t ticket) const override;
@@ -140,7 +143,7 @@ class Viewer final : public ScriptHost {
   void ensureDrawn();
   // Sets damage_: where this frame differs from the last drawn one.
   void findDamage();
-  void askForPath(FileRequest::Kind kind);
+  void askForPath(const FileRequest& request);  // the request's kind and plot; its path is empty
   // Takes a finished scene load: the new scene (and its camera's lens), or its errors.
   void finishSceneLoad();
   std::optional<std::string> openLoadedScene(const std::string& path, const LoadedScene& loaded);
@@ -181,7 +184,7 @@ class Viewer final : public ScriptHost {
   bool meteringWasOn_ = false;
   std::string meteredLensPath_;
   FileBrowser fileBrowser_;
-  std::optional<FileRequest::Kind> browserPurpose_;  // what the browser's answer is for
+  std::optional<FileRequest> browserPurpose_;  // what the browser's answer is for (no path)
   SceneOrigin sceneOrigin_ = SceneOrigin::Default;
   std::optional<std::string> sceneLoadOutcome_ = "";  // nullopt while a scene loads
 

@@ -44,6 +44,7 @@ void refreshLens(ViewerState& state) {
   if (lensChanged || state.fanSettings != state.fansComputedWith) {
     optics::FanSpec spec;
     spec.raysPerFan = state.fanSettings.raysPerFan;
+    spec.fieldFractions = state.fanSettings.fieldFractions;
     spec.filmHalfDiagonalMm = 0.5 * state.filmDiagonalMm;
     spec.objectDistanceMm = fanObjectDistanceFromVertexMm(state);
     state.rayFans = optics::computeRayFans(*state.lensSystem, spec);

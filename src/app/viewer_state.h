@@ -37,11 +37,14 @@ struct FileRequest {
     SaveLens,
     SaveRender,
     SaveCrossSection,
-    ExportRenderPath,     // the file the Export render window names
-    SaveIlluminationPlot  // the Illumination panel's plot (.svg, .png or .csv)
+    ExportRenderPath,  // the file the Export render window names
+    SavePlot           // an analysis panel's plot (.svg, .png or .csv): plotId names it
   };
+  FileRequest(Kind requestKind, std::string filePath = {}, std::string plot = {})
+      : kind(requestKind), path(std::move(filePath)), plotId(std::move(plot)) {}
   Kind kind;
-  std::string path;  // empty: ask with the file browser first
+  std::string path;    // empty: ask with the file browser first
+  std::string plotId;  // SavePlot: analysis_plots.h's id
 };
 
 // A picture of the window or of the cross-section that waits for a frame drawn with no menu,
@@ -60,6 +63,9 @@ struct FanSettings {
   double objectDistanceMm = 2000.0;
   bool showBlocked = true;
   int raysPerFan = 13;
+  // The fields, as fractions of the film's half diagonal: the cross-section's fans and every
+  // analysis panel (analysis/analysis_setup.h) use the same ones, in the same colours.
+  std::vector<double> fieldFractions{0.0, 0.7, 1.0};
   bool operator==(const FanSettings&) const = default;
 };
 
@@ -109,6 +115,9 @@ struct ViewerState {
   // last typed; its text while it is typed into, and what it showed last frame (dump-ui).
   double focusDistanceInputMm = 3000.0;
   char focusDistanceText[32] = {};
+  // The analysis panels' Fields box (panels/analysis_controls.cpp), while it is being typed in.
+  char fieldsText[96] = {};
+  bool fieldsEditing = false;
   bool focusFieldEditing = false;
   std::string focusAtShown;
   // A value is being dragged this frame (film, stop, a splitter): the preview renders at reduced

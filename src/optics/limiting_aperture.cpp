@@ -89,6 +89,12 @@ int LimitingAperture::limitingSurface() const {
   return -1;
 }
 
+std::optional<ParaxialAxialLimit> findParaxialAxialLimit(const LensSystem& lens,
+                                                         double objectFromFrontVertexMm) {
+  if (!(objectFromFrontVertexMm > 0.0)) return std::nullopt;
+  return paraxialLimit(lens, objectFromFrontVertexMm);
+}
+
 LimitingAperture findLimitingAperture(const LensSystem& lens, double objectFromFrontVertexMm) {
   LimitingAperture out;
   if (!(objectFromFrontVertexMm > 0.0)) return out;

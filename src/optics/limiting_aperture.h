@@ -73,6 +73,9 @@ struct LimitingAperture {
 };
 
 LimitingAperture findLimitingAperture(const LensSystem& lens, double objectFromFrontVertexMm);
+// Its paraxial half alone (microseconds; the real-ray scan takes a few hundred traces).
+std::optional<ParaxialAxialLimit> findParaxialAxialLimit(const LensSystem& lens,
+                                                         double objectFromFrontVertexMm);
 
 // The largest x in [0, upper] such that passes(t) holds for every t in [0, x] (at the resolution
 // of `steps` scan steps, then bisection to 1e-12 of upper), and the first x found that fails

@@ -85,7 +85,40 @@ class FakeHost : public ScriptHost {
   bool pinhole = false;
   void setKeepFilmDistance(bool keep) override { keepFilmDistance = keep; }
   std::optional<bool> keepFilmDistance;
+  void setFieldFractions(const std::vector<double>& fractions) override { fields = fractions; }
+  std::vector<double> fields;
 };
+
+TEST(ScriptRun, SetFieldsGivesTheHostTheFractions) {
+  const ParsedScript script = parseScript("set fields 0,0.5, 1\n", "t");
+  // One argument: the list is a single word unless spaces split it.
+  EXPECT_FALSE(script.diagnostics.empty());
+  const ParsedScript joined = parseScript("set fields 0,0.5,1\n", "t");
+  ASSERT_TRUE(joined.diagnostics.empty()) << joined.diagnostics.formatAll();
+  FakeHost host;
+  ScriptRunner runner(joined.commands);
+  while (host.frame(runner)) {
+  }
+  EXPECT_TRUE(host.errors.empty());
+  EXPECT_EQ(host.fields, (std::vector<double>{0.0, 0.5, 1.0}));
+}
+
+TEST(ScriptParse, FieldsAndPlotDialogsAreChecked) {
+  const ParsedScript bad = parseScript(
+      "set fields 0,1.5\nset fields 0,x\nset fields 0,0,0,0,0,0,0,0,0\n"
+      "open-dialog save-nonsense-plot\n",
+      "t");
+  ASSERT_EQ(bad.diagnostics.all().size(), 4u) << bad.diagnostics.formatAll();
+  EXPECT_NE(bad.diagnostics.all()[0].format().find("t:1:12: error: field 1.5 is not between 0"),
+            std::string::npos)
+      << bad.diagnostics.all()[0].format();
+  EXPECT_NE(bad.diagnostics.all()[1].format().find("'x' is not a number"), std::string::npos);
+  EXPECT_NE(bad.diagnostics.all()[2].format().find("at most 8 fields"), std::string::npos);
+  EXPECT_NE(bad.diagnostics.all()[3].format().find("illumination"), std::string::npos)
+      << bad.diagnostics.all()[3].format();
+  const ParsedScript good = parseScript("open-dialog save-illumination-plot\n", "t");
+  EXPECT_TRUE(good.diagnostics.empty()) << good.diagnostics.formatAll();
+}
 
 TEST(ScriptRun, KeepFilmDistanceAsALoadLensOptionAndAsASetting) {
   const ParsedScript script = parseScript(

@@ -1,5 +1,8 @@
 #include "app/automation/script.h"
 
+#include "app/analysis/analysis_plots.h"
+#include "app/analysis/analysis_setup.h"
+
 #include "app/render_export.h"
 
 #include <algorithm>
@@ -181,6 +184,12 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  if (a[0] == "fields") {
+    if (a.size() != 2) return problemAt(command, 0, "expected: set fields F,F,... (e.g. 0,0.7,1)");
+    std::string why;
+    if (!parseFieldFractions(a[1], &why)) return problemAt(command, 1, why);
+    return std::nullopt;
+  }
   if (a[0] == "auto-exposure") {
     if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
       return problemAt(command, 0, "expected: set auto-exposure on|off");
@@ -201,7 +210,7 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
       command, 0,
       "unknown setting '" + a[0] +
           "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays, "
-          "layout or keep-film-distance)");
+          "layout, keep-film-distance or fields)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
@@ -258,20 +267,20 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     }
   }
   if (command.verb == "open-dialog") {
-    static const char* const kKinds[] = {"open-lens",
-                                         "open-scene",
-                                         "save-lens",
-                                         "save-render",
-                                         "export-render",
-                                         "save-cross-section",
-                                         "export-cross-section",
-                                         "save-illumination-plot"};
-    if (std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
+    static const char* const kKinds[] = {
+        "open-lens",     "open-scene",         "save-lens",           "save-render",
+        "export-render", "save-cross-section", "export-cross-section"};
+    const auto plotId = plotIdOfSaveDialog(command.arguments[0]);
+    const bool knownPlot = plotId && findAnalysisPlot(*plotId);
+    if (!knownPlot &&
+        std::find(std::begin(kKinds), std::end(kKinds), command.arguments[0]) == std::end(kKinds)) {
       return problemAt(
           command, 0,
           "unknown dialog '" + command.arguments[0] +
-              "' (expected open-lens, open-scene, save-lens, save-render, export-render, "
-              "save-cross-section, export-cross-section or save-illumination-plot)");
+              "' (expected open-lens, open-scene, save-lens, save-render, "
+              "export-render, save-cross-section, export-cross-section or save-ID-plot "
+              "for a plot: " +
+              analysisPlotIds() + ")");
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
@@ -459,6 +468,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     }
     if (a[0] == "keep-film-distance") {
       host.setKeepFilmDistance(a[1] == "on");
+      return true;
+    }
+    if (a[0] == "fields") {
+      host.setFieldFractions(*parseFieldFractions(a[1], nullptr));
       return true;
     }
     if (a[0] == "auto-exposure") {

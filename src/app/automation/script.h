@@ -11,13 +11,14 @@
 //   zoom-cross-section FACTOR   (about the canvas centre)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
-//   export-plot ID FILE         (an analysis panel's plot, ID illumination, as .svg, .png (1200
-//                                x 750, 144 DPI) or .csv, once computed for the current lens)
+//   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI)
+//                                or .csv, once computed for the current lens; the IDs are in
+//                                analysis/analysis_plots.cpp: illumination, ...)
 //   drop FILE                   (as if the file were dropped onto the window)
 //   open-dialog KIND            (KIND: open-lens open-scene save-lens save-render
 //                                save-cross-section export-render export-cross-section
-//                                save-illumination-plot; shows the file browser, or the export
-//                                window, as the menu does)
+//                                save-ID-plot (ID as for export-plot); shows the file browser,
+//                                or the export window, as the menu does)
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
@@ -185,6 +186,8 @@ class ScriptHost {
   virtual void setAutoExposure(bool /*on*/) {}
   // The film point whose bundle the cross-section shows (mm from the axis), or none.
   virtual void setFilmPoint(std::optional<double> /*heightMm*/) {}
+  // The fields of the fans and the analysis panels, as fractions of the film's half diagonal.
+  virtual void setFieldFractions(const std::vector<double>& /*fractions*/) {}
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
   // The persisted "keep the lens file's film distance" choice (opening_focus.h).
   virtual void setKeepFilmDistance(bool /*keep*/) {}

@@ -51,6 +51,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"lens_panel_scroll_max_y", state.lensPanelScrollMaxY},
       {"film_distance_mm", filmDistance},
       {"film_diagonal_mm", state.filmDiagonalMm},
+      {"field_fractions", state.fanSettings.fieldFractions},
       {"stop_diameter_mm", stopDiameter},
       {"focus_at_text", state.focusAtShown},
       {"in_focus_text", state.inFocusText},

@@ -4,6 +4,7 @@
 // newest finished curve and says when it is catching up with an edit.
 
 #include "app/analysis/illumination_analysis.h"
+#include "app/analysis/plot_sources.h"
 #include "app/drawing/im_colour.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -68,6 +69,26 @@ void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, Im
 
 }  // namespace
 
+std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot) {
+  if (!state.lensSystem) {
+    *whyNot = "there is no valid lens to analyse";
+    return std::nullopt;
+  }
+  IlluminationView& view = state.illumination;
+  requestIllumination(view, state.lensSystem, state.filmDiagonalMm);
+  const auto result = view.job->latest();
+  if (!result || result->lens != state.lensSystem || result->filmDiagonalMm != state.filmDiagonalMm)
+    return std::nullopt;
+  return illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk);
+}
+
+bool illuminationSettled(const ViewerState& state) {
+  const IlluminationView& view = state.illumination;
+  if (!state.lensSystem || view.requestedLens != state.lensSystem) return true;
+  const auto result = view.job->latest();
+  return result && result->lens == state.lensSystem;
+}
+
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
   IlluminationView& view = state.illumination;
   requestIllumination(view, state.lensSystem, state.filmDiagonalMm);
@@ -75,7 +96,7 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
     ImGui::Checkbox("Against field angle", &view.againstFieldAngle);
     ImGui::SameLine();
     if (ImGui::SmallButton("Save plot...")) {
-      state.fileRequests.push_back({FileRequest::Kind::SaveIlluminationPlot, {}});
+      state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, "illumination"});
     }
     const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
     state.uiRects["illumination/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,

@@ -29,6 +29,11 @@ void drawLogPanel(ViewerState& state, const PanelPlace& place);
 void drawLensFilePanel(ViewerState& state, const PanelPlace& place);
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place);
 
+// The row that starts every analysis panel: the Fields box (fractions of the half diagonal,
+// shared with the cross-section's fans) and "Save plot..." for the plot `plotId`
+// (analysis/analysis_plots.h). Leaves the cursor on the same line for the panel's own controls.
+void drawAnalysisControls(ViewerState& state, const char* plotId);
+
 // How wide the lens table's panel must be for every column of its table to show (the layout
 // keeps it at least that wide where the window allows).
 float lensTablePanelMinWidth();

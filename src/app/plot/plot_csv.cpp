@@ -32,21 +32,25 @@ std::string number(double value) {
 }  // namespace
 
 std::string plotCsv(const PlotSpec& spec) {
-  std::string csv = field(spec.x.label);
+  // Rows go by the independent variable: x, or y for series along y.
+  const bool alongY = spec.seriesAlongY;
+  std::string csv = field(alongY ? spec.y.label : spec.x.label);
   for (const PlotSeries& series : spec.series) {
     csv.push_back(',');
     csv += field(series.name);
   }
   csv += "\n";
-  // Rows by x, in ascending order; each series fills its own column.
+  // Rows by x (or y), in ascending order; each series fills its own column.
   std::map<double, std::vector<std::string>> rows;
   for (std::size_t s = 0; s < spec.series.size(); ++s) {
     const PlotSeries& series = spec.series[s];
-    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
-      if (!std::isfinite(series.x[i])) continue;
-      auto& row = rows[series.x[i]];
+    const std::vector<double>& keys = alongY ? series.y : series.x;
+    const std::vector<double>& values = alongY ? series.x : series.y;
+    for (std::size_t i = 0; i < std::min(keys.size(), values.size()); ++i) {
+      if (!std::isfinite(keys[i])) continue;
+      auto& row = rows[keys[i]];
       row.resize(spec.series.size());
-      row[s] = number(series.y[i]);
+      row[s] = number(values[i]);
     }
   }
   for (const auto& [x, cells] : rows) {

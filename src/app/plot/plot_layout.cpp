@@ -20,6 +20,11 @@ double PlotFrame::fromScreenX(float px) const {
   return xTicks.min + (px - area.x) / std::max(1.0f, area.width) * (xTicks.max - xTicks.min);
 }
 
+double PlotFrame::fromScreenY(float px) const {
+  return yTicks.min +
+         (area.bottom() - px) / std::max(1.0f, area.height) * (yTicks.max - yTicks.min);
+}
+
 PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextWidthPx& textWidth) {
   PlotFrame frame;
   frame.outer = outer;
@@ -52,6 +57,20 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   frame.xTicks = niceTicks(range ? range->xMin : 0.0, range ? range->xMax : 1.0,
                            std::max(2, static_cast<int>(frame.area.width / (6.0f * fontPx))),
                            spec.x.min, spec.x.max);
+  if (spec.equalAspect && range) {
+    // The larger of the two scales (data units per pixel) for both, 4% to spare, centred.
+    const Rect& a = frame.area;
+    const double unitsPerPx = 1.04 * std::max({(range->xMax - range->xMin) / a.width,
+                                               (range->yMax - range->yMin) / a.height, 1e-12});
+    const double cx = 0.5 * (range->xMin + range->xMax), cy = 0.5 * (range->yMin + range->yMax);
+    const double halfX = 0.5 * unitsPerPx * a.width, halfY = 0.5 * unitsPerPx * a.height;
+    frame.xTicks =
+        niceTicks(cx - halfX, cx + halfX, std::max(2, static_cast<int>(a.width / (6.0f * fontPx))),
+                  cx - halfX, cx + halfX);
+    frame.yTicks =
+        niceTicks(cy - halfY, cy + halfY, std::max(2, static_cast<int>(a.height / (2.5f * line))),
+                  cy - halfY, cy + halfY);
+  }
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;
 

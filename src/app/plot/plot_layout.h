@@ -30,6 +30,7 @@ struct PlotFrame {
   float toScreenX(double x) const;
   float toScreenY(double y) const;
   double fromScreenX(float px) const;
+  double fromScreenY(float px) const;
 };
 
 PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextWidthPx& textWidth);

@@ -86,13 +86,12 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
 
   // The curves, clipped to the axes' box.
   for (const PlotSeries& series : spec.series) {
-    std::vector<CanvasPoint> points;
-    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
-      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
-    }
-    for (auto& run : clipPolyline(points, picture.drawingArea)) {
-      line(std::move(run), seriesColourOnWhite(series.rgba), 2.0, series.dashed, "series");
+    for (const auto& [begin, end] : finiteRuns(series)) {
+      std::vector<CanvasPoint> points;
+      for (std::size_t i = begin; i < end; ++i)
+        points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
+      for (auto& run : clipPolyline(points, picture.drawingArea))
+        line(std::move(run), seriesColourOnWhite(series.rgba), 2.0, series.dashed, "series");
     }
   }
   if (frame.legend.width > 0) {

@@ -67,22 +67,38 @@ std::optional<DataRange> dataRange(const PlotSpec& spec) {
   return range;
 }
 
-std::vector<std::optional<double>> valuesAt(const PlotSpec& spec, double x) {
+std::vector<std::optional<double>> valuesAt(const PlotSpec& spec, double at) {
   std::vector<std::optional<double>> values;
   for (const PlotSeries& series : spec.series) {
+    // The independent and dependent variables.
+    const std::vector<double>& xs = spec.seriesAlongY ? series.y : series.x;
+    const std::vector<double>& ys = spec.seriesAlongY ? series.x : series.y;
     std::optional<double> value;
-    const std::size_t n = std::min(series.x.size(), series.y.size());
+    const std::size_t n = std::min(xs.size(), ys.size());
     for (std::size_t i = 0; i + 1 < n && !value; ++i) {
-      const double x0 = series.x[i], x1 = series.x[i + 1];
-      if (x < x0 || x > x1) continue;
-      const double t = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
-      const double y = series.y[i] + t * (series.y[i + 1] - series.y[i]);
+      const double x0 = xs[i], x1 = xs[i + 1];
+      if (at < x0 || at > x1) continue;
+      const double t = x1 > x0 ? (at - x0) / (x1 - x0) : 0.0;
+      const double y = ys[i] + t * (ys[i + 1] - ys[i]);
       if (std::isfinite(y)) value = y;
     }
-    if (!value && n == 1 && series.x[0] == x && std::isfinite(series.y[0])) value = series.y[0];
+    if (!value && n == 1 && xs[0] == at && std::isfinite(ys[0])) value = ys[0];
     values.push_back(value);
   }
   return values;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> finiteRuns(const PlotSeries& series) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  const std::size_t n = std::min(series.x.size(), series.y.size());
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const bool finite = i < n && std::isfinite(series.x[i]) && std::isfinite(series.y[i]);
+    if (finite) continue;
+    if (i > begin) runs.emplace_back(begin, i);
+    begin = i + 1;
+  }
+  return runs;
 }
 
 }  // namespace lenslab::app

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/plot/plot_spec.h"
@@ -31,7 +32,12 @@ struct DataRange {
 };
 std::optional<DataRange> dataRange(const PlotSpec& spec);
 
-// Each series' value at x by linear interpolation; nullopt outside its x range.
-std::vector<std::optional<double>> valuesAt(const PlotSpec& spec, double x);
+// Each series' value at x by linear interpolation; nullopt outside its x range. With
+// spec.seriesAlongY, each series' x at y = `at`.
+std::vector<std::optional<double>> valuesAt(const PlotSpec& spec, double at);
+
+// The series' runs of consecutive finite points, as [begin, end) index pairs: the polylines
+// to draw (a non-finite point breaks the line).
+std::vector<std::pair<std::size_t, std::size_t>> finiteRuns(const PlotSeries& series);
 
 }  // namespace lenslab::app

@@ -11,8 +11,10 @@
 namespace lenslab::app {
 
 struct PlotSeries {
-  std::string name;                  // the legend's entry, and the CSV column
-  std::vector<double> x, y;          // same length; x ascending
+  std::string name;  // the legend's entry, and the CSV column
+  // Same length; x ascending (y ascending when PlotSpec::seriesAlongY). A non-finite point
+  // breaks the line, so one series may hold several polylines (a grid's lines).
+  std::vector<double> x, y;
   std::uint32_t rgba = 0xff000000u;  // 0xRRGGBBAA
   bool dashed = false;
 };
@@ -28,6 +30,12 @@ struct PlotSpec {
   PlotAxis x, y;
   std::vector<PlotSeries> series;
   std::string note;  // one line under the title: what the curves assume
+  // One data unit as long on both axes (a picture of the film rather than a graph): the axes'
+  // ranges grow around the data to fill the box.
+  bool equalAspect = false;
+  // The series are functions of y, x = f(y) (field curves, drawn with the field up the y axis):
+  // the CSV's rows and the hover readout go by y.
+  bool seriesAlongY = false;
 };
 
 }  // namespace lenslab::app

@@ -88,15 +88,15 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       << number(frame.area.height) << "\"/></clipPath>\n";
   svg << "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-width=\"2\">\n";
   for (const PlotSeries& series : spec.series) {
-    std::string points;
-    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
-      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      points +=
-          number(frame.toScreenX(series.x[i])) + "," + number(frame.toScreenY(series.y[i])) + " ";
+    for (const auto& [begin, end] : finiteRuns(series)) {
+      std::string points;
+      for (std::size_t i = begin; i < end; ++i)
+        points +=
+            number(frame.toScreenX(series.x[i])) + "," + number(frame.toScreenY(series.y[i])) + " ";
+      svg << "<polyline class=\"series\" data-name=\"" << svgEscaped(series.name) << "\" stroke=\""
+          << inkOnWhite(series.rgba) << "\"" << (series.dashed ? " stroke-dasharray=\"6 4\"" : "")
+          << " points=\"" << points << "\"/>\n";
     }
-    svg << "<polyline class=\"series\" data-name=\"" << svgEscaped(series.name) << "\" stroke=\""
-        << inkOnWhite(series.rgba) << "\"" << (series.dashed ? " stroke-dasharray=\"6 4\"" : "")
-        << " points=\"" << points << "\"/>\n";
   }
   svg << "</g>\n";
   if (frame.legend.width > 0) {

@@ -91,12 +91,12 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
 
   draw->PushClipRect({area.x, area.y}, {area.right(), area.bottom()}, true);
   for (const PlotSeries& series : spec.series) {
-    std::vector<ImVec2> points;
-    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
-      if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
+    for (const auto& [begin, end] : finiteRuns(series)) {
+      std::vector<ImVec2> points;
+      for (std::size_t i = begin; i < end; ++i)
+        points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
+      polyline(draw, points, toImU32(series.rgba), series.dashed, 2.0f);
     }
-    polyline(draw, points, toImU32(series.rgba), series.dashed, 2.0f);
   }
   draw->PopClipRect();
 
@@ -122,10 +122,18 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
       mouse.y <= area.bottom()) {
     const double x = frame.fromScreenX(mouse.x);
     result.hoverX = x;
-    draw->AddLine({mouse.x, area.y}, {mouse.x, area.bottom()}, IM_COL32(255, 255, 255, 120));
-    const auto values = valuesAt(spec, x);
+    // Series along y are read across a horizontal line at the y under the mouse.
+    const double at = spec.seriesAlongY ? frame.fromScreenY(mouse.y) : x;
+    if (spec.seriesAlongY)
+      draw->AddLine({area.x, mouse.y}, {area.right(), mouse.y}, IM_COL32(255, 255, 255, 120));
+    else
+      draw->AddLine({mouse.x, area.y}, {mouse.x, area.bottom()}, IM_COL32(255, 255, 255, 120));
+    const auto values = valuesAt(spec, at);
     ImGui::BeginTooltip();
-    ImGui::Text("%s: %s", spec.x.label.c_str(), tickLabel(x, frame.xTicks.decimals + 1).c_str());
+    if (spec.seriesAlongY)
+      ImGui::Text("%s: %s", spec.y.label.c_str(), tickLabel(at, frame.yTicks.decimals + 1).c_str());
+    else
+      ImGui::Text("%s: %s", spec.x.label.c_str(), tickLabel(x, frame.xTicks.decimals + 1).c_str());
     for (std::size_t i = 0; i < spec.series.size(); ++i) {
       if (!values[i]) continue;
       ImGui::PushStyleColor(ImGuiCol_Text,

@@ -92,11 +92,11 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
   const double objectFromFrontVertexMm = atInfinity
                                              ? std::numeric_limits<double>::infinity()
                                              : *objectDistanceFromFilmMm - lens.frontVertexZ();
-  const LimitingAperture limit = findLimitingAperture(lens, objectFromFrontVertexMm);
+  const auto limit = findParaxialAxialLimit(lens, objectFromFrontVertexMm);
   const double irisPupilRadiusMm = 0.5 * firstOrder.entrancePupil.diameterMm;
   double limitedPupilRadiusMm = irisPupilRadiusMm;
-  if (limit.paraxial && limit.paraxial->entrancePupilDiameterMm > 0.0)
-    limitedPupilRadiusMm = 0.5 * limit.paraxial->entrancePupilDiameterMm;
+  if (limit && limit->entrancePupilDiameterMm > 0.0)
+    limitedPupilRadiusMm = 0.5 * limit->entrancePupilDiameterMm;
   if (!(limitedPupilRadiusMm > 0.0) || !std::isfinite(limitedPupilRadiusMm)) {
     say(whyNot, "the lens has no entrance pupil to aim at");
     return std::nullopt;

@@ -1,0 +1,39 @@
+#include "app/analysis/analysis_plots.h"
+
+#include "app/analysis/plot_sources.h"
+
+namespace lenslab::app {
+
+namespace {
+
+const AnalysisPlotSource kPlots[] = {
+    {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
+};
+
+}  // namespace
+
+std::span<const AnalysisPlotSource> analysisPlots() { return kPlots; }
+
+const AnalysisPlotSource* findAnalysisPlot(std::string_view id) {
+  for (const AnalysisPlotSource& plot : kPlots)
+    if (id == plot.id) return &plot;
+  return nullptr;
+}
+
+std::string analysisPlotIds() {
+  std::string ids;
+  for (const AnalysisPlotSource& plot : kPlots)
+    ids += (ids.empty() ? "" : ", ") + std::string(plot.id);
+  return ids;
+}
+
+std::optional<std::string> plotIdOfSaveDialog(std::string_view dialog) {
+  constexpr std::string_view kPrefix = "save-", kSuffix = "-plot";
+  if (dialog.size() <= kPrefix.size() + kSuffix.size() || !dialog.starts_with(kPrefix) ||
+      !dialog.ends_with(kSuffix))
+    return std::nullopt;
+  return std::string(
+      dialog.substr(kPrefix.size(), dialog.size() - kPrefix.size() - kSuffix.size()));
+}
+
+}  // namespace lenslab::app

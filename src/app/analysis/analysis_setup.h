@@ -1,0 +1,40 @@
+#pragma once
+// What every analysis panel asks of its worker: the lens as edited, the fields (the cross-
+// section's, so each field has the colour its fan has), the film's half diagonal, and the
+// object. The object is the plane the film is focused on (optics/focus.h), so spot diagrams,
+// fans and MTF show the lens as it images the scene it is focused for, not the defocus of an
+// object at infinity seen through a lens focused at 3.6 m; a film at or nearer than the infinity
+// focus puts it at infinity. Finding that plane takes real rays, so it is done on the worker.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "optics/analysis/field_point.h"
+#include "optics/lens_system.h"
+
+namespace lenslab::app {
+
+struct ViewerState;
+
+struct AnalysisRequest {
+  std::shared_ptr<const optics::LensSystem> lens;  // null: no valid lens
+  std::vector<double> fieldFractions;
+  double filmHalfDiagonalMm = 0.0;
+  bool operator==(const AnalysisRequest&) const = default;
+};
+
+AnalysisRequest analysisRequestOf(const ViewerState& state);
+
+// On the worker: the optics setup for the request (the lens must be non-null).
+optics::AnalysisSetup analysisSetupFor(const AnalysisRequest& request);
+
+// "0, 0.7, 1" or "0,0.7,1": one to eight fractions of the half diagonal, each from 0 to 1.
+// nullopt with *why set (when given) otherwise.
+std::optional<std::vector<double>> parseFieldFractions(std::string_view text, std::string* why);
+// The fractions as the Fields box shows them: "0, 0.7, 1".
+std::string fieldFractionsText(const std::vector<double>& fractions);
+
+}  // namespace lenslab::app
