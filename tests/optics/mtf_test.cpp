@@ -365,6 +365,29 @@ TEST(DiffractionMtf, VignettingNarrowsTheDiffractionLimit) {
   }
 }
 
+TEST(DiffractionMtf, ACommonFrequencyAxisEndsAtTheLargestCutoff) {
+  const auto lens = testing::loadLens(testing::bundledLensDir() / "dgauss-50mm.dat", 36.77);
+  ASSERT_TRUE(lens);
+  MtfOptions options;
+  const MtfResult own = diffractionMtf(*lens, AnalysisSetup{}, options);
+  options.commonFrequencyAxis = true;
+  const MtfResult common = diffractionMtf(*lens, AnalysisSetup{}, options);
+  double largest = 0.0;
+  for (const FieldMtf& f : own.fields) largest = std::max(largest, f.cutoffCyclesPerMm);
+  for (std::size_t i = 0; i < common.fields.size(); ++i) {
+    const FieldMtf& f = common.fields[i];
+    ASSERT_EQ(f.frequenciesCyclesPerMm.size(), 65u);
+    EXPECT_NEAR(f.frequenciesCyclesPerMm.back(), largest, 1e-9 * largest);
+    EXPECT_EQ(f.frequenciesCyclesPerMm, common.fields[0].frequenciesCyclesPerMm);
+    EXPECT_DOUBLE_EQ(f.cutoffCyclesPerMm, own.fields[i].cutoffCyclesPerMm);
+    for (std::size_t k = 0; k < f.frequenciesCyclesPerMm.size(); ++k)
+      if (f.frequenciesCyclesPerMm[k] >= f.tangentialCutoffCyclesPerMm) {
+        EXPECT_EQ(f.tangential[k], 0.0);
+        EXPECT_EQ(f.diffractionLimitTangential[k], 0.0);
+      }
+  }
+}
+
 TEST(DiffractionMtf, ThreadsShareThePlansAndGetTheSameAnswer) {
   const auto lens = testing::loadLens(testing::bundledLensDir() / "dgauss-50mm.dat", 36.77);
   ASSERT_TRUE(lens);

@@ -31,7 +31,8 @@ std::vector<double> resampled(const std::vector<double>& mtf,
 
 }  // namespace
 
-FieldMtf wavefrontMtf(const Wavefront& wavefront, const MtfOptions& options) {
+FieldMtf wavefrontMtf(const Wavefront& wavefront, const MtfOptions& options,
+                      std::optional<double> frequencyRangeCyclesPerMm) {
   FieldMtf field;
   const int n = wavefront.samples;
   const glm::dvec2 halfWidth = wavefront.directionCosinePerPupil;
@@ -60,8 +61,8 @@ FieldMtf wavefrontMtf(const Wavefront& wavefront, const MtfOptions& options) {
   field.workingFNumber = 1.0 / (2.0 * std::max(halfWidth.x, halfWidth.y));
 
   const int count = std::max(2, options.frequencySamples);
-  for (int k = 0; k < count; ++k)
-    field.frequenciesCyclesPerMm.push_back(field.cutoffCyclesPerMm * k / (count - 1));
+  const double range = frequencyRangeCyclesPerMm.value_or(field.cutoffCyclesPerMm);
+  for (int k = 0; k < count; ++k) field.frequenciesCyclesPerMm.push_back(range * k / (count - 1));
   const auto& f = field.frequenciesCyclesPerMm;
   field.tangential = resampled(aberrated.alongY, f, tangentialPerLag);
   field.sagittal = resampled(aberrated.alongX, f, sagittalPerLag);
@@ -81,24 +82,43 @@ MtfResult diffractionMtf(const LensSystem& lens, const AnalysisSetup& setup,
   result.wavelengthNm = lens.wavelengthNm();
   result.pupilSamples = options.pupilSamples;
   result.fftSize = options.fftSize;
-  for (double fraction : setup.fieldFractions) {
-    const double imageHeightMm = fraction * setup.filmHalfDiagonalMm;
+  // First the wavefronts, whose pupils' widths give the cutoffs; then the MTFs.
+  struct Traced {
+    double imageHeightMm = 0.0;
+    double fieldAngleDeg = std::numeric_limits<double>::quiet_NaN();
+    std::optional<Wavefront> wavefront;
     std::string whyNot;
+  };
+  std::vector<Traced> traced;
+  double largestCutoffCyclesPerMm = 0.0;
+  for (double fraction : setup.fieldFractions) {
+    Traced t;
+    t.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
     const auto point =
-        FieldPoint::resolve(lens, imageHeightMm, setup.objectDistanceFromFilmMm, &whyNot);
-    FieldMtf field;
+        FieldPoint::resolve(lens, t.imageHeightMm, setup.objectDistanceFromFilmMm, &t.whyNot);
     if (point) {
-      const auto wavefront = traceWavefront(lens, *point, options.pupilSamples, &whyNot);
-      if (wavefront)
-        field = wavefrontMtf(*wavefront, options);
-      else
-        field.whyNot = whyNot;
-      field.fieldAngleDeg = point->fieldAngleDeg() + 0.0;  // + 0.0: the axis as 0, not -0
-    } else {
-      field.whyNot = whyNot;
-      field.fieldAngleDeg = std::numeric_limits<double>::quiet_NaN();
+      t.fieldAngleDeg = point->fieldAngleDeg() + 0.0;  // + 0.0: the axis as 0, not -0
+      t.wavefront = traceWavefront(lens, *point, options.pupilSamples, &t.whyNot);
     }
-    field.imageHeightMm = imageHeightMm;
+    if (t.wavefront) {
+      const glm::dvec2 halfWidth = t.wavefront->directionCosinePerPupil;
+      largestCutoffCyclesPerMm =
+          std::max(largestCutoffCyclesPerMm,
+                   2.0 * std::max(halfWidth.x, halfWidth.y) / t.wavefront->wavelengthMm);
+    }
+    traced.push_back(std::move(t));
+  }
+  std::optional<double> range = options.frequencyRangeCyclesPerMm;
+  if (!range && options.commonFrequencyAxis && largestCutoffCyclesPerMm > 0.0)
+    range = largestCutoffCyclesPerMm;
+  for (Traced& t : traced) {
+    FieldMtf field;
+    if (t.wavefront)
+      field = wavefrontMtf(*t.wavefront, options, range);
+    else
+      field.whyNot = t.whyNot;
+    field.imageHeightMm = t.imageHeightMm;
+    field.fieldAngleDeg = t.fieldAngleDeg;
     result.fields.push_back(std::move(field));
   }
   return result;

@@ -27,6 +27,11 @@ struct MtfOptions {
   int pupilSamples = 128;     // across the pupil's diameter (even)
   int fftSize = 256;          // >= 2 * pupilSamples: the OTF then does not wrap
   int frequencySamples = 65;  // from 0 to the cutoff, both included
+  // Sample every field from 0 to the largest cutoff among the fields instead of to its own (one
+  // frequency axis for a plot or a table of several fields; 0 beyond a field's own cutoff).
+  bool commonFrequencyAxis = false;
+  // Sample every field from 0 to this frequency instead (a plot's chosen range).
+  std::optional<double> frequencyRangeCyclesPerMm;
 };
 
 struct FieldMtf {
@@ -55,8 +60,9 @@ struct MtfResult {
 };
 
 // The MTF of a wavefront (tangential and sagittal, and their diffraction limits), on
-// frequencySamples frequencies from 0 to the wavefront's cutoff.
-FieldMtf wavefrontMtf(const Wavefront& wavefront, const MtfOptions& options = {});
+// frequencySamples frequencies from 0 to the wavefront's cutoff, or to frequencyRange when given.
+FieldMtf wavefrontMtf(const Wavefront& wavefront, const MtfOptions& options = {},
+                      std::optional<double> frequencyRangeCyclesPerMm = std::nullopt);
 
 // Every field of the setup. The lens must be at setup.wavelengthNm.
 MtfResult diffractionMtf(const LensSystem& lens, const AnalysisSetup& setup,
