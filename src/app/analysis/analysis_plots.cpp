@@ -8,6 +8,7 @@ namespace {
 
 const AnalysisPlotSource kPlots[] = {
     {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
+    {"mtf", "MTF", mtfCurrentPlot, mtfSettled},
 };
 
 }  // namespace

@@ -12,5 +12,7 @@ struct ViewerState;
 
 std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot);
 bool illuminationSettled(const ViewerState& state);
+std::optional<PlotSpec> mtfCurrentPlot(ViewerState& state, std::string* whyNot);
+bool mtfSettled(const ViewerState& state);
 
 }  // namespace lenslab::app

@@ -14,6 +14,7 @@ constexpr PanelSpec kPanels[] = {
     {"log", "Log", DockArea::Bottom, drawLogPanel},
     {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
     {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
+    {"mtf", "MTF", DockArea::Bottom, drawMtfPanel},
 };
 
 }  // namespace

@@ -28,6 +28,7 @@ void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place);
 void drawLogPanel(ViewerState& state, const PanelPlace& place);
 void drawLensFilePanel(ViewerState& state, const PanelPlace& place);
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place);
+void drawMtfPanel(ViewerState& state, const PanelPlace& place);
 
 // The row that starts every analysis panel: the Fields box (fractions of the half diagonal,
 // shared with the cross-section's fans) and "Save plot..." for the plot `plotId`
