@@ -29,6 +29,18 @@
 #include "optics/lens_loader.h"
 #include "optics/relative_illumination.h"
 
+// BM_Mtf/dgauss50: the diffraction MTF (optics/analysis/mtf.h) at the three default fields (0,
+// 0.7, 1 of the full frame's half diagonal), 128^2 pupil grid, 256^2 FFT, one thread; target
+// (issue 22) <= 12 ms of the 30 ms for all analyses. BM_MtfWavefront and BM_MtfPupilFft split
+// it: the three fields' ray traces, and one pupil's FFT (each field does two: aberrated and
+// aberration-free).
+#include <complex>
+#include <vector>
+
+#include "optics/analysis/mtf.h"
+#include "optics/analysis/pupil_mtf.h"
+#include "optics/analysis/wavefront.h"
+
 namespace {
 
 std::shared_ptr<const lenslab::optics::LensSystem> loadBundled(benchmark::State& state,
@@ -66,6 +78,40 @@ void BM_FilmPointBundle(benchmark::State& state, const std::string& lensFile) {
     benchmark::DoNotOptimize(bundle);
   }
 }
+
+void BM_Mtf(benchmark::State& state) {
+  const auto lens = loadBundled(state, "dgauss-50mm.dat");
+  if (!lens) return;
+  const lenslab::optics::AnalysisSetup setup;  // fields 0, 0.7, 1; object at infinity
+  for (auto _ : state) benchmark::DoNotOptimize(lenslab::optics::diffractionMtf(*lens, setup));
+}
+BENCHMARK(BM_Mtf)->Name("BM_Mtf/dgauss50")->Unit(benchmark::kMillisecond);
+
+void BM_MtfWavefront(benchmark::State& state) {
+  const auto lens = loadBundled(state, "dgauss-50mm.dat");
+  if (!lens) return;
+  const lenslab::optics::AnalysisSetup setup;
+  std::vector<lenslab::optics::FieldPoint> fields;
+  for (double fraction : setup.fieldFractions)
+    fields.push_back(*lenslab::optics::FieldPoint::resolve(
+        *lens, fraction * setup.filmHalfDiagonalMm, std::nullopt));
+  for (auto _ : state)
+    for (const auto& field : fields)
+      benchmark::DoNotOptimize(lenslab::optics::traceWavefront(*lens, field, 128));
+}
+BENCHMARK(BM_MtfWavefront)->Name("BM_MtfWavefront/dgauss50")->Unit(benchmark::kMillisecond);
+
+void BM_MtfPupilFft(benchmark::State& state) {
+  const int n = 128;
+  std::vector<std::complex<double>> pupil(n * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = (2.0 * i + 1.0) / n - 1.0, y = (2.0 * j + 1.0) / n - 1.0;
+      if (x * x + y * y <= 1.0) pupil[j * n + i] = std::polar(1.0, 3.0 * (x * x + y * y));
+    }
+  for (auto _ : state) benchmark::DoNotOptimize(lenslab::optics::pupilAxisMtf(pupil, n, 256));
+}
+BENCHMARK(BM_MtfPupilFft)->Unit(benchmark::kMillisecond);
 
 // Issue 22 (distortion, field curves): the double-Gauss at its film distance, object at infinity.
 void BM_Distortion(benchmark::State& state) {

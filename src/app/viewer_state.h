@@ -15,6 +15,7 @@
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
 #include "app/analysis/ray_analysis.h"
+#include "app/analysis/mtf_analysis.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
@@ -185,6 +186,7 @@ struct ViewerState {
   RayAnalysisView rayAnalysis;
   // The Distortion and Field curves panels' results (one worker for both) and choices.
   DistortionView distortion;
+  MtfView mtf;  // the MTF panel's worker (analysis/mtf_analysis.h)
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;

@@ -132,7 +132,8 @@ FirstOrderData LensSystem::firstOrderAt(double wavelengthNm) const {
 }
 
 template <bool kRecord>
-std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* path) const {
+std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* path,
+                                         double* opticalPathMm) const {
   const int n = static_cast<int>(surfaces_.size());
   if constexpr (kRecord) {
     path->points.assign(1, ray.origin);
@@ -160,6 +161,7 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* pa
       return fail(RayStop::MissedSurface, k);
     }
     const glm::dvec3 hit = ray.origin + t * ray.direction;
+    if (opticalPathMm) *opticalPathMm += t * (fromFilm ? s.indexRear : s.indexFront);
     if (hit.x * hit.x + hit.y * hit.y > s.semiApertureMm * s.semiApertureMm) {
       if constexpr (kRecord) {
         path->points.push_back(blockedEndPoint(s, ray, t));
@@ -185,19 +187,23 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* pa
 }
 
 std::optional<LensRay> LensSystem::traceFromFilm(const LensRay& ray) const {
-  return trace<false>(ray, true, nullptr);
+  return trace<false>(ray, true, nullptr, nullptr);
 }
 std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray) const {
-  return trace<false>(ray, false, nullptr);
+  return trace<false>(ray, false, nullptr, nullptr);
+}
+std::optional<LensRay> LensSystem::traceFromScene(const LensRay& ray, double& opticalPathMm) const {
+  opticalPathMm = 0.0;
+  return trace<false>(ray, false, nullptr, &opticalPathMm);
 }
 RayPath LensSystem::traceFromFilmPath(const LensRay& ray) const {
   RayPath path;
-  trace<true>(ray, true, &path);
+  trace<true>(ray, true, &path, nullptr);
   return path;
 }
 RayPath LensSystem::traceFromScenePath(const LensRay& ray) const {
   RayPath path;
-  trace<true>(ray, false, &path);
+  trace<true>(ray, false, &path, nullptr);
   return path;
 }
 

@@ -132,6 +132,9 @@ class LensSystem {
   // Exact trace through every surface; nullopt when the lens blocks the ray.
   std::optional<LensRay> traceFromFilm(const LensRay& ray) const;   // travels toward +z
   std::optional<LensRay> traceFromScene(const LensRay& ray) const;  // travels toward -z
+  // The same, also giving the optical path length (sum of index x distance, mm) from the ray's
+  // origin to where it leaves the lens (its origin on the rear surface), for wavefront analyses.
+  std::optional<LensRay> traceFromScene(const LensRay& ray, double& opticalPathMm) const;
   // The same, recording the path and why it stopped.
   RayPath traceFromFilmPath(const LensRay& ray) const;
   RayPath traceFromScenePath(const LensRay& ray) const;
@@ -188,7 +191,9 @@ class LensSystem {
  private:
   void place();  // fills surfaces_, firstOrder_ from prescription_ and wavelengthNm_
   template <bool kRecord>
-  std::optional<LensRay> trace(LensRay ray, bool fromFilm, RayPath* path) const;
+  // opticalPathMm, when not null, accumulates index x distance along the way.
+  std::optional<LensRay> trace(LensRay ray, bool fromFilm, RayPath* path,
+                               double* opticalPathMm) const;
 
   Prescription prescription_;
   double wavelengthNm_;

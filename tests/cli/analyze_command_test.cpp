@@ -119,5 +119,51 @@ TEST_F(AnalyzeCommand, OnlyRunsTheNamedAnalyses) {
   EXPECT_TRUE(json.at("object_distance_mm").is_null());
 }
 
+// `mtf` of a slow singlet (f/40: a hundredth of a wave of spherical aberration) at its paraxial
+// focus, by the thick-lens formulas: the MTF of a circular aperture with the cutoff D / (lambda f);
+// a field beyond what the lens images is an entry with nulls and its reason.
+TEST_F(AnalyzeCommand, MtfOfASlowSingletIsTheCircularApertureMtf) {
+  const double n = 1.5168, r1 = 60.0, r2 = -200.0, t = 5.0, stopMm = 2.5;
+  const double power = (n - 1.0) * (1.0 / r1 - 1.0 / r2 + (n - 1.0) * t / (n * r1 * r2));
+  const double eflMm = 1.0 / power, backFocusMm = eflMm * (1.0 - (n - 1.0) * t / (n * r1));
+  const std::string lens =
+      writeFile("singlet.dat",
+                "# stop 1 mm in front of a singlet\n0 1 0 2.5\n60 5 1.5168 20\n"
+                "-200 100 0 20\n");
+  for (const double wavelengthNm : {587.56, 486.13}) {
+    const auto json = analyzeJson("--only mtf --fields 0,1 --film-diagonal 10000 --wavelength " +
+                                  std::to_string(wavelengthNm) + " --film-distance " +
+                                  std::to_string(backFocusMm) + " " + lens);
+    const auto& mtf = json.at("mtf");
+    EXPECT_NEAR(mtf.at("wavelength_nm").get<double>(), wavelengthNm, 1e-6);
+    EXPECT_EQ(mtf.at("pupil_grid").get<int>(), 128);
+    ASSERT_EQ(mtf.at("fields").size(), 2u);
+    const auto& axis = mtf.at("fields")[0];
+    EXPECT_EQ(axis.at("field_angle_deg").get<double>(), 0.0);
+    EXPECT_EQ(axis.at("image_height_mm").get<double>(), 0.0);
+    const double cutoff = stopMm / (wavelengthNm * 1e-6 * eflMm);
+    EXPECT_NEAR(axis.at("cutoff_cycles_per_mm").get<double>(), cutoff, 0.005 * cutoff);
+    const auto& frequencies = axis.at("frequencies_cycles_per_mm");
+    ASSERT_GT(frequencies.size(), 16u);
+    for (std::size_t k = 0; k < frequencies.size(); ++k) {
+      const double v = std::min(1.0, frequencies[k].get<double>() / cutoff);
+      const double expected = 2.0 / std::numbers::pi * (std::acos(v) - v * std::sqrt(1.0 - v * v));
+      EXPECT_NEAR(axis.at("tangential")[k].get<double>(), expected, 0.01) << k;
+      EXPECT_NEAR(axis.at("sagittal")[k].get<double>(), expected, 0.01) << k;
+      EXPECT_NEAR(axis.at("diffraction_limit")[k].get<double>(), expected, 0.01) << k;
+    }
+    EXPECT_LT(axis.at("rms_wavefront_error_waves").get<double>(), 0.01);
+    const auto& beyond = mtf.at("fields")[1];
+    EXPECT_EQ(beyond.at("image_height_mm").get<double>(), 5000.0);
+    ASSERT_TRUE(beyond.contains("tangential") && beyond.contains("cutoff_cycles_per_mm"));
+    EXPECT_TRUE(beyond.at("tangential").is_null());
+    EXPECT_TRUE(beyond.at("cutoff_cycles_per_mm").is_null());
+    EXPECT_FALSE(beyond.at("why_not").get<std::string>().empty());
+  }
+  const auto text = testing::runProcess(lenslab("analyze --only mtf " + lens), scratch);
+  EXPECT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("diffraction MTF"), std::string::npos) << text.out;
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -117,6 +117,32 @@ TEST(Trace, PlaneParallelPlateShiftsFocusByTTimesOneMinusOneOverN) {
   EXPECT_NEAR(shift, t * (1.0 - 1.0 / n), 1e-4);
 }
 
+TEST(Trace, OpticalPathThroughAPlateIsTheSumOfIndexTimesLength) {
+  // A stop, then a flat plate (thickness t, index n) 5 mm behind it; a ray tilted by theta in air
+  // crosses the plate at theta' = asin(sin(theta) / n), over t / cos(theta') of glass.
+  const double t = 10.0, n = 1.6, theta = 0.3;
+  Prescription p;
+  p.surfaces = {{0.0, 5.0, 1.0, std::nullopt, 30.0},
+                {kFlatRadius, t, n, std::nullopt, 40.0},
+                {kFlatRadius, 20.0, 1.0, std::nullopt, 40.0}};
+  const auto built = LensSystem::build(p);
+  ASSERT_TRUE(built.ok());
+  const double stopZ = built.system->surfaces()[0].vertexZMm;
+  // Start 7 mm (along z) in front of the stop, aimed at its centre.
+  const LensRay ray{{7.0 * std::tan(theta), 0.0, stopZ + 7.0},
+                    {-std::sin(theta), 0.0, -std::cos(theta)}};
+  double opticalPathMm = -1.0;
+  const auto out = built.system->traceFromScene(ray, opticalPathMm);
+  ASSERT_TRUE(out.has_value());
+  const double thetaGlass = std::asin(std::sin(theta) / n);
+  const double expected = (7.0 + 5.0) / std::cos(theta) + n * t / std::cos(thetaGlass);
+  EXPECT_NEAR(opticalPathMm, expected, 1e-9);
+  // The plain trace leaves the lens at the same place.
+  const auto plain = built.system->traceFromScene(ray);
+  ASSERT_TRUE(plain.has_value());
+  EXPECT_NEAR(glm::distance(plain->origin, out->origin), 0.0, 1e-12);
+}
+
 TEST(Trace, RayOutsideTheStopIsClippedByTheStop) {
   const auto built = LensSystem::build(testing::singlet(40.0, -60.0, 6.0, 1.5, 50.0, 30.0));
   ASSERT_TRUE(built.ok());

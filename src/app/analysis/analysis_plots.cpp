@@ -18,6 +18,7 @@ const AnalysisPlotSource kPlots[] = {
     {"distortion", "distortion", distortionCurrentPlot, distortionSettled},
     {"distortion-grid", "distortion grid", distortionGridCurrentPlot, distortionSettled},
     {"field-curves", "field curves", fieldCurvesCurrentPlot, distortionSettled},
+    {"mtf", "MTF", mtfCurrentPlot, mtfSettled},
 };
 
 }  // namespace

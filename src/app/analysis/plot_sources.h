@@ -29,5 +29,7 @@ std::optional<PlotSpec> distortionCurrentPlot(ViewerState& state, std::string* w
 std::optional<PlotSpec> distortionGridCurrentPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> fieldCurvesCurrentPlot(ViewerState& state, std::string* whyNot);
 bool distortionSettled(const ViewerState& state);
+std::optional<PlotSpec> mtfCurrentPlot(ViewerState& state, std::string* whyNot);
+bool mtfSettled(const ViewerState& state);
 
 }  // namespace lenslab::app

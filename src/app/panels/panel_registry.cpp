@@ -20,6 +20,7 @@ constexpr PanelSpec kPanels[] = {
     {"spot", "Spot", DockArea::Bottom, drawSpotPanel},
     {"distortion", "Distortion", DockArea::Bottom, drawDistortionPanel},
     {"field-curves", "Field curves", DockArea::Bottom, drawFieldCurvesPanel},
+    {"mtf", "MTF", DockArea::Bottom, drawMtfPanel},
 };
 
 }  // namespace

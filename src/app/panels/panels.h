@@ -34,6 +34,7 @@ void drawRayFanPanel(ViewerState& state, const PanelPlace& place);
 void drawSpotPanel(ViewerState& state, const PanelPlace& place);
 void drawDistortionPanel(ViewerState& state, const PanelPlace& place);
 void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place);
+void drawMtfPanel(ViewerState& state, const PanelPlace& place);
 
 // The row that starts every analysis panel: the Fields box (fractions of the half diagonal,
 // shared with the cross-section's fans) and "Save plot..." for the plot `plotId`

@@ -11,6 +11,7 @@ const AnalysisReport kReports[] = {
     {"relative_illumination",
      "film irradiance from the axis to the corner: total, cos4, vignetting, clipped_by",
      relativeIlluminationReport},
+    {"mtf", "diffraction MTF per field: tangential, sagittal, diffraction limit", mtfReport},
     {"distortion", "real chief ray vs Gaussian image height, axis to corner: percent",
      distortionReport},
     {"distortion_grid", "a square grid's Gaussian and real lines on a 3:2 film (mm)",

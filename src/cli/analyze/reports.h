@@ -6,6 +6,7 @@
 namespace lenslab::cli {
 
 ReportPart relativeIlluminationReport(const AnalyzeContext& context);
+ReportPart mtfReport(const AnalyzeContext& context);
 ReportPart distortionReport(const AnalyzeContext& context);
 ReportPart distortionGridReport(const AnalyzeContext& context);
 ReportPart fieldCurvatureReport(const AnalyzeContext& context);
