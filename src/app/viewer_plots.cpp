@@ -29,8 +29,8 @@ ScriptHost::PlotExport Viewer::exportPlot(const std::string& panelId, const std:
   if (!result || result->lens != state_.lensSystem ||
       result->filmDiagonalMm != state_.filmDiagonalMm)
     return {false, std::nullopt};
-  const PlotSpec spec =
-      illuminationPlot(*result, view.againstFieldAngle, state_.sceneSamplesRearDisk);
+  const PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle,
+                                         state_.sceneSamplesRearDisk, state_.falloff);
   const std::string extension = std::filesystem::path(path).extension().string();
   std::string error;
   if (extension == ".svg")

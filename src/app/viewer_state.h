@@ -24,6 +24,7 @@
 #include "app/settings.h"
 #include "optics/lens_system.h"
 #include "optics/ray_fan.h"
+#include "render/falloff_toggles.h"
 
 namespace lenslab::app {
 
@@ -170,6 +171,11 @@ struct ViewerState {
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;
+  // The vignetting teaching's switches (issue 21): what the render's camera leaves out (the
+  // Illumination panel's checkboxes; scripts: set cos4|rims on|off), and the heat map of each
+  // pixel's passing share over the preview (set vignetting-overlay on|off).
+  render::FalloffToggles falloff;
+  bool vignettingOverlay = false;
   // File > Export cross-section...: the dialog's settings, kept for the file browser's answer.
   CrossSectionExportSettings crossSectionExport;
   bool showExportCrossSection = false;

@@ -22,8 +22,12 @@ void requestIllumination(IlluminationView& view,
   });
 }
 
+std::string renderFalloffNote(render::FalloffToggles falloff) {
+  return falloff.allOn() ? std::string() : "render: " + falloff.describe();
+}
+
 PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
-                          bool sceneSamplesRearDisk) {
+                          bool sceneSamplesRearDisk, render::FalloffToggles falloff) {
   PlotSpec spec;
   spec.title = "Relative illumination";
   spec.x.label = againstFieldAngle ? "field angle (deg)" : "image height (mm)";
@@ -33,6 +37,7 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   spec.y.max = 1.05;
   spec.note = "film diagonal " + millimetresText(result.filmDiagonalMm) + "; film distance " +
               millimetresText(result.lens ? result.lens->filmDistanceMm() : 0.0);
+  if (!falloff.allOn()) spec.note += "; " + renderFalloffNote(falloff);
   if (!result.curve) {
     spec.note += "; no light reaches the centre of the film";
     return spec;
@@ -64,7 +69,7 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   // The axis ends at the film corner (or its field angle), not at the next round tick.
   if (!total.x.empty() && total.x.back() > 0.0) spec.x.max = total.x.back();
   spec.series = {total, cos4, vignetting};
-  if (sceneSamplesRearDisk) {
+  if (sceneSamplesRearDisk && falloff.rims) {  // rims off samples the exit pupil instead
     spec.series.push_back(rearDisk);
     spec.note += "; the render samples the rear element's disk, as the course did";
   }

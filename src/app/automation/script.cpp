@@ -187,6 +187,14 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  // The vignetting teaching's switches (issue 21): the render's cos^4 weighting and rims
+  // (render/falloff_toggles.h), and the heat map over the preview.
+  if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
+    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
+      return problemAt(command, 0, "expected: set " + a[0] + " on|off");
+    }
+    return std::nullopt;
+  }
   if (a[0] == "layout") {
     if (a.size() != 4) return problemAt(command, 0, "expected: set layout LENS PREVIEW LOG");
     for (std::size_t i = 1; i < 4; ++i) {
@@ -201,7 +209,8 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
       command, 0,
       "unknown setting '" + a[0] +
           "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays, "
-          "layout or keep-film-distance)");
+          "layout, keep-film-distance, auto-exposure, film-point, cos4, rims or "
+          "vignetting-overlay)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
@@ -463,6 +472,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     }
     if (a[0] == "auto-exposure") {
       host.setAutoExposure(a[1] == "on");
+      return true;
+    }
+    if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
+      host.setVignettingSwitch(a[0], a[1] == "on");
       return true;
     }
     if (a[0] == "layout") {

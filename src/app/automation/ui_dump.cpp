@@ -92,6 +92,11 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
                            {"blocked", blocked},
                            {"rays", traced.bundle.rays.size()}};
   }
+  // The vignetting teaching's switches (issue 21) and what the illumination plot notes.
+  about["vignetting"] = {{"cos4", state.falloff.cos4},
+                         {"rims", state.falloff.rims},
+                         {"overlay", state.vignettingOverlay},
+                         {"render_note", state.illumination.renderNote}};
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
                                {"widgets", widgets},
                                {"state", about}};
