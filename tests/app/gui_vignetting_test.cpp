@@ -90,5 +90,63 @@ TEST(VignettingToggles, SwitchingOffCos4AndRimsFlattensThePreview) {
   EXPECT_GT(without, 0.9);
 }
 
+// Mean colour of a square of `side` pixels centred at (x, y).
+testing::Rgb meanColour(const testing::PngImage& shot, int x, int y, int side) {
+  long r = 0, g = 0, b = 0, n = 0;
+  for (int j = y - side / 2; j < y + side / 2; ++j) {
+    for (int i = x - side / 2; i < x + side / 2; ++i, ++n) {
+      const testing::Rgb c = shot.at(i, j);
+      r += c.r, g += c.g, b += c.b;
+    }
+  }
+  return {static_cast<int>(r / n), static_cast<int>(g / n), static_cast<int>(b / n)};
+}
+
+// The heat map over the preview: the wide 22 mm's corners, where its rims let a quarter of the
+// bundle through, turn red; the centre, where all of it passes, stays nearly as it was (a faint
+// green); a colour bar with its labels sits in the picture's corner and shows in screenshots.
+TEST(VignettingOverlay, TintsTheCornersRedAndShowsAColourBar) {
+  const auto scratch = testing::makeTestDirectory("vignetting-overlay");
+  std::ofstream(scratch / "commands.script") << "load-scene " << demoScene() << "\n"
+                                             << "wait-spp 8\n"
+                                                "wait-frames 2\n"
+                                                "screenshot plain.png\n"
+                                                "dump-ui plain.json\n"
+                                                "set vignetting-overlay on\n"
+                                                "wait-frames 3\n"
+                                                "screenshot overlay.png\n"
+                                                "dump-ui overlay.json\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json plain = readJson(scratch / "plain.json");
+  const nlohmann::json overlay = readJson(scratch / "overlay.json");
+  EXPECT_EQ(plain["state"]["vignetting"]["overlay"], false);
+  EXPECT_EQ(overlay["state"]["vignetting"]["overlay"], true);
+  EXPECT_FALSE(plain["widgets"].contains("preview/vignetting-bar"));
+  ASSERT_TRUE(overlay["widgets"].contains("preview/vignetting-bar")) << overlay["widgets"];
+
+  const auto before = testing::PngImage::load(scratch / "plain.png");
+  const auto after = testing::PngImage::load(scratch / "overlay.png");
+  ASSERT_TRUE(before.valid() && after.valid());
+  const Box image = widget(overlay, "preview/image");
+  const int side = std::max(4, (image.x1 - image.x0) / 30);
+  // The bottom-left corner (the colour bar is top right).
+  const testing::Rgb cornerBefore = meanColour(before, image.x0 + side, image.y1 - side, side);
+  const testing::Rgb cornerAfter = meanColour(after, image.x0 + side, image.y1 - side, side);
+  EXPECT_GT(cornerAfter.r - cornerAfter.g, cornerBefore.r - cornerBefore.g + 40);
+  const int cx = (image.x0 + image.x1) / 2, cy = (image.y0 + image.y1) / 2;
+  const testing::Rgb centreBefore = meanColour(before, cx, cy, side);
+  const testing::Rgb centreAfter = meanColour(after, cx, cy, side);
+  EXPECT_LE(centreAfter.maxDifference(centreBefore), 40);
+  EXPECT_GE(centreAfter.g, centreAfter.r);
+  // The colour bar: light labels on a dark box, its bottom red.
+  const Box bar = widget(overlay, "preview/vignetting-bar");
+  EXPECT_GT(after.fractionNear(bar.x0, bar.y0, bar.x1, bar.y1, {235, 235, 235}, 40), 0.02);
+  EXPECT_GT(after.fractionNear(bar.x0, bar.y0, bar.x1, bar.y1, {45, 45, 45}, 45), 0.3);
+  EXPECT_GT(after.fractionNear(bar.x0, bar.y0, bar.x1, bar.y1, {190, 63, 63}, 35), 0.002);
+}
+
 }  // namespace
 }  // namespace lenslab
