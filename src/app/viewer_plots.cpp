@@ -29,8 +29,11 @@ ScriptHost::PlotExport Viewer::exportPlot(const std::string& panelId, const std:
   if (!result || result->lens != state_.lensSystem ||
       result->filmDiagonalMm != state_.filmDiagonalMm)
     return {false, std::nullopt};
-  const PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle,
-                                         state_.sceneSamplesRearDisk, state_.falloff);
+  std::shared_ptr<const void> keepMeasured;
+  const PlotSpec spec = illuminationPlot(
+      *result, view.againstFieldAngle, state_.sceneSamplesRearDisk, state_.falloff,
+      state_.sceneIsUniformField ? latestMeasuredFalloff(state_.measuredFalloff, keepMeasured)
+                                 : nullptr);
   const std::string extension = std::filesystem::path(path).extension().string();
   std::string error;
   if (extension == ".svg")

@@ -46,6 +46,12 @@ void Viewer::updatePreview() {
 
 void Viewer::pollPreview() {
   preview_.poll(state_.preview, state_.exposureStops, state_.settings.autoExposure, stats_);
+  // On a flat field, the fall-off measured from each new pass of the current lens (not the
+  // pinhole's picture, nor one left from before an edit).
+  if (state_.sceneIsUniformField && !state_.pinholeCamera && !state_.preview.stale &&
+      state_.lensSystem)
+    requestMeasuredFalloff(state_.measuredFalloff, preview_.latest(), state_.lensSystem,
+                           state_.filmDiagonalMm);
   pollExport();
   if (!state_.loadingScenePath.empty()) {
     state_.preview.status =

@@ -12,6 +12,7 @@
 
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
+#include "app/analysis/measured_falloff.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
@@ -176,6 +177,10 @@ struct ViewerState {
   // pixel's passing share over the preview (set vignetting-overlay on|off).
   render::FalloffToggles falloff;
   bool vignettingOverlay = false;
+  // The scene is a flat field (render/uniform_field.h): the Illumination plot then shows the
+  // fall-off measured from the preview, computed on its own worker.
+  bool sceneIsUniformField = false;
+  MeasuredFalloffView measuredFalloff;
   // File > Export cross-section...: the dialog's settings, kept for the file browser's answer.
   CrossSectionExportSettings crossSectionExport;
   bool showExportCrossSection = false;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -146,6 +148,107 @@ TEST(VignettingOverlay, TintsTheCornersRedAndShowsAColourBar) {
   EXPECT_GT(after.fractionNear(bar.x0, bar.y0, bar.x1, bar.y1, {235, 235, 235}, 40), 0.02);
   EXPECT_GT(after.fractionNear(bar.x0, bar.y0, bar.x1, bar.y1, {45, 45, 45}, 45), 0.3);
   EXPECT_GT(after.fractionNear(bar.x0, bar.y0, bar.x1, bar.y1, {190, 63, 63}, 35), 0.002);
+}
+
+// The Illumination plot's CSV: rows of image height and the columns' cells (empty where a series
+// has no point).
+struct PlotCsv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+PlotCsv readPlotCsv(const std::filesystem::path& path) {
+  PlotCsv csv;
+  std::ifstream in(path);
+  std::string line;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::string cell;
+    for (char c : text) {
+      if (c == ',') {
+        cells.push_back(cell);
+        cell.clear();
+      } else {
+        cell.push_back(c);
+      }
+    }
+    cells.push_back(cell);
+    return cells;
+  };
+  if (std::getline(in, line)) csv.header = split(line);
+  while (std::getline(in, line)) csv.rows.push_back(split(line));
+  return csv;
+}
+
+// On the flat-field demo the plot gets the fall-off measured from the preview, and it agrees with
+// the computed `total` within 3% from the axis to the corner; the chart version, which is not a
+// flat field, gets none.
+TEST(MeasuredFalloffView, OnTheDemoSceneTheRenderAgreesWithThePlot) {
+  const auto scratch = testing::makeTestDirectory("measured-falloff");
+  std::ofstream(scratch / "commands.script")
+      << "load-scene " << demoScene() << "\n"
+      << "set layout 0.28 0.42 0.45\n"
+         "show-panel illumination\n"
+         "wait-spp 64\n"
+         "wait-frames 3\n"
+         "export-plot illumination demo.csv\n"
+         "screenshot demo.png\n"
+         "dump-ui demo.json\n"
+         "load-scene "
+      << std::string(LENSLAB_SOURCE_DIR) << "/scenes/vignetting-chart.pbrt\n"
+      << "wait-spp 4\n"
+         "wait-frames 3\n"
+         "export-plot illumination chart.csv\n"
+         "dump-ui chart.json\n"
+         "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json demo = readJson(scratch / "demo.json");
+  const auto& vignetting = demo["state"]["vignetting"];
+  EXPECT_EQ(vignetting["uniform_field"], true);
+  ASSERT_TRUE(vignetting.contains("measured")) << vignetting;
+  EXPECT_GE(vignetting["measured"]["spp"].get<int>(), 64);
+  EXPECT_EQ(vignetting["measured"]["current_lens"], true);
+
+  // `total` from the exported plot, interpolated at each measured ring's radius.
+  const PlotCsv csv = readPlotCsv(scratch / "demo.csv");
+  ASSERT_EQ(csv.header.size(), 5u);
+  EXPECT_EQ(csv.header[4].rfind("measured from render (", 0), 0u) << csv.header[4];
+  std::vector<double> heights, totals;
+  for (const auto& row : csv.rows) {
+    if (row.size() > 1 && !row[1].empty()) {
+      heights.push_back(std::stod(row[0]));
+      totals.push_back(std::stod(row[1]));
+    }
+  }
+  ASSERT_EQ(heights.size(), 64u);
+  auto totalAt = [&](double r) {
+    std::size_t i = 1;
+    while (i + 1 < heights.size() && heights[i] < r) ++i;
+    const double t = (r - heights[i - 1]) / (heights[i] - heights[i - 1]);
+    return totals[i - 1] * (1 - t) + totals[i] * t;
+  };
+  const auto& radii = vignetting["measured"]["image_height_mm"];
+  const auto& relative = vignetting["measured"]["relative"];
+  ASSERT_GE(radii.size(), 40u);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const double r = radii[i].get<double>(), measured = relative[i].get<double>();
+    const double total = totalAt(r);
+    worst = std::max(worst, std::abs(measured - total) / total);
+    EXPECT_NEAR(measured, total, 0.03 * total + 0.005) << "at " << r << " mm";
+  }
+  std::printf("measured against total: worst %.2f%% over %zu rings\n", 100 * worst, radii.size());
+  // Drawn: the measured series' green inside the plot.
+  const auto shot = testing::PngImage::load(scratch / "demo.png");
+  ASSERT_TRUE(shot.valid());
+  const Box plot = widget(demo, "illumination-plot");
+  EXPECT_GT(shot.fractionNear(plot.x0, plot.y0, plot.x1, plot.y1, {0x7e, 0xe0, 0x8a}, 30), 0.001);
+
+  const nlohmann::json chart = readJson(scratch / "chart.json");
+  EXPECT_EQ(chart["state"]["vignetting"]["uniform_field"], false);
+  EXPECT_FALSE(chart["state"]["vignetting"].contains("measured"));
+  EXPECT_EQ(readPlotCsv(scratch / "chart.csv").header.size(), 4u);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "app/analysis/illumination_analysis.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "common/distance_text.h"
 
@@ -27,7 +29,8 @@ std::string renderFalloffNote(render::FalloffToggles falloff) {
 }
 
 PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
-                          bool sceneSamplesRearDisk, render::FalloffToggles falloff) {
+                          bool sceneSamplesRearDisk, render::FalloffToggles falloff,
+                          const MeasuredFalloff* measured) {
   PlotSpec spec;
   spec.title = "Relative illumination";
   spec.x.label = againstFieldAngle ? "field angle (deg)" : "image height (mm)";
@@ -72,6 +75,31 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   if (sceneSamplesRearDisk && falloff.rims) {  // rims off samples the exit pupil instead
     spec.series.push_back(rearDisk);
     spec.note += "; the render samples the rear element's disk, as the course did";
+  }
+  if (measured && measured->lens == result.lens && !measured->imageHeightMm.empty()) {
+    PlotSeries fromRender{
+        "measured from render (" + std::to_string(measured->samplesPerPixel) + " spp)",
+        {},
+        {},
+        0x7ee08affu,
+        false};
+    const auto& points = result.curve->points;
+    for (std::size_t i = 0; i < measured->imageHeightMm.size(); ++i) {
+      double x = measured->imageHeightMm[i];
+      if (againstFieldAngle) {
+        // The field angle at that height, interpolated along the curve (none beyond the last
+        // chief ray).
+        const double step = points.size() > 1 ? points[1].imageHeightMm : 0.0;
+        if (!(step > 0.0)) continue;
+        const std::size_t j = std::min(static_cast<std::size_t>(x / step), points.size() - 2);
+        if (!points[j].fieldAngleDeg || !points[j + 1].fieldAngleDeg) continue;
+        const double t = std::clamp(x / step - static_cast<double>(j), 0.0, 1.0);
+        x = *points[j].fieldAngleDeg * (1 - t) + *points[j + 1].fieldAngleDeg * t;
+      }
+      fromRender.x.push_back(x);
+      fromRender.y.push_back(measured->relative[i]);
+    }
+    spec.series.push_back(std::move(fromRender));
   }
   return spec;
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/analysis/latest_job.h"
+#include "app/analysis/measured_falloff.h"
 #include "app/plot/plot_spec.h"
 #include "optics/lens_system.h"
 #include "optics/relative_illumination.h"
@@ -42,8 +43,11 @@ void requestIllumination(IlluminationView& view,
 // The curves to plot: total, cos4 and vignetting (and the course's rear-disk total when the
 // scene renders that way), against image height or field angle. The note says which of the
 // render's factors are off (`falloff`), since the preview then departs from `total`.
+// `measured`, the fall-off measured from the preview (measured_falloff.h), is drawn when it was
+// rendered through the result's lens.
 PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
-                          bool sceneSamplesRearDisk, render::FalloffToggles falloff = {});
+                          bool sceneSamplesRearDisk, render::FalloffToggles falloff = {},
+                          const MeasuredFalloff* measured = nullptr);
 
 // "render: cos4 off, rims on" when a toggle is off, else "".
 std::string renderFalloffNote(render::FalloffToggles falloff);

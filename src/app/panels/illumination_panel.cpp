@@ -118,8 +118,12 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::TextDisabled("(the last valid lens)");
     }
     if (result) {
+      std::shared_ptr<const void> keepMeasured;
+      const MeasuredFalloff* measured =
+          state.sceneIsUniformField ? latestMeasuredFalloff(state.measuredFalloff, keepMeasured)
+                                    : nullptr;
       PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk,
-                                       state.falloff);
+                                       state.falloff, measured);
       view.renderNote = renderFalloffNote(state.falloff);
       // The tab names the plot; its note goes beside the checkbox, leaving the height to the
       // curves (an export keeps both above the plot).
