@@ -108,6 +108,7 @@ class Viewer final : public ScriptHost {
   ExportOutcome exportRenderOutcome() const override;
   std::optional<std::string> cancelExportRender() override;
   void setAutoExposure(bool on) override { state_.settings.autoExposure = on; }
+  void resetStats() override { stats_ = ViewerStats{}; }
   void setVignettingSwitch(const std::string& name, bool on) override {
     (name == "cos4"   ? state_.falloff.cos4
      : name == "rims" ? state_.falloff.rims

@@ -51,6 +51,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"start-export-render", {3, 3}},
       {"wait-export", {0, 0}},
       {"cancel-export", {0, 0}},
+      {"reset-stats", {0, 0}},  // issue 21: measure a drag alone (bench/viewer-drag.sh)
   };
   return table;
 }
@@ -544,6 +545,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "dump-ui") return check(host.dumpUi(a[0]));
   if (verb == "check-window") return check(host.checkWindow());
+  if (verb == "reset-stats") {
+    host.resetStats();
+    return true;
+  }
   if (verb == "quit") {
     host.quit(a.empty() ? 0 : static_cast<int>(*parseInteger(a[0])));
     next_ = commands_.size();

@@ -26,6 +26,7 @@
 //                                extension; default 1920x1080, 144 DPI, light; labels, scale
 //                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
+//   reset-stats                 (--stats-json then covers only the frames after it)
 //   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
 //   set film-point MM|off       (the cross-section shows the bundle of the film point MM from
 //                                the axis instead of the fans, as the Illumination panel's slider)
@@ -195,6 +196,8 @@ class ScriptHost {
   // The vignetting teaching's switches: "cos4", "rims" (the render's FalloffToggles) and
   // "vignetting-overlay".
   virtual void setVignettingSwitch(const std::string& /*name*/, bool /*on*/) {}
+  // Forgets the frames measured so far (--stats-json).
+  virtual void resetStats() {}
 };
 
 // Runs a parsed script a step per frame: it executes commands until one has to wait (for
