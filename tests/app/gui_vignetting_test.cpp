@@ -109,8 +109,10 @@ testing::Rgb meanColour(const testing::PngImage& shot, int x, int y, int side) {
 // green); a colour bar with its labels sits in the picture's corner and shows in screenshots.
 TEST(VignettingOverlay, TintsTheCornersRedAndShowsAColourBar) {
   const auto scratch = testing::makeTestDirectory("vignetting-overlay");
+  // 16 spp: auto exposure has metered (PreviewController::kMeterUntilSpp) and holds, so the
+  // two screenshots are at one exposure.
   std::ofstream(scratch / "commands.script") << "load-scene " << demoScene() << "\n"
-                                             << "wait-spp 8\n"
+                                             << "wait-spp 16\n"
                                                 "wait-frames 2\n"
                                                 "screenshot plain.png\n"
                                                 "dump-ui plain.json\n"

@@ -1,6 +1,7 @@
 #include "app/analysis/illumination_analysis.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -99,6 +100,10 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
       fromRender.x.push_back(x);
       fromRender.y.push_back(measured->relative[i]);
     }
+    // With a toggle off the render can be brighter off the axis than on it (the wide-angle's
+    // pupil grows): the axis makes room rather than cutting the curve off.
+    for (double y : fromRender.y)
+      if (std::isfinite(y) && y + 0.02 > *spec.y.max) spec.y.max = std::ceil((y + 0.02) * 20) / 20;
     spec.series.push_back(std::move(fromRender));
   }
   return spec;
