@@ -108,9 +108,11 @@ std::pair<int, int> PreviewController::previewSize(bool draft) const {
 
 render::RenderJob PreviewController::makeJob(int width, int height, int samplesPerPixel) const {
   render::RenderJob job;
-  job.camera = submitted_->pinhole
-                   ? render::makeMatchingPinholeCamera(*description_, submittedLens_, width, height)
-                   : render::makeLensCamera(*description_, submittedLens_, width, height);
+  const render::FalloffToggles falloff = submitted_->falloff;
+  job.camera =
+      submitted_->pinhole
+          ? render::makeMatchingPinholeCamera(*description_, submittedLens_, width, height, falloff)
+          : render::makeLensCamera(*description_, submittedLens_, width, height, falloff);
   job.scene = scene_;
   job.settings.samplesPerPixel = samplesPerPixel;
   job.settings.integrator.kind = description_->integrator.kind;
@@ -123,11 +125,12 @@ render::RenderJob PreviewController::makeJob(int width, int height, int samplesP
 
 std::optional<render::RenderJob> PreviewController::exportJob(
     const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, int width, int height,
-    int samplesPerPixel) const {
+    int samplesPerPixel, render::FalloffToggles falloff) const {
   if (!description_ || !scene_ || !lens) return std::nullopt;
   render::RenderJob job;
-  job.camera = pinhole ? render::makeMatchingPinholeCamera(*description_, lens, width, height)
-                       : render::makeLensCamera(*description_, lens, width, height);
+  job.camera = pinhole
+                   ? render::makeMatchingPinholeCamera(*description_, lens, width, height, falloff)
+                   : render::makeLensCamera(*description_, lens, width, height, falloff);
   job.scene = scene_;
   job.settings.samplesPerPixel = samplesPerPixel;
   job.settings.integrator.kind = description_->integrator.kind;
@@ -138,10 +141,11 @@ std::optional<render::RenderJob> PreviewController::exportJob(
 }
 
 std::optional<std::uint64_t> PreviewController::update(
-    const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft) {
+    const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole, bool draft,
+    render::FalloffToggles falloff) {
   if (!description_ || !scene_ || !lens) return std::nullopt;
   const auto [width, height] = previewSize(draft);
-  const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_, width, height};
+  const Submitted wanted{lens.get(), pinhole, draft, sceneVersion_, width, height, falloff};
   if (submitted_ && *submitted_ == wanted) return std::nullopt;
   submitted_ = wanted;
   submittedLens_ = lens;
@@ -153,9 +157,9 @@ std::optional<std::uint64_t> PreviewController::update(
 }
 
 int PreviewController::currentSpp(const std::shared_ptr<const optics::LensSystem>& lens,
-                                  bool pinhole) const {
+                                  bool pinhole, render::FalloffToggles falloff) const {
   const auto [width, height] = previewSize(false);
-  const Submitted wanted{lens.get(), pinhole, false, sceneVersion_, width, height};
+  const Submitted wanted{lens.get(), pinhole, false, sceneVersion_, width, height, falloff};
   if (!submitted_ || !(*submitted_ == wanted)) return 0;
   // What the preview shows (poll() ran before the frame was drawn), not what the renderer has
   // just published: a script that waits for 4 spp and takes a screenshot sees 4 spp. The coarse

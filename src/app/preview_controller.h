@@ -16,6 +16,7 @@
 #include "app/drawing/stale_dimming.h"
 #include "app/preview_state.h"
 #include "optics/lens_system.h"
+#include "render/falloff_toggles.h"
 #include "render/progressive_renderer.h"
 #include "render/scene.h"
 #include "render/scene_description.h"
@@ -67,12 +68,14 @@ class PreviewController {
   // Samples per pixel the preview shows for this lens and camera at full preview resolution: 0
   // before the first pass is shown, while a draft renders, or when they differ from the running
   // job's (the new job starts on the next update).
-  int currentSpp(const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole) const;
+  int currentSpp(const std::shared_ptr<const optics::LensSystem>& lens, bool pinhole,
+                 render::FalloffToggles falloff = {}) const;
 
-  // Starts a new job when anything the preview depends on changed. Returns an id for the change
-  // when it does.
+  // Starts a new job when anything the preview depends on changed (the falloff toggles too).
+  // Returns an id for the change when it does.
   std::optional<std::uint64_t> update(const std::shared_ptr<const optics::LensSystem>& lens,
-                                      bool pinhole, bool draft);
+                                      bool pinhole, bool draft,
+                                      render::FalloffToggles falloff = {});
   // The room the panel has for the image, in framebuffer pixels (see PreviewState), this frame.
   // The first size is taken at once, later ones when they have settled (kResizeSettleSeconds).
   void setDisplayRegion(
@@ -102,7 +105,8 @@ class PreviewController {
   // renders it. Nothing without a scene or lens.
   std::optional<render::RenderJob> exportJob(const std::shared_ptr<const optics::LensSystem>& lens,
                                              bool pinhole, int width, int height,
-                                             int samplesPerPixel) const;
+                                             int samplesPerPixel,
+                                             render::FalloffToggles falloff = {}) const;
   // True while workers are rendering a job that is not complete.
   bool busy() const;
   // Full-resolution image size for the current scene.
@@ -125,6 +129,7 @@ class PreviewController {
     bool draft = false;
     std::uint64_t sceneVersion = 0;
     int width = 0, height = 0;
+    render::FalloffToggles falloff;
     bool operator==(const Submitted&) const = default;
   };
   // A job for the submitted lens and camera at this size.

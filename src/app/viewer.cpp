@@ -278,6 +278,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     }
     nextFrame = std::max(nextFrame + framePeriod, ViewerStats::Clock::now());
     const auto workStarted = ViewerStats::Clock::now();
+    const auto cpuStarted = ViewerStats::threadCpuTime();
     openDroppedFiles();
     finishSceneLoad();
     finishExports();
@@ -297,6 +298,7 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     // Redraw only when the pixels would change: a software rasterizer (Mesa llvmpipe under
     // Xvfb, or any machine without a GPU driver) spends tens of milliseconds of CPU on every
     // redraw, which the render workers need. Captures draw the frame when it was skipped.
+    stats_.frameCompute(ViewerStats::threadCpuTime() - cpuStarted, preview_.busy());
     drawnThisFrame_ = false;
     findDamage();
     if (!damage_.empty()) ensureDrawn();

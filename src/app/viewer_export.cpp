@@ -16,8 +16,8 @@ std::optional<std::string> Viewer::startExportRender(const std::string& path, in
                                                      int samplesPerPixel) {
   if (width <= 0 || height <= 0) std::tie(width, height) = filmSize();
   // The lens, camera and exposure as shown now: later edits change the preview, not the export.
-  const auto job =
-      preview_.exportJob(state_.lensSystem, state_.pinholeCamera, width, height, samplesPerPixel);
+  const auto job = preview_.exportJob(state_.lensSystem, state_.pinholeCamera, width, height,
+                                      samplesPerPixel, state_.falloff);
   if (!job) return "cannot export " + path + ": there is no scene or no valid lens to render";
   if (auto error = export_.start(*job, path, shownExposureStops(state_))) return error;
   ExportDialogState& dialog = state_.exportDialog;

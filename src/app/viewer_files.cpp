@@ -15,6 +15,7 @@
 #include "optics/lens_loader.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
+#include "render/uniform_field.h"
 
 namespace lenslab::app {
 
@@ -265,6 +266,7 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   const render::CameraFraming framing = render::framingOf(*loaded.description);
   state_.filmDiagonalMm = framing.filmDiagonalMm;
   state_.sceneSamplesRearDisk = framing.lensSampling == render::LensSampling::RearElementDisk;
+  state_.sceneIsUniformField = render::isUniformField(*loaded.description, *loaded.scene);
   state_.crossSectionNeedsFit = true;
   state_.log.info("Opened scene " + path);
   // A scene that sets its exposure (Film "scale") is shown at it, without auto exposure.

@@ -16,7 +16,7 @@ std::optional<int> Viewer::previewSpp() const {
   // A scene that is loading will render (or report why not): its samples are worth waiting for.
   if (sceneLoader_.busy() && state_.lensSystem) return 0;
   if (!preview_.hasScene() || !state_.lensSystem) return std::nullopt;
-  return preview_.currentSpp(state_.lensSystem, state_.pinholeCamera);
+  return preview_.currentSpp(state_.lensSystem, state_.pinholeCamera, state_.falloff);
 }
 
 void Viewer::meterWhenAsked() {
@@ -31,8 +31,8 @@ void Viewer::meterWhenAsked() {
 void Viewer::updatePreview() {
   meterWhenAsked();
   preview_.setDisplayRegion(state_.preview.regionWidthPx, state_.preview.regionHeightPx);
-  if (const auto change =
-          preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging)) {
+  if (const auto change = preview_.update(state_.lensSystem, state_.pinholeCamera, state_.dragging,
+                                          state_.falloff)) {
     // The first render shows what the session opened with; every later one follows an edit (or
     // a file opened, a resize).
     if (openingSubmitted_) {
@@ -46,6 +46,12 @@ void Viewer::updatePreview() {
 
 void Viewer::pollPreview() {
   preview_.poll(state_.preview, state_.exposureStops, state_.settings.autoExposure, stats_);
+  // On a flat field, the fall-off measured from each new pass of the current lens (not the
+  // pinhole's picture, nor one left from before an edit).
+  if (state_.sceneIsUniformField && !state_.pinholeCamera && !state_.preview.stale &&
+      state_.lensSystem)
+    requestMeasuredFalloff(state_.measuredFalloff, preview_.latest(), state_.lensSystem,
+                           state_.filmDiagonalMm);
   pollExport();
   if (!state_.loadingScenePath.empty()) {
     state_.preview.status =

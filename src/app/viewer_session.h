@@ -111,6 +111,12 @@ class Viewer final : public ScriptHost {
   ExportOutcome exportRenderOutcome() const override;
   std::optional<std::string> cancelExportRender() override;
   void setAutoExposure(bool on) override { state_.settings.autoExposure = on; }
+  void resetStats() override { stats_ = ViewerStats{}; }
+  void setVignettingSwitch(const std::string& name, bool on) override {
+    (name == "cos4"   ? state_.falloff.cos4
+     : name == "rims" ? state_.falloff.rims
+                      : state_.vignettingOverlay) = on;
+  }
   void setLayout(double lensTable, double preview, double log) override {
     state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),
                               static_cast<float>(log)};

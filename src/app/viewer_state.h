@@ -14,8 +14,9 @@
 #include "app/analysis/distortion_analysis.h"
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
-#include "app/analysis/ray_analysis.h"
+#include "app/analysis/measured_falloff.h"
 #include "app/analysis/mtf_analysis.h"
+#include "app/analysis/ray_analysis.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
@@ -28,6 +29,7 @@
 #include "app/settings.h"
 #include "optics/lens_system.h"
 #include "optics/ray_fan.h"
+#include "render/falloff_toggles.h"
 
 namespace lenslab::app {
 
@@ -190,6 +192,15 @@ struct ViewerState {
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;
+  // The vignetting teaching's switches (issue 21): what the render's camera leaves out (the
+  // Illumination panel's checkboxes; scripts: set cos4|rims on|off), and the heat map of each
+  // pixel's passing share over the preview (set vignetting-overlay on|off).
+  render::FalloffToggles falloff;
+  bool vignettingOverlay = false;
+  // The scene is a flat field (render/uniform_field.h): the Illumination plot then shows the
+  // fall-off measured from the preview, computed on its own worker.
+  bool sceneIsUniformField = false;
+  MeasuredFalloffView measuredFalloff;
   // File > Export cross-section...: the dialog's settings, kept for the file browser's answer.
   CrossSectionExportSettings crossSectionExport;
   bool showExportCrossSection = false;

@@ -83,6 +83,11 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
                    "PNG exposure in stops (default: log2 of the Film's \"scale\", else 0)")
       ->check(FiniteNumber());
   command->add_flag("--quiet", arguments->quiet, "No progress bar");
+  command->add_flag("--no-cos4", arguments->noCos4,
+                    "Realistic camera without Kolb's cos^4 in the exposure weight (teaching)");
+  command->add_flag("--no-rims", arguments->noRims,
+                    "Realistic camera whose only clipping aperture is the stop: no mechanical "
+                    "vignetting (teaching)");
   return arguments;
 }
 
@@ -106,6 +111,7 @@ int runRenderCommand(const RenderArguments& arguments) {
     overrides.height = size->height;
   }
   if (!arguments.lensPath.empty()) overrides.lensPath = arguments.lensPath;
+  overrides.falloff = {!arguments.noCos4, !arguments.noRims};
 
   render::ParseResult parsed = render::parsePbrtFile(arguments.scenePath);
   printDiagnostics(parsed.diagnostics);
@@ -188,6 +194,7 @@ int runRenderCommand(const RenderArguments& arguments) {
             ? static_cast<double>(statistics.lensPassed) / statistics.cameraSamples
             : 0.0;
     stats["discarded_samples"] = statistics.discardedSamples;
+    stats["falloff"] = overrides.falloff.describe();
     stats["output"] = outPath;
     std::string error;
     if (!writeStats(arguments.statsJsonPath, stats, error)) {

@@ -22,6 +22,7 @@ struct RenderArguments {
   std::string statsJsonPath;
   double exposureStops = 0.0;
   bool quiet = false;
+  bool noCos4 = false, noRims = false;  // the teaching toggles (render/falloff_toggles.h)
 };
 
 // Adds the subcommand to `app`; when the user names it, `run` is set to run it (subcommand.h).

@@ -203,7 +203,7 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) cons
     list[step] = {static_cast<float>(s.vertexZMm),
                   static_cast<float>(s.curvaturePerMm),
                   flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
-                  static_cast<float>(s.semiApertureMm * s.semiApertureMm),
+                  static_cast<float>(clipRadiusSqMm2_[count - 1 - step]),
                   static_cast<float>(eta),
                   eta != 1.0,
                   flat};

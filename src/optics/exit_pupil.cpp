@@ -265,6 +265,13 @@ static void buildAliasTable(ExitPupilTable::Bin& b) {
 ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threads) {
   planeZMm_ = lens.rearVertexZ();
   fallbackRadiusMm_ = 1.5 * lens.rearApertureRadiusMm();
+  if (lens.apertureClipping() == ApertureClipping::StopOnly) {
+    // No rear rim bounds the region then: rays cross the plane wherever the stop's image through
+    // the rear group lies, which off axis reaches past the rear element (out toward the widest
+    // element, seen through a wide-angle's strongly bending rear group).
+    for (const SurfaceGeometry& s : lens.surfaces())
+      fallbackRadiusMm_ = std::max(fallbackRadiusMm_, 1.5 * s.semiApertureMm);
+  }
   const double sectorAngle = 2.0 * std::numbers::pi / kSectors;
   for (int k = 0; k <= kSectors; ++k) {
     cosAt_[k] = std::cos(k * sectorAngle);

@@ -58,7 +58,8 @@ class ExitPupilTable {
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
 
   // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
-  // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture).
+  // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture;
+  // with ApertureClipping::StopOnly, 1.5 x the widest).
   double filmRadiusMaxMm() const { return filmRadiusMaxMm_; }
   double fallbackRadiusMm() const { return fallbackRadiusMm_; }
   double planeZMm() const { return planeZMm_; }

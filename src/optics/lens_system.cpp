@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "optics/exit_pupil.h"
 #include "optics/glass.h"
@@ -68,8 +69,9 @@ const char* toString(RayStop stop) {
   return "?";
 }
 
-LensSystem::LensSystem(Private, Prescription prescription, double wavelengthNm)
-    : prescription_(std::move(prescription)), wavelengthNm_(wavelengthNm) {
+LensSystem::LensSystem(Private, Prescription prescription, double wavelengthNm,
+                       ApertureClipping clipping)
+    : prescription_(std::move(prescription)), wavelengthNm_(wavelengthNm), clipping_(clipping) {
   stopIndex_ = *prescription_.stopIndex();
   place();
 }
@@ -92,6 +94,12 @@ void LensSystem::place() {
   for (std::size_t k = 0; k < rows.size(); ++k)
     surfaces_[k].indexFront = k == 0 ? 1.0 : surfaces_[k - 1].indexRear;
   firstOrder_ = computeFirstOrder(surfaces_, stopIndex_, wavelengthNm_);
+  clipRadiusSqMm2_.resize(surfaces_.size());
+  for (std::size_t k = 0; k < surfaces_.size(); ++k) {
+    const bool clips = clipping_ == ApertureClipping::EveryRim || surfaces_[k].isStop;
+    clipRadiusSqMm2_[k] = clips ? surfaces_[k].semiApertureMm * surfaces_[k].semiApertureMm
+                                : std::numeric_limits<double>::infinity();
+  }
 }
 
 BuildResult LensSystem::build(const Prescription& prescription, double wavelengthNm) {
@@ -109,7 +117,7 @@ std::shared_ptr<const LensSystem> LensSystem::withFilmDistance(double filmDistan
     return nullptr;
   Prescription p = prescription_;
   p.surfaces.back().thicknessMm = filmDistanceMm;
-  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
+  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_, clipping_);
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withStopDiameter(double stopDiameterMm) const {
@@ -118,12 +126,17 @@ std::shared_ptr<const LensSystem> LensSystem::withStopDiameter(double stopDiamet
     return nullptr;
   Prescription p = prescription_;
   p.surfaces[stopIndex_].apertureDiameterMm = stopDiameterMm;
-  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_);
+  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_, clipping_);
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withWavelength(double wavelengthNm) const {
   if (!(std::isfinite(wavelengthNm) && wavelengthNm > 0.0)) return nullptr;
-  return std::make_shared<LensSystem>(Private{}, prescription_, wavelengthNm);
+  return std::make_shared<LensSystem>(Private{}, prescription_, wavelengthNm, clipping_);
+}
+
+std::shared_ptr<const LensSystem> LensSystem::withApertureClipping(
+    ApertureClipping clipping) const {
+  return std::make_shared<LensSystem>(Private{}, prescription_, wavelengthNm_, clipping);
 }
 
 FirstOrderData LensSystem::firstOrderAt(double wavelengthNm) const {
@@ -162,7 +175,7 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* pa
     }
     const glm::dvec3 hit = ray.origin + t * ray.direction;
     if (opticalPathMm) *opticalPathMm += t * (fromFilm ? s.indexRear : s.indexFront);
-    if (hit.x * hit.x + hit.y * hit.y > s.semiApertureMm * s.semiApertureMm) {
+    if (hit.x * hit.x + hit.y * hit.y > clipRadiusSqMm2_[k]) {
       if constexpr (kRecord) {
         path->points.push_back(blockedEndPoint(s, ray, t));
         path->surfaceIndices.push_back(k);

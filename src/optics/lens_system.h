@@ -88,6 +88,11 @@ struct ValidationError {
 class LensSystem;
 class ExitPupilTable;
 
+// Which clear apertures stop rays. StopOnly is the teaching toggle "mechanical vignetting off":
+// every rim but the stop's is treated as unlimited, so only the stop clips; a ray that misses a
+// surface's sphere (or its cap) or reflects totally is still lost, as it would be in glass.
+enum class ApertureClipping { EveryRim, StopOnly };
+
 struct BuildResult {
   std::shared_ptr<const LensSystem> system;  // null when errors is non-empty
   std::vector<ValidationError> errors;
@@ -115,6 +120,12 @@ class LensSystem {
   // Same geometry, indices at another wavelength (for spectral rendering: a few microseconds;
   // each such system builds its own exit-pupil table when first sampled).
   std::shared_ptr<const LensSystem> withWavelength(double wavelengthNm) const;
+  // Same lens, clipping as asked. Every trace (scalar, path, batch) honours it, and so does the
+  // exit-pupil table, which the new system builds afresh for its own pass region (sampling with
+  // the every-rim table would miss the rays the rims no longer stop); the geometry
+  // (semi-apertures, outlines) is unchanged.
+  std::shared_ptr<const LensSystem> withApertureClipping(ApertureClipping clipping) const;
+  ApertureClipping apertureClipping() const { return clipping_; }
 
   const Prescription& prescription() const { return prescription_; }
   const std::vector<SurfaceGeometry>& surfaces() const { return surfaces_; }
@@ -186,7 +197,8 @@ class LensSystem {
 
  public:
   // Use build(); public only for std::make_shared.
-  LensSystem(Private, Prescription prescription, double wavelengthNm);
+  LensSystem(Private, Prescription prescription, double wavelengthNm,
+             ApertureClipping clipping = ApertureClipping::EveryRim);
 
  private:
   void place();  // fills surfaces_, firstOrder_ from prescription_ and wavelengthNm_
@@ -200,6 +212,10 @@ class LensSystem {
   std::size_t stopIndex_ = 0;
   std::vector<SurfaceGeometry> surfaces_;
   FirstOrderData firstOrder_;
+  ApertureClipping clipping_ = ApertureClipping::EveryRim;
+  // Squared radius beyond which surface k clips a ray: its semi-aperture, or infinity where
+  // clipping_ leaves its rim out.
+  std::vector<double> clipRadiusSqMm2_;
 
   mutable std::once_flag pupilOnce_;
   mutable std::unique_ptr<ExitPupilTable> pupil_;

@@ -81,6 +81,7 @@ std::shared_ptr<const optics::LensSystem> realisticLens(const SceneDescription& 
 std::shared_ptr<const Camera> makeLensInsteadOfPinhole(const SceneDescription& scene,
                                                        const std::filesystem::path& lensPath,
                                                        int width, int height,
+                                                       FalloffToggles falloff,
                                                        Diagnostics& diagnostics) {
   const CameraDescription& camera = scene.camera;
   std::shared_ptr<const optics::LensSystem> system = loadLens(lensPath, diagnostics);
@@ -90,7 +91,7 @@ std::shared_ptr<const Camera> makeLensInsteadOfPinhole(const SceneDescription& s
   const double distance = camera.focalDistance.value_or(std::numeric_limits<double>::infinity());
   system = focusAt(std::move(system), distance, framingOf(scene), camera.location, diagnostics);
   if (!system) return nullptr;
-  return makeLensCamera(scene, std::move(system), width, height);
+  return makeLensCamera(scene, std::move(system), width, height, falloff);
 }
 
 }  // namespace
@@ -116,16 +117,21 @@ CameraFraming framingOf(const SceneDescription& scene) {
 
 std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
-                                             int width, int height) {
+                                             int width, int height, FalloffToggles falloff) {
   const CameraFraming framing = framingOf(scene);
   const LensFrame frame = framing.lensFrame(*lens);
+  LensSampling sampling = framing.lensSampling;
+  if (!falloff.rims) {
+    lens = lens->withApertureClipping(optics::ApertureClipping::StopOnly);
+    sampling = LensSampling::ExitPupil;
+  }
   return std::make_shared<RealisticCamera>(std::move(lens), frame, width, height,
-                                           framing.filmDiagonalMm, framing.lensSampling);
+                                           framing.filmDiagonalMm, sampling, falloff.cos4);
 }
 
 std::shared_ptr<const Camera> makeMatchingPinholeCamera(
     const SceneDescription& scene, std::shared_ptr<const optics::LensSystem> lens, int width,
-    int height) {
+    int height, FalloffToggles falloff) {
   const CameraFraming framing = framingOf(scene);
   const double aspect = static_cast<double>(width) / std::max(1, height);
   const double diagonal = framing.filmDiagonalMm;
@@ -140,8 +146,8 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(
       std::make_shared<PerspectiveCamera>(framing.cameraFromWorld, fovDegrees, width, height);
   const glm::dvec4 viewDirection = glm::inverse(framing.cameraFromWorld) * glm::dvec4(0, 0, 1, 0);
   return std::make_shared<MatchedPinholeCamera>(
-      makeLensCamera(scene, std::move(lens), width, height), std::move(pinhole),
-      glm::vec3(viewDirection));
+      makeLensCamera(scene, std::move(lens), width, height, falloff), std::move(pinhole),
+      glm::vec3(viewDirection), falloff.cos4);
 }
 
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
@@ -152,10 +158,12 @@ std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
   const int height = overrides.height.value_or(scene.film.yResolution);
   if (camera.type == "realistic") {
     auto lens = realisticLens(scene, overrides, diagnostics);
-    return lens ? makeLensCamera(scene, std::move(lens), width, height) : nullptr;
+    return lens ? makeLensCamera(scene, std::move(lens), width, height, overrides.falloff)
+                : nullptr;
   }
   if (overrides.lensPath) {
-    return makeLensInsteadOfPinhole(scene, *overrides.lensPath, width, height, diagnostics);
+    return makeLensInsteadOfPinhole(scene, *overrides.lensPath, width, height, overrides.falloff,
+                                    diagnostics);
   }
   return std::make_shared<PerspectiveCamera>(
       camera.cameraFromWorld, camera.fovDegrees, width, height, camera.lensRadius,

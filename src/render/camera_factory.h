@@ -8,6 +8,7 @@
 #include "common/diagnostics.h"
 #include "optics/lens_system.h"
 #include "render/camera.h"
+#include "render/falloff_toggles.h"
 #include "render/lens_frame.h"
 #include "render/realistic_camera.h"
 #include "render/scene_description.h"
@@ -22,6 +23,7 @@ struct CameraOverrides {
   // pinhole (see makeCamera).
   std::optional<std::filesystem::path> lensPath;
   std::optional<int> width, height;  // replaces the film resolution
+  FalloffToggles falloff;            // `--no-cos4`, `--no-rims`
 };
 
 // How a scene's camera is placed, whatever lens it looks through.
@@ -44,16 +46,18 @@ struct CameraFraming {
 CameraFraming framingOf(const SceneDescription& scene);
 
 // The scene's framing through an already-built lens, used as it is (its own film distance and
-// stop): the viewer's edited lens.
+// stop): the viewer's edited lens. With rims off the camera traces a stop-only copy of the lens
+// (with its own exit-pupil table, built in the camera's prepare()), aimed by the exit pupil even
+// on the course's scenes, whose rear-disk sampling is itself a rim.
 std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
-                                             int width, int height);
+                                             int width, int height, FalloffToggles falloff = {});
 // A pinhole with the same framing and about the same field of view as `lens` (its focal length
 // over the film's shorter side), and the lens's exposure at the image centre, for comparing the
 // lens against an ideal one (MatchedPinholeCamera).
 std::shared_ptr<const Camera> makeMatchingPinholeCamera(
     const SceneDescription& scene, std::shared_ptr<const optics::LensSystem> lens, int width,
-    int height);
+    int height, FalloffToggles falloff = {});
 
 // The scene's camera. With a lens override, a realistic camera uses that lens instead of its
 // own; a perspective camera becomes a realistic one with the same placement, the lens at its own

@@ -34,11 +34,12 @@ float meanWeightAtRasterCentre(const Camera& camera) {
 
 MatchedPinholeCamera::MatchedPinholeCamera(std::shared_ptr<const Camera> lens,
                                            std::shared_ptr<const Camera> pinhole,
-                                           glm::vec3 viewDirection)
+                                           glm::vec3 viewDirection, bool cos4Weighting)
     : Camera(pinhole->width(), pinhole->height()),
       lens_(std::move(lens)),
       pinhole_(std::move(pinhole)),
-      viewDirection_(glm::normalize(viewDirection)) {}
+      viewDirection_(glm::normalize(viewDirection)),
+      cos4Weighting_(cos4Weighting) {}
 
 float MatchedPinholeCamera::centreWeight() const {
   std::call_once(measured_, [&] {
@@ -54,7 +55,7 @@ bool MatchedPinholeCamera::generateRay(glm::vec2 rasterPoint, glm::vec2 lensSamp
   // The natural falloff of a small aperture: cos^4 of the ray's angle to the axis.
   const float cosTheta = glm::dot(ray.direction, viewDirection_);
   const float cos2 = cosTheta * cosTheta;
-  ray.weight *= centreWeight() * cos2 * cos2;
+  ray.weight *= centreWeight() * (cos4Weighting_ ? cos2 * cos2 : 1.0f);
   return true;
 }
 

@@ -20,9 +20,10 @@ namespace lenslab::render {
 class MatchedPinholeCamera final : public Camera {
  public:
   // `lens` sets the exposure; `pinhole` gives the rays (both of the same raster size);
-  // `viewDirection` is the camera's axis in world space.
+  // `viewDirection` is the camera's axis in world space. Without cos4Weighting the pinhole is
+  // flat (FalloffToggles::cos4 off).
   MatchedPinholeCamera(std::shared_ptr<const Camera> lens, std::shared_ptr<const Camera> pinhole,
-                       glm::vec3 viewDirection);
+                       glm::vec3 viewDirection, bool cos4Weighting = true);
 
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
   float pixelSpreadRadians() const override { return pinhole_->pixelSpreadRadians(); }
@@ -35,6 +36,7 @@ class MatchedPinholeCamera final : public Camera {
   std::shared_ptr<const Camera> lens_;
   std::shared_ptr<const Camera> pinhole_;
   glm::vec3 viewDirection_;
+  bool cos4Weighting_;
   mutable std::once_flag measured_;
   mutable float centreWeight_ = 0.0f;
 };

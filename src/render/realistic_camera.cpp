@@ -12,23 +12,25 @@ namespace lenslab::render {
 
 namespace {
 
-// Kolb's exposure weight for a film ray toward `pupil`: A cos^4(theta) / Z^2 with A = 1/pdf.
-float exposureWeight(glm::dvec3 toPupil, const optics::PupilSample& pupil) {
+// Kolb's exposure weight for a film ray toward `pupil`: A cos^4(theta) / Z^2 with A = 1/pdf
+// (A / Z^2 without the cos^4).
+float exposureWeight(glm::dvec3 toPupil, const optics::PupilSample& pupil, bool cos4) {
   const double cosTheta = toPupil.z / glm::length(toPupil);
   const double cos2 = cosTheta * cosTheta;
   const double z = pupil.pointMm.z;
-  return static_cast<float>(cos2 * cos2 / (pupil.pdfPerMm2 * z * z));
+  return static_cast<float>((cos4 ? cos2 * cos2 : 1.0) / (pupil.pdfPerMm2 * z * z));
 }
 
 }  // namespace
 
 RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
                                  const LensFrame& frame, int width, int height,
-                                 double filmDiagonalMm, LensSampling sampling)
+                                 double filmDiagonalMm, LensSampling sampling, bool cos4Weighting)
     : Camera(width, height),
       lens_(std::move(lens)),
       worldFromLensMm_(frame.worldFromLensMm()),
-      sampling_(sampling) {
+      sampling_(sampling),
+      cos4Weighting_(cos4Weighting) {
   const double diagonalPixels = std::hypot(static_cast<double>(width), static_cast<double>(height));
   filmWidthMm_ = filmDiagonalMm * width / diagonalPixels;
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
@@ -91,7 +93,7 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
   const glm::dvec3 toPupil = pupil->pointMm - start;
   const auto out = lens_->traceFromFilm({start, glm::normalize(toPupil)});
   if (!out) return false;
-  ray.weight = exposureWeight(toPupil, *pupil);
+  ray.weight = exposureWeight(toPupil, *pupil, cos4Weighting_);
   finishRay(glm::vec3(out->origin), glm::vec3(out->direction), ray);
   return true;
 }
@@ -145,12 +147,21 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
   const float* __restrict pdfs = pdfPerMm2.data();
   float* __restrict weightOut = weights.data();
   std::uint8_t* __restrict alive = batch.alive.data();
-  for (std::size_t i = 0; i < count; ++i) {
-    const float cos2 = dz[i] * dz[i];
-    const float pdf = pdfs[i];
-    const float weight = cos2 * cos2 * invPlaneZSquared / (pdf > 0.0f ? pdf : 1.0f);
-    weightOut[i] = pdf > 0.0f ? weight : 0.0f;
-    alive[i] &= static_cast<std::uint8_t>(pdf > 0.0f);
+  if (cos4Weighting_) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const float cos2 = dz[i] * dz[i];
+      const float pdf = pdfs[i];
+      const float weight = cos2 * cos2 * invPlaneZSquared / (pdf > 0.0f ? pdf : 1.0f);
+      weightOut[i] = pdf > 0.0f ? weight : 0.0f;
+      alive[i] &= static_cast<std::uint8_t>(pdf > 0.0f);
+    }
+  } else {  // the teaching toggle: a loop of its own, so the physical one above stays as it was
+    for (std::size_t i = 0; i < count; ++i) {
+      const float pdf = pdfs[i];
+      const float weight = invPlaneZSquared / (pdf > 0.0f ? pdf : 1.0f);
+      weightOut[i] = pdf > 0.0f ? weight : 0.0f;
+      alive[i] &= static_cast<std::uint8_t>(pdf > 0.0f);
+    }
   }
   lens_->traceFromFilmBatch(batch);
   for (std::size_t i = 0; i < count; ++i) {

@@ -11,6 +11,7 @@
 
 #include "optics/lens_system.h"
 #include "render/camera.h"
+#include "render/falloff_toggles.h"
 #include "render/lens_frame.h"
 
 namespace lenslab::render {
@@ -28,10 +29,12 @@ enum class LensSampling {
 
 class RealisticCamera final : public Camera {
  public:
-  // `frame` places the lens in the scene (see CameraFraming::lensFrame).
+  // `frame` places the lens in the scene (see CameraFraming::lensFrame). Without
+  // cos4Weighting each ray weighs A / Z^2 (FalloffToggles::cos4); clipping by the rims is the
+  // lens's own (optics::ApertureClipping).
   RealisticCamera(std::shared_ptr<const optics::LensSystem> lens, const LensFrame& frame, int width,
                   int height, double filmDiagonalMm,
-                  LensSampling sampling = LensSampling::ExitPupil);
+                  LensSampling sampling = LensSampling::ExitPupil, bool cos4Weighting = true);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
   // Traces the whole batch with the optics library's vectorised trace.
   void generateRays(std::size_t count, const glm::vec2* rasterPoints, const glm::vec2* lensSamples,
@@ -55,6 +58,7 @@ class RealisticCamera final : public Camera {
   double filmWidthMm_, filmHeightMm_;
   double mmPerRasterX_, mmPerRasterY_;  // film size over resolution: no division per ray
   LensSampling sampling_;
+  bool cos4Weighting_;
 };
 
 }  // namespace lenslab::render

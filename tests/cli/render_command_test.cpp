@@ -232,3 +232,57 @@ TEST_F(RenderCommand, BadInputNeverCrashes) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// A PFM's green channel (rows bottom to top, as the format stores them).
+std::vector<float> readPfmGreen(const std::filesystem::path& path, int& width, int& height) {
+  std::ifstream in(path, std::ios::binary);
+  std::string magic;
+  double scale = 0;
+  in >> magic >> width >> height >> scale;
+  in.get();
+  std::vector<float> rgb(static_cast<std::size_t>(width) * height * 3);
+  in.read(reinterpret_cast<char*>(rgb.data()), static_cast<std::streamsize>(rgb.size() * 4));
+  std::vector<float> green(static_cast<std::size_t>(width) * height);
+  for (std::size_t i = 0; i < green.size(); ++i) green[i] = rgb[3 * i + 1];
+  return green;
+}
+
+// `--no-cos4 --no-rims`: the flat-field demo through the wide 22 mm comes out nearly flat, where
+// the physical camera darkens its corners to about a third; the statistics say what was off.
+TEST(RenderCommandFalloff, NoCos4AndNoRimsFlattenTheDemoScene) {
+  const auto scratch = testing::makeTestDirectory("render-cli-falloff");
+  const std::string scene = std::string(LENSLAB_SOURCE_DIR) + "/scenes/vignetting.pbrt";
+  auto cornerOverCentre = [&](const std::string& flags, const std::string& name) {
+    const auto result = testing::runProcess(
+        lenslab("render '" + scene + "' --spp 64 --resolution 60x40 --quiet " + flags + " --out '" +
+                (scratch / (name + ".pfm")).string() + "' --stats-json '" +
+                (scratch / (name + ".json")).string() + "'"),
+        scratch);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    int width = 0, height = 0;
+    const std::vector<float> green = readPfmGreen(scratch / (name + ".pfm"), width, height);
+    if (width != 60 || height != 40) return -1.0;
+    auto mean = [&](int x0, int y0) {  // a 4 x 4 block
+      double sum = 0;
+      for (int y = y0; y < y0 + 4; ++y)
+        for (int x = x0; x < x0 + 4; ++x) sum += green[static_cast<std::size_t>(y * width + x)];
+      return sum / 16;
+    };
+    return mean(0, 0) / mean(28, 18);
+  };
+  const double physical = cornerOverCentre("", "physical");
+  const double flat = cornerOverCentre("--no-cos4 --no-rims", "flat");
+  EXPECT_LT(physical, 0.45);
+  EXPECT_GT(flat, 0.85);
+  const auto stats = nlohmann::json::parse(testing::readWholeFile(scratch / "flat.json"));
+  EXPECT_EQ(stats["falloff"], "cos4 off, rims off");
+  const auto physicalStats =
+      nlohmann::json::parse(testing::readWholeFile(scratch / "physical.json"));
+  EXPECT_EQ(physicalStats["falloff"], "cos4 on, rims on");
+}
+
+}  // namespace
+}  // namespace lenslab

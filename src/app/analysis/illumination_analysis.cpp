@@ -1,6 +1,9 @@
 #include "app/analysis/illumination_analysis.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "common/distance_text.h"
 
@@ -22,8 +25,13 @@ void requestIllumination(IlluminationView& view,
   });
 }
 
+std::string renderFalloffNote(render::FalloffToggles falloff) {
+  return falloff.allOn() ? std::string() : "render: " + falloff.describe();
+}
+
 PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
-                          bool sceneSamplesRearDisk) {
+                          bool sceneSamplesRearDisk, render::FalloffToggles falloff,
+                          const MeasuredFalloff* measured) {
   PlotSpec spec;
   spec.title = "Relative illumination";
   spec.x.label = againstFieldAngle ? "field angle (deg)" : "image height (mm)";
@@ -33,6 +41,7 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   spec.y.max = 1.05;
   spec.note = "film diagonal " + millimetresText(result.filmDiagonalMm) + "; film distance " +
               millimetresText(result.lens ? result.lens->filmDistanceMm() : 0.0);
+  if (!falloff.allOn()) spec.note += "; " + renderFalloffNote(falloff);
   if (!result.curve) {
     spec.note += "; no light reaches the centre of the film";
     return spec;
@@ -64,9 +73,38 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   // The axis ends at the film corner (or its field angle), not at the next round tick.
   if (!total.x.empty() && total.x.back() > 0.0) spec.x.max = total.x.back();
   spec.series = {total, cos4, vignetting};
-  if (sceneSamplesRearDisk) {
+  if (sceneSamplesRearDisk && falloff.rims) {  // rims off samples the exit pupil instead
     spec.series.push_back(rearDisk);
     spec.note += "; the render samples the rear element's disk, as the course did";
+  }
+  if (measured && measured->lens == result.lens && !measured->imageHeightMm.empty()) {
+    PlotSeries fromRender{
+        "measured from render (" + std::to_string(measured->samplesPerPixel) + " spp)",
+        {},
+        {},
+        0x7ee08affu,
+        false};
+    const auto& points = result.curve->points;
+    for (std::size_t i = 0; i < measured->imageHeightMm.size(); ++i) {
+      double x = measured->imageHeightMm[i];
+      if (againstFieldAngle) {
+        // The field angle at that height, interpolated along the curve (none beyond the last
+        // chief ray).
+        const double step = points.size() > 1 ? points[1].imageHeightMm : 0.0;
+        if (!(step > 0.0)) continue;
+        const std::size_t j = std::min(static_cast<std::size_t>(x / step), points.size() - 2);
+        if (!points[j].fieldAngleDeg || !points[j + 1].fieldAngleDeg) continue;
+        const double t = std::clamp(x / step - static_cast<double>(j), 0.0, 1.0);
+        x = *points[j].fieldAngleDeg * (1 - t) + *points[j + 1].fieldAngleDeg * t;
+      }
+      fromRender.x.push_back(x);
+      fromRender.y.push_back(measured->relative[i]);
+    }
+    // With a toggle off the render can be brighter off the axis than on it (the wide-angle's
+    // pupil grows): the axis makes room rather than cutting the curve off.
+    for (double y : fromRender.y)
+      if (std::isfinite(y) && y + 0.02 > *spec.y.max) spec.y.max = std::ceil((y + 0.02) * 20) / 20;
+    spec.series.push_back(std::move(fromRender));
   }
   return spec;
 }

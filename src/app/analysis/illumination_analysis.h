@@ -9,9 +9,11 @@
 #include <string>
 
 #include "app/analysis/latest_job.h"
+#include "app/analysis/measured_falloff.h"
 #include "app/plot/plot_spec.h"
 #include "optics/lens_system.h"
 #include "optics/relative_illumination.h"
+#include "render/falloff_toggles.h"
 
 namespace lenslab::app {
 
@@ -28,6 +30,7 @@ struct IlluminationView {
   double requestedFilmDiagonalMm = 0.0;
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<IlluminationResult>> job;
+  std::string renderNote;  // what the plot last said of the render's toggles ("" when all on)
 };
 
 inline constexpr int kIlluminationPoints = 64;
@@ -38,8 +41,15 @@ void requestIllumination(IlluminationView& view,
                          double filmDiagonalMm);
 
 // The curves to plot: total, cos4 and vignetting (and the course's rear-disk total when the
-// scene renders that way), against image height or field angle.
+// scene renders that way), against image height or field angle. The note says which of the
+// render's factors are off (`falloff`), since the preview then departs from `total`.
+// `measured`, the fall-off measured from the preview (measured_falloff.h), is drawn when it was
+// rendered through the result's lens.
 PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,
-                          bool sceneSamplesRearDisk);
+                          bool sceneSamplesRearDisk, render::FalloffToggles falloff = {},
+                          const MeasuredFalloff* measured = nullptr);
+
+// "render: cos4 off, rims on" when a toggle is off, else "".
+std::string renderFalloffNote(render::FalloffToggles falloff);
 
 }  // namespace lenslab::app

@@ -54,6 +54,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"start-export-render", {3, 3}},
       {"wait-export", {0, 0}},
       {"cancel-export", {0, 0}},
+      {"reset-stats", {0, 0}},  // issue 21: measure a drag alone (bench/viewer-drag.sh)
   };
   return table;
 }
@@ -196,6 +197,14 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  // The vignetting teaching's switches (issue 21): the render's cos^4 weighting and rims
+  // (render/falloff_toggles.h), and the heat map over the preview.
+  if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
+    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
+      return problemAt(command, 0, "expected: set " + a[0] + " on|off");
+    }
+    return std::nullopt;
+  }
   if (a[0] == "layout") {
     if (a.size() != 4) return problemAt(command, 0, "expected: set layout LENS PREVIEW LOG");
     for (std::size_t i = 1; i < 4; ++i) {
@@ -210,7 +219,8 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
       command, 0,
       "unknown setting '" + a[0] +
           "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays, "
-          "layout, keep-film-distance or fields)");
+          "layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
+          "vignetting-overlay or fields)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
@@ -478,6 +488,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
       host.setAutoExposure(a[1] == "on");
       return true;
     }
+    if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
+      host.setVignettingSwitch(a[0], a[1] == "on");
+      return true;
+    }
     if (a[0] == "layout") {
       host.setLayout(*parseNumber(a[1]), *parseNumber(a[2]), *parseNumber(a[3]));
       return true;
@@ -544,6 +558,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "dump-ui") return check(host.dumpUi(a[0]));
   if (verb == "check-window") return check(host.checkWindow());
+  if (verb == "reset-stats") {
+    host.resetStats();
+    return true;
+  }
   if (verb == "quit") {
     host.quit(a.empty() ? 0 : static_cast<int>(*parseInteger(a[0])));
     next_ = commands_.size();

@@ -27,10 +27,15 @@
 //                                extension; default 1920x1080, 144 DPI, light; labels, scale
 //                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
+//   reset-stats                 (--stats-json then covers only the frames after it)
 //   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
 //   set film-point MM|off       (the cross-section shows the bundle of the film point MM from
 //                                the axis instead of the fans, as the Illumination panel's slider)
 //   set keep-film-distance on|off       (File > Keep lens file's film distance; persisted)
+//   set cos4 on|off             (the render weights rays by Kolb's cos^4; off: the teaching
+//   set rims on|off              toggles of the Illumination panel, off: only the stop clips)
+//   set vignetting-overlay on|off       (the heat map of the bundle's passing share over the
+//                                preview, with its colour bar)
 //
 // Pictures for slides (File > Export render..., auto exposure):
 //   export-render FILE SIZE SPP  renders the current lens and scene in the background at SIZE
@@ -191,6 +196,11 @@ class ScriptHost {
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
   // The persisted "keep the lens file's film distance" choice (opening_focus.h).
   virtual void setKeepFilmDistance(bool /*keep*/) {}
+  // The vignetting teaching's switches: "cos4", "rims" (the render's FalloffToggles) and
+  // "vignetting-overlay".
+  virtual void setVignettingSwitch(const std::string& /*name*/, bool /*on*/) {}
+  // Forgets the frames measured so far (--stats-json).
+  virtual void resetStats() {}
 };
 
 // Runs a parsed script a step per frame: it executes commands until one has to wait (for

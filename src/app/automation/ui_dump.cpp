@@ -93,6 +93,20 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
                            {"blocked", blocked},
                            {"rays", traced.bundle.rays.size()}};
   }
+  // The vignetting teaching's switches (issue 21) and what the illumination plot notes.
+  about["vignetting"] = {{"cos4", state.falloff.cos4},
+                         {"rims", state.falloff.rims},
+                         {"overlay", state.vignettingOverlay},
+                         {"render_note", state.illumination.renderNote},
+                         {"uniform_field", state.sceneIsUniformField}};
+  std::shared_ptr<const void> keepMeasured;
+  if (const MeasuredFalloff* measured = latestMeasuredFalloff(state.measuredFalloff, keepMeasured);
+      measured && state.sceneIsUniformField) {
+    about["vignetting"]["measured"] = {{"spp", measured->samplesPerPixel},
+                                       {"current_lens", measured->lens == state.lensSystem},
+                                       {"image_height_mm", measured->imageHeightMm},
+                                       {"relative", measured->relative}};
+  }
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
                                {"widgets", widgets},
                                {"state", about}};

@@ -3,6 +3,7 @@
 #include "common/atomic_file.h"
 
 #include <algorithm>
+#include <ctime>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <system_error>
@@ -35,6 +36,17 @@ void ViewerStats::frameWork(Clock::duration work, bool rendering, bool redrawn) 
   if (!rendering) return;
   renderingWorkMs_.push_back(milliseconds(work));
   if (redrawn) redrawWorkMs_.push_back(milliseconds(work));
+}
+
+void ViewerStats::frameCompute(std::chrono::nanoseconds cpu, bool rendering) {
+  if (rendering)
+    renderingComputeMs_.push_back(std::chrono::duration<double, std::milli>(cpu).count());
+}
+
+std::chrono::nanoseconds ViewerStats::threadCpuTime() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return std::chrono::seconds(now.tv_sec) + std::chrono::nanoseconds(now.tv_nsec);
 }
 
 void ViewerStats::frameRepainted(double fraction, bool partial) {
@@ -95,6 +107,10 @@ ViewerStats::Summary ViewerStats::summary() const {
   summary.framesPerSecondMedian = summary.frameMsMedian > 0 ? 1000.0 / summary.frameMsMedian : 0;
   summary.workMsMedian = percentile(renderingWorkMs_, 0.5);
   summary.workMsP95 = percentile(renderingWorkMs_, 0.95);
+  summary.workMsMax = percentile(renderingWorkMs_, 1.0);
+  summary.computeMsMedian = percentile(renderingComputeMs_, 0.5);
+  summary.computeMsP95 = percentile(renderingComputeMs_, 0.95);
+  summary.computeMsMax = percentile(renderingComputeMs_, 1.0);
   summary.redrawnFraction = renderingWorkMs_.empty()
                                 ? 0
                                 : static_cast<double>(redrawWorkMs_.size()) /
@@ -125,6 +141,12 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       {"fps_median", s.framesPerSecondMedian},
       {"frame_work_ms_median", s.workMsMedian},
       {"frame_work_ms_p95", s.workMsP95},
+      {"frame_work_ms_max", s.workMsMax},
+      // The UI thread's CPU time computing before rasterization (input, panels, edits,
+      // starting renders).
+      {"frame_compute_cpu_ms_median", s.computeMsMedian},
+      {"frame_compute_cpu_ms_p95", s.computeMsP95},
+      {"frame_compute_cpu_ms_max", s.computeMsMax},
       // Frames whose pixels changed are rasterized; the others only run the UI.
       {"frames_redrawn_fraction", s.redrawnFraction},
       {"redrawn_frame_work_ms_median", s.redrawWorkMsMedian},

@@ -79,7 +79,13 @@ std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string*
   const auto result = view.job->latest();
   if (!result || result->lens != state.lensSystem || result->filmDiagonalMm != state.filmDiagonalMm)
     return std::nullopt;
-  return illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk);
+  // The measured fall-off is copied into the spec, so the result it came from may go after.
+  std::shared_ptr<const void> keepMeasured;
+  const MeasuredFalloff* measured = state.sceneIsUniformField
+                                        ? latestMeasuredFalloff(state.measuredFalloff, keepMeasured)
+                                        : nullptr;
+  return illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk,
+                          state.falloff, measured);
 }
 
 bool illuminationSettled(const ViewerState& state) {
@@ -101,6 +107,15 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
     const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
     state.uiRects["illumination/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
                                           saveMax.y - saveMin.y};
+    // The render's teaching toggles: the preview restarts without the factor switched off.
+    ImGui::SameLine();
+    ImGui::TextUnformatted("Render:");
+    ImGui::SameLine();
+    ImGui::Checkbox("cos^4##render", &state.falloff.cos4);
+    ImGui::SameLine();
+    ImGui::Checkbox("rims##render", &state.falloff.rims);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Off: only the stop clips rays (no mechanical vignetting)");
     // A film point's bundle in the cross-section (in place of the fans).
     bool showBundle = state.filmPointHeightMm.has_value();
     if (ImGui::Checkbox("Bundle of film point", &showBundle)) {
@@ -130,7 +145,13 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::TextDisabled("(the last valid lens)");
     }
     if (result) {
-      PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk);
+      std::shared_ptr<const void> keepMeasured;
+      const MeasuredFalloff* measured =
+          state.sceneIsUniformField ? latestMeasuredFalloff(state.measuredFalloff, keepMeasured)
+                                    : nullptr;
+      PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk,
+                                       state.falloff, measured);
+      view.renderNote = renderFalloffNote(state.falloff);
       // The tab names the plot; its note goes beside the checkbox, leaving the height to the
       // curves (an export keeps both above the plot).
       ImGui::SameLine();

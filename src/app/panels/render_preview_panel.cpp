@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
+#include "app/analysis/illumination_analysis.h"
+#include "app/drawing/vignetting_overlay.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
@@ -43,6 +47,10 @@ void drawControls(ViewerState& state) {
         "Auto exposure: the brightest 1%% of the picture is shown near white.\n"
         "Metered when a scene or lens is opened, then held while you edit.");
   }
+  row.next(WrapRow::checkboxWidth("Vignetting"));
+  ImGui::Checkbox("Vignetting", &state.vignettingOverlay);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Tint each pixel by the share of its bundle the lens's rims let through");
   int camera = state.pinholeCamera ? 1 : 0;
   row.next(WrapRow::checkboxWidth("Lens"));
   ImGui::RadioButton("Lens", &camera, 0);
@@ -70,6 +78,63 @@ void drawControls(ViewerState& state) {
   if (preview.samplesPerPixel > 0 && !preview.status.empty()) {
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", preview.status.c_str());
   }
+}
+
+// The heat map of `vignetting` over the picture (drawing/vignetting_overlay.h) and its colour bar
+// in the picture's top-right corner, from the Illumination curve computed on its worker.
+void drawVignettingOverlay(ViewerState& state, ImDrawList* draw, ImVec2 topLeft, ImVec2 size) {
+  requestIllumination(state.illumination, state.lensSystem, state.filmDiagonalMm);
+  const auto result = state.illumination.job ? state.illumination.job->latest() : nullptr;
+  if (!result || !result->curve) return;
+  std::vector<double> heights, shares;
+  for (const optics::RelativeIlluminationPoint& p : result->curve->points) {
+    heights.push_back(p.imageHeightMm);
+    shares.push_back(p.cos4 > 0.0 ? p.vignetting : 0.0);
+  }
+  const OverlayMesh mesh = vignettingOverlayMesh(heights, shares, 0.5 * result->filmDiagonalMm,
+                                                 topLeft.x, topLeft.y, size.x, size.y);
+  const ImVec2 bottomRight(topLeft.x + size.x, topLeft.y + size.y);
+  draw->PushClipRect(topLeft, bottomRight, true);
+  const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
+  draw->PrimReserve(static_cast<int>(mesh.indices.size()), static_cast<int>(mesh.vertices.size()));
+  const unsigned base = draw->_VtxCurrentIdx;  // after PrimReserve, which may start a new block
+  for (const OverlayVertex& v : mesh.vertices) draw->PrimWriteVtx({v.x, v.y}, uv, v.colour);
+  for (std::uint32_t i : mesh.indices) draw->PrimWriteIdx(static_cast<ImDrawIdx>(base + i));
+  // The colour bar: 100% at the top, 0% at the bottom, over mid-grey as the tint shows over a
+  // mid-tone picture; labels to its left, a title above, on a dark box.
+  const float bar = px(14), barHeight = std::min(size.y * 0.45f, px(160));
+  const char* title = "bundle passing";
+  const ImVec2 titleSize = ImGui::CalcTextSize(title);
+  const float labelWidth = ImGui::CalcTextSize("100%").x;
+  const float pad = px(6), lineHeight = ImGui::GetTextLineHeight();
+  const float boxWidth = std::max(titleSize.x, labelWidth + pad + bar) + 2 * pad;
+  const ImVec2 boxMin(bottomRight.x - boxWidth - px(8), topLeft.y + px(8));
+  const ImVec2 boxMax(boxMin.x + boxWidth,
+                      boxMin.y + lineHeight + barHeight + lineHeight + 3 * pad);
+  draw->AddRectFilled(boxMin, boxMax, IM_COL32(0, 0, 0, 185), px(3));
+  draw->AddText({boxMin.x + pad, boxMin.y + pad}, IM_COL32(235, 235, 235, 255), title);
+  const ImVec2 barMin(boxMax.x - pad - bar, boxMin.y + 2 * pad + lineHeight + 0.5f * lineHeight);
+  const ImVec2 barMax(barMin.x + bar, barMin.y + barHeight);
+  draw->AddRectFilled(barMin, barMax, IM_COL32(128, 128, 128, 255));
+  constexpr int kSteps = 32;
+  for (int k = 0; k < kSteps; ++k) {
+    const float y0 = barMin.y + barHeight * k / kSteps,
+                y1 = barMin.y + barHeight * (k + 1) / kSteps;
+    const ImU32 top = vignettingColour(1.0 - static_cast<double>(k) / kSteps);
+    const ImU32 bottom = vignettingColour(1.0 - static_cast<double>(k + 1) / kSteps);
+    draw->AddRectFilledMultiColor({barMin.x, y0}, {barMax.x, y1}, top, top, bottom, bottom);
+  }
+  draw->AddRect(barMin, barMax, IM_COL32(235, 235, 235, 255));
+  for (const auto& [label, at] : {std::pair{"100%", 0.0f}, {"50%", 0.5f}, {"0%", 1.0f}}) {
+    const ImVec2 text = ImGui::CalcTextSize(label);
+    const float y = barMin.y + at * barHeight;
+    draw->AddText({barMin.x - pad - text.x, y - 0.5f * text.y}, IM_COL32(235, 235, 235, 255),
+                  label);
+    draw->AddLine({barMin.x - px(3), y}, {barMin.x, y}, IM_COL32(235, 235, 235, 255));
+  }
+  draw->PopClipRect();
+  state.uiRects["preview/vignetting-bar"] = {boxMin.x, boxMin.y, boxMax.x - boxMin.x,
+                                             boxMax.y - boxMin.y};
 }
 
 }  // namespace
@@ -117,6 +182,7 @@ void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place) {
       const ImVec4 tint = preview.dimmed ? ImVec4(0.55f, 0.55f, 0.55f, 1.0f) : ImVec4(1, 1, 1, 1);
       ImGui::Image(preview.texture.imguiId(), ImVec2(width, height), ImVec2(0, 0), ImVec2(1, 1),
                    tint);
+      if (state.vignettingOverlay) drawVignettingOverlay(state, draw, topLeft, {width, height});
       if (preview.stale) {
         const char* label = "rendering...";
         const ImVec2 text = ImGui::CalcTextSize(label);
