@@ -5,6 +5,7 @@
 // analysis_reports.cpp; option parsing, `--only`, the JSON document and the exit status follow
 // from the registry.
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <span>
@@ -54,5 +55,15 @@ const AnalysisReport* findAnalysisReport(std::string_view key);
 // The reports' entries: JSON cannot hold NaN or infinity (nlohmann writes null without a word);
 // every number goes through this, so a non-finite one is a visible null.
 nlohmann::json finiteOrNull(double value);
+// The same for a value an analysis may not have (a blocked ray, a field no ray reaches): null.
+nlohmann::json optionalNumber(const std::optional<double>& value);
+
+// printf into a std::string, for the reports' readable lines (up to 255 characters each).
+template <class... Values>
+std::string formatted(const char* format, Values... values) {
+  char line[256];
+  std::snprintf(line, sizeof line, format, values...);
+  return line;
+}
 
 }  // namespace lenslab::cli

@@ -11,12 +11,6 @@ namespace lenslab::cli {
 
 namespace {
 
-std::string formatted(const char* format, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
-
 constexpr const char* kNoDispersion =
     "no glass of the lens has an Abbe number (V_d, the lens file's fifth column), so the lens "
     "has no colour\n";
@@ -30,10 +24,6 @@ std::optional<optics::ChromaticFocalShift> focalShift(const AnalyzeContext& cont
                                            points, 400.0, 700.0, &whyNot);
   if (!shift) throw AnalysisUnavailable(whyNot);
   return shift;
-}
-
-nlohmann::json optionalNumber(const std::optional<double>& value) {
-  return value ? finiteOrNull(*value) : nlohmann::json(nullptr);
 }
 
 }  // namespace

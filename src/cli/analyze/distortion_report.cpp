@@ -11,16 +11,6 @@ namespace lenslab::cli {
 
 namespace {
 
-std::string formatted(const char* format, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
-
-nlohmann::json optionalNumber(const std::optional<double>& value) {
-  return value ? finiteOrNull(*value) : nlohmann::json(nullptr);
-}
-
 nlohmann::json polylines(const std::vector<std::vector<glm::dvec2>>& lines) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& line : lines) {

@@ -8,20 +8,6 @@
 
 namespace lenslab::cli {
 
-namespace {
-
-std::string formatted(const char* format, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
-
-nlohmann::json optionalNumber(const std::optional<double>& value) {
-  return value ? finiteOrNull(*value) : nlohmann::json(nullptr);
-}
-
-}  // namespace
-
 ReportPart fieldCurvatureReport(const AnalyzeContext& context) {
   std::string whyNot;
   const auto curve = optics::fieldCurvature(*context.lens, context.setup, context.points, &whyNot);

@@ -12,12 +12,6 @@ namespace lenslab::cli {
 
 namespace {
 
-std::string formatted(const char* format, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
-
 nlohmann::json finiteArray(const std::vector<double>& values) {
   nlohmann::json array = nlohmann::json::array();
   for (double v : values) array.push_back(finiteOrNull(v));

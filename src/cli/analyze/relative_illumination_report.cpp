@@ -17,12 +17,6 @@ std::string surfaceList(const std::vector<int>& surfaces) {
   return text.empty() ? "-" : text;
 }
 
-std::string formatted(const char* format, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
-
 }  // namespace
 
 ReportPart relativeIlluminationReport(const AnalyzeContext& context) {

@@ -10,12 +10,6 @@ namespace lenslab::cli {
 
 namespace {
 
-std::string formatted(const char* format, auto... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
-
 nlohmann::json termsJson(const optics::SeidelTerms& t, bool chromatic) {
   nlohmann::json json{{"S1", finiteOrNull(t.s1)},
                       {"S2", finiteOrNull(t.s2)},
