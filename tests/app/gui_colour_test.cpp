@@ -10,38 +10,17 @@
 #include <regex>
 #include <sstream>
 
+#include "support/csv_table.h"
 #include "support/png_image.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
 
-struct CsvTable {
-  std::vector<std::string> header;
-  std::vector<std::string> names;  // first column
-  std::vector<std::vector<double>> rows;
-};
+using testing::CsvTable;
 
 CsvTable readCsv(const std::filesystem::path& path) {
-  CsvTable table;
-  std::ifstream in(path);
-  std::string line;
-  auto split = [](const std::string& text) {
-    std::vector<std::string> cells;
-    std::stringstream stream(text);
-    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
-    return cells;
-  };
-  if (std::getline(in, line)) table.header = split(line);
-  while (std::getline(in, line)) {
-    const auto cells = split(line);
-    if (cells.empty()) continue;
-    table.names.push_back(cells[0]);
-    std::vector<double> row;
-    for (std::size_t i = 1; i < cells.size(); ++i) row.push_back(std::stod(cells[i]));
-    table.rows.push_back(row);
-  }
-  return table;
+  return testing::readCsvTable(path, /*firstColumnIsNames=*/true);
 }
 
 // Well-formed XML in the small form the plot writer uses: every element closed in order, no text

@@ -11,35 +11,16 @@
 #include <numbers>
 #include <sstream>
 
+#include "support/csv_table.h"
 #include "support/png_image.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
 
-struct CsvTable {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-};
+using testing::CsvTable;
 
-CsvTable readCsv(const std::filesystem::path& path) {
-  CsvTable table;
-  std::ifstream in(path);
-  std::string line;
-  auto split = [](const std::string& text) {
-    std::vector<std::string> cells;
-    std::stringstream stream(text);
-    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
-    return cells;
-  };
-  if (std::getline(in, line)) table.header = split(line);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    for (const std::string& cell : split(line)) row.push_back(cell.empty() ? NAN : std::stod(cell));
-    table.rows.push_back(row);
-  }
-  return table;
-}
+CsvTable readCsv(const std::filesystem::path& path) { return testing::readCsvTable(path); }
 
 std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
