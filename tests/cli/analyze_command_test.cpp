@@ -8,26 +8,16 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "cli/analyze_test_fixture.h"
 #include "cli/headless_lenslab.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
 
-class AnalyzeCommand : public ::testing::Test {
+class AnalyzeCommand : public AnalyzeTest {
  protected:
-  std::filesystem::path scratch = testing::makeTestDirectory("analyze-command");
-
-  std::string writeFile(const std::string& name, const std::string& text) {
-    const auto path = scratch / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
-  nlohmann::json analyzeJson(const std::string& arguments) {
-    const auto result = testing::runProcess(lenslab("analyze --json " + arguments), scratch);
-    EXPECT_EQ(result.exitCode, 0) << result.err;
-    return result.exitCode == 0 ? nlohmann::json::parse(result.out) : nlohmann::json{};
-  }
+  AnalyzeCommand() : AnalyzeTest("analyze-command") {}
 };
 
 // A film point offset h below a circular opening of radius a at distance z receives

@@ -9,26 +9,16 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/analyze_test_fixture.h"
 #include "cli/headless_lenslab.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
 
-class AnalyzeDistortion : public ::testing::Test {
+class AnalyzeDistortion : public AnalyzeTest {
  protected:
-  std::filesystem::path scratch = testing::makeTestDirectory("analyze-distortion");
-
-  std::string writeFile(const std::string& name, const std::string& text) {
-    const auto path = scratch / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
-  nlohmann::json analyzeJson(const std::string& arguments) {
-    const auto result = testing::runProcess(lenslab("analyze --json " + arguments), scratch);
-    EXPECT_EQ(result.exitCode, 0) << result.err;
-    return result.exitCode == 0 ? nlohmann::json::parse(result.out) : nlohmann::json{};
-  }
+  AnalyzeDistortion() : AnalyzeTest("analyze-distortion") {}
 };
 
 // R = +-100 mm, n = 1.5, 0.4 mm thick: power (n-1)(c1 - c2) + (n-1)^2 t c1 c2 / n

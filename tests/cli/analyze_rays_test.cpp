@@ -9,26 +9,16 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/analyze_test_fixture.h"
 #include "cli/headless_lenslab.h"
 #include "support/run_process.h"
 
 namespace lenslab {
 namespace {
 
-class AnalyzeRays : public ::testing::Test {
+class AnalyzeRays : public AnalyzeTest {
  protected:
-  std::filesystem::path scratch = testing::makeTestDirectory("analyze-rays");
-
-  std::string writeFile(const std::string& name, const std::string& text) {
-    const auto path = scratch / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path.string();
-  }
-  nlohmann::json analyzeJson(const std::string& arguments) {
-    const auto result = testing::runProcess(lenslab("analyze --json " + arguments), scratch);
-    EXPECT_EQ(result.exitCode, 0) << result.err;
-    return result.exitCode == 0 ? nlohmann::json::parse(result.out) : nlohmann::json{};
-  }
+  AnalyzeRays() : AnalyzeTest("analyze-rays") {}
 };
 
 TEST_F(AnalyzeRays, BareOpeningFansAndSpotsAreTheBundlesSpread) {
