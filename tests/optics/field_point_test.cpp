@@ -115,6 +115,14 @@ TEST(FieldPoint, SaysWhyAFieldCannotBeResolved) {
   std::string why;
   EXPECT_FALSE(FieldPoint::resolve(*lens, 5.0, 50.0, &why));  // object inside the lens
   EXPECT_NE(why.find("in front of the lens"), std::string::npos) << why;
+  // A close object just ahead of the front element's rim is fine: the ray from it lands at h.
+  double maxSemiAperture = 0.0;
+  for (const SurfaceGeometry& s : lens->surfaces())
+    maxSemiAperture = std::max(maxSemiAperture, s.semiApertureMm);
+  const double close = lens->frontVertexZ() + maxSemiAperture + 1.0;
+  const auto near = FieldPoint::resolve(*lens, 5.0, close, &why);
+  ASSERT_TRUE(near) << why;
+  EXPECT_NEAR(onFilm(*lens, near->chiefRay()).y, 5.0, 1e-6);
   EXPECT_FALSE(FieldPoint::resolve(*lens, NAN, std::nullopt, &why));
   EXPECT_FALSE(why.empty());
 }

@@ -44,17 +44,17 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
 
   FieldPoint field;
   field.imageHeightMm_ = imageHeightMm;
-  // Far enough ahead that no surface's rim (a concave front surface bulges toward the object by
-  // at most its semi-aperture) is behind the rays' start.
+  // Rays from infinity start far enough ahead that no surface's rim is behind them (a concave
+  // surface bulges toward the object by at most its semi-aperture).
   field.startZMm_ = lens.frontVertexZ() + 5.0 + 2.0 * maxSemiApertureMm;
-  if (objectDistanceFromFilmMm &&
-      (!std::isfinite(*objectDistanceFromFilmMm) || *objectDistanceFromFilmMm <= field.startZMm_)) {
-    if (!std::isinf(*objectDistanceFromFilmMm)) {
-      say(whyNot, "the object plane must lie in front of the lens (more than " +
-                      std::to_string(static_cast<int>(std::ceil(field.startZMm_))) +
-                      " mm from the film)");
-      return std::nullopt;
-    }
+  // A finite object must lie ahead of every surface for the same reason.
+  const double nearestObjectZMm = lens.frontVertexZ() + maxSemiApertureMm;
+  if (objectDistanceFromFilmMm && !std::isinf(*objectDistanceFromFilmMm) &&
+      !(*objectDistanceFromFilmMm > nearestObjectZMm)) {
+    say(whyNot, "the object plane must lie in front of the lens (more than " +
+                    std::to_string(static_cast<int>(std::ceil(nearestObjectZMm))) +
+                    " mm from the film)");
+    return std::nullopt;
   }
   const bool atInfinity = !objectDistanceFromFilmMm || std::isinf(*objectDistanceFromFilmMm);
 
