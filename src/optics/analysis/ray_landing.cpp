@@ -21,4 +21,17 @@ std::optional<LensRay> chiefExitRay(const LensSystem& lens, const FieldPoint& fi
   return out;
 }
 
+std::optional<TracedField> traceField(const LensSystem& lens, double imageHeightMm,
+                                      const std::optional<double>& objectDistanceFromFilmMm,
+                                      std::string* whyNot) {
+  auto field = FieldPoint::resolve(lens, imageHeightMm, objectDistanceFromFilmMm, whyNot);
+  if (!field) return std::nullopt;
+  const auto chief = chiefExitRay(lens, *field);
+  if (!chief) {
+    if (whyNot) *whyNot = "the chief ray does not reach the film";
+    return std::nullopt;
+  }
+  return TracedField{std::move(*field), *chief};
+}
+
 }  // namespace lenslab::optics

@@ -8,6 +8,7 @@
 // moved away from the lens by s mm is the plane z = -s.
 
 #include <optional>
+#include <string>
 
 #include <glm/vec2.hpp>
 
@@ -26,5 +27,15 @@ glm::dvec2 onPlane(const LensRay& exitRay, double planeZMm);
 // The chief ray of `field` leaving the rear surface, traced without clear apertures; nullopt
 // only when it misses a surface's sphere (which FieldPoint::resolve already excluded).
 std::optional<LensRay> chiefExitRay(const LensSystem& lens, const FieldPoint& field);
+
+// A field at image height imageHeightMm and its chief ray leaving the lens: where the ray fans
+// and the spot diagram start. nullopt with *whyNot set when either cannot be found.
+struct TracedField {
+  FieldPoint field;
+  LensRay chiefExit;
+};
+std::optional<TracedField> traceField(const LensSystem& lens, double imageHeightMm,
+                                      const std::optional<double>& objectDistanceFromFilmMm,
+                                      std::string* whyNot);
 
 }  // namespace lenslab::optics

@@ -65,14 +65,14 @@ TransverseRayFans computeTransverseRayFans(const LensSystem& lens, const Analysi
     TransverseFanField entry;
     entry.fieldFraction = fraction;
     entry.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
-    const auto field = FieldPoint::resolve(lens, entry.imageHeightMm,
-                                           setup.objectDistanceFromFilmMm, &entry.whyNot);
-    const auto chief = field ? chiefExitRay(lens, *field) : std::nullopt;
-    if (field && !chief) entry.whyNot = "the chief ray does not reach the film";
-    if (!field || !chief) {
+    const auto resolved =
+        traceField(lens, entry.imageHeightMm, setup.objectDistanceFromFilmMm, &entry.whyNot);
+    if (!resolved) {
       fans.fields.push_back(std::move(entry));
       continue;
     }
+    const FieldPoint* field = &resolved->field;
+    const LensRay* chief = &resolved->chiefExit;
     // + 0.0: the axis's angle is atan2(-0, z) = -0, which would print as -0.000.
     entry.fieldAngleDeg = field->fieldAngleDeg() + 0.0;
     const glm::dvec2 chiefMm = onPlane(*chief, 0.0);
