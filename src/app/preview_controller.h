@@ -2,6 +2,9 @@
 // Connects the viewer to the progressive renderer: loads scenes, starts a new render job when the
 // lens, the camera choice or the draft state changes, and turns published snapshots into the
 // preview texture. Never waits for rendering: the UI thread only starts jobs and reads snapshots.
+// Nor does it encode them: a full-resolution pass is 1-2 ms of sRGB encoding (as much again to
+// meter auto exposure), which held the UI thread past its 4 ms while a value was dragged, so an
+// encoder thread turns each new snapshot into 8-bit pixels and the UI thread only uploads them.
 
 #include <chrono>
 #include <cstdint>
@@ -12,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/analysis/latest_job.h"
 #include "app/automation/viewer_stats.h"
 #include "app/drawing/stale_dimming.h"
 #include "app/preview_state.h"
@@ -81,10 +85,10 @@ class PreviewController {
   void setDisplayRegion(
       float widthPx, float heightPx,
       std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
-  // Reads the newest snapshot into `preview` when there is a new one (re-encoding on an exposure
-  // change; otherwise no work) and tells `stats` when the change's coarse image and its first
-  // full pass appear. The image is shown at exposureStops, plus the metered exposure with
-  // `autoExposure`.
+  // Shows the newest encoded snapshot in `preview` when there is one, asks the encoder for the
+  // newest snapshot when it is new or the exposure changed (otherwise no work), and tells
+  // `stats` when the change's coarse image and its first full pass appear on screen. The image is
+  // shown at exposureStops, plus the metered exposure with `autoExposure`.
   void poll(PreviewState& preview, double exposureStops, bool autoExposure, ViewerStats& stats);
   // Auto exposure meters the full passes of one job, the first to show a full pass after it is
   // asked for, until they reach kMeterUntilSpp or the job is replaced, then holds: the picture
@@ -107,7 +111,8 @@ class PreviewController {
                                              bool pinhole, int width, int height,
                                              int samplesPerPixel,
                                              render::FalloffToggles falloff = {}) const;
-  // True while workers are rendering a job that is not complete.
+  // True while workers are rendering a job that is not complete, or its newest image is still
+  // being encoded for the screen.
   bool busy() const;
   // Full-resolution image size for the current scene.
   std::pair<int, int> previewSize(bool draft) const;
@@ -150,7 +155,32 @@ class PreviewController {
   int meteredSpp_ = 0;
   std::uint64_t meterGeneration_ = 0;  // the job metered; 0 before its first pass
   double meteredStops_ = 0;
-  void meter(const render::RenderSnapshot& snapshot);
+  // Whether `snapshot` is one auto exposure meters (the state above), noting it as metered.
+  bool meters(const render::RenderSnapshot& snapshot);
+
+  // The encoder thread's work: a snapshot's pixels at an exposure, metered first when asked.
+  struct EncodedPreview {
+    std::shared_ptr<const render::RenderSnapshot> snapshot;
+    double exposureStops = 0;                 // what the pixels are encoded at
+    std::optional<double> autoExposureStops;  // when this snapshot was metered
+    std::vector<std::uint8_t> rgba;
+  };
+  // What the newest request was for: the snapshot (a job's generation and pass) and the exposure
+  // it was to be shown at, so that a frame asks again only when either changed.
+  struct EncodeRequest {
+    std::uint64_t generation = 0;
+    int samplesPerPixel = -1;
+    double exposureStops = 0;
+    bool operator==(const EncodeRequest&) const = default;
+  };
+  void requestEncode(const std::shared_ptr<const render::RenderSnapshot>& snapshot,
+                     double manualStops, bool autoExposure, bool meter);
+  void showEncoded(PreviewState& preview, ViewerStats& stats);
+  std::optional<EncodeRequest> requested_;
+  std::uint64_t encodeKey_ = 0;        // counts requests (the encoder's keys)
+  std::uint64_t shownEncodeKey_ = 0;   // the request the texture shows
+  std::uint64_t meterKey_ = 0;         // the newest request that meters auto exposure
+  LatestJob<EncodedPreview> encoder_;  // last: its thread uses the members above
 };
 
 }  // namespace lenslab::app

@@ -36,6 +36,9 @@ WriteResult writePfm(const std::filesystem::path& path, const FloatImage& image)
 // 8-bit sRGB RGBA (alpha 255) of image * 2^exposureStops, clamped: what PNGs and the viewer's
 // preview show.
 std::vector<std::uint8_t> encodeSrgbRgba8(const FloatImage& image, double exposureStops);
+// The same for linear RGB pixels held elsewhere (a render snapshot's), without copying them.
+std::vector<std::uint8_t> encodeSrgbRgba8(int width, int height, std::span<const float> rgb,
+                                          double exposureStops);
 // sRGB-encoded 8-bit PNG of image * 2^exposureStops, clamped.
 WriteResult writePngSrgb(const std::filesystem::path& path, const FloatImage& image,
                          double exposureStops);

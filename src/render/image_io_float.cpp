@@ -180,6 +180,11 @@ WriteResult writePfm(const std::filesystem::path& path, const FloatImage& image)
 }
 
 std::vector<std::uint8_t> encodeSrgbRgba8(const FloatImage& image, double exposureStops) {
+  return encodeSrgbRgba8(image.width, image.height, image.rgb, exposureStops);
+}
+
+std::vector<std::uint8_t> encodeSrgbRgba8(int width, int height, std::span<const float> rgb,
+                                          double exposureStops) {
   // A table over [0, 1] in linear light: the viewer re-encodes its preview whenever the
   // exposure slider moves, and pow() per channel would cost tens of milliseconds a frame.
   // 16384 steps keep every output code exact except a handful in the darkest shadows (+-1).
@@ -193,13 +198,13 @@ std::vector<std::uint8_t> encodeSrgbRgba8(const FloatImage& image, double exposu
     return codes;
   }();
   const float scale = static_cast<float>(std::exp2(exposureStops)) * kSteps;
-  const std::size_t pixels = static_cast<std::size_t>(std::max(0, image.width)) *
-                             static_cast<std::size_t>(std::max(0, image.height));
+  const std::size_t pixels =
+      static_cast<std::size_t>(std::max(0, width)) * static_cast<std::size_t>(std::max(0, height));
   std::vector<std::uint8_t> rgba(pixels * 4, 255);
-  for (std::size_t i = 0; i < pixels && 3 * i + 2 < image.rgb.size(); ++i) {
+  for (std::size_t i = 0; i < pixels && 3 * i + 2 < rgb.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
       // NaN and negatives map to black, overexposure to white.
-      const float position = image.rgb[3 * i + c] * scale + 0.5f;
+      const float position = rgb[3 * i + c] * scale + 0.5f;
       const int index = position > 0.0f ? static_cast<int>(std::min(position, float(kSteps))) : 0;
       rgba[4 * i + c] = table[index];
     }

@@ -206,7 +206,8 @@ TEST(FilmPointBundleView, AClickOnThePreviewChoosesTheFilmPoint) {
   const auto scratch = testing::makeTestDirectory("film-point-click");
   std::ofstream(scratch / "commands.script") << "show-panel illumination\n"
                                                 "set film-point 5\n"
-                                                "wait-frames 3\n"
+                                                // the picture is on screen, to be clicked
+                                                "wait-spp 1\n"
                                                 "dump-ui before.json\n"
                                                 "wait-until-file go\n"
                                                 "wait-frames 5\n"

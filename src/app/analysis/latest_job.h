@@ -16,7 +16,10 @@ namespace lenslab::app {
 template <class Result>
 class LatestJob {
  public:
-  LatestJob() : worker_([this] { run(); }) {}
+  // `finished`, when given, is called on the worker thread after each result is stored (the
+  // preview's encoder wakes the UI loop with it, so that the result is shown at once).
+  explicit LatestJob(std::function<void()> finished = {})
+      : finished_(std::move(finished)), worker_([this] { run(); }) {}
   ~LatestJob() {
     {
       std::lock_guard lock(mutex_);
@@ -66,6 +69,11 @@ class LatestJob {
       running_ = false;
       done_ = std::move(result);
       doneKey_ = key;
+      if (finished_) {
+        lock.unlock();
+        finished_();
+        lock.lock();
+      }
     }
   }
 
@@ -77,6 +85,7 @@ class LatestJob {
   bool stopping_ = false;
   std::shared_ptr<const Result> done_;
   std::uint64_t doneKey_ = 0;
+  std::function<void()> finished_;
   std::thread worker_;  // last: started once the members it uses exist
 };
 
