@@ -10,6 +10,7 @@
 #include "app/viewer_state.h"
 #include "common/atomic_file.h"
 #include "common/distance_text.h"
+#include "optics/glass.h"
 #include "optics/lens_loader.h"
 #include "optics/limiting_aperture.h"
 
@@ -108,6 +109,11 @@ SlideCaption crossSectionCaption(const ViewerState& state) {
       text = height;
     }
     caption.fields.push_back({static_cast<int>(i), text});
+  }
+  if (!state.rayFans.fans.empty() && !state.rayFans.fans.front().atOtherWavelengths.empty()) {
+    caption.lines = {{optics::kWavelengthFNm, "F 486 nm"},
+                     {state.rayFans.wavelengthNm, "d 588 nm"},
+                     {optics::kWavelengthCNm, "C 656 nm"}};
   }
   return caption;
 }

@@ -105,6 +105,11 @@ class Viewer final : public ScriptHost {
   void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
   std::optional<std::string> showPanel(const std::string& id) override;
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
+  void setColourFans(bool on) override { state_.fanSettings.colourFans = on; }
+  void centreCrossSection(double zMm, double yMm) override {
+    state_.crossSectionView.centreZMm = zMm;
+    state_.crossSectionView.centreYMm = yMm;
+  }
   // File > Export render... (viewer_export.cpp).
   std::optional<std::string> startExportRender(const std::string& path, int width, int height,
                                                int samplesPerPixel) override;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/document/lens_problems.h"
+#include "optics/glass.h"
 
 namespace lenslab::app {
 
@@ -47,6 +48,9 @@ void refreshLens(ViewerState& state) {
     spec.fieldFractions = state.fanSettings.fieldFractions;
     spec.filmHalfDiagonalMm = 0.5 * state.filmDiagonalMm;
     spec.objectDistanceMm = fanObjectDistanceFromVertexMm(state);
+    if (state.fanSettings.colourFans) {
+      spec.otherWavelengthsNm = {optics::kWavelengthFNm, optics::kWavelengthCNm};
+    }
     state.rayFans = optics::computeRayFans(*state.lensSystem, spec);
     state.fansComputedWith = state.fanSettings;
     ++state.fansRevision;

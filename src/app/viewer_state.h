@@ -72,6 +72,8 @@ struct FanSettings {
   // The fields, as fractions of the film's half diagonal: the cross-section's fans and every
   // analysis panel (analysis/analysis_setup.h) use the same ones, in the same colours.
   std::vector<double> fieldFractions{0.0, 0.7, 1.0};
+  // Each fan also at the F and C lines, every ray in its line's colour (a lens with V_d).
+  bool colourFans = false;
   bool operator==(const FanSettings&) const = default;
 };
 
@@ -117,6 +119,7 @@ struct ViewerState {
   } lensFigures;
   std::string inFocusText;
   std::string axialBeamText, unvignettedText, fNumberText;
+  std::string colourFocusText;  // the first-order data's chromatic focal shift (F-C)
   // The "Focus at" field: the distance in focus (from the film) once the lens has one, else the
   // last typed; its text while it is typed into, and what it showed last frame (dump-ui).
   double focusDistanceInputMm = 3000.0;

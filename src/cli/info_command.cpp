@@ -6,9 +6,12 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
 
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
+#include "optics/analysis/chromatic.h"
 #include "optics/field.h"
 #include "optics/focus.h"
 #include "optics/limiting_aperture.h"
@@ -34,6 +37,15 @@ nlohmann::json number(double value) {
 // FirstOrderData holds for them.
 nlohmann::json focal(const optics::FirstOrderData& fo, double value) {
   return fo.afocal ? nlohmann::json(nullptr) : number(value);
+}
+
+// The paraxial back focus at F minus at C, object at infinity (analysis/chromatic.h); nothing
+// without dispersion (no V_d) or for an afocal lens, with the reason in `whyNot`.
+std::optional<double> colourFocusShiftMm(const optics::LensSystem& lens, std::string& whyNot) {
+  const auto shift = optics::chromaticFocalShift(lens, std::nullopt, 2, optics::kWavelengthFNm,
+                                                 optics::kWavelengthCNm, &whyNot);
+  if (!shift || !std::isfinite(shift->fMinusCMm)) return std::nullopt;
+  return shift->fMinusCMm;
 }
 
 nlohmann::json pupilJson(const optics::PupilData& pupil, const char* reference) {
@@ -82,6 +94,8 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
                         {"aperture_diameter_mm", s.apertureDiameterMm},
                         {"vertex_z_mm", lens.surfaces()[i].vertexZMm}});
   }
+  std::string colourWhyNot;
+  const std::optional<double> colourShift = colourFocusShiftMm(lens, colourWhyNot);
   return {
       {"lens", arguments.lensPath},
       {"wavelength_nm", lens.wavelengthNm()},
@@ -98,6 +112,9 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       {"total_track_mm", fo.totalTrackMm},
       {"lens_length_mm", fo.lensLengthMm},
       {"film_distance_mm", lens.filmDistanceMm()},
+      // F minus C (mm, along the light), null without V_d: the chromatic focal shift.
+      {"chromatic_focal_shift_mm",
+       colourShift ? nlohmann::json(*colourShift) : nlohmann::json(nullptr)},
       {"entrance_pupil", pupilJson(fo.entrancePupil, "front_vertex")},
       {"exit_pupil", pupilJson(fo.exitPupil, "rear_vertex")},
       {"stop_surface", lens.stopIndex() + 1},  // counted from 1, as "surface" above
@@ -201,6 +218,12 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   line("lens length", fo.lensLengthMm, "mm (front to rear vertex)");
   line("film distance", lens.filmDistanceMm(), "mm (rear vertex to film)");
   line("total track", fo.totalTrackMm, "mm (front vertex to film)");
+  std::string colourWhyNot;
+  if (const auto shift = colourFocusShiftMm(lens, colourWhyNot))
+    line("chromatic focal shift (F - C)", *shift,
+         "mm (paraxial, from infinity; negative: blue focuses nearer the lens)");
+  else
+    std::printf("%-34s %12s (%s)\n", "chromatic focal shift (F - C)", "-", colourWhyNot.c_str());
   if (fo.afocal)
     std::printf("%-34s %12s (afocal: no image on the film)\n", "field of view", "-");
   else

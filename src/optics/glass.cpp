@@ -12,4 +12,10 @@ double refractiveIndex(double nD, std::optional<double> abbeD, double wavelength
   return a + b / (wavelengthNm * wavelengthNm);
 }
 
+bool lensHasDispersion(const Prescription& prescription) {
+  for (const Surface& s : prescription.surfaces)
+    if (s.abbeD && *s.abbeD > 0.0 && s.mediumIndexD() > 1.0) return true;
+  return false;
+}
+
 }  // namespace lenslab::optics

@@ -3,6 +3,8 @@
 
 #include <optional>
 
+#include "optics/prescription.h"
+
 namespace lenslab::optics {
 
 // Fraunhofer lines used by the Abbe number (nm).
@@ -14,5 +16,9 @@ inline constexpr double kWavelengthCNm = 656.27;
 // n(F) - n(C) = (nD - 1) / V_d (the definition of the Abbe number). Without an Abbe number the
 // medium is non-dispersive and nD is returned at every wavelength.
 double refractiveIndex(double nD, std::optional<double> abbeD, double wavelengthNm);
+
+// True when some medium of the lens has an Abbe number (and an index above 1): only then does
+// its focus depend on the wavelength.
+bool lensHasDispersion(const Prescription& prescription);
 
 }  // namespace lenslab::optics

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "optics/glass.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unclipped_trace.h"
 
@@ -78,10 +79,14 @@ class FanTracer {
     return ray;
   }
 
-  // That ray traced through the lens, clear apertures included.
+  // That ray traced through the lens, clear apertures included (or through `at`, the same lens
+  // at another wavelength).
   FanRay trace(const ObjectField& field, double pupilHeight) const {
+    return trace(lens_, field, pupilHeight);
+  }
+  FanRay trace(const LensSystem& at, const ObjectField& field, double pupilHeight) const {
     FanRay result;
-    result.path = lens_.traceFromScenePath(ray(field, pupilHeight));
+    result.path = at.traceFromScenePath(ray(field, pupilHeight));
     if (result.path.stop == RayStop::Passed && result.path.exitRay &&
         result.path.exitRay->direction.z < 0) {
       const LensRay& exit = *result.path.exitRay;
@@ -276,12 +281,20 @@ class FanTracer {
 
 RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
   RayFans result;
+  result.wavelengthNm = lens.wavelengthNm();
   const FanTracer tracer(lens, spec);
   const int count = std::max(2, spec.raysPerFan);
   // The fans spread over the film's half diagonal, or over the lens's coverage when the film
   // corner lies beyond it (a circular fisheye on a full frame): then they are not at their
   // requested heights, and say so.
   const auto covered = tracer.coverage();
+  // The same lens at the other wavelengths (a few microseconds each: same geometry, new indices).
+  std::vector<std::shared_ptr<const LensSystem>> others;
+  if (lensHasDispersion(lens.prescription())) {
+    for (double wavelengthNm : spec.otherWavelengthsNm) {
+      if (auto at = lens.withWavelength(wavelengthNm)) others.push_back(std::move(at));
+    }
+  }
   const bool filmCovered = spec.filmHalfDiagonalMm <= covered.aim.imageHeight * (1.0 + 1e-9);
   const double halfHeight = filmCovered ? spec.filmHalfDiagonalMm : covered.aim.imageHeight;
   for (double fraction : spec.fieldFractions) {
@@ -305,6 +318,15 @@ RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
     for (int i = 0; i < count; ++i) {
       const double t = -1.0 + 2.0 * i / (count - 1);
       fan.rays.push_back(tracer.trace(field, centre + t * span));
+    }
+    for (const auto& at : others) {
+      FanAtWavelength& colour = fan.atOtherWavelengths.emplace_back();
+      colour.wavelengthNm = at->wavelengthNm();
+      for (int i = 0; i < count; ++i) {
+        const double t = -1.0 + 2.0 * i / (count - 1);
+        colour.rays.push_back(tracer.trace(*at, field, centre + t * span));
+      }
+      if (fan.chief) colour.chief = tracer.trace(*at, field, aim ? aim->pupilHeight : 0.0);
     }
     result.fans.push_back(std::move(fan));
   }

@@ -33,11 +33,25 @@ struct FanSpec {
   double filmHalfDiagonalMm = 21.6;
   // Fans span this multiple of the entrance pupil, so rays clipped by the stop and the rims show.
   double pupilOverfill = 1.25;
+  // Wavelengths (nm) at which each fan's rays are traced again, besides the lens's own (F and C
+  // for the cross-section's colour fans): the same incoming rays, so that where they land on the
+  // film shows the lens's colour. Ignored by a lens without dispersion (no Abbe number), whose
+  // every wavelength takes the d line's path.
+  std::vector<double> otherWavelengthsNm;
 };
 
 struct FanRay {
   RayPath path;                         // from its start point through the lens, as traced
   std::optional<glm::dvec3> filmPoint;  // where a passing ray meets the film plane z = 0
+};
+
+// A fan's rays and chief ray, traced at another wavelength from the same object point (or
+// direction) through the same heights on the entrance-pupil plane as at the lens's own: the field
+// and the aim are the lens wavelength's, only the refraction differs.
+struct FanAtWavelength {
+  double wavelengthNm = 0;
+  std::vector<FanRay> rays;
+  std::optional<FanRay> chief;
 };
 
 struct RayFan {
@@ -56,9 +70,12 @@ struct RayFan {
   // Traced with the clear apertures, so it may be blocked (then it ends at the blocking rim and
   // has no filmPoint); absent only when no ray through the stop's centre exists.
   std::optional<FanRay> chief;
+  // One entry per FanSpec::otherWavelengthsNm, in that order (none without dispersion).
+  std::vector<FanAtWavelength> atOtherWavelengths;
 };
 
 struct RayFans {
+  double wavelengthNm = 0;  // the lens's own, at which `fans` were traced
   std::vector<RayFan> fans;
   std::optional<FanRay> marginal;  // on axis, at the edge of the passing bundle
 };

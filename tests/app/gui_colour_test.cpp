@@ -204,7 +204,8 @@ TEST(ColourPanels, SeidelBarsAndColourPlotsFollowTheLensAndExport) {
 
 TEST(ColourPanels, LensWithoutAbbeNumbersSaysSoAndHasNoColourPlot) {
   const auto scratch = testing::makeTestDirectory("colour-panels-no-vd");
-  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
+  // The wide-angle 22 mm's source gives no Abbe numbers.
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/wide-22mm.dat";
   std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
                                              << "set layout 0.3 0.36 0.45\n"
                                                 "show-panel colour\n"
@@ -220,7 +221,7 @@ TEST(ColourPanels, LensWithoutAbbeNumbersSaysSoAndHasNoColourPlot) {
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("Abbe number"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(scratch / "shift.csv"));
-  EXPECT_EQ(readCsv(scratch / "seidel.csv").names.size(), 12u);  // 11 surfaces and the total
+  EXPECT_EQ(readCsv(scratch / "seidel.csv").names.size(), 14u);  // 13 surfaces and the total
   std::ifstream file(scratch / "ui.json");
   const nlohmann::json ui = nlohmann::json::parse(file);
   EXPECT_TRUE(ui["widgets"].contains("colour/no-dispersion")) << ui["widgets"];
@@ -233,6 +234,99 @@ TEST(ColourPanels, LensWithoutAbbeNumbersSaysSoAndHasNoColourPlot) {
   EXPECT_GT(shot.fractionNear(x0, y0, x0 + words["width"].get<int>(),
                               y0 + words["height"].get<int>(), {0xff, 0xff, 0xff}, 40),
             0.02);
+}
+
+// The cross-section's colour fans (set colour-fans on, the "F, d, C" box): on a flint singlet
+// every ray is drawn in its Fraunhofer line's colour (blue F and red C pixels in the canvas, none
+// of the fields' green), the first-order data give the chromatic focal shift (against the
+// thick-lens formula with the Cauchy indices worked here), and the slide's legend names the
+// lines. On a lens without V_d the box changes nothing and says why. (A corrected lens such as
+// the Cooke triplet draws its F and C rays almost on top of the d rays: 0.16 mm apart at focus.)
+TEST(ColourPanels, ColourFansDrawTheFAndCLinesInTheirColours) {
+  const auto scratch = testing::makeTestDirectory("colour-fans");
+  // Plano-convex, n_d 1.6, V_d 25: f = 100 mm, F and C foci 4 mm apart.
+  std::ofstream(scratch / "singlet.dat") << "60 4 1.6 20 25\ninf 1 1 20\n0 95 0 18\n";
+  const std::string singlet = (scratch / "singlet.dat").string();
+  const std::string wide = std::string(LENSLAB_SOURCE_DIR) + "/lenses/wide-22mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << singlet << "\n"
+                                             << "wait-frames 3\n"
+                                                "screenshot plain.png\n"
+                                                "set colour-fans on\n"
+                                                "wait-frames 3\n"
+                                                "screenshot colour.png\n"
+                                                "dump-ui colour.json\n"
+                                                // The axial fan's focus, 40 times closer.
+                                                "centre-cross-section 2 0\n"
+                                                "zoom-cross-section 40\n"
+                                                "wait-frames 3\n"
+                                                "screenshot focus.png\n"
+                                                "export-cross-section slide.svg\n"
+                                                "load-lens "
+                                             << wide << "\n"
+                                             << "wait-frames 3\n"
+                                                "dump-ui wide.json\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+
+  std::ifstream colourFile(scratch / "colour.json");
+  const nlohmann::json ui = nlohmann::json::parse(colourFile);
+  const nlohmann::json& state = ui["state"];
+  EXPECT_TRUE(state["colour_fans"].get<bool>());
+  const std::vector<double> lines = state["colour_fan_wavelengths_nm"];
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_NEAR(lines[0], 587.56, 1e-9);
+  EXPECT_NEAR(lines[1], 486.13, 1e-9);
+  EXPECT_NEAR(lines[2], 656.27, 1e-9);
+  // The paraxial F - C back focus: R / (n - 1) - t / n at each line, n = A + B / lambda^2 fitted
+  // to n_d and n_F - n_C = (n_d - 1) / V_d.
+  const double lF = 486.13, lD = 587.56, lC = 656.27;
+  const double B = 0.6 / 25.0 / (1.0 / (lF * lF) - 1.0 / (lC * lC)), A = 1.6 - B / (lD * lD);
+  const auto backFocus = [&](double l) {
+    const double n = A + B / (l * l);
+    return 60.0 / (n - 1.0) - 4.0 / n;
+  };
+  const std::string colourFocus = state["first_order"]["colour_focus"];
+  EXPECT_NE(colourFocus.find("blue focuses nearer the lens"), std::string::npos) << colourFocus;
+  EXPECT_NEAR(std::stod(colourFocus), backFocus(lF) - backFocus(lC), 1e-4) << colourFocus;
+
+  const auto& canvas = ui["widgets"]["cross-section/canvas"];
+  const int x0 = canvas["x"].get<int>(), y0 = canvas["y"].get<int>();
+  const int x1 = x0 + canvas["width"].get<int>(), y1 = y0 + canvas["height"].get<int>();
+  const auto plain = testing::PngImage::load(scratch / "plain.png");
+  const auto colour = testing::PngImage::load(scratch / "colour.png");
+  ASSERT_TRUE(plain.valid());
+  ASSERT_TRUE(colour.valid());
+  const testing::Rgb lineF{90, 150, 255}, lineD{245, 215, 60}, lineC{255, 75, 65};
+  const testing::Rgb axialField{80, 220, 120};
+  // Before: the fields' colours, no F or C rays; after: F and C rays, the fields' green gone.
+  EXPECT_GT(plain.fractionNear(x0, y0, x1, y1, axialField, 12), 0.0003);
+  EXPECT_LT(plain.fractionNear(x0, y0, x1, y1, lineC, 12), 0.00005);
+  EXPECT_GT(colour.fractionNear(x0, y0, x1, y1, lineF, 12), 0.001);
+  // Blue is drawn last, over the others where they coincide; at the axial focus, 40 times
+  // closer, the three lines part (F and C focus 3.9 mm apart) and each shows.
+  const auto focus = testing::PngImage::load(scratch / "focus.png");
+  ASSERT_TRUE(focus.valid());
+  EXPECT_GT(focus.fractionNear(x0, y0, x1, y1, lineF, 12), 0.0004);
+  EXPECT_GT(focus.fractionNear(x0, y0, x1, y1, lineD, 12), 0.0004);
+  EXPECT_GT(focus.fractionNear(x0, y0, x1, y1, lineC, 12), 0.0004);
+  EXPECT_LT(colour.fractionNear(x0, y0, x1, y1, axialField, 12), 0.00005);
+
+  // The slide names the lines in its legend, and draws rays in the light theme's F and C colours.
+  const std::string svg = testing::readWholeFile(scratch / "slide.svg");
+  EXPECT_NE(svg.find(">F 486 nm</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">C 656 nm</text>"), std::string::npos);
+  EXPECT_NE(svg.find("stroke=\"rgb(20,80,215)\""), std::string::npos);  // F on white
+  EXPECT_NE(svg.find("stroke=\"rgb(205,30,30)\""), std::string::npos);  // C on white
+
+  // A lens without V_d: the setting stays, but there is one colour and no F-C focus.
+  std::ifstream wideFile(scratch / "wide.json");
+  const nlohmann::json wideUi = nlohmann::json::parse(wideFile)["state"];
+  EXPECT_TRUE(wideUi["colour_fans"].get<bool>());
+  EXPECT_TRUE(wideUi["colour_fan_wavelengths_nm"].empty());
+  const std::string wideFocus = wideUi["first_order"]["colour_focus"];
+  EXPECT_NE(wideFocus.find("Abbe number"), std::string::npos) << wideFocus;
 }
 
 }  // namespace

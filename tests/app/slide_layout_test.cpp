@@ -83,7 +83,8 @@ TEST(SlideLayout, EveryLensIsLabelledWithTextInsideThePictureAndNoTwoTextsOverla
     drawRayFans(drawing, fans, true);
     SlideCaption caption{"A lens with a long name, as its file's first comment gives it",
                          "lens.dat  ·  f/2.0302  ·  EFL 50.36 mm  ·  object at infinity",
-                         {{0, "0°"}, {1, "16.7°"}, {2, "23.3°"}}};
+                         {{0, "0°"}, {1, "16.7°"}, {2, "23.3°"}},
+                         {}};
     for (const auto& [width, height] : {std::pair{1920, 1080}, {1024, 768}, {800, 1200}}) {
       SlideOptions options;
       options.widthPx = width;

@@ -55,22 +55,57 @@ TEST_F(LensCommands, InfoTextAndWavelengthAndFilmDiagonal) {
   ASSERT_EQ(text.exitCode, 0) << text.err;
   EXPECT_NE(text.out.find("effective focal length"), std::string::npos);
   EXPECT_NE(text.out.find("stop is surface 6 (counted from 1)"), std::string::npos) << text.out;
-  // The course lenses have no Abbe numbers: the same EFL at any wavelength...
+  // A lens without Abbe numbers (the wide-angle's source gives none): the same EFL at any
+  // wavelength...
   auto efl = [&](const std::string& lens, const std::string& extra) {
     const auto r =
         testing::runProcess(lenslab("info --json " + extra + " " + lensPath(lens)), scratch);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return nlohmann::json::parse(r.out);
   };
-  EXPECT_EQ(efl("dgauss-50mm.dat", "--wavelength 450").at("efl_mm"),
-            efl("dgauss-50mm.dat", "").at("efl_mm"));
-  // ...but the 100 mm double-Gauss with V_d focuses blue shorter.
+  EXPECT_EQ(efl("wide-22mm.dat", "--wavelength 450").at("efl_mm"),
+            efl("wide-22mm.dat", "").at("efl_mm"));
+  // ...but the 100 mm double-Gauss with V_d focuses blue shorter, and so does the 50 mm.
   EXPECT_LT(efl("dgauss-100mm.dat", "--wavelength 486.13").at("efl_mm").get<double>(),
             efl("dgauss-100mm.dat", "--wavelength 656.27").at("efl_mm").get<double>());
+  EXPECT_LT(efl("dgauss-50mm.dat", "--wavelength 486.13").at("efl_mm").get<double>(),
+            efl("dgauss-50mm.dat", "--wavelength 656.27").at("efl_mm").get<double>());
   const auto wide = efl("dgauss-50mm.dat", "--film-diagonal 70");
   EXPECT_EQ(wide.at("film_diagonal_mm").get<double>(), 70.0);
   EXPECT_GT(wide.at("field_of_view_deg").get<double>(),
             efl("dgauss-50mm.dat", "").at("field_of_view_deg").get<double>());
+}
+
+// The chromatic focal shift (F - C back focus from infinity) of a plano-convex singlet, against
+// the thick-lens formula with indices from the two-term Cauchy fit to n_d and V_d worked here;
+// null (and a dash with the reason in the text) without V_d.
+TEST_F(LensCommands, InfoGivesTheChromaticFocalShift) {
+  const double nD = 1.6, V = 30.0, R = 60.0, t = 4.0;
+  const std::string singlet = writeFile("singlet.dat", "60 4 1.6 20 30\ninf 1 1 20\n0 95 0 18\n");
+  const auto json = testing::runProcess(lenslab("info --json " + singlet), scratch);
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const double lF = 486.13, lD = 587.56, lC = 656.27;
+  const double B = (nD - 1.0) / V / (1.0 / (lF * lF) - 1.0 / (lC * lC));
+  const double A = nD - B / (lD * lD);
+  const auto backFocus = [&](double l) {
+    const double n = A + B / (l * l);
+    return R / (n - 1.0) - t / n;
+  };
+  const double expected = backFocus(lF) - backFocus(lC);  // about -3.3 mm
+  EXPECT_NEAR(nlohmann::json::parse(json.out).at("chromatic_focal_shift_mm").get<double>(),
+              expected, 1e-9);
+  const auto text = testing::runProcess(lenslab("info " + singlet), scratch);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  char line[64];
+  std::snprintf(line, sizeof line, "%.4f mm", expected);
+  EXPECT_NE(text.out.find(line), std::string::npos) << text.out;
+  // No V_d: null, and the text says why.
+  const auto wide =
+      testing::runProcess(lenslab("info --json " + lensPath("wide-22mm.dat")), scratch);
+  ASSERT_EQ(wide.exitCode, 0) << wide.err;
+  EXPECT_TRUE(nlohmann::json::parse(wide.out).at("chromatic_focal_shift_mm").is_null());
+  const auto wideText = testing::runProcess(lenslab("info " + lensPath("wide-22mm.dat")), scratch);
+  EXPECT_NE(wideText.out.find("Abbe number"), std::string::npos) << wideText.out;
 }
 
 TEST_F(LensCommands, FocusPrintsTheFilmDistance) {

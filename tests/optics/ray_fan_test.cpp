@@ -153,3 +153,80 @@ TEST(RayFan, WideAngleFullFieldMatchesTheRealFieldOfView) {
 
 }  // namespace
 }  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+// The colour fans (FanSpec::otherWavelengthsNm) of a plano-convex singlet with a dispersive glass:
+// each near-axis ray at F and C crosses the axis at that line's back focus, worked out here from
+// the thick-lens formula and the two-term Cauchy model fitted to n_d and V_d by hand (not with
+// optics/glass.h), and every colour ray enters exactly as its d ray does.
+TEST(RayFan, ColourFansCrossTheAxisAtEachLinesBackFocus) {
+  const double nD = 1.6, V = 30.0, R = 60.0, t = 4.0;
+  Prescription p;
+  p.surfaces = {{R, t, nD, V, 20.0},
+                {kFlatRadius, 1.0, 1.0, std::nullopt, 20.0},
+                {0.0, 95.0, 1.0, std::nullopt, 18.0}};
+  const BuildResult built = LensSystem::build(p);
+  ASSERT_TRUE(built.ok());
+  const LensSystem& lens = *built.system;
+  // n(lambda) = A + B / lambda^2 with n(d) = n_d and n(F) - n(C) = (n_d - 1) / V.
+  const double lF = 486.13, lD = 587.56, lC = 656.27;
+  const double B = (nD - 1.0) / V / (1.0 / (lF * lF) - 1.0 / (lC * lC));
+  const double A = nD - B / (lD * lD);
+  const auto index = [&](double l) { return A + B / (l * l); };
+  // The flat adds no power: f = R / (n - 1), the rear principal plane t/n inside the glass, and
+  // the stop row 1 mm behind the flat; from the stop's plane (the lens's rear vertex).
+  const auto backFocusFromRearVertex = [&](double l) {
+    const double n = index(l);
+    return R / (n - 1.0) - t / n - 1.0;
+  };
+  ASSERT_GT(backFocusFromRearVertex(lC) - backFocusFromRearVertex(lF), 2.0);  // about 3.3 mm
+
+  FanSpec spec;
+  spec.fieldFractions = {0.0};
+  spec.raysPerFan = 9;
+  spec.pupilOverfill = 0.05;  // the paraxial zone: within 0.6 mm of the axis
+  spec.otherWavelengthsNm = {lF, lC};
+  const RayFans fans = computeRayFans(lens, spec);
+  ASSERT_EQ(fans.fans.size(), 1u);
+  const RayFan& fan = fans.fans[0];
+  ASSERT_EQ(fan.atOtherWavelengths.size(), 2u);
+  EXPECT_EQ(fans.wavelengthNm, lens.wavelengthNm());
+
+  const auto checkFocus = [&](const std::vector<FanRay>& rays, double wavelengthNm) {
+    int checked = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      // Same start and direction as the d ray: only the refraction differs.
+      EXPECT_NEAR(glm::length(rays[i].path.points.front() - fan.rays[i].path.points.front()), 0.0,
+                  1e-12);
+      ASSERT_TRUE(rays[i].path.exitRay) << wavelengthNm;
+      const LensRay& exit = *rays[i].path.exitRay;
+      if (std::abs(exit.origin.y) < 1e-6) continue;  // the axial ray crosses the axis everywhere
+      const double crossingZ = exit.origin.z - exit.origin.y * exit.direction.z / exit.direction.y;
+      EXPECT_NEAR(lens.rearVertexZ() - crossingZ, backFocusFromRearVertex(wavelengthNm), 0.01)
+          << wavelengthNm << " nm, ray " << i;
+      ++checked;
+    }
+    EXPECT_EQ(checked, 8);
+  };
+  checkFocus(fan.rays, lD);
+  EXPECT_EQ(fan.atOtherWavelengths[0].wavelengthNm, lF);
+  checkFocus(fan.atOtherWavelengths[0].rays, lF);
+  EXPECT_EQ(fan.atOtherWavelengths[1].wavelengthNm, lC);
+  checkFocus(fan.atOtherWavelengths[1].rays, lC);
+  EXPECT_TRUE(fan.atOtherWavelengths[0].chief.has_value());
+}
+
+// Without V_d every wavelength takes the d line's path: no colour fans are traced.
+TEST(RayFan, LensWithoutDispersionHasNoColourFans) {
+  const BuildResult built = LensSystem::build(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
+  ASSERT_TRUE(built.ok());
+  FanSpec spec;
+  spec.otherWavelengthsNm = {486.13, 656.27};
+  for (const RayFan& fan : computeRayFans(*built.system, spec).fans)
+    EXPECT_TRUE(fan.atOtherWavelengths.empty());
+}
+
+}  // namespace
+}  // namespace lenslab::optics

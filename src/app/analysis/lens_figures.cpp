@@ -5,11 +5,26 @@
 #include <limits>
 
 #include "common/distance_text.h"
+#include "optics/analysis/chromatic.h"
 #include "optics/focus.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unvignetted_field.h"
 
 namespace lenslab::app {
+
+std::string colourFocusText(const optics::LensSystem& lens) {
+  std::string whyNot;
+  const auto shift = optics::chromaticFocalShift(lens, std::nullopt, 2, optics::kWavelengthFNm,
+                                                 optics::kWavelengthCNm, &whyNot);
+  if (!shift) return "- (" + whyNot + ")";
+  char text[128];
+  // Negative: F (blue) focuses nearer the lens than C (red), as in a single positive lens.
+  std::snprintf(text, sizeof text, "%+.4f mm from infinity (%s)", shift->fMinusCMm,
+                shift->fMinusCMm < 0   ? "blue focuses nearer the lens"
+                : shift->fMinusCMm > 0 ? "red focuses nearer the lens"
+                                       : "F and C focus together");
+  return text;
+}
 
 LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSystem,
                                bool withBeamFigures) {
@@ -22,6 +37,7 @@ LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSys
   figures.inFocusText = inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
                                      : "nothing (" + inFocus.whyNot + ")";
   figures.inFocusMm = inFocus.valueMm;
+  figures.colourFocusText = colourFocusText(lens);
   if (!withBeamFigures) return figures;
 
   figures.hasBeamFigures = true;

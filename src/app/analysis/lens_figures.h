@@ -1,7 +1,8 @@
 #pragma once
 // The first-order section's figures that take real-ray searches, in the words `lenslab info`
 // uses: the object distance in focus (focus.h), the aperture that limits the axial beam with its
-// working f-number (limiting_aperture.h) and the unvignetted field (unvignetted_field.h). Each
+// working f-number (limiting_aperture.h) and the unvignetted field (unvignetted_field.h), with
+// the paraxial chromatic focal shift (analysis/chromatic.h, microseconds) beside them. Each
 // takes a few milliseconds per lens, so they are computed off the UI thread (a LatestJob) and
 // the section shows the newest finished ones.
 
@@ -19,12 +20,18 @@ struct LensFigures {
   std::shared_ptr<const optics::LensSystem> lens;  // the lens they describe
   std::string inFocusText;                         // "3.600 m from the film", "nothing (why)"
   std::optional<double> inFocusMm;                 // the object distance in focus, from the film
+  // The paraxial back focus at F minus at C from infinity ("-0.162 mm: blue focuses nearer the
+  // lens"), or why there is none (no glass with V_d).
+  std::string colourFocusText;
   // The beam figures; absent when they were not asked for (while a value is dragged).
   bool hasBeamFigures = false;
   std::string fNumberText;      // "f/2.07": EFL over the paraxial beam that passes every rim
   std::string axialBeamText;    // "surface 3, before the iris: working f/2.03"
   std::string unvignettedText;  // "1.1 deg from infinity"
 };
+
+// "F-C" of the first-order data: the paraxial focus at F minus at C, object at infinity.
+std::string colourFocusText(const optics::LensSystem& lens);
 
 // Pure: the figures of `lens` (the beam ones too when withBeamFigures).
 LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lens,

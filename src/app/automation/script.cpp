@@ -43,6 +43,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"check-window", {0, 0}},
       {"quit", {0, 1}},
       {"zoom-cross-section", {1, 1}},
+      {"centre-cross-section", {2, 2}},
       {"drop", {1, 1}},
       {"open-dialog", {1, 1}},
       {"dialog-choose", {1, 1}},
@@ -191,9 +192,9 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     if (!parseFieldFractions(a[1], &why)) return problemAt(command, 1, why);
     return std::nullopt;
   }
-  if (a[0] == "auto-exposure") {
+  if (a[0] == "auto-exposure" || a[0] == "colour-fans") {
     if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
-      return problemAt(command, 0, "expected: set auto-exposure on|off");
+      return problemAt(command, 0, "expected: set " + a[0] + " on|off");
     }
     return std::nullopt;
   }
@@ -220,7 +221,7 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
       "unknown setting '" + a[0] +
           "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays, "
           "layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
-          "vignetting-overlay or fields)");
+          "vignetting-overlay, colour-fans or fields)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
@@ -260,6 +261,13 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     const auto factor = parseNumber(command.arguments[0]);
     if (!factor || !(*factor > 0)) {
       return problemAt(command, 0, "'" + command.arguments[0] + "' is not a positive number");
+    }
+  }
+  if (command.verb == "centre-cross-section") {
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (!parseNumber(command.arguments[i])) {
+        return problemAt(command, i, "'" + command.arguments[i] + "' is not a number (mm)");
+      }
     }
   }
   if (command.verb == "export-cross-section") {
@@ -488,6 +496,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
       host.setAutoExposure(a[1] == "on");
       return true;
     }
+    if (a[0] == "colour-fans") {
+      host.setColourFans(a[1] == "on");
+      return true;
+    }
     if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
       host.setVignettingSwitch(a[0], a[1] == "on");
       return true;
@@ -501,6 +513,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "zoom-cross-section") {
     host.zoomCrossSection(*parseNumber(a[0]));
+    return true;
+  }
+  if (verb == "centre-cross-section") {
+    host.centreCrossSection(*parseNumber(a[0]), *parseNumber(a[1]));
     return true;
   }
   if (verb == "drop") return check(host.drop(a[0]));

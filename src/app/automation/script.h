@@ -9,6 +9,8 @@
 //   set camera lens|pinhole     set blocked-rays show|hide  set layout LENS PREVIEW LOG
 //   make-stop N                 flip                        undo          redo
 //   zoom-cross-section FACTOR   (about the canvas centre)
+//   centre-cross-section Z Y    (puts the lens-frame point Z, Y mm at the canvas centre: the film
+//                                is at Z 0, the lens toward +Z)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
 //   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI)
@@ -36,6 +38,8 @@
 //   set rims on|off              toggles of the Illumination panel, off: only the stop clips)
 //   set vignetting-overlay on|off       (the heat map of the bundle's passing share over the
 //                                preview, with its colour bar)
+//   set colour-fans on|off      (the cross-section's fans also at the F and C lines, each ray in
+//                                its line's colour; a lens without V_d keeps one colour)
 //
 // Pictures for slides (File > Export render..., auto exposure):
 //   export-render FILE SIZE SPP  renders the current lens and scene in the background at SIZE
@@ -162,6 +166,8 @@ class ScriptHost {
     return "there is no panel " + id + " here";
   }
   virtual void showBlockedRays(bool /*show*/) {}
+  virtual void setColourFans(bool /*on*/) {}
+  virtual void centreCrossSection(double /*zMm*/, double /*yMm*/) {}
   // The figures computed off the UI thread for the current lens (the first-order data's real-ray
   // searches, a shown analysis panel) have finished and are on screen. Screenshots and dump-ui
   // wait for it, so that they show a settled state rather than the previous lens's figures.

@@ -8,6 +8,22 @@
 
 namespace lenslab::app {
 
+namespace {
+
+// The wavelengths the cross-section's fans are drawn at: the lens's own, then the colour fans'
+// (none when they are off or the lens has no dispersion).
+std::vector<double> colourFanWavelengths(const ViewerState& state) {
+  std::vector<double> wavelengths;
+  if (state.rayFans.fans.empty() || state.rayFans.fans.front().atOtherWavelengths.empty())
+    return wavelengths;
+  wavelengths.push_back(state.rayFans.wavelengthNm);
+  for (const auto& other : state.rayFans.fans.front().atOtherWavelengths)
+    wavelengths.push_back(other.wavelengthNm);
+  return wavelengths;
+}
+
+}  // namespace
+
 std::string writeUiDump(const std::filesystem::path& path, const ViewerState& state,
                         const std::string& fileBrowserPurpose, int windowWidth, int windowHeight) {
   nlohmann::json widgets = nlohmann::json::object();
@@ -52,6 +68,8 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"film_distance_mm", filmDistance},
       {"film_diagonal_mm", state.filmDiagonalMm},
       {"field_fractions", state.fanSettings.fieldFractions},
+      {"colour_fans", state.fanSettings.colourFans},
+      {"colour_fan_wavelengths_nm", colourFanWavelengths(state)},
       {"stop_diameter_mm", stopDiameter},
       {"focus_at_text", state.focusAtShown},
       {"in_focus_text", state.inFocusText},
@@ -67,7 +85,8 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"first_order",
        {{"f_number", state.fNumberText},
         {"axial_beam", state.axialBeamText},
-        {"unvignetted", state.unvignettedText}}},
+        {"unvignetted", state.unvignettedText},
+        {"colour_focus", state.colourFocusText}}},
       // File > Export render...: the window's fields and the running or last export.
       {"export",
        {{"open", state.exportDialog.open},

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iterator>
 
+#include "optics/glass.h"
+
 namespace lenslab::app {
 
 void BoundsMm::include(const optics::OutlinePoint& point) {
@@ -100,19 +102,48 @@ Polyline rayLine(const optics::FanRay& ray, Colour colour, float width, DrawingP
 
 }  // namespace
 
+Colour fraunhoferLineColour(double wavelengthNm) {
+  const double toF = std::abs(wavelengthNm - optics::kWavelengthFNm);
+  const double toD = std::abs(wavelengthNm - optics::kWavelengthDNm);
+  const double toC = std::abs(wavelengthNm - optics::kWavelengthCNm);
+  if (toF <= toD && toF <= toC) return palette::kLineF;
+  return toD <= toC ? palette::kLineD : palette::kLineC;
+}
+
 void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked) {
   constexpr std::size_t kColours = std::size(palette::kFieldColours);
-  for (std::size_t f = 0; f < fans.fans.size(); ++f) {
-    const optics::RayFan& fan = fans.fans[f];
-    const Colour colour = palette::kFieldColours[f % kColours];
-    for (const optics::FanRay& ray : fan.rays) {
+  const auto addRays = [&](const std::vector<optics::FanRay>& rays, Colour colour, int fanIndex,
+                           double wavelengthNm) {
+    for (const optics::FanRay& ray : rays) {
       const bool passed = ray.filmPoint.has_value();
       if (!passed && !showBlocked) continue;
       Colour shade = colour;
       if (!passed) shade.a = 110;
       Polyline line = rayLine(ray, shade, 1.0f, DrawingPart::Ray);
-      line.fanIndex = static_cast<int>(f);
+      line.fanIndex = fanIndex;
+      line.wavelengthNm = wavelengthNm;
       drawing.lines.push_back(std::move(line));
+    }
+  };
+  for (std::size_t f = 0; f < fans.fans.size(); ++f) {
+    const optics::RayFan& fan = fans.fans[f];
+    const int fanIndex = static_cast<int>(f);
+    if (fan.atOtherWavelengths.empty()) {
+      addRays(fan.rays, palette::kFieldColours[f % kColours], fanIndex, 0.0);
+    } else {
+      // d first, then the others from the longest wavelength to the shortest: the lines
+      // coincide until the glass parts them, so blue (which the glass bends most) shows on top
+      // along the whole path and the yellow and red appear where the colours separate, toward
+      // the film (zoom in there to see the focus spread).
+      addRays(fan.rays, fraunhoferLineColour(fans.wavelengthNm), fanIndex, fans.wavelengthNm);
+      std::vector<const optics::FanAtWavelength*> others;
+      for (const optics::FanAtWavelength& other : fan.atOtherWavelengths) others.push_back(&other);
+      std::sort(others.begin(), others.end(),
+                [](const auto* a, const auto* b) { return a->wavelengthNm > b->wavelengthNm; });
+      for (const optics::FanAtWavelength* other : others) {
+        addRays(other->rays, fraunhoferLineColour(other->wavelengthNm), fanIndex,
+                other->wavelengthNm);
+      }
     }
     if (fan.chief) {
       Polyline chief = rayLine(*fan.chief, palette::kChiefRay, 1.2f, DrawingPart::ChiefRay);

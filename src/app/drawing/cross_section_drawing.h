@@ -28,7 +28,10 @@ struct Polyline {
   bool closed = false;
   bool dashed = false;
   DrawingPart part = DrawingPart::GlassEdge;
-  int fanIndex = -1;     // a fan's ray: which fan (its field), for the colour
+  int fanIndex = -1;  // a fan's ray: which fan (its field), for the colour
+  // A colour fan's ray (FanSettings::colourFans): the Fraunhofer line it was traced at, which
+  // gives its colour instead of the field; 0 for the field-coloured rays.
+  double wavelengthNm = 0;
   bool blocked = false;  // a ray that does not reach the film
 };
 
@@ -72,13 +75,24 @@ inline Colour stoppingSurfaceColour(int surface) {
   return kStoppingSurfaceColours[((surface % kCount) + kCount) % kCount];
 }
 inline constexpr Colour kMarginalRay{90, 230, 240, 255};
+// Colour fans: each Fraunhofer line in a colour near its own (F 486 nm blue, d 588 nm yellow,
+// C 656 nm red), bright enough on the dark canvas.
+inline constexpr Colour kLineF{90, 150, 255, 255};
+inline constexpr Colour kLineD{245, 215, 60, 255};
+inline constexpr Colour kLineC{255, 75, 65, 255};
 }  // namespace palette
+
+// The colour of a colour fan's ray at `wavelengthNm`: the nearest of F, d and C.
+Colour fraunhoferLineColour(double wavelengthNm);
 
 // filmHalfDiagonalMm: half the film diagonal, drawn as the film plane's extent.
 CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalfDiagonalMm);
 
 // Adds the fans' rays: each ends at the film, or at the surface that blocked it (blocked rays are
 // fainter, and left out when showBlocked is false). Chief rays dashed, the marginal ray cyan.
+// Fans traced at other wavelengths too (RayFan::atOtherWavelengths) are drawn by wavelength: every
+// ray, the lens's own d line's included, in its Fraunhofer line's colour: d first, then the
+// others from red to blue.
 void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked);
 
 // Adds a film point's bundle (optics/film_point_bundle.h) in place of the fans: rays that reach

@@ -20,7 +20,10 @@ SlidePalette slidePalette(SlideTheme theme) {
                palette::kMarginalRay,
                {232, 232, 238, 255},
                {150, 150, 162, 255},
-               {}};
+               {},
+               palette::kLineF,
+               palette::kLineD,
+               palette::kLineC};
     colours.fans.assign(std::begin(palette::kFieldColours), std::end(palette::kFieldColours));
     return colours;
   }
@@ -36,9 +39,20 @@ SlidePalette slidePalette(SlideTheme theme) {
              {0, 125, 145, 255},
              {20, 20, 26, 255},
              {85, 85, 96, 255},
-             {}};
+             {},
+             // F, d and C darkened for white, as the fields' colours.
+             {20, 80, 215, 255},
+             {170, 130, 0, 255},
+             {205, 30, 30, 255}};
   colours.fans = {{0, 135, 60, 255}, {205, 100, 0, 255}, {180, 30, 140, 255}, {30, 85, 200, 255}};
   return colours;
+}
+
+Colour SlidePalette::lineColour(double wavelengthNm) const {
+  const Colour nearest = fraunhoferLineColour(wavelengthNm);
+  if (nearest.r == palette::kLineF.r && nearest.g == palette::kLineF.g) return lineF;
+  if (nearest.r == palette::kLineD.r && nearest.g == palette::kLineD.g) return lineD;
+  return lineC;
 }
 
 double roundScaleBarLengthMm(double maxMm) {
@@ -94,6 +108,8 @@ Colour colourOf(const Polyline& line, const SlidePalette& colours) {
       return colours.film;
     case DrawingPart::Ray:
       // Blocked rays keep the panel's fainter alpha.
+      if (line.wavelengthNm > 0)
+        return withAlpha(colours.lineColour(line.wavelengthNm), line.colour.a);
       return withAlpha(
           colours.fans[static_cast<std::size_t>(std::max(0, line.fanIndex)) % colours.fans.size()],
           line.colour.a);
@@ -215,10 +231,20 @@ SlidePicture layoutSlide(const CrossSectionDrawing& drawing, const optics::LensO
     legend.push_back(
         {text("Fields:", sizes.textPx, colours.mutedText, "legend"), false, false, {}});
     for (const SlideLegendField& field : caption.fields) {
+      if (!caption.lines.empty()) {
+        // Rays coloured by wavelength: the fields are named without a swatch.
+        legend.push_back(
+            {text(field.text, sizes.textPx, colours.text, "legend-field"), false, false, {}});
+        continue;
+      }
       const Colour colour =
           colours.fans[static_cast<std::size_t>(std::max(0, field.fanIndex)) % colours.fans.size()];
       legend.push_back(
           {text(field.text, sizes.textPx, colour, "legend-field"), true, false, colour});
+    }
+    for (const SlideLegendLine& line : caption.lines) {
+      const Colour colour = colours.lineColour(line.wavelengthNm);
+      legend.push_back({text(line.text, sizes.textPx, colour, "legend-line"), true, false, colour});
     }
     legend.push_back(
         {text("chief ray", sizes.textPx, colours.text, "legend"), true, true, colours.chiefRay});

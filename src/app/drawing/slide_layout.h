@@ -23,7 +23,9 @@ enum class SlideTheme { Light, Dark };
 struct SlidePalette {
   Colour background, glassFill, glassEdge, stop, axis, film, chiefRay, marginalRay;
   Colour text, mutedText;
-  std::vector<Colour> fans;  // one per field position, as the panel's
+  std::vector<Colour> fans;                      // one per field position, as the panel's
+  Colour lineF, lineD, lineC;                    // colour fans' rays (FanSettings::colourFans)
+  Colour lineColour(double wavelengthNm) const;  // the nearest of the three
 };
 SlidePalette slidePalette(SlideTheme theme);
 
@@ -44,10 +46,19 @@ struct SlideLegendField {
 };
 
 // What the picture says besides the drawing.
+// A colour fan's line in the legend: "F 486 nm" in its colour.
+struct SlideLegendLine {
+  double wavelengthNm = 0;
+  std::string text;
+};
+
 struct SlideCaption {
   std::string title;     // the lens's name
   std::string subtitle;  // "f/2.0302 · EFL 50.36 mm · object at infinity"
   std::vector<SlideLegendField> fields;
+  // With colour fans: their lines, and the fields then listed without colours (the rays are
+  // coloured by wavelength, not by field).
+  std::vector<SlideLegendLine> lines;
 };
 
 // Text widths in pixels for a font size in pixels (ImGui's convention: the size is the height

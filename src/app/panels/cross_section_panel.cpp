@@ -116,6 +116,14 @@ void drawFanControls(ViewerState& state) {
   row.next(px(80) + ImGui::CalcTextSize("rays").x + ImGui::GetStyle().ItemInnerSpacing.x);
   ImGui::SetNextItemWidth(px(80));
   ImGui::SliderInt("rays", &fans.raysPerFan, 3, 41);
+  row.next(WrapRow::checkboxWidth("F, d, C"));
+  ImGui::Checkbox("F, d, C", &fans.colourFans);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Each fan also at the F (486 nm) and C (656 nm) lines: the same incoming rays, each in\n"
+        "its line's colour, so the lens's colour shows where they meet the film (longitudinal\n"
+        "colour on the axis, lateral colour off it). Needs V_d in the lens table.");
+  }
   // The legend: one colour per field position.
   WrapRow legendRow;
   const auto legend = [&](Colour colour, const char* text) {
@@ -155,6 +163,15 @@ void drawFanControls(ViewerState& state) {
     ImGui::PopTextWrapPos();
     return;
   }
+  const bool byWavelength =
+      !state.rayFans.fans.empty() && !state.rayFans.fans.front().atOtherWavelengths.empty();
+  if (byWavelength) {
+    legend(palette::kLineF, "F 486 nm");
+    legend(palette::kLineD, "d 588 nm");
+    legend(palette::kLineC, "C 656 nm");
+  } else if (fans.colourFans && state.lensSystemIsCurrent) {
+    legend(palette::kAxis, "no glass has V_d: one colour for every wavelength");
+  }
   legendRow.next(ImGui::CalcTextSize("field:").x);
   ImGui::TextDisabled("field:");
   // Each fan's fraction of the film's half diagonal, with its real field angle (or object
@@ -175,7 +192,13 @@ void drawFanControls(ViewerState& state) {
     } else {
       std::snprintf(text, sizeof text, "%s", kFractions[i]);
     }
-    legend(palette::kFieldColours[i], text);
+    if (byWavelength) {
+      // The rays are coloured by wavelength: the fields are named, not coloured.
+      legendRow.next(ImGui::CalcTextSize(text).x);
+      ImGui::TextDisabled("%s", text);
+    } else {
+      legend(palette::kFieldColours[i], text);
+    }
   }
   legend(palette::kChiefRay, "chief (dashed)");
   legend(palette::kMarginalRay, "marginal");

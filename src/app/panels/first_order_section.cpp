@@ -145,6 +145,7 @@ void updateLensFigures(ViewerState& state) {
   state.lensFigures.shown = figures;
   state.lensFigures.shownInFrame = state.frameNumber;
   state.inFocusText = figures->inFocusText;
+  state.colourFocusText = figures->colourFocusText;
   // "Focus at" shows the distance actually in focus.
   if (figures->inFocusMm && figures->lens == state.lensSystem) {
     state.focusDistanceInputMm = *figures->inFocusMm;
@@ -223,6 +224,13 @@ void drawFirstOrderSection(ViewerState& state) {
       ImGui::SetTooltip(
           "The widest full field at which no ray that the aperture limiting the axial beam\n"
           "admits is blocked by another (as `lenslab info` reports it).");
+    }
+    textRow("Colour focus F-C", state.colourFocusText);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "The chromatic focal shift: the paraxial image of an object at infinity at the F line\n"
+          "(486.13 nm) minus at the C line (656.27 nm), along the light (as `lenslab info` and\n"
+          "the Colour panel report it).");
     }
     textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
     textRow("In focus", state.inFocusText);

@@ -24,12 +24,6 @@ std::optional<double> heightOnFilmMm(const LensSystem& lens, const LensRay& ray)
 
 }  // namespace
 
-bool lensHasDispersion(const Prescription& prescription) {
-  for (const Surface& s : prescription.surfaces)
-    if (s.abbeD && *s.abbeD > 0.0 && s.mediumIndexD() > 1.0) return true;
-  return false;
-}
-
 std::optional<ChromaticFocalShift> chromaticFocalShift(
     const LensSystem& lens, const std::optional<double>& objectDistanceFromFilmMm, int points,
     double firstNm, double lastNm, std::string* whyNot) {

@@ -19,12 +19,10 @@
 #include <vector>
 
 #include "optics/analysis/field_point.h"
+#include "optics/glass.h"  // lensHasDispersion
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
-
-// True when some medium of the lens has an Abbe number (and an index above 1).
-bool lensHasDispersion(const Prescription& prescription);
 
 struct FocalShiftPoint {
   double wavelengthNm = 0;
