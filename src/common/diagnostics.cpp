@@ -36,7 +36,67 @@ void Diagnostics::note(const SourceLocation& where, std::string message) {
   add({Severity::Note, where, std::move(message)});
 }
 
+namespace {
+
+// A quote that opens a quoted token: at the start or after a space or an opening bracket, so
+// that the apostrophe of "the lens's rim" or "don't" is not taken for one.
+bool opensQuote(const std::string& text, std::size_t at) {
+  if (text[at] != '\'') return false;
+  if (at == 0) return true;
+  const char before = text[at - 1];
+  return before == ' ' || before == '(' || before == '[' || before == '{' || before == '=' ||
+         before == ':' || before == ',' || before == '\n' || before == '\t';
+}
+
+// A quote that closes one: at the end or before a space or punctuation.
+bool closesQuote(const std::string& text, std::size_t at) {
+  if (text[at] != '\'') return false;
+  if (at + 1 == text.size()) return true;
+  const char after = text[at + 1];
+  return after == ' ' || after == '.' || after == ',' || after == ';' || after == ':' ||
+         after == ')' || after == ']' || after == '}' || after == '!' || after == '?' ||
+         after == '\n' || after == '\t';
+}
+
+}  // namespace
+
+std::string abbreviateMessage(std::string message) {
+  // Quick exit for the usual short message.
+  if (message.size() <= kMaxQuotedTokenChars) return message;
+  std::string out;
+  std::size_t at = 0;
+  while (at < message.size()) {
+    std::size_t open = at;
+    while (open < message.size() && !opensQuote(message, open)) ++open;
+    if (open >= message.size()) break;
+    std::size_t close = open + 1;
+    while (close < message.size() && !closesQuote(message, close)) ++close;
+    // An unclosed quote runs to the end of the message (the token was cut or is the rest).
+    const bool closed = close < message.size();
+    const std::size_t length = close - open - 1;
+    out.append(message, at, open + 1 - at);
+    if (length > kMaxQuotedTokenChars) {
+      out.append(message, open + 1, kQuotedTokenHeadChars);
+      out += "...";
+      if (closed) out += '\'';
+      out += " (" + std::to_string(length) + " characters)";
+    } else {
+      out.append(message, open + 1, length);
+      if (closed) out += '\'';
+    }
+    at = closed ? close + 1 : message.size();
+  }
+  if (at < message.size()) out.append(message, at, std::string::npos);
+  if (out.size() > kMaxMessageChars) {
+    const std::size_t full = out.size();
+    out.resize(kMaxMessageChars);
+    out += "... (message cut: " + std::to_string(full) + " characters)";
+  }
+  return out;
+}
+
 void Diagnostics::add(Diagnostic diagnostic) {
+  diagnostic.message = abbreviateMessage(std::move(diagnostic.message));
   if (diagnostic.severity == Severity::Error) ++errorCount_;
   items_.push_back(std::move(diagnostic));
 }

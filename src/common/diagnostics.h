@@ -5,6 +5,7 @@
 // The types live in namespace lenslab itself, not lenslab::common, so that code in any of the
 // libraries' namespaces names them unqualified.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,16 @@ struct Diagnostic {
   // ("warning:" and "note:" likewise). Every place that shows a diagnostic prints this.
   std::string format() const;
 };
+
+// A message fit to print whatever the input held: each quoted token ('...') longer than
+// kMaxQuotedTokenChars keeps its first kQuotedTokenHeadChars characters, then "..." and its length
+// ("'1.5555...' (10000002 characters)"), and a message still longer than kMaxMessageChars is cut
+// there with its length. A hostile file's 10-million-digit number must not become 10 MB of
+// error text. Diagnostics applies it to every message it collects.
+inline constexpr std::size_t kMaxQuotedTokenChars = 64;
+inline constexpr std::size_t kQuotedTokenHeadChars = 40;
+inline constexpr std::size_t kMaxMessageChars = 4096;
+std::string abbreviateMessage(std::string message);
 
 // Collects diagnostics in the order they were reported.
 class Diagnostics {

@@ -4,6 +4,7 @@
 // (see unused_parameters.h), and marks for parameters that are read but not honoured, with what
 // is done instead.
 
+#include <cstddef>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
@@ -20,6 +21,10 @@ struct Param {
   std::vector<std::string> strings;  // string, texture and bool values
   SourceLocation location;
   mutable bool used = false;
+  // How many values the reader that used it takes (1 for a float, 3 for a colour; 0: any number,
+  // a list): a parameter given more is an error (3 million numbers for a sphere's radius).
+  mutable std::size_t takesValues = 0;
+  mutable bool readAsList = false;  // some reader took all its values (getNumbers): no limit
   // Non-empty when a consumer read the parameter but cannot honour it: what it does instead.
   mutable std::string substitute;
 };
@@ -53,7 +58,8 @@ class ParamSet {
 
   // What the report calls the directive the parameters belong to, e.g. `Film "image"`.
   std::string owner;
-  // One warning per parameter nobody asked for, and per parameter marked unsupported.
+  // One warning per parameter nobody asked for, and per parameter marked unsupported; an error
+  // per parameter given more values than its reader takes.
   void reportUnused(Diagnostics& diagnostics) const;
   const std::vector<Param>& items() const { return items_; }
 

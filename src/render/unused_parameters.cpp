@@ -20,6 +20,7 @@ void reportUnusedParameters(const SceneDescription& description, Diagnostics& di
 
   Diagnostics found;
   for (const ParamSet* set : sets) set->reportUnused(found);
+  // Warnings for parameters nothing uses, errors for ones given more values than they take.
   std::vector<Diagnostic> warnings = found.all();
   // Named materials are stored in the order they are defined, but a file's directives come from
   // several lists: sort so that the report reads in file order.
@@ -27,7 +28,7 @@ void reportUnusedParameters(const SceneDescription& description, Diagnostics& di
     return std::tie(a.location.file, a.location.line, a.location.column) <
            std::tie(b.location.file, b.location.line, b.location.column);
   });
-  for (const Diagnostic& warning : warnings) diagnostics.warning(warning.location, warning.message);
+  for (const Diagnostic& warning : warnings) diagnostics.add(warning);
 }
 
 }  // namespace lenslab::render

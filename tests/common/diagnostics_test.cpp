@@ -61,3 +61,33 @@ TEST(Diagnostics, AppendKeepsTheOrderAndTheErrors) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Hostile input (issue 24): a 10-million-digit number quoted in an error becomes its first 40
+// characters and its length, not 10 MB of error text; short tokens, paths and the apostrophes
+// of English words are left alone.
+TEST(Diagnostics, LongQuotedTokensAreShortenedWithTheirLength) {
+  const std::string digits = "1" + std::string(10'000'000, '5');
+  Diagnostics collected;
+  collected.error({"scene.pbrt", 7, 32}, "malformed number '" + digits + "' (expected a number)");
+  const std::string& message = collected.all().front().message;
+  EXPECT_EQ(message, "malformed number '" + digits.substr(0, 40) +
+                         "...' (10000001 characters) (expected a number)");
+  // An unclosed quote (the token runs to the end) is shortened too.
+  EXPECT_EQ(abbreviateMessage("unknown directive '" + std::string(100, 'x')),
+            "unknown directive '" + std::string(40, 'x') + "... (100 characters)");
+  // Left alone: a token of 64 characters, possessives, a long message without quotes.
+  const std::string token64(64, 'a');
+  const std::string plain = "the lens's rim at surface 3 is wider than the file's 'inf' radius '" +
+                            token64 + "' by far, don't you think";
+  EXPECT_EQ(abbreviateMessage(plain), plain);
+  // Past 4096 characters a message is cut, with its length.
+  const std::string words(5000, 'w');
+  const std::string cut = abbreviateMessage(words);
+  EXPECT_EQ(cut, words.substr(0, 4096) + "... (message cut: 5000 characters)");
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -21,11 +21,18 @@ namespace {
 
 constexpr float kInfinity = INFINITY;
 
+// `text` is a whole scene, or one up to the end of its world block (WorldEnd is then added).
 std::shared_ptr<const Scene> build(const std::string& text, BuildOptions options = {}) {
+  const std::string whole = text.find("WorldEnd") == std::string::npos ? text + "WorldEnd\n" : text;
   ParseResult parsed =
-      parsePbrtText(text, "flat.pbrt", std::string(LENSLAB_SOURCE_DIR) + "/scenes");
-  if (!parsed.scene) return nullptr;
-  return buildScene(*parsed.scene, options).scene;
+      parsePbrtText(whole, "flat.pbrt", std::string(LENSLAB_SOURCE_DIR) + "/scenes");
+  if (!parsed.scene) {
+    ADD_FAILURE() << parsed.diagnostics.formatAll();
+    return nullptr;
+  }
+  BuildResult built = buildScene(*parsed.scene, options);
+  if (!built.scene) ADD_FAILURE() << built.diagnostics.formatAll();
+  return built.scene;
 }
 
 // Every kind of primitive the flat path handles, rotated, scaled (also mirrored) and partial:

@@ -153,7 +153,7 @@ TEST(PbrtParser, DegenerateMeshesAreReported) {
 
   const auto flat = parse(
       "WorldBegin\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 2 0 0 0 1 0] "
-      "\"integer indices\" [0 1 2 0 1 3]\n");
+      "\"integer indices\" [0 1 2 0 1 3]\nWorldEnd\n");
   ASSERT_TRUE(flat.scene) << allMessages(flat);
   EXPECT_NE(allMessages(flat).find("test.pbrt:2:7: warning: 1 zero-area triangle(s)"),
             std::string::npos)
@@ -206,7 +206,7 @@ TEST(PbrtParser, ReadsAsciiAndBinaryPly) {
   writeFile(directory / "binary.ply", binary);
   writeFile(directory / "scene.pbrt",
             "WorldBegin\nShape \"plymesh\" \"string filename\" \"ascii.ply\"\n"
-            "Shape \"plymesh\" \"string filename\" \"binary.ply\"\n");
+            "Shape \"plymesh\" \"string filename\" \"binary.ply\"\nWorldEnd\n");
   const auto result = parsePbrtFile(directory / "scene.pbrt");
   ASSERT_TRUE(result.scene) << allMessages(result);
   ASSERT_EQ(result.scene->shapes.size(), 2u);

@@ -222,12 +222,15 @@ TEST(SceneInput, StructureErrorsAreReported) {
   expectError("WorldBegin\nWorldBegin\n", "test.pbrt:2:1: error: a second WorldBegin");
 }
 
-TEST(SceneInput, UnfinishedFilesWarn) {
-  expectWarning("WorldBegin\nShape \"sphere\"\n",
-                "test.pbrt:3:1: warning: missing WorldEnd at the end of the file");
-  expectWarning("WorldBegin\nAttributeBegin\n  AttributeBegin\nShape \"sphere\"\n",
-                "test.pbrt:5:1: warning: end of file with 2 unclosed block(s); the innermost is "
-                "the AttributeBegin at test.pbrt:3:3");
+TEST(SceneInput, UnfinishedFilesWarnOrFail) {
+  // A file that ends inside the world block was cut short: an error (issue 24).
+  expectError("WorldBegin\nShape \"sphere\"\n",
+              "test.pbrt:3:1: error: missing WorldEnd at the end of the file: it ends inside the "
+              "world block (was it cut short?)");
+  // Cut short inside blocks: the blocks are named too.
+  expectError("WorldBegin\nAttributeBegin\n  AttributeBegin\nShape \"sphere\"\n",
+              "test.pbrt:5:1: warning: end of file with 2 unclosed block(s); the innermost is "
+              "the AttributeBegin at test.pbrt:3:3");
   expectWarning("WorldBegin\nAttributeBegin\nWorldEnd\n",
                 "test.pbrt:3:1: warning: WorldEnd with 1 unclosed block(s); the innermost is the "
                 "AttributeBegin at test.pbrt:2:1");

@@ -274,3 +274,50 @@ TEST(UnusedParameters, TheCourseScenesUseEverythingTheySay) {
 
 }  // namespace
 }  // namespace lenslab::render
+
+namespace lenslab::render {
+namespace {
+
+// A parameter given more values than its reader takes is an error at the parameter (issue 24:
+// 3 million numbers for a sphere's radius rendered without a word); lists (a mesh's points, a
+// colour's three numbers, one grey value for a colour) stay fine.
+TEST(ParameterCounts, MoreValuesThanTheParameterTakesIsAnError) {
+  const auto directory = lenslab::testing::makeTestDirectory("parameter-counts");
+  const std::string head =
+      "Camera \"perspective\"\nFilm \"image\" \"integer xresolution\" 8 "
+      "\"integer yresolution\" 8\nWorldBegin\nLightSource \"point\" \"rgb I\" [1 1 1]\n";
+  std::string many = "1";
+  for (int i = 0; i < 3000; ++i) many += " 1";
+  const auto radius =
+      writeFile(directory / "radius.pbrt",
+                head + "Shape \"sphere\" \"float radius\" [" + many + "]\nWorldEnd\n");
+  const std::string radiusMessages = parseAndBuild(radius);
+  EXPECT_NE(radiusMessages.find("radius.pbrt:5:16: error: parameter \"float radius\" of Shape "
+                                "\"sphere\" takes 1 value, but 3001 are given"),
+            std::string::npos)
+      << radiusMessages;
+  EXPECT_NE(radiusMessages.find("(not built)"), std::string::npos) << radiusMessages;
+
+  const auto colour = writeFile(
+      directory / "colour.pbrt",
+      head + "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5 0.5]\nShape \"sphere\"\nWorldEnd\n");
+  const std::string colourMessages = parseAndBuild(colour);
+  // A colour's count is checked as it is parsed.
+  EXPECT_NE(colourMessages.find("colour.pbrt:5:18: error: \"rgb Kd\" needs r g b (three numbers), "
+                                "found 4"),
+            std::string::npos)
+      << colourMessages;
+
+  const auto fine = writeFile(
+      directory / "fine.pbrt",
+      head +
+          "Material \"matte\" \"rgb Kd\" [0.5]\nShape \"trianglemesh\" \"integer indices\" "
+          "[0 1 2] \"point P\" [0 0 0 1 0 0 0 1 0]\nShape \"sphere\" \"float radius\" 2\n"
+          "WorldEnd\n");
+  const std::string fineMessages = parseAndBuild(fine);
+  EXPECT_EQ(fineMessages.find("error"), std::string::npos) << fineMessages;
+  EXPECT_EQ(fineMessages.find("(not built)"), std::string::npos) << fineMessages;
+}
+
+}  // namespace
+}  // namespace lenslab::render

@@ -66,10 +66,13 @@ void ParserState::warnOpenBlocks(const SourceLocation& at, const std::string& wh
 
 void ParserState::endOfScene(const SourceLocation& at) {
   warnOpenBlocks(at, "end of file");
+  // An error, not a warning: a file that stops inside the world block was most likely cut short
+  // (a copy or a download that did not finish), and rendering what is left of it would pass a
+  // broken scene off as a whole one.
   if (inWorld && !worldEnded) {
-    diagnostics.warning(at,
-                        "missing WorldEnd at the end of the file; the scene is used as "
-                        "it is");
+    diagnostics.error(at,
+                      "missing WorldEnd at the end of the file: it ends inside the world block "
+                      "(was it cut short?)");
   }
 }
 
