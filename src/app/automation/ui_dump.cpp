@@ -53,6 +53,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"film_diagonal_mm", state.filmDiagonalMm},
       {"field_fractions", state.fanSettings.fieldFractions},
       {"stop_diameter_mm", stopDiameter},
+      {"aperture", lens.stopShape.spec()},
       {"focus_at_text", state.focusAtShown},
       {"in_focus_text", state.inFocusText},
       {"preview",
