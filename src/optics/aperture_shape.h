@@ -139,6 +139,12 @@ class StopShapeTest {
   ApertureShape::Kind kind() const { return kind_; }
   const std::vector<Edge>& edges() const { return edges_; }
   bool maskContains(double xMm, double yMm) const;
+  // The mask's pixels and mapping, for the batch trace's branch-free lookup: column
+  // (x + R) * pixelsPerMm, row (R - y) * pixelsPerMm.
+  const std::uint8_t* maskPixels() const { return mask_ ? mask_->open.data() : nullptr; }
+  int maskSizePx() const { return mask_ ? mask_->sizePx : 0; }
+  double pixelsPerMm() const { return pixelsPerMm_; }
+  double radiusMm() const { return radiusMm_; }
 
  private:
   static bool edgeContains(const Edge& e, double x, double y) {

@@ -32,8 +32,18 @@ __attribute__((always_inline)) inline void applyStopShape(const StopShapeTest& s
                                                           std::uint8_t* __restrict alive,
                                                           std::size_t n) {
   if (shape.kind() == ApertureShape::Kind::Image) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (alive[i]) alive[i] = shape.maskContains(ox[i], oy[i]) ? 1 : 0;
+    // Without branches: a hit outside the image looks up pixel 0 and is masked out.
+    const std::uint8_t* __restrict pixels = shape.maskPixels();
+    const int size = shape.maskSizePx();
+    const float sizeF = static_cast<float>(size);
+    const float scale = static_cast<float>(shape.pixelsPerMm());
+    const float radius = static_cast<float>(shape.radiusMm());
+    for (std::size_t i = 0; i < n; ++i) {
+      const float col = (ox[i] + radius) * scale, row = (radius - oy[i]) * scale;
+      const int inside = (col >= 0.0f) & (row >= 0.0f) & (col < sizeF) & (row < sizeF);
+      const int index = inside ? static_cast<int>(row) * size + static_cast<int>(col) : 0;
+      alive[i] = alive[i] & static_cast<std::uint8_t>(inside & pixels[index]);
+    }
     return;
   }
   for (const StopShapeTest::Edge& e : shape.edges()) {

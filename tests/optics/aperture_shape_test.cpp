@@ -13,6 +13,7 @@
 
 #include "optics/aperture_shape.h"
 #include "optics/exit_pupil.h"
+#include "optics/lens_outline.h"
 #include "test_lenses.h"
 
 namespace lenslab::optics {
@@ -305,6 +306,26 @@ TEST(ShapedStop, TableContainsEveryPassingRayOfAShapedStop) {
     EXPECT_GT(passing, 50);
     EXPECT_EQ(outside, 0) << shape.spec();
   }
+}
+
+TEST(ShapedStop, TheOutlineCutsTheSectionAtTheBladesAndDrawsTheIrisFaceOn) {
+  Prescription p = testing::loadPrescription(testing::bundledLensDir() / "dgauss-50mm.dat");
+  ASSERT_FALSE(p.surfaces.empty());
+  const double radiusMm = 0.5 * p.surfaces[*p.stopIndex()].apertureDiameterMm;
+  const LensOutline round = computeLensOutline(p);
+  ASSERT_TRUE(round.stop);
+  EXPECT_EQ(round.stop->openingUpMm, radiusMm);
+  EXPECT_TRUE(round.stop->shapeOutlineMm.empty());
+  // A square with edges along x and y meets the y axis at R / sqrt(2); a square standing on a
+  // corner at R.
+  p.stopShape = blades(4, 0.0, 45.0);
+  const LensOutline square = computeLensOutline(p);
+  EXPECT_NEAR(square.stop->openingUpMm, radiusMm / std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(square.stop->openingDownMm, radiusMm / std::sqrt(2.0), 1e-9);
+  ASSERT_EQ(square.stop->shapeOutlineMm.size(), 5u);
+  EXPECT_NEAR(glm::length(square.stop->shapeOutlineMm[0]), radiusMm, 1e-9);
+  p.stopShape = blades(4, 0.0, 90.0);
+  EXPECT_NEAR(computeLensOutline(p).stop->openingUpMm, radiusMm, 1e-9);
 }
 
 TEST(ShapedStop, WithStopShapeRefusesABladeCountOutOfRange) {
