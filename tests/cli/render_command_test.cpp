@@ -308,7 +308,10 @@ TEST(RenderCommandAperture, HonoursTheLensFilesShapeAndTheScenesAperture) {
         << (aperture.empty() ? "" : " \"string aperture\" \"" + aperture + "\"")
         << "\nFilm \"image\" \"integer xresolution\" [8] \"integer yresolution\" [8]"
            " \"float diagonal\" [2]\n"
-           "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\nWorldEnd\n";
+           "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+           // A shape behind the camera: a scene needs one.
+           "AttributeBegin\nTranslate 0 0 -50\nShape \"sphere\" \"float radius\" [1]\n"
+           "AttributeEnd\nWorldEnd\n";
     return path;
   };
   auto passFraction = [&](const std::filesystem::path& path) {
