@@ -201,6 +201,9 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
   }
   const CommandTicket ticket = state_.lens.issue(std::move(opening));
   state_.log.info("Opened lens " + path);
+  // What the lens file could not honour (an aperture image: the stop stays a circle).
+  for (const Diagnostic& diagnostic : loaded.diagnostics.all())
+    state_.log.warning(diagnostic.format());
   if (!focus.message.empty()) state_.log.info(focus.message);
   return {std::nullopt, ticket};
 }

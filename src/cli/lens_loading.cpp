@@ -13,6 +13,8 @@ std::shared_ptr<const optics::LensSystem> loadLensOrReport(const std::string& pa
   if (!lens.ok()) {
     std::cerr << lens.diagnostics.formatAll() << "lenslab " << command << ": cannot use lens file "
               << path << "\n";
+  } else if (!lens.diagnostics.empty()) {
+    std::cerr << lens.diagnostics.formatAll();
   }
   return lens.system;
 }

@@ -20,7 +20,41 @@ namespace {
 struct SurfaceF {
   float vertexZ, curvature, radius, semiApertureSq, eta;
   bool refracts, flat;
+  // The stop's shape when it is not a circle (the hit is then also tested against it), else null.
+  const StopShapeTest* shape;
 };
+
+// A shaped stop, after the stop surface's own trace has put the hits in ox, oy: a pass over the
+// blades (each a branch-free test over the block, so it vectorizes), or a mask lookup per ray.
+__attribute__((always_inline)) inline void applyStopShape(const StopShapeTest& shape,
+                                                          const float* __restrict ox,
+                                                          const float* __restrict oy,
+                                                          std::uint8_t* __restrict alive,
+                                                          std::size_t n) {
+  if (shape.kind() == ApertureShape::Kind::Image) {
+    // Without branches: a hit outside the image looks up pixel 0 and is masked out.
+    const std::uint8_t* __restrict pixels = shape.maskPixels();
+    const int size = shape.maskSizePx();
+    const float sizeF = static_cast<float>(size);
+    const float scale = static_cast<float>(shape.pixelsPerMm());
+    const float radius = static_cast<float>(shape.radiusMm());
+    for (std::size_t i = 0; i < n; ++i) {
+      const float col = (ox[i] + radius) * scale, row = (radius - oy[i]) * scale;
+      const int inside = (col >= 0.0f) & (row >= 0.0f) & (col < sizeF) & (row < sizeF);
+      const int index = inside ? static_cast<int>(row) * size + static_cast<int>(col) : 0;
+      alive[i] = alive[i] & static_cast<std::uint8_t>(inside & pixels[index]);
+    }
+    return;
+  }
+  for (const StopShapeTest::Edge& e : shape.edges()) {
+    const float s = e.s, wx = e.wx, wy = e.wy, k = e.k;
+    for (std::size_t i = 0; i < n; ++i) {
+      const float x = ox[i], y = oy[i];
+      const int ok = s * (x * x + y * y) + wx * x + wy * y + k <= 0.0f;
+      alive[i] = alive[i] & static_cast<std::uint8_t>(ok);
+    }
+  }
+}
 
 // A plane z = vertexZ (the stop, flat refracting surfaces): one division, no square root.
 template <bool kRefracts>
@@ -131,6 +165,7 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
       } else {
         traceSurface<false>(s, ox, oy, oz, dx, dy, dz, alive, m);
       }
+      if (s.shape) applyStopShape(*s.shape, ox, oy, alive, m);
     }
   }
 }
@@ -206,7 +241,10 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) cons
                   static_cast<float>(clipRadiusSqMm2_[count - 1 - step]),
                   static_cast<float>(eta),
                   eta != 1.0,
-                  flat};
+                  flat,
+                  count - 1 - step == static_cast<int>(stopIndex_) && !stopTest_.isCircle()
+                      ? &stopTest_
+                      : nullptr};
   }
   if (!batchKernelAvailable(kernel) || kernel == BatchKernel::Auto) kernel = autoBatchKernel();
   if (kernel == BatchKernel::Avx512)

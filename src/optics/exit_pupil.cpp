@@ -277,7 +277,13 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     cosAt_[k] = std::cos(k * sectorAngle);
     sinAt_[k] = std::sin(k * sectorAngle);
   }
-  Probe probe{lens, planeZMm_};
+  // A shaped stop: the table bounds the pass region of the circle around the shape, which
+  // contains the shaped one's, so the estimator stays unbiased (rays outside the shape are
+  // blocked by the trace and count as black).
+  std::shared_ptr<const LensSystem> circumscribed;
+  if (!lens.stopShape().isCircle()) circumscribed = lens.withCircumscribedStop();
+  const LensSystem& bounded = circumscribed ? *circumscribed : lens;
+  Probe probe{bounded, planeZMm_};
   if (!(planeZMm_ > 0.0)) return;  // film at the rear vertex: nothing to tabulate
 
   // Image circle: the largest of 24 coarse radii where some ray passes, plus one step.
@@ -295,7 +301,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
 
   std::vector<RawBin> raw(radialBins);
   auto work = [&](int first, int stride) {
-    Probe own{lens, planeZMm_};  // each thread its own ray batch
+    Probe own{bounded, planeZMm_};  // each thread its own ray batch
     for (int j = first; j < radialBins; j += stride)
       raw[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_);
   };

@@ -19,7 +19,6 @@ class FilmPoint {
   FilmPoint(const LensSystem& lens, double imageHeightMm)
       : lens_(lens), point_(0.0, -imageHeightMm, 0.0), planeZ_(lens.rearVertexZ()) {
     searchRadiusMm_ = rearPlaneSearchRadiusMm(lens, imageHeightMm);
-    stopRadiusMm_ = lens.surfaces()[lens.stopIndex()].semiApertureMm;
     const double length = lens.frontVertexZ() - lens.rearVertexZ();
     startZMm_ = lens.frontVertexZ() + std::max(5.0, 0.25 * length);
   }
@@ -33,7 +32,7 @@ class FilmPoint {
   // The ray through (x, y) crosses the stop inside its opening, rims ignored.
   bool reachesStop(double x, double y) const {
     const auto at = traceFromFilmUnclipped(lens_, toPlane(x, y), lens_.stopIndex());
-    return at && std::hypot(at->origin.x, at->origin.y) <= stopRadiusMm_;
+    return at && lens_.insideStop({at->origin.x, at->origin.y});
   }
   // Where the ray through (x, y) crosses the stop plane, rims ignored.
   std::optional<glm::dvec2> onStop(double x, double y) const {
@@ -91,7 +90,7 @@ class FilmPoint {
   const LensSystem& lens_;
   glm::dvec3 point_;
   double planeZ_;
-  double searchRadiusMm_ = 0.0, stopRadiusMm_ = 0.0, startZMm_ = 0.0;
+  double searchRadiusMm_ = 0.0, startZMm_ = 0.0;
 };
 
 }  // namespace
@@ -179,6 +178,9 @@ FilmPointBundle traceFilmPointBundle(const LensSystem& lens, double imageHeightM
   // The edges of the rims that cut the bundle, on the stop: in each direction, where a ray first
   // leaves that rim's opening, out to the iris's edge.
   bundle.stopRadiusMm = lens.surfaces()[lens.stopIndex()].semiApertureMm;
+  if (!lens.stopShape().isCircle())
+    for (const glm::dvec2& p : lens.stopShape().outlineUnit())
+      bundle.stopOutlineMm.push_back(p * bundle.stopRadiusMm);
   for (const BundleShare& share : bundle.blocked) {
     if (share.surface == static_cast<int>(lens.stopIndex())) continue;
     FilmPointBundle::RimEdge edge{share.surface, {}};

@@ -42,6 +42,8 @@ struct FilmPointBundle {
   // part of it whose rays pass is the polygon `passingOnStop`; each surface that cuts the bundle
   // cuts it along its edge, drawn as `rimEdgesOnStop` (points where a ray grazes that rim).
   double stopRadiusMm = 0.0;
+  // A shaped stop's outline on the stop plane (closed; empty for the circle).
+  std::vector<glm::dvec2> stopOutlineMm;
   std::vector<glm::dvec2> passingOnStop;
   struct RimEdge {
     int surface = -1;

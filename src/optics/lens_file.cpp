@@ -6,7 +6,9 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "optics/lens_system.h"
 
@@ -82,6 +84,35 @@ std::size_t terminatorLength(std::string_view text, std::size_t i) {
   return i + 1 < text.size() && text[i + 1] == '\n' ? 2 : 1;
 }
 
+constexpr std::string_view kApertureKey = "lenslab aperture:";
+
+// Reads the spec after "# lenslab aperture:" into `shape`. Returns the column and message of a
+// malformed spec (an error); an image that cannot be used is a warning and leaves the circle.
+std::optional<std::pair<int, std::string>> readApertureLine(std::string_view spec,
+                                                            const std::string& fileName,
+                                                            ApertureShape& shape,
+                                                            Diagnostics& diagnostics, int line,
+                                                            int firstColumn) {
+  const ApertureSpecResult parsed = parseApertureSpec(spec);
+  if (!parsed.shape) return std::make_pair(firstColumn + parsed.column, parsed.error);
+  ApertureShape read = *parsed.shape;
+  if (read.kind == ApertureShape::Kind::Image) {
+    // Relative to the lens file's folder, as pbrt resolves the files a scene names.
+    std::filesystem::path imagePath(read.imageName);
+    if (imagePath.is_relative())
+      imagePath = std::filesystem::path(fileName).parent_path() / imagePath;
+    std::string error;
+    read.mask = loadApertureMask(imagePath.lexically_normal(), &error);
+    if (!read.mask) {
+      const int column = firstColumn + static_cast<int>(spec.find(read.imageName));
+      diagnostics.warning({fileName, line, column}, error + "; the circular stop is kept");
+      return std::nullopt;
+    }
+  }
+  shape = read;
+  return std::nullopt;
+}
+
 }  // namespace
 
 int LensFile::lineOfSurface(int surface) const {
@@ -122,6 +153,20 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
       if (ch == 0 || ((ch < 32 || ch == 127) && !isBlank(line[i]) && i < data.size()))
         return fail(lineNumber, static_cast<int>(i) + 1,
                     "unexpected control character (is this a binary file?)");
+    }
+    // lenslab's extension: "# lenslab aperture: SPEC" sets the stop's shape (lens_file.h).
+    if (hash != std::string_view::npos) {
+      std::size_t at = hash + 1;
+      while (at < line.size() && isBlank(line[at])) ++at;
+      if (line.substr(at, kApertureKey.size()) == kApertureKey) {
+        const std::size_t specAt = at + kApertureKey.size();
+        const std::string_view spec = line.substr(specAt);
+        if (const auto problem =
+                readApertureLine(spec, fileName, lens.prescription.stopShape, result.diagnostics,
+                                 lineNumber, static_cast<int>(specAt) + 1))
+          return fail(lineNumber, problem->first, problem->second);
+        continue;
+      }
     }
     if (hash != std::string_view::npos && !seenRow) {
       std::string_view comment = line.substr(hash + 1);
@@ -219,6 +264,8 @@ std::string formatLensText(const Prescription& prescription,
   std::string out;
   for (const std::string& comment : headerComments) out += "# " + comment + "\n";
   out += "# radius\tthickness\tn_d\taperture\t[V_d]\n";
+  if (!prescription.stopShape.isCircle())
+    out += "# " + std::string(kApertureKey) + " " + prescription.stopShape.spec() + "\n";
   for (const Surface& s : prescription.surfaces) {
     out += number(s.radiusMm) + '\t' + number(s.thicknessMm) + '\t' + number(s.indexD) + '\t' +
            number(s.apertureDiameterMm);

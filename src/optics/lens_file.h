@@ -2,6 +2,17 @@
 // Lens files in pbrt's format: one surface per row, "radius thickness n aperture-diameter", front
 // to rear, `#` starts a comment. lenslab also reads and writes an optional fifth column, V_d, and
 // `inf` as the radius of a flat refracting surface. Radius 0 is the aperture stop, n 0 means air.
+//
+// The stop's shape (aperture_shape.h) is a comment line, which pbrt ignores:
+//   # lenslab aperture: blades 6 curvature 0.5 rotation 15   (3..32 blades; curvature 0 straight
+//                                                             to 1 round, default 0; rotation of
+//                                                             the first corner from +x, degrees)
+//   # lenslab aperture: image iris.png                        (a square image, white = open,
+//                                                             relative to the lens file's folder)
+//   # lenslab aperture: circle                                (the default; not written)
+// anywhere in the file (the writer puts it after the header comments). A malformed line is an
+// error at its file:line:column; an image that is missing, unreadable, not square or all black
+// is a warning there, and the stop stays a circle.
 
 #include <filesystem>
 #include <optional>
@@ -27,7 +38,9 @@ struct LensFile {
 
 struct LensFileResult {
   std::optional<LensFile> lens;  // set only when the whole file is valid
-  Diagnostics diagnostics;       // the errors, at their file:line:column; none on success
+  // The errors, at their file:line:column (none on success); also warnings (an aperture image
+  // that cannot be used) on success.
+  Diagnostics diagnostics;
   bool ok() const { return lens.has_value(); }
 };
 

@@ -12,6 +12,7 @@ LoadedLens loadLens(const std::filesystem::path& path, double wavelengthNm) {
     return loaded;
   }
   loaded.file = std::move(*read.lens);
+  loaded.diagnostics = std::move(read.diagnostics);  // warnings: an unusable aperture image
   // What validation lets through can still fail to build (a wavelength out of range): that is
   // reported against the row it names, or the first row for the lens as a whole.
   BuildResult built = LensSystem::build(loaded.file.prescription, wavelengthNm);

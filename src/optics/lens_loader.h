@@ -18,7 +18,8 @@ struct LoadedLens {
   // or parsed.
   LensFile file;
   // Why the file cannot be used: read and parse errors where they are, validation and build
-  // errors at the row of the surface they name ("file:line:1"). Empty when `system` is set.
+  // errors at the row of the surface they name ("file:line:1"). When `system` is set, only
+  // warnings (an aperture image that cannot be used: the stop stays a circle).
   Diagnostics diagnostics;
   bool ok() const { return system != nullptr; }
 };

@@ -76,6 +76,24 @@ LensOutline computeLensOutline(const Prescription& lens, int segmentsPerSurface)
       stop.surface = i;
       stop.zMm = outline.vertexZMm[i];
       stop.apertureRadiusMm = semiApertureOf(surfaces[i]);
+      stop.openingUpMm = stop.openingDownMm = stop.apertureRadiusMm;
+      const ApertureShape& shape = lens.stopShape;
+      if (!shape.isCircle()) {
+        // Along the y axis out from the centre to the shape's edge, by bisection of its test.
+        auto opening = [&](double sign) {
+          double lo = 0.0, hi = shape.boundRadiusFactor();
+          if (!shape.containsUnit({0.0, 0.0})) return 0.0;
+          for (int step = 0; step < 40; ++step) {
+            const double mid = 0.5 * (lo + hi);
+            (shape.containsUnit({0.0, sign * mid}) ? lo : hi) = mid;
+          }
+          return lo * stop.apertureRadiusMm;
+        };
+        stop.openingUpMm = opening(1.0);
+        stop.openingDownMm = opening(-1.0);
+        for (const glm::dvec2& p : shape.outlineUnit())
+          stop.shapeOutlineMm.push_back(p * stop.apertureRadiusMm);
+      }
       outline.stop = stop;
       continue;
     }

@@ -10,6 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "optics/prescription.h"
 
 namespace lenslab::optics {
@@ -33,8 +35,13 @@ struct ElementOutline {
 struct StopOutline {
   std::size_t surface = 0;
   double zMm = 0;
-  double apertureRadiusMm = 0;  // the opening
+  double apertureRadiusMm = 0;  // the opening (the stop's semi-diameter)
   double outerRadiusMm = 0;     // where the drawn bar ends
+  // A shaped stop (aperture_shape.h): where its opening ends along +y and -y, the section's
+  // plane (the blades' edges there), and its outline face-on in mm (x, y), closed. For the
+  // circle both are apertureRadiusMm and the outline is empty.
+  double openingUpMm = 0, openingDownMm = 0;
+  std::vector<glm::dvec2> shapeOutlineMm;
 };
 
 struct LensOutline {

@@ -100,6 +100,12 @@ void LensSystem::place() {
     clipRadiusSqMm2_[k] = clips ? surfaces_[k].semiApertureMm * surfaces_[k].semiApertureMm
                                 : std::numeric_limits<double>::infinity();
   }
+  // A shaped stop clips at its bounding circle first (cheap, and what the exit-pupil table is
+  // built for), then by its shape.
+  const double stopRadiusMm = surfaces_[stopIndex_].semiApertureMm;
+  const double boundMm = stopRadiusMm * prescription_.stopShape.boundRadiusFactor();
+  clipRadiusSqMm2_[stopIndex_] = boundMm * boundMm;
+  stopTest_ = StopShapeTest(prescription_.stopShape, stopRadiusMm);
 }
 
 BuildResult LensSystem::build(const Prescription& prescription, double wavelengthNm) {
@@ -139,6 +145,25 @@ std::shared_ptr<const LensSystem> LensSystem::withApertureClipping(
   return std::make_shared<LensSystem>(Private{}, prescription_, wavelengthNm_, clipping);
 }
 
+std::shared_ptr<const LensSystem> LensSystem::withStopShape(const ApertureShape& shape) const {
+  if (shape.kind == ApertureShape::Kind::Blades &&
+      (shape.bladeCount < kMinApertureBlades || shape.bladeCount > kMaxApertureBlades ||
+       !(shape.curvature >= 0.0 && shape.curvature <= 1.0) || !std::isfinite(shape.rotationDeg)))
+    return nullptr;
+  if (shape.kind == ApertureShape::Kind::Image && (!shape.mask || shape.mask->sizePx <= 0))
+    return nullptr;
+  Prescription p = prescription_;
+  p.stopShape = shape;
+  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_, clipping_);
+}
+
+std::shared_ptr<const LensSystem> LensSystem::withCircumscribedStop() const {
+  Prescription p = prescription_;
+  p.surfaces[stopIndex_].apertureDiameterMm *= p.stopShape.boundRadiusFactor();
+  p.stopShape = ApertureShape{};
+  return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_, clipping_);
+}
+
 FirstOrderData LensSystem::firstOrderAt(double wavelengthNm) const {
   if (wavelengthNm == wavelengthNm_) return firstOrder_;
   return withWavelength(wavelengthNm)->firstOrder();
@@ -175,7 +200,9 @@ std::optional<LensRay> LensSystem::trace(LensRay ray, bool fromFilm, RayPath* pa
     }
     const glm::dvec3 hit = ray.origin + t * ray.direction;
     if (opticalPathMm) *opticalPathMm += t * (fromFilm ? s.indexRear : s.indexFront);
-    if (hit.x * hit.x + hit.y * hit.y > clipRadiusSqMm2_[k]) {
+    if (hit.x * hit.x + hit.y * hit.y > clipRadiusSqMm2_[k] ||
+        (k == static_cast<int>(stopIndex_) && !stopTest_.isCircle() &&
+         !stopTest_.contains(hit.x, hit.y))) {
       if constexpr (kRecord) {
         path->points.push_back(blockedEndPoint(s, ray, t));
         path->surfaceIndices.push_back(k);

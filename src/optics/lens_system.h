@@ -126,6 +126,19 @@ class LensSystem {
   // (semi-apertures, outlines) is unchanged.
   std::shared_ptr<const LensSystem> withApertureClipping(ApertureClipping clipping) const;
   ApertureClipping apertureClipping() const { return clipping_; }
+  // Same lens with another stop shape (aperture_shape.h); null when the shape is not usable (a
+  // blade count outside 3..32, an image shape without its mask).
+  std::shared_ptr<const LensSystem> withStopShape(const ApertureShape& shape) const;
+  const ApertureShape& stopShape() const { return prescription_.stopShape; }
+  // Whether a point of the stop plane (mm from the axis) is inside the stop's opening.
+  bool insideStop(glm::dvec2 pointMm) const {
+    return pointMm.x * pointMm.x + pointMm.y * pointMm.y <= clipRadiusSqMm2_[stopIndex_] &&
+           stopTest_.contains(pointMm.x, pointMm.y);
+  }
+  // The lens with the stop's shape replaced by the circle that circumscribes it (itself when the
+  // stop is a circle): the exit-pupil table bounds the pass region of this lens, which contains
+  // the shaped one's.
+  std::shared_ptr<const LensSystem> withCircumscribedStop() const;
 
   const Prescription& prescription() const { return prescription_; }
   const std::vector<SurfaceGeometry>& surfaces() const { return surfaces_; }
@@ -216,6 +229,8 @@ class LensSystem {
   // Squared radius beyond which surface k clips a ray: its semi-aperture, or infinity where
   // clipping_ leaves its rim out.
   std::vector<double> clipRadiusSqMm2_;
+  // The stop's shape at its radius; tested after the stop's clip radius (the shape's bound).
+  StopShapeTest stopTest_;
 
   mutable std::once_flag pupilOnce_;
   mutable std::unique_ptr<ExitPupilTable> pupil_;

@@ -8,6 +8,8 @@
 #include <optional>
 #include <vector>
 
+#include "optics/aperture_shape.h"
+
 namespace lenslab::optics {
 
 // Radius value of a flat refracting surface (a plane window, the flat back of a plano-convex
@@ -45,6 +47,9 @@ struct Surface {
 
 struct Prescription {
   std::vector<Surface> surfaces;
+  // The shape of the stop's opening (aperture_shape.h); its size is the stop row's aperture
+  // diameter. The circle by default.
+  ApertureShape stopShape;
 
   // Index of the aperture stop, if there is exactly one.
   std::optional<std::size_t> stopIndex() const;

@@ -75,6 +75,20 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
                                  " mm exceeds |radius| " + describe(std::abs(s.radiusMm)) + " mm"});
   }
   if (stops == 0) errors.push_back({-1, "the lens has no aperture stop (a row with radius 0)"});
+  const ApertureShape& shape = prescription.stopShape;
+  const int stopRow = prescription.stopIndex() ? static_cast<int>(*prescription.stopIndex()) : -1;
+  if (shape.kind == ApertureShape::Kind::Blades) {
+    if (shape.bladeCount < kMinApertureBlades || shape.bladeCount > kMaxApertureBlades)
+      errors.push_back({stopRow, "blade count " + std::to_string(shape.bladeCount) +
+                                     " is out of range (an iris has 3 to 32 blades)"});
+    if (!(shape.curvature >= 0.0 && shape.curvature <= 1.0))
+      errors.push_back({stopRow, "blade curvature " + describe(shape.curvature) +
+                                     " is out of range (0 straight to 1 round)"});
+    if (!std::isfinite(shape.rotationDeg))
+      errors.push_back({stopRow, "blade rotation must be a finite number of degrees"});
+  }
+  if (shape.kind == ApertureShape::Kind::Image && !shape.mask)
+    errors.push_back({stopRow, "the aperture image '" + shape.imageName + "' is not loaded"});
   if (stops > 1) {
     for (std::size_t i = 0, seen = 0; i < rows.size(); ++i)
       if (rows[i].isStop() && seen++ > 0)

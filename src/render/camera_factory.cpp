@@ -40,6 +40,38 @@ std::shared_ptr<const optics::LensSystem> focusAt(std::shared_ptr<const optics::
   return system->withFilmDistance(*focus.valueMm);
 }
 
+// pbrt-v4's "string aperture" on the lens's stop: a built-in shape or an image. One that cannot
+// be used (gaussian, an image missing, unreadable, not square or all black) is a warning, and
+// the lens keeps its own stop.
+std::shared_ptr<const optics::LensSystem> withSceneAperture(
+    std::shared_ptr<const optics::LensSystem> system, const CameraDescription& camera,
+    Diagnostics& diagnostics) {
+  if (camera.apertureName.empty()) return system;
+  std::string problem;
+  std::optional<optics::ApertureShape> shape;
+  if (camera.aperturePath.empty()) {
+    shape = optics::builtinPbrtAperture(camera.apertureName, &problem);
+  } else {
+    auto mask = optics::loadApertureMask(camera.aperturePath, &problem);
+    if (mask) {
+      shape.emplace();
+      shape->kind = optics::ApertureShape::Kind::Image;
+      shape->imageName = camera.aperturePath.string();
+      shape->mask = std::move(mask);
+    }
+  }
+  auto shaped = shape ? system->withStopShape(*shape) : nullptr;
+  if (!shaped) {
+    diagnostics.warning(
+        camera.apertureLocation,
+        (problem.empty() ? "aperture \"" + camera.apertureName + "\" is not usable" : problem) +
+            (problem.find("circular stop") == std::string::npos ? "; the lens's own stop is kept"
+                                                                : ""));
+    return system;
+  }
+  return shaped;
+}
+
 // The lens of a realistic camera, with the scene's stop and film distance or focus.
 std::shared_ptr<const optics::LensSystem> realisticLens(const SceneDescription& scene,
                                                         const CameraOverrides& overrides,
@@ -60,6 +92,7 @@ std::shared_ptr<const optics::LensSystem> realisticLens(const SceneDescription& 
       system = system->withStopDiameter(stopDiameterMm);
     }
   }
+  system = withSceneAperture(std::move(system), camera, diagnostics);
   if (camera.courseParameters) {
     // The course's pbrt-v2 camera: film distance given directly.
     const double filmDistanceMm = camera.filmDistanceMm;

@@ -39,6 +39,11 @@ struct CameraDescription {
   double filmDistanceMm = 0.0;
   std::optional<double> filmDiagonalMm;
   double focusDistance = 10.0;
+  // "realistic": pbrt-v4's "string aperture": a built-in name (square, pentagon, star, gaussian)
+  // as written, or an image file resolved against the scene file's folder; empty without one.
+  std::string apertureName;
+  std::filesystem::path aperturePath;  // set for an image file
+  SourceLocation apertureLocation;
 };
 
 struct FilmDescription {

@@ -60,7 +60,8 @@ class FakeHost : public ScriptHost {
   FakeHost() {
     lens.issue(ReplaceLens{optics::Prescription{{{40.0, 5.0, 1.5, std::nullopt, 20.0},
                                                  {0.0, 5.0, 1.0, std::nullopt, 10.0},
-                                                 {-40.0, 40.0, 1.0, std::nullopt, 20.0}}},
+                                                 {-40.0, 40.0, 1.0, std::nullopt, 20.0}},
+                                                optics::ApertureShape{}},
                            "",
                            {},
                            true});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -282,6 +283,54 @@ TEST(RenderCommandFalloff, NoCos4AndNoRimsFlattenTheDemoScene) {
   const auto physicalStats =
       nlohmann::json::parse(testing::readWholeFile(scratch / "physical.json"));
   EXPECT_EQ(physicalStats["falloff"], "cos4 on, rims on");
+}
+
+}  // namespace
+}  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// `lenslab render` honours a lens file's aperture line and a scene's "string aperture": the
+// share of camera rays that pass falls with the stop's area (the exit-pupil table is the circle
+// around the shape: a square inscribed in it keeps about 2/pi of the circle's rays, a pentagon
+// (5/2) sin 72 / pi = 0.76).
+TEST(RenderCommandAperture, HonoursTheLensFilesShapeAndTheScenesAperture) {
+  const auto scratch = testing::makeTestDirectory("render-cli-aperture");
+  const std::string rows = "50 5 1.5 20\n0 5 0 6\n-50 40 1 20\n";
+  std::ofstream(scratch / "round.dat") << rows;
+  std::ofstream(scratch / "square.dat") << "# lenslab aperture: blades 4 rotation 45\n" << rows;
+  auto scene = [&](const std::string& lens, const std::string& aperture) {
+    const auto path = scratch / (lens + aperture + ".pbrt");
+    std::ofstream(path)
+        << "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" \"string lensfile\" \"" << lens
+        << "\" \"float focusdistance\" [4]"
+        << (aperture.empty() ? "" : " \"string aperture\" \"" + aperture + "\"")
+        << "\nFilm \"image\" \"integer xresolution\" [8] \"integer yresolution\" [8]"
+           " \"float diagonal\" [2]\n"
+           "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+           // A shape behind the camera: a scene needs one.
+           "AttributeBegin\nTranslate 0 0 -50\nShape \"sphere\" \"float radius\" [1]\n"
+           "AttributeEnd\nWorldEnd\n";
+    return path;
+  };
+  auto passFraction = [&](const std::filesystem::path& path) {
+    const auto json = scratch / (path.stem().string() + ".json");
+    const auto result =
+        testing::runProcess(lenslab("render '" + path.string() + "' --spp 256 --out '" +
+                                    (scratch / (path.stem().string() + ".pfm")).string() +
+                                    "' --stats-json '" + json.string() + "'"),
+                            scratch);
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    if (result.exitCode != 0) return 0.0;
+    return nlohmann::json::parse(testing::readWholeFile(json))["lens_pass_fraction"].get<double>();
+  };
+  const double round = passFraction(scene("round.dat", ""));
+  const double square = passFraction(scene("square.dat", ""));
+  const double pentagon = passFraction(scene("round.dat", "pentagon"));
+  ASSERT_GT(round, 0.5);
+  EXPECT_NEAR(square / round, 2.0 / 3.141592653589793, 0.03);
+  EXPECT_NEAR(pentagon / round, 2.5 * std::sin(0.4 * 3.141592653589793) / 3.141592653589793, 0.03);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "app/analysis/analysis_plots.h"
 #include "app/analysis/analysis_setup.h"
+#include "app/document/aperture_image.h"
 
 #include "app/render_export.h"
 
@@ -13,6 +14,8 @@
 #include <map>
 #include <sstream>
 #include <tuple>
+
+#include "optics/aperture_shape.h"
 
 namespace lenslab::app {
 
@@ -28,7 +31,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"load-lens", {1, 2}},
       {"load-scene", {1, 1}},
       {"save-lens", {1, 1}},
-      {"set", {2, 4}},
+      {"set", {2, 8}},  // set aperture blades N curvature C rotation D: 7
       {"make-stop", {1, 1}},
       {"flip", {0, 0}},
       {"undo", {0, 0}},
@@ -162,6 +165,26 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     if (a.size() != 2) return problemAt(command, 0, "expected: set " + a[0] + " VALUE");
     return numberAt(1);
   }
+  if (a[0] == "aperture") {
+    // The stop's shape in the lens file's words (optics/aperture_shape.h); an image's file is
+    // read when the command runs (a bad one is logged and the stop keeps its shape).
+    std::string spec;
+    std::vector<std::size_t> starts;
+    for (std::size_t i = 1; i < a.size(); ++i) {
+      if (i > 1) spec += ' ';
+      starts.push_back(spec.size());
+      spec += a[i];
+    }
+    const optics::ApertureSpecResult parsed = optics::parseApertureSpec(spec);
+    if (parsed.shape) return std::nullopt;
+    std::size_t argument = 1;
+    for (std::size_t i = 0; i < starts.size(); ++i)
+      if (static_cast<int>(starts[i]) <= parsed.column) argument = i + 1;
+    return problemAt(command, argument,
+                     parsed.error +
+                         "; expected: set aperture circle | blades N [curvature C] [rotation D] "
+                         "| image FILE");
+  }
   if (a[0] == "camera") {
     if (a.size() != 2 || (a[1] != "lens" && a[1] != "pinhole")) {
       return problemAt(command, 0, "expected: set camera lens|pinhole");
@@ -219,7 +242,8 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
   return problemAt(
       command, 0,
       "unknown setting '" + a[0] +
-          "' (expected surface, film-distance, stop-diameter, exposure, camera, blocked-rays, "
+          "' (expected surface, film-distance, stop-diameter, aperture, exposure, camera, "
+          "blocked-rays, "
           "layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
           "vignetting-overlay, colour-fans or fields)");
 }
@@ -471,6 +495,22 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     }
     if (a[0] == "stop-diameter") {
       return editAndWait(command, host, SetStopDiameter{*parseNumber(a[1])});
+    }
+    if (a[0] == "aperture") {
+      std::string spec;
+      for (std::size_t i = 1; i < a.size(); ++i) spec += (i > 1 ? " " : "") + a[i];
+      optics::ApertureShape shape = *optics::parseApertureSpec(spec).shape;
+      if (shape.kind == optics::ApertureShape::Kind::Image && !awaitedCommand_) {
+        std::string error;
+        const auto image = loadImageAperture(shape.imageName, &error);
+        if (!image) {
+          // As the lens panel does: logged, and the stop keeps its shape; the script goes on.
+          host.reportError(error + "; the stop keeps its shape");
+          return true;
+        }
+        shape = *image;
+      }
+      return editAndWait(command, host, SetStopShape{shape});
     }
     if (a[0] == "exposure") {
       host.setExposure(*parseNumber(a[1]));

@@ -6,6 +6,10 @@
 //   load-lens FILE              load-scene FILE             save-lens FILE
 //   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
+//   set aperture circle|blades N [curvature C] [rotation D]|image FILE
+//                               (the stop's shape, as the lens file's aperture line; N 3..32;
+//                                a missing, unreadable, non-square or black image is logged and
+//                                the stop keeps its shape)
 //   set camera lens|pinhole     set blocked-rays show|hide  set layout LENS PREVIEW LOG
 //   make-stop N                 flip                        undo          redo
 //   zoom-cross-section FACTOR   (about the canvas centre)

@@ -71,6 +71,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"colour_fans", state.fanSettings.colourFans},
       {"colour_fan_wavelengths_nm", colourFanWavelengths(state)},
       {"stop_diameter_mm", stopDiameter},
+      {"aperture", lens.stopShape.spec()},
       {"focus_at_text", state.focusAtShown},
       {"in_focus_text", state.inFocusText},
       {"preview",

@@ -82,6 +82,7 @@ std::string describe(const EditCommand& command) {
           [&](const ScaleLens& c) { text << "scale the lens by " << c.factor; },
           [&](const SetFilmDistance& c) { text << "set film distance to " << c.mm << " mm"; },
           [&](const SetStopDiameter& c) { text << "set stop diameter to " << c.mm << " mm"; },
+          [&](const SetStopShape& c) { text << "set aperture to " << c.shape.spec(); },
           [&](const ReplaceLens& c) {
             text << "open " << (c.path.empty() ? std::string("a new lens") : c.path);
           },
@@ -115,7 +116,8 @@ void LensDocument::markSaved(std::string path) {
 bool LensDocument::modified() const {
   const auto& a = current_.surfaces;
   const auto& b = saved_.surfaces;
-  return !std::equal(a.begin(), a.end(), b.begin(), b.end(), sameSurface);
+  return !std::equal(a.begin(), a.end(), b.begin(), b.end(), sameSurface) ||
+         !(current_.stopShape == saved_.stopShape);
 }
 
 std::optional<std::string> LensDocument::apply(const EditCommand& command,
@@ -193,6 +195,7 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
             if (stop == surfaces.end()) return void(refusal = std::string("the lens has no stop"));
             stop->apertureDiameterMm = c.mm;
           },
+          [&](const SetStopShape& c) { next.stopShape = c.shape; },
           [&](const ReplaceLens& c) {
             next = c.prescription;
             nextPath = c.path;
@@ -253,6 +256,11 @@ optics::Prescription flipped(const optics::Prescription& lens) {
   const std::size_t n = old.size();
   optics::Prescription result;
   result.surfaces.resize(n);
+  // Seen from the other side the iris is mirrored left to right: a corner at angle a goes to
+  // 180 - a.
+  result.stopShape = lens.stopShape;
+  if (result.stopShape.kind == optics::ApertureShape::Kind::Blades)
+    result.stopShape.rotationDeg = 180.0 - result.stopShape.rotationDeg;
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t i = n - 1 - j;
     optics::Surface& surface = result.surfaces[j];

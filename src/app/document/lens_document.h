@@ -49,6 +49,10 @@ struct SetFilmDistance {
 struct SetStopDiameter {
   double mm;
 };
+// The stop's shape: circle, blades or an image mask (already loaded; optics/aperture_shape.h).
+struct SetStopShape {
+  optics::ApertureShape shape;
+};
 struct ReplaceLens {
   optics::Prescription prescription;
   std::string path;                              // where it came from; empty for an unsaved lens
@@ -62,9 +66,9 @@ struct ReplaceLens {
 struct Undo {};
 struct Redo {};
 
-using EditCommand =
-    std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface, MoveSurface, FlipLens,
-                 ScaleLens, SetFilmDistance, SetStopDiameter, ReplaceLens, Undo, Redo>;
+using EditCommand = std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface,
+                                 MoveSurface, FlipLens, ScaleLens, SetFilmDistance, SetStopDiameter,
+                                 SetStopShape, ReplaceLens, Undo, Redo>;
 
 // What a command does, in words, for the log and the Edit menu ("set radius of surface 3").
 std::string describe(const EditCommand& command);

@@ -47,14 +47,29 @@ CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalf
   if (outline.stop) {
     const optics::StopOutline& stop = *outline.stop;
     for (double sign : {1.0, -1.0}) {
+      // A shaped stop's blades reach in to its opening in the section's plane.
+      const double opening = sign > 0 ? stop.openingUpMm : stop.openingDownMm;
       Polyline bar;
-      bar.points = {{stop.zMm, sign * stop.apertureRadiusMm},
-                    {stop.zMm, sign * stop.outerRadiusMm}};
+      bar.points = {{stop.zMm, sign * opening}, {stop.zMm, sign * stop.outerRadiusMm}};
       bar.colour = palette::kStop;
       bar.widthPx = 3.0f;
       bar.part = DrawingPart::Stop;
       bounds.include(bar.points[1]);
       drawing.lines.push_back(std::move(bar));
+    }
+    if (stop.shapeOutlineMm.size() >= 2) {
+      // The iris face-on, as seen from the front, above the stop: its x across the axis drawn
+      // along z, centred on the stop's plane, at the drawing's millimetre scale.
+      const double centreY = stop.outerRadiusMm + 1.3 * stop.apertureRadiusMm + 1.0;
+      Polyline iris;
+      for (const glm::dvec2& p : stop.shapeOutlineMm)
+        iris.points.push_back({stop.zMm - p.x, centreY + p.y});
+      iris.colour = palette::kStop;
+      iris.widthPx = 2.0f;
+      iris.closed = true;
+      iris.part = DrawingPart::Stop;
+      for (const auto& point : iris.points) bounds.include(point);
+      drawing.lines.push_back(std::move(iris));
     }
   }
 

@@ -85,6 +85,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
     state.dragging |= ImGui::IsItemActive();
   }
+  drawApertureControls(state);
   WrapRow focusRow;
   const char* kFocusLabel = "Focus at";
   focusRow.next(ImGui::CalcTextSize(kFocusLabel).x + ImGui::GetStyle().FramePadding.x * 2);

@@ -62,8 +62,16 @@ void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, Im
                         1.5f);
     }
   }
-  draw->AddCircle(centre, scale * static_cast<float>(bundle.stopRadiusMm),
-                  toImColour(palette::kStop), 64, 1.5f);
+  if (bundle.stopOutlineMm.size() >= 2) {
+    // A shaped stop: its real outline.
+    std::vector<ImVec2> outline;
+    for (const glm::dvec2& p : bundle.stopOutlineMm) outline.push_back(screen(p));
+    draw->AddPolyline(outline.data(), static_cast<int>(outline.size()), toImColour(palette::kStop),
+                      ImDrawFlags_Closed, 1.5f);
+  } else {
+    draw->AddCircle(centre, scale * static_cast<float>(bundle.stopRadiusMm),
+                    toImColour(palette::kStop), 64, 1.5f);
+  }
   draw->PopClipRect();
 }
 

@@ -23,6 +23,8 @@ void drawExportCrossSectionDialog(ViewerState& state);
 
 // The registered panels (panel_registry.cpp).
 void drawLensTablePanel(ViewerState& state, const PanelPlace& place);
+// The stop's shape (circle, blades, image), under the stop diameter.
+void drawApertureControls(ViewerState& state);
 void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place);
 void drawRenderPreviewPanel(ViewerState& state, const PanelPlace& place);
 void drawLogPanel(ViewerState& state, const PanelPlace& place);

@@ -90,6 +90,15 @@ bool camera(const DirectiveCall& call) {
       diagnostics.error(which->location, *problem);
       return false;
     }
+    // pbrt-v4's aperture shape: a built-in name or an image file (camera_factory.cpp applies it;
+    // an unusable one is a warning there and the stop stays a circle).
+    if (const Param* aperture = set->find("aperture"); aperture && !aperture->strings.empty()) {
+      camera.apertureName = aperture->strings[0];
+      camera.apertureLocation = aperture->location;
+      const std::string& name = camera.apertureName;
+      if (name != "square" && name != "pentagon" && name != "star" && name != "gaussian")
+        camera.aperturePath = call.in.resolve(name);
+    }
   } else if (type->text != "perspective") {
     diagnostics.warning(type->location, "camera \"" + type->text +
                                             "\" is not supported; a perspective camera is used");

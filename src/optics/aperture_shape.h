@@ -1,0 +1,161 @@
+#pragma once
+// The shape of the aperture stop: the default circle, N straight or curved blades with a
+// rotation, or an image mask (white = open). It belongs to the stop of a Prescription; the traces
+// test a ray's hit on the stop plane against it (StopShapeTest, below) and the exit-pupil table
+// is built for the circle that circumscribes it (boundRadiusFactor), so sampling stays unbiased
+// for any shape: rays through the bound but outside the shape are simply blocked.
+//
+// Geometry, in units of the stop's semi-diameter R (the stop row's aperture diameter / 2), lens
+// frame x and y (y up in the cross-section):
+// - Circle: |p| <= R.
+// - Blades: a regular N-gon inscribed in the circle of radius R, corner k at the angle
+//   rotation + k 360/N degrees from +x toward +y. Each blade edge is an arc through its two
+//   corners bulging outward with radius R / curvature: curvature 0 is a straight edge, 1 is the
+//   stop circle itself (a fully rounded iris). The shape is the intersection of the N half-planes
+//   (straight) or N disks (curved): convex.
+// - Image: a square bitmap spanning the square circumscribed about the stop circle, as pbrt-v4's
+//   realistic camera maps its aperture image ((x/R + 1)/2, 1 - (y/R + 1)/2 as image u, v: the
+//   image's top row is +y). A pixel is open when the mean of its colour channels is at least half
+//   of white. Unlike pbrt-v4, which weighs by the image's value and rescales it to the circle's
+//   brightness, lenslab's stop is physical: a binary mask that passes less light when it is
+//   smaller (a square stop takes in its area, not the circle's).
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace lenslab::optics {
+
+inline constexpr int kMinApertureBlades = 3;
+inline constexpr int kMaxApertureBlades = 32;
+
+// A thresholded, square aperture image.
+struct ApertureMask {
+  int sizePx = 0;                  // width = height
+  std::vector<std::uint8_t> open;  // sizePx * sizePx, row 0 at the top (+y), 1 = open
+  std::filesystem::path source;    // the file it came from, or a name ("star") for a built-in
+  double openFraction() const;     // share of open pixels
+  // Largest distance of an open pixel's corner from the centre, over half the side (at most
+  // sqrt(2)): the radius that bounds the open part, for the exit-pupil table. Set by
+  // measureOpenRadius() when the mask is made (loaded or rasterized).
+  double openRadiusFactor = 1.4142135623730951;
+  void measureOpenRadius();
+};
+
+struct ApertureShape {
+  enum class Kind { Circle, Blades, Image };
+  Kind kind = Kind::Circle;
+  int bladeCount = 6;        // Blades: 3..32
+  double curvature = 0.0;    // Blades: 0 straight .. 1 round
+  double rotationDeg = 0.0;  // Blades: angle of the first corner from +x toward +y
+  // Image: the mask, and the name as written (in a lens file, relative to its folder).
+  std::shared_ptr<const ApertureMask> mask;
+  std::string imageName;
+
+  bool isCircle() const { return kind == Kind::Circle; }
+  // Radius of the circle around the axis that contains the shape, over R: 1, or for an image
+  // the farthest open pixel's corner (sqrt(2) at most: the square's corners).
+  double boundRadiusFactor() const;
+  // Area over R^2: pi for the circle, the polygon plus its N circular segments for blades, the
+  // open pixels' share of the square 2R x 2R for an image.
+  double areaFactor() const;
+  // Inside test in units of R (the reference form; traces use StopShapeTest).
+  bool containsUnit(glm::dvec2 p) const;
+  // The boundary for drawing, in units of R, counter-clockwise and closed (first point repeated);
+  // an image gives its bounding square. `pointsPerEdge` subdivides curved edges.
+  std::vector<glm::dvec2> outlineUnit(int pointsPerEdge = 8) const;
+
+  // "circle", "blades 6 curvature 0.5 rotation 15", "image NAME": the lens-file and script
+  // form, which parseApertureSpec reads back (the mask is loaded by the caller).
+  std::string spec() const;
+  // Same shape (a mask compares by its source).
+  bool operator==(const ApertureShape& other) const;
+};
+
+// What parseApertureSpec makes of "circle" / "blades N [curvature C] [rotation D]" / "image NAME".
+// On an error, `column` (0-based offset into the text) points at the offending word.
+struct ApertureSpecResult {
+  std::optional<ApertureShape> shape;  // an image shape has imageName set and no mask yet
+  std::string error;
+  int column = 0;
+};
+ApertureSpecResult parseApertureSpec(std::string_view text);
+
+// Loads and thresholds an aperture image (PNG and what else stb_image reads). A missing,
+// unreadable, non-square or all-black image is refused with the reason in `error`.
+std::shared_ptr<const ApertureMask> loadApertureMask(const std::filesystem::path& path,
+                                                     std::string* error);
+// A mask rasterized from a polygon in units of R (the image's square is [-1, 1]^2), the
+// non-zero winding rule, at the pixel centres: pbrt-v4's built-in "star" is made this way.
+std::shared_ptr<const ApertureMask> rasterizeApertureMask(const std::vector<glm::dvec2>& polygon,
+                                                          int sizePx, std::string name);
+
+// pbrt-v4's realistic camera "string aperture": "square", "pentagon", "star" (built in) and
+// "gaussian" (refused: a graded transmission, which a binary stop cannot be); other values are
+// image files (resolved by the caller). Returns nullopt with `note` set for "gaussian";
+// nullopt with no note for a file name.
+//   square   -> 4 straight blades, edges along x and y (inscribed in the stop circle)
+//   pentagon -> 5 straight blades, a corner up (pbrt draws it at 0.8 R; lenslab inscribes it)
+//   star     -> pbrt-v4's five-pointed star (outer radius R, inner R cos 72 / cos 36), as a mask
+std::optional<ApertureShape> builtinPbrtAperture(std::string_view name, std::string* note);
+
+// The shape compiled for one stop radius: what the traces test hits against.
+class StopShapeTest {
+ public:
+  StopShapeTest() = default;
+  StopShapeTest(const ApertureShape& shape, double stopRadiusMm);
+
+  bool isCircle() const { return kind_ == ApertureShape::Kind::Circle; }
+  // Whether the hit (x, y) on the stop plane, in mm, is inside the opening.
+  bool contains(double xMm, double yMm) const {
+    switch (kind_) {
+      case ApertureShape::Kind::Circle:
+        return xMm * xMm + yMm * yMm <= radiusSqMm2_;
+      case ApertureShape::Kind::Blades:
+        for (const Edge& e : edges_)
+          if (!edgeContains(e, xMm, yMm)) return false;
+        return true;
+      case ApertureShape::Kind::Image:
+        return maskContains(xMm, yMm);
+    }
+    return false;
+  }
+
+  // The blades, for the vectorized batch trace: a point is inside blade e when
+  //   e.s (x^2 + y^2) + e.wx x + e.wy y + e.k <= 0.
+  // A straight edge has s = 0, (wx, wy) its outward normal and -k its distance from the centre.
+  // A curved one, the disk |p - c n|^2 <= rho^2 divided by 2 rho: s = 1 / (2 rho),
+  // (wx, wy) = -(c / rho) n and k = (c^2 - rho^2) / (2 rho), which stays well conditioned in
+  // single precision as the curvature goes to 0 (rho and |c| to infinity).
+  struct Edge {
+    float wx = 0, wy = 0, s = 0, k = 0;
+  };
+  ApertureShape::Kind kind() const { return kind_; }
+  const std::vector<Edge>& edges() const { return edges_; }
+  bool maskContains(double xMm, double yMm) const;
+  // The mask's pixels and mapping, for the batch trace's branch-free lookup: column
+  // (x + R) * pixelsPerMm, row (R - y) * pixelsPerMm.
+  const std::uint8_t* maskPixels() const { return mask_ ? mask_->open.data() : nullptr; }
+  int maskSizePx() const { return mask_ ? mask_->sizePx : 0; }
+  double pixelsPerMm() const { return pixelsPerMm_; }
+  double radiusMm() const { return radiusMm_; }
+
+ private:
+  static bool edgeContains(const Edge& e, double x, double y) {
+    return e.s * (x * x + y * y) + e.wx * x + e.wy * y + e.k <= 0.0;
+  }
+
+  ApertureShape::Kind kind_ = ApertureShape::Kind::Circle;
+  double radiusSqMm2_ = 0.0;
+  std::vector<Edge> edges_;
+  std::shared_ptr<const ApertureMask> mask_;
+  double pixelsPerMm_ = 0.0, radiusMm_ = 0.0;
+};
+
+}  // namespace lenslab::optics
