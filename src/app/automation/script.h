@@ -36,6 +36,8 @@
 //   set rims on|off              toggles of the Illumination panel, off: only the stop clips)
 //   set vignetting-overlay on|off       (the heat map of the bundle's passing share over the
 //                                preview, with its colour bar)
+//   set spectral on|off|auto    (the preview's Spectral choice: each sample at a wavelength of
+//                                its own; auto when some glass has a V_d)
 //
 // Pictures for slides (File > Export render..., auto exposure):
 //   export-render FILE SIZE SPP  renders the current lens and scene in the background at SIZE
@@ -63,6 +65,7 @@
 
 #include "app/document/lens_editor.h"
 #include "common/diagnostics.h"
+#include "render/spectral_mode.h"
 
 namespace lenslab::app {
 
@@ -199,6 +202,8 @@ class ScriptHost {
   // The vignetting teaching's switches: "cos4", "rims" (the render's FalloffToggles) and
   // "vignetting-overlay".
   virtual void setVignettingSwitch(const std::string& /*name*/, bool /*on*/) {}
+  // The preview's Spectral choice (render/spectral_mode.h).
+  virtual void setSpectralMode(render::SpectralMode /*mode*/) {}
   // Forgets the frames measured so far (--stats-json).
   virtual void resetStats() {}
 };
