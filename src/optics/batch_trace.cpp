@@ -30,16 +30,16 @@ struct SurfaceF {
 };
 
 // The ratio of indices a ray meets at a surface: the surface's own, or (kPerRay) the one at the
-// ray's wavelength, given as w = 1 / lambda^2 (nm^-2). One division per ray and surface.
+// ray's wavelength, given as w = 1 / lambda^2 (nm^-2): one division per ray and surface. The
+// coefficients are passed as locals read before the loop, which GCC needs to vectorize it.
 template <bool kPerRay>
-__attribute__((always_inline)) inline float etaOf(const SurfaceF& s, const float* __restrict w,
-                                                  std::size_t i) {
+__attribute__((always_inline)) inline float etaOf(float fixedEta, float aRear, float bRear,
+                                                  float aFront, float bFront, float w) {
   if constexpr (kPerRay) {
-    return (s.aRear + s.bRear * w[i]) / (s.aFront + s.bFront * w[i]);
+    return (aRear + bRear * w) / (aFront + bFront * w);
   } else {
-    (void)w;
-    (void)i;
-    return s.eta;
+    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)w;
+    return fixedEta;
   }
 }
 
@@ -51,9 +51,10 @@ __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* _
                                                      float* __restrict dz,
                                                      std::uint8_t* __restrict alive, std::size_t n,
                                                      const float* __restrict w = nullptr) {
-  const float zv = s.vertexZ, semiSq = s.semiApertureSq;
+  const float zv = s.vertexZ, semiSq = s.semiApertureSq, fixedEta = s.eta;
+  const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(s, w, i);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float uz = dz[i];
     const float t = (zv - oz[i]) / uz;
     const float hx = ox[i] + t * dx[i], hy = oy[i] + t * dy[i];
@@ -80,9 +81,11 @@ __attribute__((always_inline)) inline void traceSurface(
     const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
     float* __restrict dx, float* __restrict dy, float* __restrict dz,
     std::uint8_t* __restrict alive, std::size_t n, const float* __restrict w = nullptr) {
-  const float c = s.curvature, radius = s.radius, zv = s.vertexZ, semiSq = s.semiApertureSq;
+  const float c = s.curvature, radius = s.radius, zv = s.vertexZ, semiSq = s.semiApertureSq,
+              fixedEta = s.eta;
+  const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(s, w, i);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
     const float b = c * (px * ux + py * uy + pz * uz) + uz;
