@@ -85,6 +85,17 @@ SpectralFilm::SpectralFilm() {
     cdf_[k + 1] = cdf_[k] + pdf_[k];
   }
   cdf_[kBins] = 1.0;
+  for (int k = 0; k < kBins; ++k) {
+    const double low = kMinNm + k, high = low + 1.0;
+    binColour_[k] = {glm::vec3(basis(low)), glm::vec3(basis(high)), glm::vec3(srgbOfLine(low)),
+                     glm::vec3(srgbOfLine(high)), static_cast<float>(1.0 / pdf_[k])};
+  }
+  int k = 0;
+  for (int j = 0; j <= kGuide; ++j) {
+    const double u = static_cast<double>(j) / kGuide;
+    while (k < kBins - 1 && cdf_[k + 1] <= u) ++k;
+    guide_[j] = k;
+  }
 }
 
 glm::dvec3 SpectralFilm::srgbOfLine(double wavelengthNm) const {
@@ -106,15 +117,16 @@ double SpectralFilm::pdfPerNm(double wavelengthNm) const {
 
 SpectralSample SpectralFilm::sample(float u) const {
   const double v = std::clamp(static_cast<double>(u), 0.0, 1.0);
-  // The bin whose CDF interval holds v, then uniform inside it.
-  const auto it = std::upper_bound(cdf_.begin() + 1, cdf_.end(), v);
-  const int k = std::min(kBins - 1, static_cast<int>(it - cdf_.begin()) - 1);
+  // The bin whose CDF interval holds v (from the guide table's start), then uniform inside it.
+  int k = guide_[std::min(kGuide, static_cast<int>(v * kGuide))];
+  while (k < kBins - 1 && cdf_[k + 1] <= v) ++k;
   const double inside = std::clamp((v - cdf_[k]) / pdf_[k], 0.0, 1.0 - 1e-9);
-  const double wavelength = kMinNm + k + inside;
+  const BinColour& c = binColour_[k];
+  const auto t = static_cast<float>(inside);
   SpectralSample s;
-  s.wavelengthNm = static_cast<float>(wavelength);
-  s.basis = glm::vec3(basis(wavelength));
-  s.srgbOverPdf = glm::vec3(srgbOfLine(wavelength) / pdf_[k]);
+  s.wavelengthNm = static_cast<float>(kMinNm + k + inside);
+  s.basis = c.basisLow + t * (c.basisHigh - c.basisLow);
+  s.srgbOverPdf = (c.srgbLow + t * (c.srgbHigh - c.srgbLow)) * c.invPdf;
   return s;
 }
 

@@ -70,6 +70,17 @@ class SpectralFilm {
   std::array<double, 9> rgbFromXyz_{};
   std::array<double, kBins> pdf_{};  // per nm, bin k covers kMinNm + k .. + 1
   std::array<double, kBins + 1> cdf_{};
+  // What sample() reads, per bin: basis and line colour at the bin's two ends (within a bin both
+  // are linear in lambda: bins lie inside the table's 5 nm pieces), and 1 / pdf. Float, so that a
+  // camera sample's colour costs a few multiplications, not the matrices in double.
+  struct BinColour {
+    glm::vec3 basisLow, basisHigh, srgbLow, srgbHigh;
+    float invPdf;
+  };
+  std::array<BinColour, kBins> binColour_{};
+  // guide_[j]: the first bin whose CDF interval reaches j / kGuide (a guide table for inversion).
+  static constexpr int kGuide = 512;
+  std::array<int, kGuide + 1> guide_{};
 };
 
 }  // namespace lenslab::render
