@@ -122,6 +122,7 @@ class Viewer final : public ScriptHost {
      : name == "rims" ? state_.falloff.rims
                       : state_.vignettingOverlay) = on;
   }
+  void setSpectralMode(render::SpectralMode mode) override { state_.falloff.spectral = mode; }
   void setLayout(double lensTable, double preview, double log) override {
     state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),
                               static_cast<float>(log)};

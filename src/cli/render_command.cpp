@@ -85,6 +85,12 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
   command->add_flag("--quiet", arguments->quiet, "No progress bar");
   command->add_flag("--no-cos4", arguments->noCos4,
                     "Realistic camera without Kolb's cos^4 in the exposure weight (teaching)");
+  command
+      ->add_option("--spectral", arguments->spectral,
+                   "on, off or auto (default): trace every camera sample at a wavelength of its "
+                   "own, so that the lens's dispersion (lateral and longitudinal colour) is in the "
+                   "picture; auto when some glass of the lens has an Abbe number (V_d)")
+      ->check(CLI::IsMember({"on", "off", "auto"}));
   command->add_flag("--no-rims", arguments->noRims,
                     "Realistic camera whose only clipping aperture is the stop: no mechanical "
                     "vignetting (teaching)");
@@ -111,7 +117,9 @@ int runRenderCommand(const RenderArguments& arguments) {
     overrides.height = size->height;
   }
   if (!arguments.lensPath.empty()) overrides.lensPath = arguments.lensPath;
-  overrides.falloff = {!arguments.noCos4, !arguments.noRims};
+  overrides.falloff = {
+      !arguments.noCos4, !arguments.noRims,
+      render::parseSpectralMode(arguments.spectral).value_or(render::SpectralMode::Auto)};
 
   render::ParseResult parsed = render::parsePbrtFile(arguments.scenePath);
   printDiagnostics(parsed.diagnostics);
@@ -195,6 +203,7 @@ int runRenderCommand(const RenderArguments& arguments) {
             : 0.0;
     stats["discarded_samples"] = statistics.discardedSamples;
     stats["falloff"] = overrides.falloff.describe();
+    stats["spectral"] = camera->spectral();
     stats["output"] = outPath;
     std::string error;
     if (!writeStats(arguments.statsJsonPath, stats, error)) {

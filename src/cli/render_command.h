@@ -23,6 +23,7 @@ struct RenderArguments {
   double exposureStops = 0.0;
   bool quiet = false;
   bool noCos4 = false, noRims = false;  // the teaching toggles (render/falloff_toggles.h)
+  std::string spectral = "auto";        // on, off, auto (render/spectral_mode.h)
 };
 
 // Adds the subcommand to `app`; when the user names it, `run` is set to run it (subcommand.h).

@@ -11,6 +11,9 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include <vector>
+
+#include "optics/glass.h"
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
@@ -21,7 +24,11 @@ struct SurfaceF {
   float vertexZ, curvature, radius, semiApertureSq, eta;
   bool refracts, flat;
   // The stop's shape when it is not a circle (the hit is then also tested against it), else null.
-  const StopShapeTest* shape;
+  const StopShapeTest* shape = nullptr;
+  // Per-ray indices (the spectral trace): n = a + b / lambda^2 on each side (glass.h), the ray
+  // going from the rear medium into the front one. `disperses` when either side has b != 0.
+  float aRear = 1.0f, bRear = 0.0f, aFront = 1.0f, bFront = 0.0f;
+  bool disperses = false;
 };
 
 // A shaped stop, after the stop surface's own trace has put the hits in ox, oy: a pass over the
@@ -56,16 +63,32 @@ __attribute__((always_inline)) inline void applyStopShape(const StopShapeTest& s
   }
 }
 
+// The ratio of indices a ray meets at a surface: the surface's own, or (kPerRay) the one at the
+// ray's wavelength, given as w = 1 / lambda^2 (nm^-2): one division per ray and surface. The
+// coefficients are passed as locals read before the loop, which GCC needs to vectorize it.
+template <bool kPerRay>
+__attribute__((always_inline)) inline float etaOf(float fixedEta, float aRear, float bRear,
+                                                  float aFront, float bFront, float w) {
+  if constexpr (kPerRay) {
+    return (aRear + bRear * w) / (aFront + bFront * w);
+  } else {
+    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)w;
+    return fixedEta;
+  }
+}
+
 // A plane z = vertexZ (the stop, flat refracting surfaces): one division, no square root.
-template <bool kRefracts>
+template <bool kRefracts, bool kPerRay = false>
 __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* __restrict ox,
                                                      float* __restrict oy, float* __restrict oz,
                                                      float* __restrict dx, float* __restrict dy,
                                                      float* __restrict dz,
-                                                     std::uint8_t* __restrict alive,
-                                                     std::size_t n) {
-  const float zv = s.vertexZ, semiSq = s.semiApertureSq, eta = s.eta;
+                                                     std::uint8_t* __restrict alive, std::size_t n,
+                                                     const float* __restrict w = nullptr) {
+  const float zv = s.vertexZ, semiSq = s.semiApertureSq, fixedEta = s.eta;
+  const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
   for (std::size_t i = 0; i < n; ++i) {
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float uz = dz[i];
     const float t = (zv - oz[i]) / uz;
     const float hx = ox[i] + t * dx[i], hy = oy[i] + t * dy[i];
@@ -87,16 +110,16 @@ __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* _
   }
 }
 
-template <bool kRefracts>
-__attribute__((always_inline)) inline void traceSurface(const SurfaceF& s, float* __restrict ox,
-                                                        float* __restrict oy, float* __restrict oz,
-                                                        float* __restrict dx, float* __restrict dy,
-                                                        float* __restrict dz,
-                                                        std::uint8_t* __restrict alive,
-                                                        std::size_t n) {
+template <bool kRefracts, bool kPerRay = false>
+__attribute__((always_inline)) inline void traceSurface(
+    const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
+    float* __restrict dx, float* __restrict dy, float* __restrict dz,
+    std::uint8_t* __restrict alive, std::size_t n, const float* __restrict w = nullptr) {
   const float c = s.curvature, radius = s.radius, zv = s.vertexZ, semiSq = s.semiApertureSq,
-              eta = s.eta;
+              fixedEta = s.eta;
+  const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
   for (std::size_t i = 0; i < n; ++i) {
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
     const float b = c * (px * ux + py * uy + pz * uz) + uz;
@@ -139,8 +162,11 @@ __attribute__((always_inline)) inline void traceSurface(const SurfaceF& s, float
   }
 }
 
+// `invWavelengthSq`: null for the surfaces' own indices (the RGB trace, unchanged), else
+// 1 / lambda^2 of each ray (the spectral trace: dispersive surfaces take their per-ray kernel).
 __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, int count,
-                                                    LensRayBatch& rays) {
+                                                    LensRayBatch& rays,
+                                                    const float* invWavelengthSq) {
   const std::size_t n = rays.size();
   // Blocks keep the working set in L1 while all surfaces are applied.
   constexpr std::size_t kBlock = 256;
@@ -153,9 +179,15 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
     float* dy = rays.dy.data() + start;
     float* dz = rays.dz.data() + start;
     std::uint8_t* alive = rays.alive.data() + start;
+    const float* w = invWavelengthSq ? invWavelengthSq + start : nullptr;
     for (int k = 0; k < count; ++k) {
       const SurfaceF& s = surfaces[k];
-      if (s.flat) {
+      if (w && s.disperses) {
+        if (s.flat)
+          traceFlat<true, true>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+        else
+          traceSurface<true, true>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+      } else if (s.flat) {
         if (s.refracts)
           traceFlat<true>(s, ox, oy, oz, dx, dy, dz, alive, m);
         else
@@ -171,18 +203,18 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
 }
 
 __attribute__((target("avx2,fma"))) void traceAvx2(const SurfaceF* surfaces, int count,
-                                                   LensRayBatch& rays) {
-  traceAll(surfaces, count, rays);
+                                                   LensRayBatch& rays, const float* w) {
+  traceAll(surfaces, count, rays, w);
 }
 
 // 16 lanes. GCC keeps 256-bit vectors for AVX-512 targets unless told otherwise.
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma,prefer-vector-width=512"))) void
-traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays) {
-  traceAll(surfaces, count, rays);
+traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w) {
+  traceAll(surfaces, count, rays, w);
 }
 
-void tracePortable(const SurfaceF* surfaces, int count, LensRayBatch& rays) {
-  traceAll(surfaces, count, rays);
+void tracePortable(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w) {
+  traceAll(surfaces, count, rays, w);
 }
 
 bool cpuHasAvx512() {
@@ -221,6 +253,20 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays) const {
 }
 
 void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) const {
+  traceBatch(rays, nullptr, kernel);
+}
+
+void LensSystem::traceFromFilmBatch(LensRayBatch& rays, const float* wavelengthsNm,
+                                    BatchKernel kernel) const {
+  thread_local std::vector<float> invWavelengthSq;
+  invWavelengthSq.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    invWavelengthSq[i] = 1.0f / (wavelengthsNm[i] * wavelengthsNm[i]);
+  traceBatch(rays, invWavelengthSq.data(), kernel);
+}
+
+void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq,
+                            BatchKernel kernel) const {
   constexpr int kMaxOnStack = 64;
   SurfaceF stackSurfaces[kMaxOnStack];
   std::vector<SurfaceF> heapSurfaces;
@@ -232,27 +278,38 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) cons
   }
   // Film to scene: rear surface first; the ray goes from the rear medium into the front one.
   for (int step = 0; step < count; ++step) {
-    const SurfaceGeometry& s = surfaces_[count - 1 - step];
+    const int k = count - 1 - step;
+    const SurfaceGeometry& s = surfaces_[k];
     const double eta = s.indexRear / s.indexFront;
     const bool flat = s.curvaturePerMm == 0.0;
     list[step] = {static_cast<float>(s.vertexZMm),
                   static_cast<float>(s.curvaturePerMm),
                   flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
-                  static_cast<float>(clipRadiusSqMm2_[count - 1 - step]),
+                  static_cast<float>(clipRadiusSqMm2_[k]),
                   static_cast<float>(eta),
                   eta != 1.0,
                   flat,
                   count - 1 - step == static_cast<int>(stopIndex_) && !stopTest_.isCircle()
                       ? &stopTest_
                       : nullptr};
+    if (invWavelengthSq) {
+      const CauchyCoefficients& rear = glassRear_[k];
+      const CauchyCoefficients front = k == 0 ? CauchyCoefficients{} : glassRear_[k - 1];
+      SurfaceF& f = list[step];
+      f.aRear = static_cast<float>(rear.a);
+      f.bRear = static_cast<float>(rear.bNm2);
+      f.aFront = static_cast<float>(front.a);
+      f.bFront = static_cast<float>(front.bNm2);
+      f.disperses = rear.bNm2 != 0.0 || front.bNm2 != 0.0;
+    }
   }
   if (!batchKernelAvailable(kernel) || kernel == BatchKernel::Auto) kernel = autoBatchKernel();
   if (kernel == BatchKernel::Avx512)
-    traceAvx512(list, count, rays);
+    traceAvx512(list, count, rays, invWavelengthSq);
   else if (kernel == BatchKernel::Avx2)
-    traceAvx2(list, count, rays);
+    traceAvx2(list, count, rays, invWavelengthSq);
   else
-    tracePortable(list, count, rays);
+    tracePortable(list, count, rays, invWavelengthSq);
 }
 
 }  // namespace lenslab::optics

@@ -26,7 +26,10 @@ constexpr double kRelativeMargin = 0.01;
 struct Probe {
   const LensSystem& lens;
   double planeZ;
+  const std::vector<double>& wavelengthsNm;  // empty: the lens's own
   LensRayBatch batch{};
+  LensRayBatch traced{};
+  std::vector<float> wavelengths{};
 
   bool passes(double filmR, double px, double py) {
     const glm::dvec2 point{px, py};
@@ -47,8 +50,19 @@ struct Probe {
       batch.dz[i] = static_cast<float>(d.z);
       batch.alive[i] = 1;
     }
-    lens.traceFromFilmBatch(batch);
-    result.assign(batch.alive.begin(), batch.alive.begin() + static_cast<std::ptrdiff_t>(n));
+    if (wavelengthsNm.empty()) {
+      lens.traceFromFilmBatch(batch);
+      result.assign(batch.alive.begin(), batch.alive.begin() + static_cast<std::ptrdiff_t>(n));
+      return;
+    }
+    // The union of the pass regions at the probe wavelengths.
+    result.assign(n, 0);
+    for (const double wavelength : wavelengthsNm) {
+      traced = batch;
+      wavelengths.assign(n, static_cast<float>(wavelength));
+      lens.traceFromFilmBatch(traced, wavelengths.data());
+      for (std::size_t i = 0; i < n; ++i) result[i] |= traced.alive[i];
+    }
   }
 };
 
@@ -262,7 +276,8 @@ static void buildAliasTable(ExitPupilTable::Bin& b) {
   }
 }
 
-ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threads) {
+ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threads,
+                               std::vector<double> probeWavelengthsNm) {
   planeZMm_ = lens.rearVertexZ();
   fallbackRadiusMm_ = 1.5 * lens.rearApertureRadiusMm();
   if (lens.apertureClipping() == ApertureClipping::StopOnly) {
@@ -283,7 +298,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   std::shared_ptr<const LensSystem> circumscribed;
   if (!lens.stopShape().isCircle()) circumscribed = lens.withCircumscribedStop();
   const LensSystem& bounded = circumscribed ? *circumscribed : lens;
-  Probe probe{bounded, planeZMm_};
+  Probe probe{bounded, planeZMm_, probeWavelengthsNm};
   if (!(planeZMm_ > 0.0)) return;  // film at the rear vertex: nothing to tabulate
 
   // Image circle: the largest of 24 coarse radii where some ray passes, plus one step.
@@ -301,7 +316,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
 
   std::vector<RawBin> raw(radialBins);
   auto work = [&](int first, int stride) {
-    Probe own{bounded, planeZMm_};  // each thread its own ray batch
+    Probe own{bounded, planeZMm_, probeWavelengthsNm};  // each thread its own ray batch
     for (int j = first; j < radialBins; j += stride)
       raw[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_);
   };

@@ -42,8 +42,17 @@ class ExitPupilTable {
   static constexpr int kDefaultRadialBins = 128;
   static constexpr double kMaxFilmRadiusMm = 60.0;  // search range for the image circle
 
+  // Wavelengths whose pass regions the spectral table's bounds contain (LensSystem::
+  // spectralExitPupilTable): the ends of the spectral render's range and two between. The pass
+  // region moves smoothly (in practice monotonically) with the indices, which follow 1/lambda^2;
+  // the union at these four plus the 1% margin contains it at every wavelength between, which a
+  // brute-force test checks ray by ray for the bundled dispersive lenses (exit_pupil_test.cpp).
+  static constexpr double kSpectralProbeWavelengthsNm[] = {380.0, 450.0, 587.56, 780.0};
+
+  // `probeWavelengthsNm`: empty for the lens at its own wavelength; else a point of the plane is
+  // in the pass region when its ray passes at any of them (the spectral table).
   explicit ExitPupilTable(const LensSystem& lens, int radialBins = kDefaultRadialBins,
-                          int threads = 2);
+                          int threads = 2, std::vector<double> probeWavelengthsNm = {});
 
   std::optional<PupilSample> sample(glm::dvec2 filmPointMm, glm::dvec2 u) const;
   // Batch form writing the camera rays themselves (see LensSystem::sampleCameraRays): with AVX2

@@ -2,14 +2,20 @@
 
 namespace lenslab::optics {
 
-double refractiveIndex(double nD, std::optional<double> abbeD, double wavelengthNm) {
-  if (!abbeD || *abbeD <= 0.0 || nD <= 1.0) return nD;
+CauchyCoefficients cauchyCoefficients(double nD, std::optional<double> abbeD) {
+  if (!abbeD || *abbeD <= 0.0 || nD <= 1.0) return {nD, 0.0};
   // n_F - n_C = B (1/lF^2 - 1/lC^2) = (nD - 1)/V  =>  B; then A from n(d) = nD.
   const double invF2 = 1.0 / (kWavelengthFNm * kWavelengthFNm);
   const double invC2 = 1.0 / (kWavelengthCNm * kWavelengthCNm);
   const double b = (nD - 1.0) / *abbeD / (invF2 - invC2);
   const double a = nD - b / (kWavelengthDNm * kWavelengthDNm);
-  return a + b / (wavelengthNm * wavelengthNm);
+  return {a, b};
+}
+
+double refractiveIndex(double nD, std::optional<double> abbeD, double wavelengthNm) {
+  const CauchyCoefficients c = cauchyCoefficients(nD, abbeD);
+  if (c.bNm2 == 0.0) return nD;
+  return c.a + c.bNm2 / (wavelengthNm * wavelengthNm);
 }
 
 bool lensHasDispersion(const Prescription& prescription) {

@@ -62,13 +62,21 @@ std::string parseNumber(std::string_view text, int columnIndex, double& value) {
   }
   // Absurd magnitudes (a slip such as 1e300) are refused here, at the token, before they can
   // overflow the geometry downstream. validate() has the same limits for edited prescriptions.
+  // The Abbe number is checked here too, at its token, so that a lens file's error points at the
+  // V_d column (validate() says only the row).
+  if (columnIndex == 4 && value <= 0.0) {
+    message << "Abbe number " << text << " must be positive (V_d of a glass; leave the column "
+            << "out for a non-dispersive medium)";
+    return message.str();
+  }
   const double limit = columnIndex <= 1   ? kMaxLengthMm
                        : columnIndex == 2 ? kMaxRefractiveIndex
                        : columnIndex == 3 ? kMaxApertureDiameterMm
-                                          : std::numeric_limits<double>::infinity();
+                                          : kMaxAbbeNumber;
   if (std::abs(value) > limit) {
-    message << what << " " << text << " is beyond any real lens (at most " << limit
-            << (columnIndex == 2 ? "" : " mm")
+    message << what << " " << text << " is beyond any real "
+            << (columnIndex == 4 ? "glass" : "lens") << " (at most " << limit
+            << (columnIndex == 2 || columnIndex == 4 ? "" : " mm")
             << (columnIndex == 0 ? "; use inf for a flat surface" : "") << ")";
     return message.str();
   }

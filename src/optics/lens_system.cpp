@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "optics/exit_pupil.h"
@@ -93,6 +94,12 @@ void LensSystem::place() {
   }
   for (std::size_t k = 0; k < rows.size(); ++k)
     surfaces_[k].indexFront = k == 0 ? 1.0 : surfaces_[k - 1].indexRear;
+  glassRear_.resize(rows.size());
+  disperses_ = false;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    glassRear_[k] = cauchyCoefficients(rows[k].mediumIndexD(), rows[k].abbeD);
+    disperses_ = disperses_ || glassRear_[k].bNm2 != 0.0;
+  }
   firstOrder_ = computeFirstOrder(surfaces_, stopIndex_, wavelengthNm_);
   clipRadiusSqMm2_.resize(surfaces_.size());
   for (std::size_t k = 0; k < surfaces_.size(); ++k) {
@@ -250,6 +257,29 @@ RayPath LensSystem::traceFromScenePath(const LensRay& ray) const {
 const ExitPupilTable& LensSystem::exitPupilTable() const {
   std::call_once(pupilOnce_, [this] { pupil_ = std::make_unique<ExitPupilTable>(*this); });
   return *pupil_;
+}
+
+const ExitPupilTable& LensSystem::spectralExitPupilTable() const {
+  if (!disperses_) return exitPupilTable();
+  std::call_once(spectralPupilOnce_, [this] {
+    spectralPupil_ = std::make_unique<ExitPupilTable>(
+        *this, ExitPupilTable::kDefaultRadialBins, 2,
+        std::vector<double>(std::begin(ExitPupilTable::kSpectralProbeWavelengthsNm),
+                            std::end(ExitPupilTable::kSpectralProbeWavelengthsNm)));
+  });
+  return *spectralPupil_;
+}
+
+void LensSystem::sampleSpectralCameraRays(const float* filmXMm, const float* filmYMm,
+                                          const float* u0, const float* u1, std::size_t n,
+                                          LensRayBatch& rays, float* pdfPerMm2,
+                                          BatchKernel kernel) const {
+  if (kernel == BatchKernel::Auto || !batchKernelAvailable(kernel)) kernel = autoBatchKernel();
+  using Sample = ExitPupilTable::SampleKernel;
+  const Sample sampleKernel = kernel == BatchKernel::Avx512 ? Sample::Avx512
+                              : kernel == BatchKernel::Avx2 ? Sample::Avx2
+                                                            : Sample::Portable;
+  spectralExitPupilTable().sampleRays(filmXMm, filmYMm, u0, u1, n, rays, pdfPerMm2, sampleKernel);
 }
 
 double LensSystem::imageCircleBoundMm() const { return exitPupilTable().imageCircleBoundMm(); }

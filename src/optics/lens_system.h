@@ -16,6 +16,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "optics/glass.h"
 #include "optics/paraxial.h"
 #include "optics/prescription.h"
 #include "optics/surface_geometry.h"
@@ -173,6 +174,14 @@ class LensSystem {
   void traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) const;
   // What Auto means on this machine.
   static BatchKernel autoBatchKernel();
+  // The spectral batch trace: ray i at its own wavelength wavelengthsNm[i] (n(lambda) of each
+  // glass from glass.h, in single precision, per ray), whatever the system's wavelength. Surfaces
+  // between non-dispersive media take the RGB kernel's path.
+  void traceFromFilmBatch(LensRayBatch& rays, const float* wavelengthsNm,
+                          BatchKernel kernel = BatchKernel::Auto) const;
+  // Some medium has an Abbe number: the lens disperses (optics/analysis/chromatic.h's
+  // lensHasDispersion of the prescription).
+  bool disperses() const { return disperses_; }
 
   // Samples a point on the plane z = rearVertexZ() through which a ray from the film point
   // (x, y, 0) likely passes the lens. u in [0,1)^2. pdfPerMm2 is the density per unit area on that
@@ -197,6 +206,20 @@ class LensSystem {
   // The table, built on first use (thread-safe); call it to build it now, off a UI thread.
   const ExitPupilTable& exitPupilTable() const;
 
+  // The spectral render's wavelengths: what its camera samples, and what the spectral exit-pupil
+  // table covers. The CIE 1931 observer beyond them adds under 0.01% of Y.
+  static constexpr double kSpectralMinNm = 380.0;
+  static constexpr double kSpectralMaxNm = 780.0;
+  // One table for every wavelength of [kSpectralMinNm, kSpectralMaxNm], so that a spectral render
+  // needs no table per wavelength: its bounds contain the pass region at each of
+  // kSpectralProbeWavelengthsNm (see there), then take the usual margin. The same as
+  // exitPupilTable() for a lens that does not disperse. Built on first use (thread-safe).
+  const ExitPupilTable& spectralExitPupilTable() const;
+  // sampleCameraRays from the spectral table (follow with the spectral traceFromFilmBatch).
+  void sampleSpectralCameraRays(const float* filmXMm, const float* filmYMm, const float* u0,
+                                const float* u1, std::size_t n, LensRayBatch& rays,
+                                float* pdfPerMm2, BatchKernel kernel = BatchKernel::Auto) const;
+
   // First-order (paraxial) data at the system's wavelength, or at another one.
   const FirstOrderData& firstOrder() const { return firstOrder_; }
   FirstOrderData firstOrderAt(double wavelengthNm) const;
@@ -215,6 +238,8 @@ class LensSystem {
 
  private:
   void place();  // fills surfaces_, firstOrder_ from prescription_ and wavelengthNm_
+  // The batch trace; invWavelengthSq null for the system's own indices.
+  void traceBatch(LensRayBatch& rays, const float* invWavelengthSq, BatchKernel kernel) const;
   template <bool kRecord>
   // opticalPathMm, when not null, accumulates index x distance along the way.
   std::optional<LensRay> trace(LensRay ray, bool fromFilm, RayPath* path,
@@ -231,9 +256,14 @@ class LensSystem {
   std::vector<double> clipRadiusSqMm2_;
   // The stop's shape at its radius; tested after the stop's clip radius (the shape's bound).
   StopShapeTest stopTest_;
+  // The Cauchy fit of the medium after surface k (glass.h), for the spectral trace.
+  std::vector<CauchyCoefficients> glassRear_;
+  bool disperses_ = false;
 
   mutable std::once_flag pupilOnce_;
   mutable std::unique_ptr<ExitPupilTable> pupil_;
+  mutable std::once_flag spectralPupilOnce_;
+  mutable std::unique_ptr<ExitPupilTable> spectralPupil_;
 };
 
 }  // namespace lenslab::optics

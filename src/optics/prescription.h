@@ -22,6 +22,9 @@ inline constexpr double kFlatRadius = std::numeric_limits<double>::infinity();
 inline constexpr double kMaxLengthMm = 1e6;            // |radius| (when finite) and thickness
 inline constexpr double kMaxApertureDiameterMm = 1e5;  // clear aperture
 inline constexpr double kMaxRefractiveIndex = 10.0;    // n_d (real glasses stay below 2.1)
+// V_d: optical glasses span about 17 to 95, fluorite and water-like media reach 100. Beyond 150 a
+// number is a slip (a wrong column), not a glass.
+inline constexpr double kMaxAbbeNumber = 150.0;
 
 struct Surface {
   // Signed radius of curvature; > 0 puts the centre of curvature toward the film.

@@ -62,6 +62,10 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
                                  describe(kMaxRefractiveIndex)});
     if (s.abbeD && !(std::isfinite(*s.abbeD) && *s.abbeD > 0.0))
       errors.push_back({row, "Abbe number " + describe(*s.abbeD) + " must be positive"});
+    else if (s.abbeD && *s.abbeD > kMaxAbbeNumber)
+      errors.push_back({row, "Abbe number " + describe(*s.abbeD) +
+                                 " is beyond any glass (at most " + describe(kMaxAbbeNumber) +
+                                 ")"});
     if (!std::isfinite(s.apertureDiameterMm) || s.apertureDiameterMm <= 0.0)
       errors.push_back(
           {row, "aperture diameter " + describe(s.apertureDiameterMm) + " mm must be positive"});

@@ -23,10 +23,12 @@ class Camera {
   // Returns false when no ray leaves the lens for this sample (vignetted or blocked).
   virtual bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const = 0;
   // Many rays at once (cameras with a lens trace them as a batch); passed[i] says whether
-  // rays[i] left the lens.
+  // rays[i] left the lens. `wavelengthsNm`: each sample's wavelength when the camera is
+  // spectral() (the renderer draws them), else null; a camera that does not disperse ignores it.
   virtual void generateRays(std::size_t count, const glm::vec2* rasterPoints,
-                            const glm::vec2* lensSamples, CameraRay* rays,
-                            std::uint8_t* passed) const {
+                            const glm::vec2* lensSamples, CameraRay* rays, std::uint8_t* passed,
+                            const float* wavelengthsNm = nullptr) const {
+    (void)wavelengthsNm;
     for (std::size_t i = 0; i < count; ++i) {
       passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
     }
@@ -38,6 +40,9 @@ class Camera {
   // worker waits for it inside a wave. Renderers call it on their own thread before the first
   // wave; a viewer need not, and its UI thread should not. Idempotent and thread-safe.
   virtual void prepare() const {}
+  // A spectral camera wants a wavelength with each sample (render/spectral_film.h): the renderer
+  // then draws them and turns each sample's RGB radiance into its wavelength's colour.
+  virtual bool spectral() const { return false; }
   // The angle one pixel subtends from the lens (for texture filtering footprints).
   virtual float pixelSpreadRadians() const = 0;
   int width() const { return width_; }

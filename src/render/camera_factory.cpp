@@ -152,6 +152,7 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
                                              int width, int height, FalloffToggles falloff) {
   const CameraFraming framing = framingOf(scene);
+  const bool spectralCamera = rendersSpectrally(falloff.spectral, *lens);
   const LensFrame frame = framing.lensFrame(*lens);
   LensSampling sampling = framing.lensSampling;
   if (!falloff.rims) {
@@ -159,7 +160,8 @@ std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
     sampling = LensSampling::ExitPupil;
   }
   return std::make_shared<RealisticCamera>(std::move(lens), frame, width, height,
-                                           framing.filmDiagonalMm, sampling, falloff.cos4);
+                                           framing.filmDiagonalMm, sampling, falloff.cos4,
+                                           spectralCamera);
 }
 
 std::shared_ptr<const Camera> makeMatchingPinholeCamera(
@@ -179,8 +181,9 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(
       std::make_shared<PerspectiveCamera>(framing.cameraFromWorld, fovDegrees, width, height);
   const glm::dvec4 viewDirection = glm::inverse(framing.cameraFromWorld) * glm::dvec4(0, 0, 1, 0);
   return std::make_shared<MatchedPinholeCamera>(
-      makeLensCamera(scene, std::move(lens), width, height, falloff), std::move(pinhole),
-      glm::vec3(viewDirection), falloff.cos4);
+      makeLensCamera(scene, std::move(lens), width, height,
+                     {falloff.cos4, falloff.rims, SpectralMode::Off}),
+      std::move(pinhole), glm::vec3(viewDirection), falloff.cos4);
 }
 
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,

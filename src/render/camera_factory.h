@@ -12,6 +12,7 @@
 #include "render/lens_frame.h"
 #include "render/realistic_camera.h"
 #include "render/scene_description.h"
+#include "render/spectral_mode.h"
 
 namespace lenslab::render {
 
@@ -23,7 +24,7 @@ struct CameraOverrides {
   // pinhole (see makeCamera).
   std::optional<std::filesystem::path> lensPath;
   std::optional<int> width, height;  // replaces the film resolution
-  FalloffToggles falloff;            // `--no-cos4`, `--no-rims`
+  FalloffToggles falloff;            // `--no-cos4`, `--no-rims`, `--spectral`
 };
 
 // How a scene's camera is placed, whatever lens it looks through.
@@ -49,6 +50,8 @@ CameraFraming framingOf(const SceneDescription& scene);
 // stop): the viewer's edited lens. With rims off the camera traces a stop-only copy of the lens
 // (with its own exit-pupil table, built in the camera's prepare()), aimed by the exit pupil even
 // on the course's scenes, whose rear-disk sampling is itself a rim.
+// falloff.spectral: whether the camera traces each sample at its own wavelength
+// (spectral_mode.h).
 std::shared_ptr<const Camera> makeLensCamera(const SceneDescription& scene,
                                              std::shared_ptr<const optics::LensSystem> lens,
                                              int width, int height, FalloffToggles falloff = {});

@@ -3,7 +3,15 @@
 // time and see what is left. Part of what a camera is built with (camera_factory.h), so a render
 // job never changes under a running render; both on is the physical camera.
 
+//
+// It also carries the camera's spectral mode (issue 23), the other switch a lens camera is built
+// with, so that every path that builds one (the CLI, the viewer's preview and export) passes it
+// along and a change restarts the preview; it is not a fall-off cause: allOn() and describe()
+// leave it out.
+
 #include <string>
+
+#include "render/spectral_mode.h"
 
 namespace lenslab::render {
 
@@ -15,6 +23,8 @@ struct FalloffToggles {
   // (optics::ApertureClipping::StopOnly); rays that miss a surface or reflect totally are still
   // lost.
   bool rims = true;
+  // Whether the lens camera traces each sample at its own wavelength (spectral_mode.h).
+  SpectralMode spectral = SpectralMode::Auto;
 
   bool allOn() const { return cos4 && rims; }
   bool operator==(const FalloffToggles&) const = default;

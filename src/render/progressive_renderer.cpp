@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "render/sampler_batch.h"
+#include "render/spectral_film.h"
 #include "render/thread_priority.h"
 
 namespace lenslab::render {
@@ -83,6 +84,10 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   thread_local std::vector<CameraRay> rays;
   thread_local std::vector<std::uint8_t> passed;
   thread_local std::vector<PixelSeeds> seeds;
+  // A spectral camera's wavelengths, one per sample (render/spectral_film.h).
+  const bool spectral = camera.spectral();
+  thread_local std::vector<SpectralSample> spectralSamples;
+  thread_local std::vector<float> wavelengths;
   // The tile's pixels that some camera ray can leave the lens from; the others (outside a
   // lens's image circle) stay black, and their samples are counted without being taken.
   thread_local std::vector<glm::ivec2> visible;
@@ -134,7 +139,21 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         rasterPoints[static_cast<std::size_t>(p) * samplesPerPixel + s] += glm::vec2(x, y);
       }
     }
-    camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data());
+    if (spectral) {
+      const SpectralFilm& film = SpectralFilm::instance();
+      spectralSamples.resize(n);
+      wavelengths.resize(n);
+      for (int p = 0; p < pixels; ++p) {
+        for (int s = 0; s < count; ++s) {
+          const std::size_t i = static_cast<std::size_t>(p) * samplesPerPixel + s;
+          spectralSamples[i] =
+              film.sample(spectralSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s)));
+          wavelengths[i] = spectralSamples[i].wavelengthNm;
+        }
+      }
+    }
+    camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
+                        spectral ? wavelengths.data() : nullptr);
     statistics.cameraSamples += n;
     for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
@@ -144,9 +163,9 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         if (!passed[i]) continue;
         ++statistics.lensPassed;
         const CameraRay& ray = rays[i];
-        const glm::vec3 radiance =
-            ray.weight *
-            incomingRadiance(*job.scene, ray.origin, ray.direction, samplers[i], wave.integrator);
+        glm::vec3 radiance = ray.weight * incomingRadiance(*job.scene, ray.origin, ray.direction,
+                                                           samplers[i], wave.integrator);
+        if (spectral) radiance = spectralSamples[i].toRgb(radiance);
         if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
             !std::isfinite(radiance.z)) {
           ++statistics.discardedSamples;

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 #include <vector>
 
+#include "optics/exit_pupil.h"
 #include "render/sampling.h"
 
 namespace lenslab::render {
@@ -25,12 +26,14 @@ float exposureWeight(glm::dvec3 toPupil, const optics::PupilSample& pupil, bool 
 
 RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
                                  const LensFrame& frame, int width, int height,
-                                 double filmDiagonalMm, LensSampling sampling, bool cos4Weighting)
+                                 double filmDiagonalMm, LensSampling sampling, bool cos4Weighting,
+                                 bool spectral)
     : Camera(width, height),
       lens_(std::move(lens)),
       worldFromLensMm_(frame.worldFromLensMm()),
       sampling_(sampling),
-      cos4Weighting_(cos4Weighting) {
+      cos4Weighting_(cos4Weighting),
+      spectral_(spectral) {
   const double diagonalPixels = std::hypot(static_cast<double>(width), static_cast<double>(height));
   filmWidthMm_ = filmDiagonalMm * width / diagonalPixels;
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
@@ -61,14 +64,20 @@ double RealisticCamera::rearDiskPdfPerMm2() const {
   return 1.0 / (3.14159265358979323846 * radius * radius);
 }
 
-void RealisticCamera::prepare() const { lens_->exitPupilTable(); }
+void RealisticCamera::prepare() const {
+  if (spectral_)
+    lens_->spectralExitPupilTable();
+  else
+    lens_->exitPupilTable();
+}
 
 bool RealisticCamera::maySeeScene(glm::vec2 rasterMin, glm::vec2 rasterMax) const {
   // The film rectangle's point nearest the axis, against the lens's image-circle bound.
   const glm::dvec2 a = filmPointMm(rasterMin), b = filmPointMm(rasterMax);
   const double x = std::clamp(0.0, std::min(a.x, b.x), std::max(a.x, b.x));
   const double y = std::clamp(0.0, std::min(a.y, b.y), std::max(a.y, b.y));
-  const double bound = lens_->imageCircleBoundMm();
+  const double bound = spectral_ ? lens_->spectralExitPupilTable().imageCircleBoundMm()
+                                 : lens_->imageCircleBoundMm();
   return x * x + y * y <= bound * bound;
 }
 
@@ -100,7 +109,9 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
 
 void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoints,
                                    const glm::vec2* lensSamples, CameraRay* rays,
-                                   std::uint8_t* passed) const {
+                                   std::uint8_t* passed, const float* wavelengthsNm) const {
+  // The RGB path below is as it was when there are no wavelengths to trace.
+  const bool spectral = spectral_ && wavelengthsNm != nullptr;
   thread_local optics::LensRayBatch batch;
   thread_local std::vector<float> filmX, filmY, u0, u1, pdfPerMm2;
   filmX.resize(count);
@@ -116,7 +127,10 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
     u1[i] = lensSamples[i].y;
   }
   const double planeZ = lens_->rearVertexZ();
-  if (sampling_ == LensSampling::ExitPupil) {
+  if (sampling_ == LensSampling::ExitPupil && spectral) {
+    lens_->sampleSpectralCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), count, batch,
+                                    pdfPerMm2.data());
+  } else if (sampling_ == LensSampling::ExitPupil) {
     lens_->sampleCameraRays(filmX.data(), filmY.data(), u0.data(), u1.data(), count, batch,
                             pdfPerMm2.data());
   } else {
@@ -163,7 +177,10 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
       alive[i] &= static_cast<std::uint8_t>(pdf > 0.0f);
     }
   }
-  lens_->traceFromFilmBatch(batch);
+  if (spectral)
+    lens_->traceFromFilmBatch(batch, wavelengthsNm);
+  else
+    lens_->traceFromFilmBatch(batch);
   for (std::size_t i = 0; i < count; ++i) {
     rays[i].weight = weights[i];
     passed[i] = batch.alive[i];

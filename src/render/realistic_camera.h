@@ -34,11 +34,18 @@ class RealisticCamera final : public Camera {
   // lens's own (optics::ApertureClipping).
   RealisticCamera(std::shared_ptr<const optics::LensSystem> lens, const LensFrame& frame, int width,
                   int height, double filmDiagonalMm,
-                  LensSampling sampling = LensSampling::ExitPupil, bool cos4Weighting = true);
+                  LensSampling sampling = LensSampling::ExitPupil, bool cos4Weighting = true,
+                  bool spectral = false);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
   // Traces the whole batch with the optics library's vectorised trace.
+  // Spectral (the constructor's `spectral` and wavelengths given): ray i is traced at its own
+  // wavelength, aimed by the lens's spectral exit-pupil table, which contains the pass region at
+  // every wavelength of the spectral range (optics::LensSystem::spectralExitPupilTable).
   void generateRays(std::size_t count, const glm::vec2* rasterPoints, const glm::vec2* lensSamples,
-                    CameraRay* rays, std::uint8_t* passed) const override;
+                    CameraRay* rays, std::uint8_t* passed,
+                    const float* wavelengthsNm = nullptr) const override;
+  // Traces each sample at its wavelength: the lens's dispersion is in the picture.
+  bool spectral() const override { return spectral_; }
 
   float pixelSpreadRadians() const override;
   // Builds the lens's exit-pupil table: every sampling mode needs its image-circle bound.
@@ -59,6 +66,7 @@ class RealisticCamera final : public Camera {
   double mmPerRasterX_, mmPerRasterY_;  // film size over resolution: no division per ray
   LensSampling sampling_;
   bool cos4Weighting_;
+  bool spectral_;
 };
 
 }  // namespace lenslab::render

@@ -262,4 +262,39 @@ class PixelSampler {
   std::uint32_t dimensionPair_ = 0;
 };
 
+// The third Sobol dimension (primitive polynomial x^2 + x + 1, initial m = 1, 3; S. Joe and F.
+// Y. Kuo's table), as 32-bit fixed point, bit-reversed like the second's: entry k is the value of
+// index bit k.
+constexpr std::array<std::uint32_t, 32> sobolThirdReversedDirections() {
+  std::array<std::uint32_t, 32> v{};
+  v[0] = 1u << 31;
+  v[1] = 3u << 29;
+  for (int k = 2; k < 32; ++k) v[k] = v[k - 1] ^ v[k - 2] ^ (v[k - 2] >> 2);
+  std::array<std::uint32_t, 32> reversed{};
+  for (int k = 0; k < 32; ++k) reversed[k] = sampler_detail::reverseBitsConstexpr(v[k]);
+  return reversed;
+}
+inline constexpr sampler_detail::LinearByteTables<std::uint32_t> kSobolThirdReversed{
+    sobolThirdReversedDirections()};
+
+// The spectral render's wavelength sample (SpectralFilm::sample) of one camera sample, outside
+// the PixelSampler's dimensions so that the integrator's samples are the RGB render's. It is the
+// third dimension of the lens pair's Sobol sequence: the same Owen-shuffled sample index as the
+// lens point, its own Owen scramble. So (lens point, wavelength) is a scrambled 3D Sobol net over
+// a pixel's samples, not a padding of independent strata: where a pixel's radiance varies over the
+// lens (defocus, which the lens's colour blurs), the product of that variation and the
+// wavelength's colour weight stays stratified, and colour noise falls about as fast as the RGB
+// render's noise does. Over every power-of-two prefix of a pixel's samples the values alone are
+// stratified too (one in each 1/2^m of [0, 1)).
+inline float spectralSample01(const PixelSeeds& pixel, std::uint32_t sampleIndex) {
+  using namespace sampler_detail;
+  const PairSeeds& lens = pixel.leadingPairs[1];
+  // As PixelSampler::shuffledIndex for the lens pair.
+  const std::uint32_t shuffled = reverseBits(laineKarras(reverseBits(sampleIndex), lens.shuffle));
+  const std::uint32_t seed = hashCombine(lens.x ^ 0x5bd1e995u, lens.y);
+  // Owen scrambling of a value v is reverseBits(laineKarras(reverseBits(v))); the table already
+  // gives the reversed value.
+  return toUnitFloat(reverseBits(laineKarras(kSobolThirdReversed(shuffled), seed)));
+}
+
 }  // namespace lenslab::render

@@ -174,6 +174,13 @@ TEST(LensFile, BadInputGivesFileLineColumnErrors) {
       {"50 -2e6 1.5 20\n0 5 0 10\n-50 40 1 20\n", 1, 4, "beyond any real lens"},
       {"50 5 1.5 20\n0 5 0 2e5\n-50 40 1 20\n", 2, 7, "aperture diameter 2e5 is beyond"},
       {"50 5 1e3 20\n0 5 0 10\n-50 40 1 20\n", 1, 6, "refractive index 1e3 is beyond"},
+      // V_d: at its own column, on its row (issue 23: zero, negative, NaN, absurd).
+      {"50 5 1.5 20 0\n0 5 0 10\n-50 40 1 20\n", 1, 13, "Abbe number 0 must be positive"},
+      {"50 5 1.5 20\n0 5 0 10\n-50 40 1.6 20 -30\n", 3, 15, "Abbe number -30 must be positive"},
+      {"50 5 1.5 20   nan\n0 5 0 10\n-50 40 1 20\n", 1, 15, "NaN is not allowed"},
+      {"50 5 1.5 20 inf\n0 5 0 10\n-50 40 1 20\n", 1, 13, "infinity is not allowed"},
+      {"50 5 1.5 20 40\n0 5 0 10\n-50 40 1.5 20 151\n", 3, 15,
+       "Abbe number 151 is beyond any real glass (at most 150)"},
       // Validation errors name the surface counted from 1, as the viewer's table does.
       {"50 5 1.5 20\n0 5 0 -3\n-50 40 1 20\n", 2, 1, "surface 2: aperture diameter"},
       {"12 1 1.5 20\n-12 5 1 20\n0 40 0 10\n", 2, 1,

@@ -81,6 +81,21 @@ TEST(Validation, NonFiniteNumbersAreRejectedNotTraced) {
   expectError(p, 0, "radius");
 }
 
+// A table edit of V_d goes through validate() too: zero, negative, NaN and absurd values name the
+// row; 150 itself is allowed.
+TEST(Validation, AbbeNumbersMustBeAGlass) {
+  for (const double bad : {0.0, -20.0, std::nan(""), 151.0, 1e300}) {
+    Prescription p = goodLens();
+    p.surfaces[0].abbeD = bad;
+    expectError(p, 0, "Abbe number");
+  }
+  Prescription p = goodLens();
+  p.surfaces[0].abbeD = 151.0;
+  expectError(p, 0, "beyond any glass");
+  p.surfaces[0].abbeD = kMaxAbbeNumber;
+  EXPECT_TRUE(LensSystem::build(p).ok());
+}
+
 TEST(Validation, NoSurfaces) { expectError(Prescription{}, -1, "no surfaces"); }
 
 TEST(Validation, AbsurdMagnitudesAreFlagged) {

@@ -229,6 +229,12 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     }
     return std::nullopt;
   }
+  if (a[0] == "spectral") {
+    if (a.size() != 2 || !render::parseSpectralMode(a[1])) {
+      return problemAt(command, 0, "expected: set spectral on|off|auto");
+    }
+    return std::nullopt;
+  }
   if (a[0] == "layout") {
     if (a.size() != 4) return problemAt(command, 0, "expected: set layout LENS PREVIEW LOG");
     for (std::size_t i = 1; i < 4; ++i) {
@@ -245,7 +251,7 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
           "' (expected surface, film-distance, stop-diameter, aperture, exposure, camera, "
           "blocked-rays, "
           "layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
-          "vignetting-overlay, colour-fans or fields)");
+          "vignetting-overlay, colour-fans, spectral or fields)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
@@ -542,6 +548,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     }
     if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
       host.setVignettingSwitch(a[0], a[1] == "on");
+      return true;
+    }
+    if (a[0] == "spectral") {
+      host.setSpectralMode(*render::parseSpectralMode(a[1]));
       return true;
     }
     if (a[0] == "layout") {

@@ -44,6 +44,8 @@
 //                                preview, with its colour bar)
 //   set colour-fans on|off      (the cross-section's fans also at the F and C lines, each ray in
 //                                its line's colour; a lens without V_d keeps one colour)
+//   set spectral on|off|auto    (the preview's Spectral choice: each sample at a wavelength of
+//                                its own; auto when some glass has a V_d)
 //
 // Pictures for slides (File > Export render..., auto exposure):
 //   export-render FILE SIZE SPP  renders the current lens and scene in the background at SIZE
@@ -71,6 +73,7 @@
 
 #include "app/document/lens_editor.h"
 #include "common/diagnostics.h"
+#include "render/spectral_mode.h"
 
 namespace lenslab::app {
 
@@ -209,6 +212,8 @@ class ScriptHost {
   // The vignetting teaching's switches: "cos4", "rims" (the render's FalloffToggles) and
   // "vignetting-overlay".
   virtual void setVignettingSwitch(const std::string& /*name*/, bool /*on*/) {}
+  // The preview's Spectral choice (render/spectral_mode.h).
+  virtual void setSpectralMode(render::SpectralMode /*mode*/) {}
   // Forgets the frames measured so far (--stats-json).
   virtual void resetStats() {}
 };

@@ -114,6 +114,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
                            {"rays", traced.bundle.rays.size()}};
   }
   // The vignetting teaching's switches (issue 21) and what the illumination plot notes.
+  about["spectral"] = render::toString(state.falloff.spectral);
   about["vignetting"] = {{"cos4", state.falloff.cos4},
                          {"rims", state.falloff.rims},
                          {"overlay", state.vignettingOverlay},

@@ -57,6 +57,26 @@ void drawControls(ViewerState& state) {
   row.next(WrapRow::checkboxWidth("Pinhole"));
   ImGui::RadioButton("Pinhole", &camera, 1);
   state.pinholeCamera = camera == 1;
+  // Spectral rendering (issue 23): auto is spectral when some glass of the lens has a V_d.
+  {
+    const char* kModes[] = {"auto", "on", "off"};
+    const render::SpectralMode kValues[] = {render::SpectralMode::Auto, render::SpectralMode::On,
+                                            render::SpectralMode::Off};
+    int mode = 0;
+    for (int i = 0; i < 3; ++i)
+      if (state.falloff.spectral == kValues[i]) mode = i;
+    const float comboWidth = px(70);
+    row.next(comboWidth + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Spectral").x);
+    ImGui::SetNextItemWidth(comboWidth);
+    if (ImGui::Combo("Spectral", &mode, kModes, 3)) state.falloff.spectral = kValues[mode];
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    state.uiRects["preview/spectral"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Spectral rendering: each sample traces the lens at a wavelength of its own, so the\n"
+          "glass's dispersion shows (colour fringes toward the corners, coloured blur).\n"
+          "auto: when some glass of the lens has an Abbe number (V_d).");
+  }
   const ImVec4 kBusy(1.0f, 0.8f, 0.35f, 1.0f);
   if (preview.stale) {
     // The figures of the previous image would read as this one's: say what is happening.

@@ -1,0 +1,171 @@
+// Spectral against RGB rendering at equal samples per pixel (issue 23: spectral <= 1.25x RGB),
+// side by side in one run: every iteration renders the scene once in RGB and once spectrally,
+// which one first alternating from iteration to iteration, so that the shared machine's drift
+// falls on both alike; the medians of each are reported as counters (rgb_ms, spectral_ms and
+// their ratio). Whole renders (renderToCompletion, all hardware threads), wall time.
+//
+// BM_SpectralVsRgb/scene:<0 or 1>/vd:<0 or 1>
+//   scene 0: the course's dof-dragons double-Gauss scene (../shared/reference), 300 x 300, 8 spp
+//            (rear-disk sampling, direct lighting as the scene asks)
+//   scene 1: the benchmark scene (../shared/bench/bench-dgauss.pbrt), 256 x 256, 4 spp, path
+//   vd 0: the scene's lens as it is (no V_d: the spectral render draws wavelengths and converts
+//         colour, and traces the same rays); vd 1: the same lens with V_d 50 on every glass, so
+//         that the spectral trace runs its per-ray index kernel and the spectral exit-pupil table.
+// BM_SpectralPreviewFirstPass/spectral:<0 or 1>: the viewer's first preview pass after an edit
+//   (as BM_PreviewFirstPass: a new film distance, so a new exit-pupil table; coarse look, 1 spp
+//   at 488 x 325) for the default scene through the flint landscape lens (V_d 23.78), RGB or
+//   spectral (the spectral table probes four wavelengths). Target: within the preview's 100 ms.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "optics/lens_loader.h"
+#include "optics/lens_system.h"
+#include "render/camera_factory.h"
+#include "render/pbrt_parser.h"
+#include "render/progressive_renderer.h"
+#include "render/realistic_camera.h"
+#include "render/scene_builder.h"
+
+namespace {
+
+using lenslab::optics::LensSystem;
+namespace render = lenslab::render;
+using Clock = std::chrono::steady_clock;
+
+struct LoadedScene {
+  std::shared_ptr<const render::SceneDescription> description;
+  std::shared_ptr<const render::Scene> scene;
+  std::shared_ptr<const LensSystem> lens;  // as the scene's camera has it
+};
+
+LoadedScene load(const std::string& path) {
+  LoadedScene out;
+  render::ParseResult parsed = render::parsePbrtFile(path);
+  if (!parsed.scene) return out;
+  render::BuildResult built = render::buildScene(*parsed.scene);
+  if (!built.scene) return out;
+  lenslab::Diagnostics diagnostics;
+  const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
+  const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
+  if (!realistic) return out;
+  out.lens = realistic->lens().withFilmDistance(realistic->lens().filmDistanceMm());
+  out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
+  out.scene = std::move(built.scene);
+  return out;
+}
+
+const LoadedScene& scene(int index) {
+  static const std::string shared = std::string(LENSLAB_SOURCE_DIR) + "/../shared";
+  static const LoadedScene course = load(shared + "/reference/scenes/dof-dragons.dgauss.pbrt");
+  static const LoadedScene bench = load(shared + "/bench/bench-dgauss.pbrt");
+  return index == 0 ? course : bench;
+}
+
+// The lens with V_d 50 on every glass (for a dispersive case of the same scene).
+std::shared_ptr<const LensSystem> withAbbeNumbers(const LensSystem& lens) {
+  lenslab::optics::Prescription p = lens.prescription();
+  for (auto& s : p.surfaces)
+    if (s.mediumIndexD() > 1.0) s.abbeD = 50.0;
+  return LensSystem::build(p).system;
+}
+
+render::RenderJob job(const LoadedScene& loaded, std::shared_ptr<const LensSystem> lens, int width,
+                      int height, int spp, bool spectral) {
+  render::RenderJob out;
+  render::FalloffToggles options;
+  options.spectral = spectral ? render::SpectralMode::On : render::SpectralMode::Off;
+  out.camera = render::makeLensCamera(*loaded.description, std::move(lens), width, height, options);
+  out.scene = loaded.scene;
+  out.settings.samplesPerPixel = spp;
+  out.settings.integrator.kind = loaded.description->integrator.kind;
+  out.settings.integrator.maxDepth = loaded.description->integrator.maxDepth;
+  return out;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double renderMs(const render::RenderJob& job) {
+  const auto start = Clock::now();
+  const auto image = render::renderToCompletion(job);
+  benchmark::DoNotOptimize(image->rgb.data());
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+void BM_SpectralVsRgb(benchmark::State& state) {
+  const int sceneIndex = static_cast<int>(state.range(0));
+  const LoadedScene& loaded = scene(sceneIndex);
+  if (!loaded.scene) return state.SkipWithError("cannot load the scene from ../shared");
+  auto lens = state.range(1) ? withAbbeNumbers(*loaded.lens) : loaded.lens;
+  const int size = sceneIndex == 0 ? 300 : 256, spp = sceneIndex == 0 ? 8 : 4;
+  const render::RenderJob rgb = job(loaded, lens, size, size, spp, false);
+  const render::RenderJob spectral = job(loaded, lens, size, size, spp, true);
+  rgb.camera->prepare();  // tables built before timing
+  spectral.camera->prepare();
+  std::vector<double> rgbMs, spectralMs;
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    const bool rgbFirst = iteration++ % 2 == 0;
+    double a = 0, b = 0;
+    if (rgbFirst) {
+      a = renderMs(rgb);
+      b = renderMs(spectral);
+    } else {
+      b = renderMs(spectral);
+      a = renderMs(rgb);
+    }
+    rgbMs.push_back(a);
+    spectralMs.push_back(b);
+    state.SetIterationTime((a + b) * 1e-3);
+  }
+  state.counters["rgb_ms"] = median(rgbMs);
+  state.counters["spectral_ms"] = median(spectralMs);
+  state.counters["ratio"] = median(spectralMs) / median(rgbMs);
+}
+BENCHMARK(BM_SpectralVsRgb)
+    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->ArgNames({"scene", "vd"})
+    ->Iterations(9)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+void BM_SpectralPreviewFirstPass(benchmark::State& state) {
+  static const LoadedScene loaded = [] {
+    LoadedScene out = load(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
+    const auto flint = lenslab::optics::loadLens(std::string(LENSLAB_SOURCE_DIR) +
+                                                 "/lenses/flint-landscape-50mm.dat");
+    out.lens = flint.system ? flint.system->withFilmDistance(52.0) : nullptr;
+    return out;
+  }();
+  if (!loaded.scene || !loaded.lens) return state.SkipWithError("cannot load the default scene");
+  render::ProgressiveRenderer renderer;
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    // A new lens every time, as after a film-distance edit: its tables are built again.
+    const auto lens = loaded.lens->withFilmDistance(loaded.lens->filmDistanceMm() +
+                                                    (iteration++ % 2 ? -0.2 : 0.2));
+    render::RenderJob preview = job(loaded, lens, 488, 325, 1, state.range(0) != 0);
+    preview.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    preview.settings.lowPriority = true;
+    preview.settings.coarseDivisor = 4;
+    const auto generation = renderer.start(std::move(preview));
+    if (!renderer.waitForCompletion(generation, 60.0)) return state.SkipWithError("no pass");
+  }
+}
+BENCHMARK(BM_SpectralPreviewFirstPass)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("spectral")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace

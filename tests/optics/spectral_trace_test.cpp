@@ -1,0 +1,205 @@
+// The spectral trace (issue 23): the batch kernel at a wavelength per ray against the scalar
+// double trace of the same lens rebuilt at that wavelength, the RGB batch unchanged without
+// dispersion, and the one spectral exit-pupil table against brute force: it must contain every
+// ray that passes at any wavelength of the spectral range, or the spectral render is biased.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "optics/exit_pupil.h"
+#include "optics/glass.h"
+#include "test_lenses.h"
+
+namespace lenslab::optics {
+namespace {
+
+std::shared_ptr<const LensSystem> bundled(const char* name) {
+  Prescription p = testing::loadPrescription(testing::bundledLensDir() / name);
+  BuildResult built = LensSystem::build(p);
+  EXPECT_TRUE(built.ok()) << name;
+  return built.system;
+}
+
+// The bundled lenses with Abbe numbers, each also stopped down to f/8.
+std::vector<std::shared_ptr<const LensSystem>> dispersiveLenses() {
+  std::vector<std::shared_ptr<const LensSystem>> out;
+  for (const char* name :
+       {"flint-landscape-50mm.dat", "cooke-triplet-100mm.dat", "dgauss-100mm.dat"}) {
+    auto lens = bundled(name);
+    if (!lens) continue;
+    EXPECT_TRUE(lens->disperses()) << name;
+    out.push_back(lens);
+    out.push_back(lens->withStopDiameter(lens->firstOrder().eflMm / 8.0));
+  }
+  return out;
+}
+
+TEST(SpectralTrace, CauchyCoefficientsGiveTheAbbeDefinitionExactly) {
+  const CauchyCoefficients c = cauchyCoefficients(1.84666, 23.78);
+  EXPECT_NEAR(c.at(kWavelengthDNm), 1.84666, 1e-14);
+  EXPECT_NEAR(c.at(kWavelengthFNm) - c.at(kWavelengthCNm), 0.84666 / 23.78, 1e-14);
+  EXPECT_EQ(cauchyCoefficients(1.5, std::nullopt).bNm2, 0.0);
+}
+
+TEST(SpectralTrace, BatchAtEachRaysWavelengthMatchesTheScalarTraceAtIt) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const auto& lens : dispersiveLenses()) {
+    const ExitPupilTable& table = lens->spectralExitPupilTable();
+    const std::size_t n = 3000;
+    LensRayBatch batch;
+    batch.resize(n);
+    std::vector<float> wavelengths(n);
+    std::vector<LensRay> starts(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = table.filmRadiusMaxMm() * std::sqrt(uniform(rng));
+      const double phi = 2.0 * std::numbers::pi * uniform(rng);
+      const glm::dvec3 film{r * std::cos(phi), r * std::sin(phi), 0.0};
+      const auto pupil = table.sample({film.x, film.y}, {uniform(rng), uniform(rng)});
+      const glm::dvec3 to = pupil ? pupil->pointMm : glm::dvec3(0.0, 0.0, table.planeZMm());
+      starts[i] = {film, glm::normalize(to - film)};
+      batch.ox[i] = static_cast<float>(film.x);
+      batch.oy[i] = static_cast<float>(film.y);
+      batch.oz[i] = 0.0f;
+      batch.dx[i] = static_cast<float>(starts[i].direction.x);
+      batch.dy[i] = static_cast<float>(starts[i].direction.y);
+      batch.dz[i] = static_cast<float>(starts[i].direction.z);
+      wavelengths[i] = static_cast<float>(380.0 + 400.0 * uniform(rng));
+    }
+    for (auto kernel : {LensSystem::BatchKernel::Portable, LensSystem::BatchKernel::Auto}) {
+      LensRayBatch traced = batch;
+      lens->traceFromFilmBatch(traced, wavelengths.data(), kernel);
+      int agree = 0, compared = 0, worst = 0;
+      double worstDirection = 0.0, worstPosition = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto scalar = lens->withWavelength(wavelengths[i])->traceFromFilm(starts[i]);
+        // Rays grazing a rim may pass in one precision and not in the other.
+        if (scalar.has_value() != (traced.alive[i] != 0)) {
+          ++worst;
+          continue;
+        }
+        if (!scalar) continue;
+        ++compared;
+        const double position =
+            glm::length(glm::dvec3(traced.ox[i], traced.oy[i], traced.oz[i]) - scalar->origin);
+        const double direction =
+            glm::length(glm::dvec3(traced.dx[i], traced.dy[i], traced.dz[i]) - scalar->direction);
+        worstPosition = std::max(worstPosition, position);
+        worstDirection = std::max(worstDirection, direction);
+        if (position < 2e-3 && direction < 2e-5) ++agree;
+      }
+      EXPECT_GT(compared, 1000);
+      EXPECT_LE(worst, 3) << "rays passing in one trace only";
+      EXPECT_EQ(agree, compared) << "worst position " << worstPosition << " mm, direction "
+                                 << worstDirection;
+    }
+    // And the wavelength matters: the same rays at 400 and 700 nm leave differently.
+    LensRayBatch blue = batch, red = batch;
+    std::vector<float> at400(n, 400.0f), at700(n, 700.0f);
+    lens->traceFromFilmBatch(blue, at400.data());
+    lens->traceFromFilmBatch(red, at700.data());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (blue.alive[i] && red.alive[i])
+        largest = std::max(largest, std::abs(double(blue.dx[i]) - red.dx[i]));
+    EXPECT_GT(largest, 2e-4);
+  }
+}
+
+TEST(SpectralTrace, WithoutDispersionTheSpectralBatchIsTheRgbBatch) {
+  const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
+  ASSERT_TRUE(lens);
+  EXPECT_FALSE(lens->disperses());
+  EXPECT_EQ(&lens->spectralExitPupilTable(), &lens->exitPupilTable());
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+  const std::size_t n = 1000;
+  std::vector<float> x(n), y(n), u0(n), u1(n), pdf(n), wavelengths(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = 20.0f * uniform(rng) - 10.0f;
+    y[i] = 20.0f * uniform(rng) - 10.0f;
+    u0[i] = uniform(rng);
+    u1[i] = uniform(rng);
+    wavelengths[i] = 380.0f + 400.0f * uniform(rng);
+  }
+  LensRayBatch rgb, spectral;
+  lens->sampleCameraRays(x.data(), y.data(), u0.data(), u1.data(), n, rgb, pdf.data());
+  spectral = rgb;
+  lens->traceFromFilmBatch(rgb);
+  lens->traceFromFilmBatch(spectral, wavelengths.data());
+  EXPECT_EQ(rgb.alive, spectral.alive);
+  EXPECT_EQ(rgb.dx, spectral.dx);
+  EXPECT_EQ(rgb.dz, spectral.dz);
+  EXPECT_EQ(rgb.ox, spectral.ox);
+}
+
+// Brute force: film points over the whole image circle, plane points over the table's search
+// square, a wavelength drawn anew for every ray from the whole spectral range, traced in double
+// precision by the lens rebuilt at that wavelength. Every passing ray must lie in the table's
+// sampled region.
+TEST(SpectralTrace, SpectralExitPupilContainsEveryPassingRayAtEveryWavelength) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const auto& lens : dispersiveLenses()) {
+    const ExitPupilTable& table = lens->spectralExitPupilTable();
+    ASSERT_GT(table.imageCircleRadiusMm(), 0.0);
+    // Wavelengths quantised to 0.5 nm so that the lenses rebuilt for them can be reused.
+    std::vector<std::shared_ptr<const LensSystem>> atWavelength(801);
+    const double domain = table.fallbackRadiusMm();
+    int passing = 0, outside = 0, passingAtExtremes = 0;
+    for (int f = 0; f < 60; ++f) {
+      const double r = table.filmRadiusMaxMm() * (f + uniform(rng)) / 60.0;
+      const double phi = 2.0 * std::numbers::pi * uniform(rng);
+      const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
+      for (int i = 0; i < 600; ++i) {
+        const int k = static_cast<int>(uniform(rng) * 801.0);
+        auto& atK = atWavelength[static_cast<std::size_t>(std::min(k, 800))];
+        if (!atK) atK = lens->withWavelength(380.0 + 0.5 * std::min(k, 800));
+        const glm::dvec2 p{domain * (2 * uniform(rng) - 1), domain * (2 * uniform(rng) - 1)};
+        const glm::dvec3 origin{film, 0.0};
+        const glm::dvec3 point{p, table.planeZMm()};
+        if (!atK->traceFromFilm({origin, glm::normalize(point - origin)})) continue;
+        ++passing;
+        if (k < 40 || k > 760) ++passingAtExtremes;
+        if (table.pdf(film, p) <= 0.0) ++outside;
+      }
+    }
+    EXPECT_GT(passing, 200);
+    EXPECT_GT(passingAtExtremes, 10);
+    EXPECT_LE(outside, passing / 2000)
+        << "stop " << lens->stopDiameterMm() << ": " << outside << " of " << passing;
+  }
+}
+
+// The spectral table is needed for it: the d-line table misses rays at other wavelengths for a
+// strongly dispersive lens near the rim of its pass region.
+TEST(SpectralTrace, TheDLineTableAloneWouldMissRaysAtOtherWavelengths) {
+  const auto lens = bundled("flint-landscape-50mm.dat");
+  ASSERT_TRUE(lens);
+  const ExitPupilTable& table = lens->exitPupilTable();
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  const auto violet = lens->withWavelength(380.0);
+  const double domain = table.fallbackRadiusMm();
+  int outside = 0;
+  for (int f = 0; f < 60; ++f) {
+    const double r = table.filmRadiusMaxMm() * (f + uniform(rng)) / 60.0;
+    const glm::dvec2 film{r, 0.0};
+    for (int i = 0; i < 2000; ++i) {
+      const glm::dvec2 p{domain * (2 * uniform(rng) - 1), domain * (2 * uniform(rng) - 1)};
+      const glm::dvec3 origin{film, 0.0};
+      if (!violet->traceFromFilm(
+              {origin, glm::normalize(glm::dvec3(p, table.planeZMm()) - origin)}))
+        continue;
+      if (table.pdf(film, p) <= 0.0) ++outside;
+    }
+  }
+  EXPECT_GT(outside, 0);
+}
+
+}  // namespace
+}  // namespace lenslab::optics

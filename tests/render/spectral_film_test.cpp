@@ -1,0 +1,123 @@
+// The spectral film (render/spectral_film.h): its CIE table is the shared reference's, its RGB ->
+// spectrum -> RGB round trip is the identity (a brute-force integral over wavelength), white's
+// spectrum is positive, and the wavelength samples of a pixel are stratified.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/cie1931.h"
+#include "render/sampler.h"
+#include "render/spectral_film.h"
+#include "scene_files.h"
+
+namespace lenslab::render {
+namespace {
+
+TEST(SpectralFilm, ItsColourMatchingTableIsTheSharedReferenceTable) {
+  std::ifstream in(testing::sharedDirectory() / "data" / "cie1931-2deg-5nm.csv");
+  ASSERT_TRUE(in) << "shared/data/cie1931-2deg-5nm.csv";
+  std::string line;
+  std::size_t row = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    double nm = 0, x = 0, y = 0, z = 0;
+    fields >> nm >> x >> y >> z;
+    ASSERT_LT(row, kCie1931Rows);
+    EXPECT_EQ(nm, kCie1931FirstNm + kCie1931StepNm * static_cast<double>(row));
+    EXPECT_EQ(kCie1931[row].x, x) << nm;
+    EXPECT_EQ(kCie1931[row].y, y) << nm;
+    EXPECT_EQ(kCie1931[row].z, z) << nm;
+    ++row;
+  }
+  EXPECT_EQ(row, kCie1931Rows);
+}
+
+// Linear sRGB of a monochromatic line from the published XYZ -> sRGB matrix (IEC 61966-2-1,
+// four decimals as published) applied to the table: within the published matrix's rounding.
+TEST(SpectralFilm, LinesAreThePublishedSrgbOfTheirXyz) {
+  const SpectralFilm& film = SpectralFilm::instance();
+  for (double nm : {450.0, 532.5, 610.0, 700.0}) {
+    const Cie1931Row c = cie1931At(nm);
+    const glm::dvec3 published{3.2406 * c.x - 1.5372 * c.y - 0.4986 * c.z,
+                               -0.9689 * c.x + 1.8758 * c.y + 0.0415 * c.z,
+                               0.0557 * c.x - 0.2040 * c.y + 1.0570 * c.z};
+    const glm::dvec3 line = film.srgbOfLine(nm);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(line[k], published[k], 2e-3) << nm << " " << k;
+  }
+}
+
+// The estimator's expectation over the wavelength, by brute force: a Riemann sum over 0.002 nm
+// steps of srgbOfLine(l) basis(l)^T (the density cancels). It must be the identity: any linear
+// sRGB the scene gives comes back as it was when the ray does not depend on the wavelength.
+TEST(SpectralFilm, RgbToSpectrumToRgbIsTheIdentity) {
+  const SpectralFilm& film = SpectralFilm::instance();
+  double sum[3][3] = {};
+  const double step = 0.002;
+  for (double nm = SpectralFilm::kMinNm + 0.5 * step; nm < SpectralFilm::kMaxNm; nm += step) {
+    const glm::dvec3 line = film.srgbOfLine(nm), basis = film.basis(nm);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) sum[i][j] += step * line[i] * basis[j];
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(sum[i][j], i == j ? 1.0 : 0.0, 1e-6) << i << j;
+}
+
+// The same through SpectralFilm::sample: u on a fine grid, sample(u).toRgb(rgb), averaged.
+TEST(SpectralFilm, SampledWavelengthsAverageToTheRgbTheyWereGiven) {
+  const SpectralFilm& film = SpectralFilm::instance();
+  const int n = 1 << 18;
+  for (const glm::vec3 rgb :
+       {glm::vec3(1.0f), glm::vec3(0.9f, 0.1f, 0.05f), glm::vec3(0.02f, 0.3f, 0.8f)}) {
+    glm::dvec3 mean(0.0);
+    for (int k = 0; k < n; ++k) mean += glm::dvec3(film.sample((k + 0.5f) / n).toRgb(rgb));
+    mean /= n;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], rgb[c], 2e-4) << c;
+  }
+}
+
+TEST(SpectralFilm, DensityIsNormalisedAndPositiveAndWhiteIsAPositiveSpectrum) {
+  const SpectralFilm& film = SpectralFilm::instance();
+  double total = 0.0;
+  for (double nm = 380.05; nm < 780.0; nm += 0.1) {
+    total += 0.1 * film.pdfPerNm(nm);
+    EXPECT_GT(film.pdfPerNm(nm), 0.0) << nm;
+    const glm::dvec3 b = film.basis(nm);
+    EXPECT_GT(b.x + b.y + b.z, 0.0) << nm;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-6);
+  EXPECT_EQ(film.pdfPerNm(379.0), 0.0);
+  EXPECT_EQ(film.pdfPerNm(781.0), 0.0);
+  const SpectralSample s = film.sample(0.5f);
+  EXPECT_GT(s.wavelengthNm, 500.0f);
+  EXPECT_LT(s.wavelengthNm, 620.0f);
+}
+
+// Every power-of-two prefix of a pixel's wavelength samples has one value in each stratum.
+TEST(SpectralFilm, APixelsWavelengthSamplesAreStratified) {
+  for (std::uint32_t pixel : {0u, 17u, 123456u}) {
+    const PixelSeeds seeds(pixel, 3u);
+    for (std::uint32_t n : {2u, 4u, 16u, 64u}) {
+      std::vector<int> hits(n, 0);
+      for (std::uint32_t s = 0; s < n; ++s) {
+        const float u = spectralSample01(seeds, s);
+        ASSERT_GE(u, 0.0f);
+        ASSERT_LT(u, 1.0f);
+        ++hits[static_cast<std::size_t>(u * static_cast<float>(n))];
+      }
+      for (std::uint32_t k = 0; k < n; ++k) EXPECT_EQ(hits[k], 1) << pixel << " " << n << " " << k;
+    }
+  }
+  // Pixels differ.
+  EXPECT_NE(spectralSample01(PixelSeeds(1u, 0u), 0u), spectralSample01(PixelSeeds(2u, 0u), 0u));
+}
+
+}  // namespace
+}  // namespace lenslab::render
