@@ -475,7 +475,8 @@ TEST_F(ScriptedViewer, ADroppedBrokenSceneKeepsTheCurrentSceneAndSaysWhy) {
 // with a black picture (and a 35 mm film diagonal). It is refused like a broken one.
 TEST_F(ScriptedViewer, ADroppedEmptySceneKeepsTheCurrentSceneAndSaysWhy) {
   std::ofstream(scratch / "empty.pbrt") << "# nothing but a comment\n";
-  std::ofstream(scratch / "dark.pbrt") << "WorldBegin\nShape \"sphere\" \"float radius\" [1]\n";
+  std::ofstream(scratch / "dark.pbrt")
+      << "WorldBegin\nShape \"sphere\" \"float radius\" [1]\nWorldEnd\n";
   const auto result = runScript("wait-spp 1\ndrop " + (scratch / "empty.pbrt").string() +
                                 "\nwait-frames 3\ndrop " + (scratch / "dark.pbrt").string() +
                                 "\nwait-frames 3\nwait-spp 2\ndump-ui after.json\nquit\n");

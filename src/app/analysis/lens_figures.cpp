@@ -16,13 +16,15 @@ std::string colourFocusText(const optics::LensSystem& lens) {
   std::string whyNot;
   const auto shift = optics::chromaticFocalShift(lens, std::nullopt, 2, optics::kWavelengthFNm,
                                                  optics::kWavelengthCNm, &whyNot);
-  if (!shift) return "- (" + whyNot + ")";
+  // Short enough for one line of the first-order table (the tooltip says the rest).
+  if (!shift)
+    return optics::lensHasDispersion(lens.prescription()) ? "- (" + whyNot + ")" : "- (no V_d)";
   char text[128];
   // Negative: F (blue) focuses nearer the lens than C (red), as in a single positive lens.
-  std::snprintf(text, sizeof text, "%+.4f mm from infinity (%s)", shift->fMinusCMm,
-                shift->fMinusCMm < 0   ? "blue focuses nearer the lens"
-                : shift->fMinusCMm > 0 ? "red focuses nearer the lens"
-                                       : "F and C focus together");
+  std::snprintf(text, sizeof text, "%+.4f mm, %s", shift->fMinusCMm,
+                shift->fMinusCMm < 0   ? "blue nearer the lens"
+                : shift->fMinusCMm > 0 ? "red nearer the lens"
+                                       : "F and C together");
   return text;
 }
 

@@ -20,7 +20,7 @@ struct LensFigures {
   std::shared_ptr<const optics::LensSystem> lens;  // the lens they describe
   std::string inFocusText;                         // "3.600 m from the film", "nothing (why)"
   std::optional<double> inFocusMm;                 // the object distance in focus, from the film
-  // The paraxial back focus at F minus at C from infinity ("-0.162 mm: blue focuses nearer the
+  // The paraxial back focus at F minus at C from infinity ("-0.1619 mm, blue nearer the
   // lens"), or why there is none (no glass with V_d).
   std::string colourFocusText;
   // The beam figures; absent when they were not asked for (while a value is dragged).
