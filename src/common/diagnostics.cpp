@@ -38,6 +38,8 @@ void Diagnostics::note(const SourceLocation& where, std::string message) {
 
 namespace {
 
+constexpr std::size_t kMaxQuotedPathChars = 1024;
+
 // A quote that opens a quoted token: at the start or after a space or an opening bracket, so
 // that the apostrophe of "the lens's rim" or "don't" is not taken for one.
 bool opensQuote(const std::string& text, std::size_t at) {
@@ -75,7 +77,8 @@ std::string abbreviateMessage(std::string message) {
     const bool closed = close < message.size();
     const std::size_t length = close - open - 1;
     out.append(message, at, open + 1 - at);
-    if (length > kMaxQuotedTokenChars) {
+    const bool path = message.find('/', open + 1) < close;
+    if (length > (path ? kMaxQuotedPathChars : kMaxQuotedTokenChars)) {
       out.append(message, open + 1, kQuotedTokenHeadChars);
       out += "...";
       if (closed) out += '\'';

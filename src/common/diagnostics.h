@@ -36,7 +36,9 @@ struct Diagnostic {
 // kMaxQuotedTokenChars keeps its first kQuotedTokenHeadChars characters, then "..." and its length
 // ("'1.5555...' (10000002 characters)"), and a message still longer than kMaxMessageChars is cut
 // there with its length. A hostile file's 10-million-digit number must not become 10 MB of
-// error text. Diagnostics applies it to every message it collects.
+// error text. A token with a '/' is taken for a path and may be up to 1024 characters long: a
+// real path's every character matters to whoever reads it. Diagnostics applies it to every
+// message it collects.
 inline constexpr std::size_t kMaxQuotedTokenChars = 64;
 inline constexpr std::size_t kQuotedTokenHeadChars = 40;
 inline constexpr std::size_t kMaxMessageChars = 4096;

@@ -83,6 +83,13 @@ TEST(Diagnostics, LongQuotedTokensAreShortenedWithTheirLength) {
   const std::string plain = "the lens's rim at surface 3 is wider than the file's 'inf' radius '" +
                             token64 + "' by far, don't you think";
   EXPECT_EQ(abbreviateMessage(plain), plain);
+  // A path is kept whole up to 1024 characters; past that it is shortened too.
+  const std::string longPath = "/" + std::string(200, 'd') + "/scene.pbrt";
+  const std::string missing = "cannot open '" + longPath + "'";
+  EXPECT_EQ(abbreviateMessage(missing), missing);
+  const std::string hugePath = "/" + std::string(2000, 'd');
+  EXPECT_EQ(abbreviateMessage("cannot open '" + hugePath + "'"),
+            "cannot open '" + hugePath.substr(0, 40) + "...' (2001 characters)");
   // Past 4096 characters a message is cut, with its length.
   const std::string words(5000, 'w');
   const std::string cut = abbreviateMessage(words);
