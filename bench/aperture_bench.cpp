@@ -20,15 +20,12 @@
 #include <memory>
 #include <random>
 #include <string>
-#include <thread>
 
+#include "bench_scene.h"
 #include "optics/aperture_shape.h"
 #include "optics/lens_system.h"
 #include "render/camera_factory.h"
-#include "render/pbrt_parser.h"
 #include "render/progressive_renderer.h"
-#include "render/realistic_camera.h"
-#include "render/scene_builder.h"
 
 namespace {
 
@@ -52,29 +49,11 @@ ApertureShape shapeNumber(std::int64_t which) {
   return shape;
 }
 
-struct DefaultScene {
-  std::shared_ptr<const render::SceneDescription> description;
-  std::shared_ptr<const render::Scene> scene;
-  std::shared_ptr<const LensSystem> lens;
-};
+using DefaultScene = lenslab::bench::BenchScene;
 
 const DefaultScene& defaultScene() {
-  static const DefaultScene loaded = [] {
-    DefaultScene out;
-    render::ParseResult parsed =
-        render::parsePbrtFile(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
-    if (!parsed.scene) return out;
-    render::BuildResult built = render::buildScene(*parsed.scene);
-    if (!built.scene) return out;
-    lenslab::Diagnostics diagnostics;
-    const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
-    const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
-    if (!realistic) return out;
-    out.lens = realistic->lens().withFilmDistance(realistic->lens().filmDistanceMm());
-    out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
-    out.scene = std::move(built.scene);
-    return out;
-  }();
+  static const DefaultScene loaded =
+      lenslab::bench::loadBenchScene(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
   return loaded;
 }
 
@@ -112,16 +91,7 @@ BENCHMARK(BM_ApertureRays)->DenseRange(0, 4)->ArgName("shape");
 
 render::RenderJob passJob(const DefaultScene& loaded, std::shared_ptr<const LensSystem> lens,
                           int coarseDivisor) {
-  render::RenderJob job;
-  job.camera = render::makeLensCamera(*loaded.description, std::move(lens), 488, 325);
-  job.scene = loaded.scene;
-  job.settings.samplesPerPixel = 1;
-  job.settings.integrator.kind = loaded.description->integrator.kind;
-  job.settings.integrator.maxDepth = loaded.description->integrator.maxDepth;
-  job.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  job.settings.lowPriority = true;
-  job.settings.coarseDivisor = coarseDivisor;
-  return job;
+  return lenslab::bench::previewPassJob(loaded, std::move(lens), 488, 325, coarseDivisor);
 }
 
 void BM_AperturePass(benchmark::State& state) {

@@ -16,13 +16,11 @@
 
 #include <memory>
 #include <string>
-#include <thread>
 
+#include "bench_scene.h"
 #include "optics/lens_system.h"
 #include "render/camera_factory.h"
-#include "render/pbrt_parser.h"
 #include "render/progressive_renderer.h"
-#include "render/realistic_camera.h"
 #include "render/scene_builder.h"
 
 namespace {
@@ -33,28 +31,11 @@ namespace render = lenslab::render;
 constexpr int kPreviewWidth = 488, kPreviewHeight = 325;  // the viewer's at 1400 x 850
 constexpr int kCoarseDivisor = 4;                         // PreviewController::kCoarseDivisor
 
-struct DefaultScene {
-  std::shared_ptr<const render::SceneDescription> description;
-  std::shared_ptr<const render::Scene> scene;
-  std::shared_ptr<const LensSystem> lens;
-};
+using DefaultScene = lenslab::bench::BenchScene;
 
 DefaultScene loadDefaultScene(const render::BuildOptions& options) {
-  DefaultScene out;
-  render::ParseResult parsed =
-      render::parsePbrtFile(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt");
-  if (!parsed.scene) return out;
-  render::BuildResult built = render::buildScene(*parsed.scene, options);
-  if (!built.scene) return out;
-  lenslab::Diagnostics diagnostics;
-  const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
-  const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
-  if (!realistic) return out;
-  const LensSystem& lens = realistic->lens();
-  out.lens = lens.withFilmDistance(lens.filmDistanceMm());  // a shared copy
-  out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
-  out.scene = std::move(built.scene);
-  return out;
+  return lenslab::bench::loadBenchScene(std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt",
+                                        options);
 }
 
 // Parsed and built once for all benchmarks; null members when the scene cannot be loaded.
@@ -68,17 +49,8 @@ const DefaultScene& defaultScene(bool embree = false) {
 
 render::RenderJob previewJob(const DefaultScene& loaded, std::shared_ptr<const LensSystem> lens,
                              int coarseDivisor) {
-  render::RenderJob job;
-  job.camera =
-      render::makeLensCamera(*loaded.description, std::move(lens), kPreviewWidth, kPreviewHeight);
-  job.scene = loaded.scene;
-  job.settings.samplesPerPixel = 1;
-  job.settings.integrator.kind = loaded.description->integrator.kind;
-  job.settings.integrator.maxDepth = loaded.description->integrator.maxDepth;
-  job.settings.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  job.settings.lowPriority = true;
-  job.settings.coarseDivisor = coarseDivisor;
-  return job;
+  return lenslab::bench::previewPassJob(loaded, std::move(lens), kPreviewWidth, kPreviewHeight,
+                                        coarseDivisor);
 }
 
 // The edit: alternately 0.2 mm behind and in front of the scene's film distance.

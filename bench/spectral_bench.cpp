@@ -24,12 +24,11 @@
 #include <thread>
 #include <vector>
 
+#include "bench_scene.h"
 #include "optics/lens_loader.h"
 #include "optics/lens_system.h"
 #include "render/camera_factory.h"
-#include "render/pbrt_parser.h"
 #include "render/progressive_renderer.h"
-#include "render/realistic_camera.h"
 #include "render/scene_builder.h"
 
 namespace {
@@ -38,27 +37,9 @@ using lenslab::optics::LensSystem;
 namespace render = lenslab::render;
 using Clock = std::chrono::steady_clock;
 
-struct LoadedScene {
-  std::shared_ptr<const render::SceneDescription> description;
-  std::shared_ptr<const render::Scene> scene;
-  std::shared_ptr<const LensSystem> lens;  // as the scene's camera has it
-};
+using LoadedScene = lenslab::bench::BenchScene;
 
-LoadedScene load(const std::string& path) {
-  LoadedScene out;
-  render::ParseResult parsed = render::parsePbrtFile(path);
-  if (!parsed.scene) return out;
-  render::BuildResult built = render::buildScene(*parsed.scene);
-  if (!built.scene) return out;
-  lenslab::Diagnostics diagnostics;
-  const auto camera = render::makeCamera(*parsed.scene, {}, diagnostics);
-  const auto* realistic = dynamic_cast<const render::RealisticCamera*>(camera.get());
-  if (!realistic) return out;
-  out.lens = realistic->lens().withFilmDistance(realistic->lens().filmDistanceMm());
-  out.description = std::make_shared<const render::SceneDescription>(std::move(*parsed.scene));
-  out.scene = std::move(built.scene);
-  return out;
-}
+LoadedScene load(const std::string& path) { return lenslab::bench::loadBenchScene(path); }
 
 const LoadedScene& scene(int index) {
   static const std::string shared = std::string(LENSLAB_SOURCE_DIR) + "/../shared";
