@@ -39,15 +39,6 @@ nlohmann::json focal(const optics::FirstOrderData& fo, double value) {
   return fo.afocal ? nlohmann::json(nullptr) : number(value);
 }
 
-// The paraxial back focus at F minus at C, object at infinity (analysis/chromatic.h); nothing
-// without dispersion (no V_d) or for an afocal lens, with the reason in `whyNot`.
-std::optional<double> colourFocusShiftMm(const optics::LensSystem& lens, std::string& whyNot) {
-  const auto shift = optics::chromaticFocalShift(lens, std::nullopt, 2, optics::kWavelengthFNm,
-                                                 optics::kWavelengthCNm, &whyNot);
-  if (!shift || !std::isfinite(shift->fMinusCMm)) return std::nullopt;
-  return shift->fMinusCMm;
-}
-
 nlohmann::json pupilJson(const optics::PupilData& pupil, const char* reference) {
   return {{"diameter_mm", number(pupil.diameterMm)},
           {"position_mm", pupil.atInfinity ? nlohmann::json(nullptr) : number(pupil.positionMm)},
@@ -95,7 +86,8 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
                         {"vertex_z_mm", lens.surfaces()[i].vertexZMm}});
   }
   std::string colourWhyNot;
-  const std::optional<double> colourShift = colourFocusShiftMm(lens, colourWhyNot);
+  const std::optional<double> colourShift =
+      optics::chromaticFocalShiftFromInfinityMm(lens, &colourWhyNot);
   return {
       {"lens", arguments.lensPath},
       {"wavelength_nm", lens.wavelengthNm()},
@@ -219,7 +211,7 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   line("film distance", lens.filmDistanceMm(), "mm (rear vertex to film)");
   line("total track", fo.totalTrackMm, "mm (front vertex to film)");
   std::string colourWhyNot;
-  if (const auto shift = colourFocusShiftMm(lens, colourWhyNot))
+  if (const auto shift = optics::chromaticFocalShiftFromInfinityMm(lens, &colourWhyNot))
     line("chromatic focal shift (F - C)", *shift,
          "mm (paraxial, from infinity; negative: blue focuses nearer the lens)");
   else

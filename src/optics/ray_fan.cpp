@@ -315,17 +315,14 @@ RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
     // Centre the fan on the chief ray, so off-axis fans show the bundle the lens really takes.
     const double centre = aim ? aim->pupilHeight : 0.0;
     const double span = spec.pupilOverfill * tracer.pupilRadius();
-    for (int i = 0; i < count; ++i) {
-      const double t = -1.0 + 2.0 * i / (count - 1);
-      fan.rays.push_back(tracer.trace(field, centre + t * span));
-    }
+    std::vector<double> pupilHeights(count);
+    for (int i = 0; i < count; ++i)
+      pupilHeights[i] = centre + (-1.0 + 2.0 * i / (count - 1)) * span;
+    for (double height : pupilHeights) fan.rays.push_back(tracer.trace(field, height));
     for (const auto& at : others) {
       FanAtWavelength& colour = fan.atOtherWavelengths.emplace_back();
       colour.wavelengthNm = at->wavelengthNm();
-      for (int i = 0; i < count; ++i) {
-        const double t = -1.0 + 2.0 * i / (count - 1);
-        colour.rays.push_back(tracer.trace(*at, field, centre + t * span));
-      }
+      for (double height : pupilHeights) colour.rays.push_back(tracer.trace(*at, field, height));
       if (fan.chief) colour.chief = tracer.trace(*at, field, aim ? aim->pupilHeight : 0.0);
     }
     result.fans.push_back(std::move(fan));

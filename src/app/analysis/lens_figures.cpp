@@ -14,17 +14,16 @@ namespace lenslab::app {
 
 std::string colourFocusText(const optics::LensSystem& lens) {
   std::string whyNot;
-  const auto shift = optics::chromaticFocalShift(lens, std::nullopt, 2, optics::kWavelengthFNm,
-                                                 optics::kWavelengthCNm, &whyNot);
+  const auto shift = optics::chromaticFocalShiftFromInfinityMm(lens, &whyNot);
   // Short enough for one line of the first-order table (the tooltip says the rest).
   if (!shift)
     return optics::lensHasDispersion(lens.prescription()) ? "- (" + whyNot + ")" : "- (no V_d)";
   char text[128];
   // Negative: F (blue) focuses nearer the lens than C (red), as in a single positive lens.
-  std::snprintf(text, sizeof text, "%+.4f mm, %s", shift->fMinusCMm,
-                shift->fMinusCMm < 0   ? "blue nearer the lens"
-                : shift->fMinusCMm > 0 ? "red nearer the lens"
-                                       : "F and C together");
+  std::snprintf(text, sizeof text, "%+.4f mm, %s", *shift,
+                *shift < 0   ? "blue nearer the lens"
+                : *shift > 0 ? "red nearer the lens"
+                             : "F and C together");
   return text;
 }
 

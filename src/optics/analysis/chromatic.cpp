@@ -60,6 +60,14 @@ std::optional<ChromaticFocalShift> chromaticFocalShift(
   return out;
 }
 
+std::optional<double> chromaticFocalShiftFromInfinityMm(const LensSystem& lens,
+                                                        std::string* whyNot) {
+  const auto shift =
+      chromaticFocalShift(lens, std::nullopt, 2, kWavelengthFNm, kWavelengthCNm, whyNot);
+  if (!shift || !std::isfinite(shift->fMinusCMm)) return std::nullopt;
+  return shift->fMinusCMm;
+}
+
 std::vector<LateralColour> lateralColour(const LensSystem& lens, const AnalysisSetup& setup) {
   std::vector<LateralColour> out;
   const bool dispersive = lensHasDispersion(lens.prescription());

@@ -41,6 +41,11 @@ std::optional<ChromaticFocalShift> chromaticFocalShift(
     const LensSystem& lens, const std::optional<double>& objectDistanceFromFilmMm, int points = 31,
     double firstNm = 400.0, double lastNm = 700.0, std::string* whyNot = nullptr);
 
+// The first-order figure: the paraxial back focus at F minus at C for an object at infinity
+// (fMinusCMm of chromaticFocalShift), or nothing with *whyNot.
+std::optional<double> chromaticFocalShiftFromInfinityMm(const LensSystem& lens,
+                                                        std::string* whyNot = nullptr);
+
 struct LateralColour {
   double fieldFraction = 0;
   double imageHeightMm = 0;  // the d-line field's image height (as requested)
