@@ -7,7 +7,9 @@
 # range and back, then the film plane in the cross-section. It prints the viewer's --stats-json
 # for the frames of the drags alone: frame_ms_* (the frame rate), frame_work_ms_* (the UI
 # thread's whole work per frame in wall time, rasterizing included) and frame_compute_cpu_ms_*
-# (the UI thread's CPU time computing before rasterizing).
+# (the UI thread's CPU time computing before rasterizing), and where the worst frame spent it
+# (worst_compute_frame_stages_cpu_ms; each stage's p99 and maximum over the frames in
+# compute_stage_cpu_ms_p99 / _max; the panels are stages named by their ids).
 #
 #   bench/viewer-drag.sh [STEPS]      (default 120 mouse steps per drag, 16 ms apart; needs Xvfb,
 #                                      xdotool and build/lenslab, or the binary named by $LENSLAB)

@@ -278,27 +278,37 @@ int Viewer::run(const ViewerOptions& options, std::optional<ScriptRunner> script
     }
     nextFrame = std::max(nextFrame + framePeriod, ViewerStats::Clock::now());
     const auto workStarted = ViewerStats::Clock::now();
-    const auto cpuStarted = ViewerStats::threadCpuTime();
+    ViewerStats::StageClock computing;
     openDroppedFiles();
     finishSceneLoad();
     finishExports();
+    computing.mark("files");
+    // Stage names live as long as the session (the stats keep the worst frame's).
     pollPreview();
+    computing.mark("poll_preview");
     window_.beginFrame();
+    computing.mark("begin_frame");
+    state_.frameStages = &computing;
     drawFrame();
+    state_.frameStages = nullptr;
+    computing.mark("draw_frame_rest");
     window_.endFrame();
+    computing.mark("end_frame");
     focusOnClick();
     // The one place the lens changes, once per frame: the commands the panels, menus, shortcuts
     // and the focus click issued in this frame, and those that opening files and the script
     // issued after the last one. The frame just laid out shows the lens as it was; the next one
     // shows the change.
     applyCommands(state_);
+    computing.mark("apply_commands");
     // Start the render this frame's edits call for before the frame is rasterized, which may
     // take a while.
     updatePreview();
+    computing.mark("update_preview");
     // Redraw only when the pixels would change: a software rasterizer (Mesa llvmpipe under
     // Xvfb, or any machine without a GPU driver) spends tens of milliseconds of CPU on every
     // redraw, which the render workers need. Captures draw the frame when it was skipped.
-    stats_.frameCompute(ViewerStats::threadCpuTime() - cpuStarted, preview_.busy());
+    stats_.frameCompute(computing.total(), preview_.busy(), computing.stages());
     drawnThisFrame_ = false;
     findDamage();
     if (!damage_.empty()) ensureDrawn();

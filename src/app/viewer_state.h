@@ -17,6 +17,7 @@
 #include "app/analysis/measured_falloff.h"
 #include "app/analysis/mtf_analysis.h"
 #include "app/analysis/ray_analysis.h"
+#include "app/automation/viewer_stats.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
 #include "app/document/lens_editor.h"
@@ -94,6 +95,8 @@ struct CrossSectionCache {
 enum class CrossSectionGrab { None, Pan, Film, StopEdge };
 
 struct ViewerState {
+  // The frame's computing, timed stage by stage for the stats (each panel marks its own).
+  ViewerStats::StageClock* frameStages = nullptr;
   Settings settings;
   std::filesystem::path settingsFile;  // empty: do not persist (no config directory)
   Log log;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "support/background_process.h"
@@ -171,6 +172,49 @@ TEST(XdotoolInput, AWindowScreenshotFromTheMenuDoesNotShowTheMenu) {
     for (int x = x0; x < x1; ++x) different += fromMenu.at(x, y).maxDifference(after.at(x, y)) > 24;
   }
   EXPECT_LT(different, 30) << "the menu is in the screenshot";
+}
+
+// The window keeps its size from the window system's notices instead of asking each frame
+// (platform/window_input.cpp): a resize must still reach the layout and the screenshot.
+TEST(XdotoolInput, ResizingTheWindowLaysThePanelsOutAgain) {
+  const auto scratch = testing::makeTestDirectory("xdotool-resize");
+  std::ofstream(scratch / "commands.script") << "wait-frames 3\n"
+                                                "dump-ui before.json\n"
+                                                "wait-until-file go\n"
+                                                "wait-frames 10\n"
+                                                "dump-ui after.json\n"
+                                                "screenshot after.png\n"
+                                                "quit\n";
+  testing::BackgroundProcess viewer("cd '" + scratch.string() + "' && exec '" + LENSLAB_BINARY +
+                                    "' --size 1280x800 --script commands.script 2>stderr.txt");
+  ASSERT_TRUE(waitForFile(scratch / "before.json", std::chrono::seconds(30)));
+  const nlohmann::json before = readJson(scratch / "before.json");
+  EXPECT_EQ(before["window"]["width"].get<int>(), 1280);
+  const auto resized = testing::runProcess(
+      testing::kFocusViewerWindow + "xdotool windowsize --sync $W 1000 640 && sleep 0.3", scratch);
+  ASSERT_EQ(resized.exitCode, 0) << resized.err;
+  std::ofstream(scratch / "go") << "go";
+  const auto exitCode = viewer.wait(std::chrono::seconds(60));
+  ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
+  EXPECT_EQ(*exitCode, 0) << testing::readWholeFile(scratch / "stderr.txt");
+
+  const nlohmann::json after = readJson(scratch / "after.json");
+  EXPECT_EQ(after["window"]["width"].get<int>(), 1000);
+  EXPECT_EQ(after["window"]["height"].get<int>(), 640);
+  // The panels end at the new right edge (within a few pixels of border), and the bottom area's
+  // tabs keep their place as a fraction of the height.
+  double right = 0;
+  for (const auto& [name, rect] : after["widgets"].items())
+    right = std::max(right, rect["x"].get<double>() + rect["width"].get<double>());
+  EXPECT_LE(right, 1000.0);
+  EXPECT_GT(right, 980.0);
+  ASSERT_TRUE(before["widgets"].contains("tab/colour") && after["widgets"].contains("tab/colour"));
+  EXPECT_NEAR(after["widgets"]["tab/colour"]["y"].get<double>() / 640.0,
+              before["widgets"]["tab/colour"]["y"].get<double>() / 800.0, 0.02);
+  const auto shot = testing::PngImage::load(scratch / "after.png");
+  ASSERT_TRUE(shot.valid());
+  EXPECT_EQ(shot.width, 1000);
+  EXPECT_EQ(shot.height, 640);
 }
 
 }  // namespace

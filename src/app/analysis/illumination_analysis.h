@@ -31,6 +31,11 @@ struct IlluminationView {
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<IlluminationResult>> job;
   std::string renderNote;  // what the plot last said of the render's toggles ("" when all on)
+  // What the panel drew in frame `drawnInFrame`: whether its curve (and footprint) were the
+  // current lens's. Scripts' captures wait for that, not merely for the result to exist: one
+  // that arrives after the panel was drawn shows only in the next frame.
+  std::uint64_t drawnInFrame = 0;
+  bool drewCurrent = false;
 };
 
 inline constexpr int kIlluminationPoints = 64;

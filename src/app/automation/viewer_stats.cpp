@@ -6,6 +6,7 @@
 #include <ctime>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string_view>
 #include <system_error>
 
 namespace lenslab::app {
@@ -38,9 +39,28 @@ void ViewerStats::frameWork(Clock::duration work, bool rendering, bool redrawn) 
   if (redrawn) redrawWorkMs_.push_back(milliseconds(work));
 }
 
-void ViewerStats::frameCompute(std::chrono::nanoseconds cpu, bool rendering) {
-  if (rendering)
-    renderingComputeMs_.push_back(std::chrono::duration<double, std::milli>(cpu).count());
+void ViewerStats::frameCompute(std::chrono::nanoseconds cpu, bool rendering, const Stages& stages) {
+  if (!rendering) return;
+  const double ms = std::chrono::duration<double, std::milli>(cpu).count();
+  if (renderingComputeMs_.empty() || ms > worstComputeMs_) {
+    worstComputeMs_ = ms;
+    worstComputeStages_ = stages;
+  }
+  renderingComputeMs_.push_back(ms);
+  for (const auto& [stage, stageMs] : stages) {
+    // Few stages, the same ones each frame: a linear search by name is the cheapest.
+    auto found = std::find_if(stageMs_.begin(), stageMs_.end(), [&](const auto& entry) {
+      return std::string_view(entry.first) == stage;
+    });
+    if (found == stageMs_.end()) found = stageMs_.insert(stageMs_.end(), {stage, {}});
+    found->second.push_back(stageMs);
+  }
+}
+
+void ViewerStats::StageClock::mark(const char* stage) {
+  const auto now = threadCpuTime();
+  stages_.emplace_back(stage, std::chrono::duration<double, std::milli>(now - last_).count());
+  last_ = now;
 }
 
 std::chrono::nanoseconds ViewerStats::threadCpuTime() {
@@ -129,11 +149,21 @@ ViewerStats::Summary ViewerStats::summary() const {
       firstPictureMs_.empty() ? 0
                               : *std::max_element(firstPictureMs_.begin(), firstPictureMs_.end());
   summary.openingFirstPassMs = openingFirstPassMs_;
+  summary.worstComputeStages = worstComputeStages_;
+  for (const auto& [stage, values] : stageMs_) {
+    summary.stageMsP99.emplace_back(stage, percentile(values, 0.99));
+    summary.stageMsMax.emplace_back(stage, percentile(values, 1.0));
+  }
   return summary;
 }
 
 std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
   const Summary s = summary();
+  const auto byStage = [](const Stages& stages) {
+    nlohmann::json object = nlohmann::json::object();
+    for (const auto& [stage, ms] : stages) object[stage] = ms;
+    return object;
+  };
   const nlohmann::json json = {
       {"frames_while_rendering", s.frames},
       {"frame_ms_median", s.frameMsMedian},
@@ -147,6 +177,11 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       {"frame_compute_cpu_ms_median", s.computeMsMedian},
       {"frame_compute_cpu_ms_p95", s.computeMsP95},
       {"frame_compute_cpu_ms_max", s.computeMsMax},
+      // Where the frame with the most of it spent it, stage by stage.
+      {"worst_compute_frame_stages_cpu_ms", byStage(s.worstComputeStages)},
+      // Each stage's own distribution over the frames (the panels' stages are their ids).
+      {"compute_stage_cpu_ms_p99", byStage(s.stageMsP99)},
+      {"compute_stage_cpu_ms_max", byStage(s.stageMsMax)},
       // Frames whose pixels changed are rasterized; the others only run the UI.
       {"frames_redrawn_fraction", s.redrawnFraction},
       {"redrawn_frame_work_ms_median", s.redrawWorkMsMedian},

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lenslab::app {
@@ -26,8 +27,25 @@ class ViewerStats {
   // renders: up to the rasterization), for the 4 ms budget of issue 21: the UI thread's CPU time
   // (threadCpuTime() differences), which the render workers and other processes taking the
   // cores from it do not inflate as they do the wall time.
-  void frameCompute(std::chrono::nanoseconds cpu, bool rendering);
+  // `stages`: where that CPU time went (stage name, ms), kept for the frame with the most, so the
+  // stats can say which computation the worst frame spent its time in.
+  using Stages = std::vector<std::pair<const char*, double>>;
+  void frameCompute(std::chrono::nanoseconds cpu, bool rendering, const Stages& stages = {});
   static std::chrono::nanoseconds threadCpuTime();
+
+  // Times a frame's computing stage by stage in the UI thread's CPU time: mark(name) after each
+  // stage ends, then pass stages() to frameCompute.
+  class StageClock {
+   public:
+    StageClock() : started_(threadCpuTime()), last_(started_) {}
+    void mark(const char* stage);
+    std::chrono::nanoseconds total() const { return last_ - started_; }
+    const Stages& stages() const { return stages_; }
+
+   private:
+    std::chrono::nanoseconds started_, last_;
+    Stages stages_;
+  };
   // A frame was rasterized over `fraction` of the window's pixels (1 for a full redraw; less
   // where a software rasterizer repaints only what changed, `partial`).
   void frameRepainted(double fraction, bool partial);
@@ -59,6 +77,11 @@ class ViewerStats {
     std::size_t pictures = 0;
     double firstPictureMsMedian = 0, firstPictureMsMax = 0;
     std::optional<double> openingFirstPassMs;  // from openingSubmitted to its first pass on screen
+    Stages worstComputeStages;                 // of the frame whose computing took longest
+    // Each stage's own 99th percentile and maximum over the frames (ms of CPU time), in the order
+    // the stages first ran: a stage that computes little but shows a large maximum was charged
+    // time that was not its work (the virtual machine's own pauses show so).
+    Stages stageMsP99, stageMsMax;
   };
   Summary summary() const;
 
@@ -70,7 +93,10 @@ class ViewerStats {
   std::vector<double> renderingFrameMs_;    // frame intervals while the renderer worked
   std::vector<double> renderingWorkMs_;     // the UI thread's work in those frames
   std::vector<double> renderingComputeMs_;  // ... before rasterizing
-  std::vector<double> redrawWorkMs_;        // ... in those that were rasterized
+  double worstComputeMs_ = 0;               // the longest of those
+  Stages worstComputeStages_;               // and its stages
+  std::vector<std::pair<const char*, std::vector<double>>> stageMs_;  // each stage's, per frame
+  std::vector<double> redrawWorkMs_;  // ... in those that were rasterized
   std::vector<double> repaintedFractions_;
   bool partialRepaint_ = false;
   std::optional<std::pair<std::uint64_t, Clock::time_point>> pendingEdit_;

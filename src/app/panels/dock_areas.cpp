@@ -80,6 +80,7 @@ void drawDockAreas(ViewerState& state) {
     if (panels.size() == 1) {
       state.settings.selectedTabs[dockAreaName(area)] = panels.front()->id;
       panels.front()->draw(state, {rect, true});
+      if (state.frameStages) state.frameStages->mark(panels.front()->id);
       continue;
     }
     // The tabs take the place of the panel's title bar, and are as high.
@@ -88,6 +89,7 @@ void drawDockAreas(ViewerState& state) {
     const Rect below{rect.x, rect.y + stripHeight, rect.width,
                      std::max(0.0f, rect.height - stripHeight)};
     shown->draw(state, {below, false});
+    if (state.frameStages) state.frameStages->mark(shown->id);
   }
 }
 

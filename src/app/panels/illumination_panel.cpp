@@ -99,8 +99,9 @@ std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string*
 bool illuminationSettled(const ViewerState& state) {
   const IlluminationView& view = state.illumination;
   if (!state.lensSystem || view.requestedLens != state.lensSystem) return true;
-  const auto result = view.job->latest();
-  return result && result->lens == state.lensSystem;
+  // A panel not drawn in this frame (another tab shows) has nothing on screen to wait for.
+  if (view.drawnInFrame != state.frameNumber) return true;
+  return view.drewCurrent;
 }
 
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
@@ -144,6 +145,8 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && result->lens == state.lensSystem &&
                          result->filmDiagonalMm == state.filmDiagonalMm;
+    view.drawnInFrame = state.frameNumber;
+    view.drewCurrent = current;
     if (!current) {
       ImGui::SameLine();
       ImGui::TextDisabled("computing...");

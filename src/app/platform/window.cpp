@@ -88,6 +88,7 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   glfwSetKeyCallback(window->window_, onKey);
   glfwSetWindowContentScaleCallback(window->window_, onContentScale);
   glfwSetWindowRefreshCallback(window->window_, onRefresh);
+  window->installInputCallbacks();
   window->testMode_ = options.testMode;
   glfwMakeContextCurrent(window->window_);
   glfwSwapInterval(options.testMode ? 0 : 1);
@@ -110,6 +111,7 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
   loadFonts(window->contentScale_);
   ImGui_ImplGlfw_InitForOpenGL(window->window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
+  window->readInitialInputState();
   window->imguiReady_ = true;
   window->partial_ = PartialRepaint::detect(window->window_);
   return window;
@@ -121,6 +123,7 @@ Window::~Window() {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
   }
+  destroyCursors();
   if (window_ != nullptr) glfwDestroyWindow(window_);
   glfwTerminate();
 }
@@ -224,7 +227,7 @@ void Window::waitEvents(double seconds) const {
 void Window::beginFrame() {
   applyContentScale();
   ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
+  newImGuiPlatformFrame();
   holdTappedKeys();
   ImGui::NewFrame();
 }
@@ -261,26 +264,11 @@ void Window::swapBuffers() {
   glfwSwapBuffers(window_);
 }
 
-int Window::width() const {
-  int w = 0, h = 0;
-  glfwGetWindowSize(window_, &w, &h);
-  return w;
-}
-int Window::height() const {
-  int w = 0, h = 0;
-  glfwGetWindowSize(window_, &w, &h);
-  return h;
-}
-int Window::framebufferWidth() const {
-  int w = 0, h = 0;
-  glfwGetFramebufferSize(window_, &w, &h);
-  return w;
-}
-int Window::framebufferHeight() const {
-  int w = 0, h = 0;
-  glfwGetFramebufferSize(window_, &w, &h);
-  return h;
-}
+// As the size callbacks last reported them: asking the X server is a round trip each time.
+int Window::width() const { return windowWidth_; }
+int Window::height() const { return windowHeight_; }
+int Window::framebufferWidth() const { return framebufferWidth_; }
+int Window::framebufferHeight() const { return framebufferHeight_; }
 
 double Window::refreshRateHz() const {
   GLFWmonitor* monitor = glfwGetPrimaryMonitor();

@@ -1,6 +1,7 @@
 #pragma once
 // The GLFW window with its GL 3.3 core context and Dear ImGui, created and torn down together.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "app/platform/pixel_rect.h"
 
 struct GLFWwindow;
+struct GLFWcursor;
 
 namespace lenslab::app {
 
@@ -79,6 +81,22 @@ class Window {
   void applyContentScale();
   void holdTappedKeys();
 
+  // ImGui's platform input for a frame (window and framebuffer size, time step, mouse, cursor
+  // shape) from what GLFW's callbacks reported, in place of ImGui_ImplGlfw_NewFrame: on X11 that
+  // asks the server four questions a frame and waits for each answer (window size, framebuffer
+  // size, focus, pointer), which cost the UI thread 0.5-0.8 ms of CPU in one frame in a hundred
+  // and up to 28 ms now and then on a loaded machine (issue 21's 4 ms budget). window_input.cpp.
+  void installInputCallbacks();  // before ImGui's backend installs its own, which chain to these
+  void readInitialInputState();
+  void newImGuiPlatformFrame();
+  void destroyCursors();
+  static void onWindowSize(GLFWwindow* window, int width, int height);
+  static void onFramebufferSize(GLFWwindow* window, int width, int height);
+  static void onCursorPos(GLFWwindow* window, double x, double y);
+  static void onCursorEnter(GLFWwindow* window, int entered);
+  static void onFocus(GLFWwindow* window, int focused);
+  static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+
   GLFWwindow* window_ = nullptr;
   std::unique_ptr<PartialRepaint> partial_;
   bool imguiReady_ = false;
@@ -97,6 +115,18 @@ class Window {
   std::vector<KeyPress> pressedKeys_;
   std::vector<int> heldKeys_;
   bool modifiersOverridden_ = false;  // a press's modifiers stand in for released ones
+
+  // What the callbacks last reported (screen coordinates; the framebuffer's in pixels).
+  int windowWidth_ = 0, windowHeight_ = 0;
+  int framebufferWidth_ = 0, framebufferHeight_ = 0;
+  double cursorX_ = 0, cursorY_ = 0;
+  bool cursorInside_ = false, focused_ = false;
+  // A press since the last frame shows as held in the next even if released already, so that a
+  // click shorter than a frame is not lost.
+  std::array<bool, 5> mouseJustPressed_{};
+  double lastFrameSeconds_ = 0;
+  int shownCursor_ = -2;              // the ImGuiMouseCursor last shown; -2 none yet
+  std::vector<GLFWcursor*> cursors_;  // by ImGuiMouseCursor
 };
 
 // True when a display server is named in the environment (DISPLAY or WAYLAND_DISPLAY).
