@@ -159,11 +159,16 @@ class PreviewController {
   bool meters(const render::RenderSnapshot& snapshot);
 
   // The encoder thread's work: a snapshot's pixels at an exposure, metered first when asked.
+  // The cameras of the latest jobs, by generation: each shown snapshot must carry the camera of
+  // the job its generation started (ViewerStats::previewShown). A few suffice: the renderer
+  // publishes only for its newest job.
+  std::vector<std::pair<std::uint64_t, const render::Camera*>> startedCameras_;
   struct EncodedPreview {
     std::shared_ptr<const render::RenderSnapshot> snapshot;
     double exposureStops = 0;                 // what the pixels are encoded at
     std::optional<double> autoExposureStops;  // when this snapshot was metered
     std::vector<std::uint8_t> rgba;
+    std::size_t nonFiniteValues = 0;  // NaN or inf in the snapshot's linear pixels
   };
   // What the newest request was for: the snapshot (a job's generation and pass) and the exposure
   // it was to be shown at, so that a frame asks again only when either changed.

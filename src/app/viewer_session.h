@@ -95,6 +95,7 @@ class Viewer final : public ScriptHost {
     exitCode_ = exitCode;
   }
   void reportError(const std::string& message) override { state_.log.error(message); }
+  void reportInfo(const std::string& message) override { state_.log.info(message); }
   std::optional<std::string> openDialog(const std::string& kind) override;
   std::optional<std::string> chooseInDialog(const std::string& name) override;
   std::optional<std::string> drop(const std::string& path) override {

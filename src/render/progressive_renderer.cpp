@@ -271,6 +271,7 @@ bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
   snapshot->fullHeight = wave.height;
   snapshot->statistics = statistics;
   snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+  snapshot->camera = job.camera;
   publish(std::move(snapshot));
   return true;
 }
@@ -328,6 +329,7 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     snapshot->statistics.lensPassed += coarseStatistics.lensPassed;
     snapshot->statistics.discardedSamples += coarseStatistics.discardedSamples;
     snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+    snapshot->camera = job.camera;
     publish(std::move(snapshot));
   }
 }

@@ -65,6 +65,9 @@ struct RenderSnapshot {
   int fullHeight = 0;
   double renderSeconds = 0.0;
   RenderStatistics statistics;
+  // The job's camera, whose rays made these pixels: a viewer checks that what it shows under a
+  // generation was rendered through the lens it asked for then (the edit-storm test).
+  std::shared_ptr<const Camera> camera;
 };
 
 class WorkerArena;  // the render threads (progressive_renderer.cpp)

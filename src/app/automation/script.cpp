@@ -58,7 +58,11 @@ const std::map<std::string, VerbShape>& verbs() {
       {"start-export-render", {3, 3}},
       {"wait-export", {0, 0}},
       {"cancel-export", {0, 0}},
-      {"reset-stats", {0, 0}},  // issue 21: measure a drag alone (bench/viewer-drag.sh)
+      {"reset-stats", {0, 0}},
+      // Hardening (issue 24): COUNT random lens edits at kStormEditsPerSecond, SEED; and undoing
+      // every step there is.
+      {"edit-storm", {2, 2}},
+      {"undo-all", {0, 0}},  // issue 21: measure a drag alone (bench/viewer-drag.sh)
   };
   return table;
 }
@@ -332,7 +336,8 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
-                             command.verb == "make-stop" || command.verb == "quit";
+                             command.verb == "make-stop" || command.verb == "quit" ||
+                             command.verb == "edit-storm";
   if (countArgument && count == 1) {
     const auto value = parseInteger(command.arguments[0]);
     if (!value || *value < 0) {
@@ -428,6 +433,56 @@ bool ScriptRunner::step(ScriptHost& host) {
   return false;
 }
 
+bool ScriptRunner::stormEdits(const ScriptCommand& command, ScriptHost& host) {
+  const long count = *parseInteger(command.arguments[0]);
+  const auto now = std::chrono::steady_clock::now();
+  if (!storm_) {
+    storm_.emplace(static_cast<std::uint64_t>(*parseInteger(command.arguments[1])));
+    stormIssued_ = 0;
+    stormStarted_ = now;
+  }
+  // As many as are due by now at the storm's rate (a frame issues several): the edits land in
+  // the frames as a fast user's would, not all at once.
+  const double elapsedSeconds = std::chrono::duration<double>(now - stormStarted_).count();
+  const long due = std::min(count, 1 + static_cast<long>(elapsedSeconds * kStormEditsPerSecond));
+  for (; stormIssued_ < due; ++stormIssued_) awaitedCommand_ = host.issue(storm_->next());
+  if (stormIssued_ < count) return false;
+  // Done once the last is applied; refusals (a surface that does not exist) are part of it.
+  if (awaitedCommand_ && !host.commandOutcome(*awaitedCommand_)) return false;
+  awaitedCommand_.reset();
+  storm_.reset();
+  char summary[160];
+  std::snprintf(summary, sizeof summary, "edit-storm: %ld edits in %.2f s (%.0f per second)", count,
+                elapsedSeconds, elapsedSeconds > 0 ? count / elapsedSeconds : 0.0);
+  host.reportInfo(summary);
+  return true;
+}
+
+bool ScriptRunner::undoAll(const ScriptCommand& /*command*/, ScriptHost& host) {
+  // A batch of undos a frame, until one is refused: then there is nothing left to undo.
+  if (!undoBatch_.empty()) {
+    if (!host.commandOutcome(undoBatch_.back())) return false;  // applied with the next frame
+    bool refused = false;
+    for (const CommandTicket ticket : undoBatch_) {
+      const std::optional<std::string> outcome = host.commandOutcome(ticket);
+      if (outcome && outcome->empty()) {
+        ++undone_;
+      } else {
+        refused = true;
+      }
+    }
+    undoBatch_.clear();
+    if (refused) {
+      host.reportInfo("undo-all: undid " + std::to_string(undone_) + " steps");
+      undone_ = 0;
+      return true;
+    }
+  }
+  constexpr int kUndosPerFrame = 16;
+  for (int i = 0; i < kUndosPerFrame; ++i) undoBatch_.push_back(host.issue(Undo{}));
+  return false;
+}
+
 bool ScriptRunner::editAndWait(const ScriptCommand& command, ScriptHost& host,
                                const EditCommand& edit) {
   if (!awaitedCommand_) awaitedCommand_ = host.issue(edit);
@@ -488,6 +543,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "flip") return editAndWait(command, host, FlipLens{});
   if (verb == "undo") return editAndWait(command, host, Undo{});
+  if (verb == "edit-storm") return stormEdits(command, host);
+  if (verb == "undo-all") return undoAll(command, host);
   if (verb == "redo") return editAndWait(command, host, Redo{});
   if (verb == "set") {
     if (a[0] == "surface") {

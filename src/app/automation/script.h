@@ -34,6 +34,9 @@
 //                                bar and legend as File > Export cross-section... draws them)
 //   dump-ui FILE.json           quit [CODE]
 //   reset-stats                 (--stats-json then covers only the frames after it)
+//   edit-storm COUNT SEED       (COUNT random lens edits, sensible and absurd, 200 a second;
+//                                automation/edit_storm.h)
+//   undo-all                    (undoes every step there is)
 //   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
 //   set film-point MM|off       (the cross-section shows the bundle of the film point MM from
 //                                the axis instead of the fans, as the Illumination panel's slider)
@@ -71,6 +74,7 @@
 #include <variant>
 #include <vector>
 
+#include "app/automation/edit_storm.h"
 #include "app/document/lens_editor.h"
 #include "common/diagnostics.h"
 #include "render/spectral_mode.h"
@@ -143,6 +147,7 @@ class ScriptHost {
   virtual std::optional<int> previewSpp() const = 0;
   virtual void quit(int exitCode) = 0;
   virtual void reportError(const std::string& message) = 0;
+  virtual void reportInfo(const std::string& /*message*/) {}
   // Viewer-only commands; a host without a window refuses them.
   virtual std::optional<std::string> openDialog(const std::string& kind) {
     return "cannot open a " + kind + " dialog here";
@@ -235,6 +240,10 @@ class ScriptRunner {
   // Issues a lens command once, then waits for the frame that applies it; a refusal fails the
   // script.
   bool editAndWait(const ScriptCommand& command, ScriptHost& host, const EditCommand& edit);
+  // edit-storm COUNT SEED and undo-all (issue 24's edit storm).
+  bool stormEdits(const ScriptCommand& command, ScriptHost& host);
+  bool undoAll(const ScriptCommand& command, ScriptHost& host);
+  static constexpr double kStormEditsPerSecond = 200.0;
   // Waits for awaitedCommand_ to be applied.
   bool waitForCommand(const ScriptCommand& command, ScriptHost& host);
   // Waits until the export ends; a failure (or a cancel, unless `cancelIsFine`) fails the script.
@@ -256,6 +265,13 @@ class ScriptRunner {
   std::optional<std::uint64_t> awaitedExport_;   // export-cross-section's, still being written
   bool exportStarted_ = false;                   // by the current export-render command
   bool failed_ = false;
+  // edit-storm: its edits, how many are issued and since when (awaitedCommand_ is the last).
+  std::optional<EditStorm> storm_;
+  long stormIssued_ = 0;
+  std::chrono::steady_clock::time_point stormStarted_;
+  // undo-all: the undos issued in the last frame, and how many have been applied so far.
+  std::vector<CommandTicket> undoBatch_;
+  long undone_ = 0;
 };
 
 }  // namespace lenslab::app

@@ -96,6 +96,12 @@ void ViewerStats::firstPassArrived(std::uint64_t change, double renderMs) {
   passArrived_ = {change, renderMs};
 }
 
+void ViewerStats::previewShown(std::size_t nonFiniteValues, bool cameraMatches) {
+  ++previewsShown_;
+  if (nonFiniteValues > 0) ++previewsWithNonFinitePixels_;
+  if (!cameraMatches) ++previewsOfAnotherLens_;
+}
+
 void ViewerStats::framePresented(Clock::time_point now) {
   // An edit made while the frame was built supersedes what arrived for the one before it.
   const auto current = [&](std::uint64_t change) {
@@ -150,6 +156,9 @@ ViewerStats::Summary ViewerStats::summary() const {
                               : *std::max_element(firstPictureMs_.begin(), firstPictureMs_.end());
   summary.openingFirstPassMs = openingFirstPassMs_;
   summary.worstComputeStages = worstComputeStages_;
+  summary.previewsShown = previewsShown_;
+  summary.previewsWithNonFinitePixels = previewsWithNonFinitePixels_;
+  summary.previewsOfAnotherLens = previewsOfAnotherLens_;
   for (const auto& [stage, values] : stageMs_) {
     summary.stageMsP99.emplace_back(stage, percentile(values, 0.99));
     summary.stageMsMax.emplace_back(stage, percentile(values, 1.0));
@@ -188,6 +197,11 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       // A software rasterizer repaints only the regions that changed (partial_repaint.h).
       {"partial_repaint", s.partialRepaint},
       {"repainted_fraction_median", s.repaintedFractionMedian},
+      // Every preview image shown: those with a NaN or inf pixel, and those whose camera was not
+      // the one their generation's job started with (both 0 unless something is broken).
+      {"previews_shown", s.previewsShown},
+      {"previews_with_non_finite_pixels", s.previewsWithNonFinitePixels},
+      {"previews_of_another_lens", s.previewsOfAnotherLens},
       {"edits_measured", s.edits},
       {"edit_to_first_pass_ms_median", s.firstPassMsMedian},
       {"edit_to_first_pass_ms_max", s.firstPassMsMax},

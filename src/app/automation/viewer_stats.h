@@ -61,6 +61,10 @@ class ViewerStats {
   // it. `renderMs`: what of the wait the renderer took, from the job's start to the pass's
   // publication (the rest is the UI's: the frames before it took the pass up, and this one).
   void firstPassArrived(std::uint64_t change, double renderMs);
+  // A preview image went to the screen: `nonFiniteValues` NaN or inf among its linear pixels, and
+  // whether the camera it was rendered with is the one its generation's job was started with
+  // (a generation too old to be remembered counts as matching).
+  void previewShown(std::size_t nonFiniteValues, bool cameraMatches);
   // The frame is on screen (its buffers swapped): what arrived for it is measured to `now`.
   void framePresented(Clock::time_point now);
 
@@ -82,6 +86,7 @@ class ViewerStats {
     // the stages first ran: a stage that computes little but shows a large maximum was charged
     // time that was not its work (the virtual machine's own pauses show so).
     Stages stageMsP99, stageMsMax;
+    std::size_t previewsShown = 0, previewsWithNonFinitePixels = 0, previewsOfAnotherLens = 0;
   };
   Summary summary() const;
 
@@ -93,8 +98,9 @@ class ViewerStats {
   std::vector<double> renderingFrameMs_;    // frame intervals while the renderer worked
   std::vector<double> renderingWorkMs_;     // the UI thread's work in those frames
   std::vector<double> renderingComputeMs_;  // ... before rasterizing
-  double worstComputeMs_ = 0;               // the longest of those
-  Stages worstComputeStages_;               // and its stages
+  std::size_t previewsShown_ = 0, previewsWithNonFinitePixels_ = 0, previewsOfAnotherLens_ = 0;
+  double worstComputeMs_ = 0;                                         // the longest of those
+  Stages worstComputeStages_;                                         // and its stages
   std::vector<std::pair<const char*, std::vector<double>>> stageMs_;  // each stage's, per frame
   std::vector<double> redrawWorkMs_;  // ... in those that were rasterized
   std::vector<double> repaintedFractions_;
