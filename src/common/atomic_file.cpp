@@ -43,9 +43,10 @@ std::string writeFileAtomically(const std::filesystem::path& path, std::string_v
   return writeThroughTemporary(path, [&](const std::filesystem::path& temporary) -> std::string {
     std::ofstream output(temporary, std::ios::binary | std::ios::trunc);
     if (!output) return std::strerror(errno != 0 ? errno : EACCES);
+    errno = 0;
     output.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    output.flush();
-    if (!output) return "write failed";
+    output.close();  // flushes the buffer: a full disk or a file-size limit shows up here
+    if (output.fail()) return errno != 0 ? std::strerror(errno) : "write failed";
     return {};
   });
 }

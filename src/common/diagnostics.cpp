@@ -40,19 +40,19 @@ namespace {
 
 constexpr std::size_t kMaxQuotedPathChars = 1024;
 
-// A quote that opens a quoted token: at the start or after a space or an opening bracket, so
-// that the apostrophe of "the lens's rim" or "don't" is not taken for one.
+// A quote (' or ") that opens a quoted token: at the start or after a space or an opening
+// bracket, so that the apostrophe of "the lens's rim" or "don't" is not taken for one.
 bool opensQuote(const std::string& text, std::size_t at) {
-  if (text[at] != '\'') return false;
+  if (text[at] != '\'' && text[at] != '"') return false;
   if (at == 0) return true;
   const char before = text[at - 1];
   return before == ' ' || before == '(' || before == '[' || before == '{' || before == '=' ||
          before == ':' || before == ',' || before == '\n' || before == '\t';
 }
 
-// A quote that closes one: at the end or before a space or punctuation.
-bool closesQuote(const std::string& text, std::size_t at) {
-  if (text[at] != '\'') return false;
+// The `quote` that closes one: at the end or before a space or punctuation.
+bool closesQuote(const std::string& text, std::size_t at, char quote) {
+  if (text[at] != quote) return false;
   if (at + 1 == text.size()) return true;
   const char after = text[at + 1];
   return after == ' ' || after == '.' || after == ',' || after == ';' || after == ':' ||
@@ -71,8 +71,9 @@ std::string abbreviateMessage(std::string message) {
     std::size_t open = at;
     while (open < message.size() && !opensQuote(message, open)) ++open;
     if (open >= message.size()) break;
+    const char quote = message[open];
     std::size_t close = open + 1;
-    while (close < message.size() && !closesQuote(message, close)) ++close;
+    while (close < message.size() && !closesQuote(message, close, quote)) ++close;
     // An unclosed quote runs to the end of the message (the token was cut or is the rest).
     const bool closed = close < message.size();
     const std::size_t length = close - open - 1;
@@ -81,11 +82,11 @@ std::string abbreviateMessage(std::string message) {
     if (length > (path ? kMaxQuotedPathChars : kMaxQuotedTokenChars)) {
       out.append(message, open + 1, kQuotedTokenHeadChars);
       out += "...";
-      if (closed) out += '\'';
+      if (closed) out += quote;
       out += " (" + std::to_string(length) + " characters)";
     } else {
       out.append(message, open + 1, length);
-      if (closed) out += '\'';
+      if (closed) out += quote;
     }
     at = closed ? close + 1 : message.size();
   }
@@ -99,8 +100,17 @@ std::string abbreviateMessage(std::string message) {
 }
 
 void Diagnostics::add(Diagnostic diagnostic) {
-  diagnostic.message = abbreviateMessage(std::move(diagnostic.message));
   if (diagnostic.severity == Severity::Error) ++errorCount_;
+  if (items_.size() > kMaxDiagnostics) return;  // the note below already says so
+  if (items_.size() == kMaxDiagnostics) {
+    // A hostile file can have a problem on each of a million lines: the first ones say what is
+    // wrong, and the rest would only bury them (and fill a log with megabytes).
+    items_.push_back({Severity::Note, diagnostic.location,
+                      "more problems follow; only the first " + std::to_string(kMaxDiagnostics) +
+                          " are listed"});
+    return;
+  }
+  diagnostic.message = abbreviateMessage(std::move(diagnostic.message));
   items_.push_back(std::move(diagnostic));
 }
 

@@ -32,7 +32,7 @@ struct Diagnostic {
   std::string format() const;
 };
 
-// A message fit to print whatever the input held: each quoted token ('...') longer than
+// A message fit to print whatever the input held: each quoted token ('...' or "...") longer than
 // kMaxQuotedTokenChars keeps its first kQuotedTokenHeadChars characters, then "..." and its length
 // ("'1.5555...' (10000002 characters)"), and a message still longer than kMaxMessageChars is cut
 // there with its length. A hostile file's 10-million-digit number must not become 10 MB of
@@ -44,7 +44,9 @@ inline constexpr std::size_t kQuotedTokenHeadChars = 40;
 inline constexpr std::size_t kMaxMessageChars = 4096;
 std::string abbreviateMessage(std::string message);
 
-// Collects diagnostics in the order they were reported.
+// Collects diagnostics in the order they were reported: the first kMaxDiagnostics of them, then a
+// note that more were left out (hasErrors() still counts every error).
+inline constexpr std::size_t kMaxDiagnostics = 50;
 class Diagnostics {
  public:
   void error(const SourceLocation& where, std::string message);

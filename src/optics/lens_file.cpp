@@ -17,6 +17,9 @@ namespace lenslab::optics {
 namespace {
 
 constexpr std::size_t kMaxFileBytes = 16u << 20;  // a lens file is a few hundred bytes
+// Zoom lenses, the most complex camera lenses, have some 60 surfaces; a file of thousands is not a
+// lens, and every analysis traces each ray through every surface.
+constexpr std::size_t kMaxSurfaces = 256;
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -198,6 +201,7 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
       while (j < data.size() && !isBlank(data[j])) ++j;
       tokens.push_back({data.substr(i, j - i), static_cast<int>(i) + 1});
       i = j;
+      if (tokens.size() > 5) break;  // already too many: the rest need not be split
     }
     if (tokens.empty()) continue;
     seenRow = true;
@@ -218,6 +222,9 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
                       "missing the " +
                       kColumnNames[tokens.size()]);
     }
+    if (lens.prescription.surfaces.size() == kMaxSurfaces)
+      return fail(lineNumber, 1,
+                  "too many surfaces: a lens file holds at most " + std::to_string(kMaxSurfaces));
     Surface surface;
     surface.radiusMm = values[0];
     surface.thicknessMm = values[1];

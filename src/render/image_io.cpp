@@ -2,8 +2,7 @@
 
 #include <stb_image_write.h>
 
-#include <cerrno>
-#include <cstring>
+#include <string>
 #include <system_error>
 
 #include "common/atomic_file.h"
@@ -16,14 +15,18 @@ WriteResult writePngRgba8(const std::filesystem::path& path, int width, int heig
       rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
     return {false, "cannot write " + path.string() + ": image size does not match its pixels"};
   }
-  const std::string error =
-      writeThroughTemporary(path, [&](const std::filesystem::path& temporary) -> std::string {
-        errno = 0;
-        if (stbi_write_png(temporary.c_str(), width, height, 4, rgba.data(), width * 4) != 0) {
-          return {};
-        }
-        return errno != 0 ? std::strerror(errno) : "PNG encoder failed";
-      });
+  // Encoded in memory and written by writeFileAtomically: stbi_write_png's own file writer does
+  // not check fwrite, so a full disk would leave a truncated PNG that the rename then puts in
+  // place of the old file.
+  std::string png;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+  };
+  if (stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4) == 0) {
+    return {false, "cannot write " + path.string() + ": the PNG encoder failed"};
+  }
+  const std::string error = writeFileAtomically(path, png);
   return {error.empty(), error};
 }
 

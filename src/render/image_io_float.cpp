@@ -17,6 +17,7 @@
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "common/atomic_file.h"
@@ -38,7 +39,7 @@ int exrThreads() {
   return Imf::globalThreadCount();
 }
 
-// Writes an OpenEXR file at `path` (a temporary one); returns "" or the library's error.
+// Writes an OpenEXR file at `path`, atomically; returns "" or an error naming `path`.
 std::string writeExrFile(const std::filesystem::path& path, const FloatImage& image);
 
 bool sizeMatches(const FloatImage& image) {
@@ -68,9 +69,7 @@ float srgbToLinear(float encoded) {
 
 WriteResult writeExr(const std::filesystem::path& path, const FloatImage& image) {
   if (!sizeMatches(image)) return {false, "cannot write " + path.string() + ": bad image size"};
-  return resultOf(writeThroughTemporary(path, [&](const std::filesystem::path& temporary) {
-    return writeExrFile(temporary, image);
-  }));
+  return resultOf(writeExrFile(path, image));
 }
 
 namespace {
@@ -150,17 +149,41 @@ bool exrZipPays(const FloatImage& image) {
 
 namespace {
 
+// An OpenEXR output stream into memory. The file is encoded here and then written by
+// writeFileAtomically, because Imf::OutputFile writes the line-offset table from its destructor,
+// where a failing file (a full disk) can neither be reported nor safely thrown from, and
+// OpenEXR's own file stream is closed without a check: a truncated file would replace the old.
+class MemoryStream : public Imf::OStream {
+ public:
+  MemoryStream() : Imf::OStream("(memory)") {}
+  void write(const char data[], int n) override {
+    const std::size_t count = static_cast<std::size_t>(n);
+    if (position_ + count > bytes_.size()) bytes_.resize(position_ + count);
+    std::memcpy(bytes_.data() + position_, data, count);
+    position_ += count;
+  }
+  std::uint64_t tellp() override { return position_; }
+  void seekp(std::uint64_t position) override { position_ = static_cast<std::size_t>(position); }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  std::string bytes_;
+  std::size_t position_ = 0;
+};
+
 std::string writeExrFile(const std::filesystem::path& path, const FloatImage& image) {
+  MemoryStream stream;
   try {
-    Imf::OutputFile file(path.c_str(),
+    // Destroyed before the bytes are taken: its destructor writes the line-offset table.
+    Imf::OutputFile file(stream,
                          exrHeader(image.width, image.height,
                                    exrZipPays(image) ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION),
                          exrThreads());
     writeRows(file, image, 0, image.height);
   } catch (const std::exception& error) {
-    return error.what();
+    return "cannot write " + path.string() + ": " + error.what();
   }
-  return {};
+  return writeFileAtomically(path, stream.bytes());
 }
 
 }  // namespace

@@ -4,8 +4,10 @@
 
 #include "render/pbrt_parser.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "render/pbrt/directive_reader.h"
 #include "render/pbrt/directives.h"
@@ -33,9 +35,22 @@ class FileParser {
       diagnostics_.error(includedFrom, "cannot open scene file " + path.string());
       return false;
     }
+    // A file that is still being read when it is included again would include itself forever:
+    // say so at the Include, rather than only once the depth limit is reached.
+    std::error_code ignored;
+    const std::filesystem::path identity = std::filesystem::weakly_canonical(path, ignored);
+    if (std::find(reading_.begin(), reading_.end(), identity) != reading_.end()) {
+      diagnostics_.error(includedFrom, "Include of " + path.filename().string() +
+                                           ", which is already being read: a file that includes "
+                                           "itself (directly or through other files)");
+      return false;
+    }
     std::ostringstream text;
     text << input.rdbuf();
-    return parseText(text.str(), path.string(), path.parent_path(), depth);
+    reading_.push_back(identity);
+    const bool ok = parseText(text.str(), path.string(), path.parent_path(), depth);
+    reading_.pop_back();
+    return ok;
   }
 
   bool parseText(const std::string& text, const std::string& fileName,
@@ -87,6 +102,7 @@ class FileParser {
 
   pbrt::ParserState state_;
   Diagnostics& diagnostics_;
+  std::vector<std::filesystem::path> reading_;  // the files being read, outermost first
 };
 
 ParseResult finishParse(SceneDescription&& scene, Diagnostics&& diagnostics, bool ok,

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace lenslab::render {
@@ -84,13 +86,13 @@ Token PbrtTokenizer::scan(Diagnostics& diagnostics) {
     const char* end = token.text.data() + token.text.size();
     auto [stop, error] = std::from_chars(begin, end, token.number);
     if (error == std::errc::result_out_of_range && stop == end) {
-      // Too large for a double (1e999): keep it as infinity so that checks downstream can name
-      // what it broke (a non-finite vertex, say). Underflow becomes 0.
-      const bool huge = token.text.find_first_of("eE") != std::string::npos &&
-                        token.text.find("e-") == std::string::npos &&
-                        token.text.find("E-") == std::string::npos;
-      const double sign = token.text[0] == '-' ? -1.0 : 1.0;
-      token.number = huge ? sign * std::numeric_limits<double>::infinity() : 0.0;
+      // Too large for a double (1e999, or a 10-million-digit integer): keep it as infinity so
+      // that checks downstream can name what it broke (a non-finite vertex, say); too small
+      // becomes 0. strtod tells the two apart by the value it returns for either.
+      const double parsed = std::strtod(token.text.c_str(), nullptr);
+      token.number = std::abs(parsed) >= 1.0
+                         ? std::copysign(std::numeric_limits<double>::infinity(), parsed)
+                         : 0.0;
       error = std::errc();
     }
     if (error != std::errc() || stop != end) {

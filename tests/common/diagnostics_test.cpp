@@ -96,5 +96,30 @@ TEST(Diagnostics, LongQuotedTokensAreShortenedWithTheirLength) {
   EXPECT_EQ(cut, words.substr(0, 4096) + "... (message cut: 5000 characters)");
 }
 
+// A scene's names are quoted with double quotes ("shape \"sphere\""): a 10 MB name is shortened
+// like a 10 MB number.
+TEST(Diagnostics, LongDoubleQuotedTokensAreShortenedToo) {
+  const std::string name(10'000'000, 's');
+  EXPECT_EQ(
+      abbreviateMessage("unknown shape \"" + name + "\"; it is left out"),
+      "unknown shape \"" + name.substr(0, 40) + "...\" (10000000 characters); it is left out");
+  // A single quote inside a double-quoted token does not end it, nor the other way round.
+  const std::string mixed = "parameter \"it's fine\" and 'say \"x\"'";
+  EXPECT_EQ(abbreviateMessage(mixed + std::string(100, ' ')), mixed + std::string(100, ' '));
+}
+
+// A file with a problem on every one of a million lines: the first kMaxDiagnostics are listed,
+// then one note; every error still counts.
+TEST(Diagnostics, KeepsTheFirstProblemsAndANoteThatMoreFollow) {
+  Diagnostics collected;
+  for (int line = 1; line <= 1000; ++line) collected.error({"lens.dat", line, 1}, "bad row");
+  ASSERT_EQ(collected.all().size(), kMaxDiagnostics + 1);
+  EXPECT_EQ(collected.all()[kMaxDiagnostics - 1].location.line, static_cast<int>(kMaxDiagnostics));
+  EXPECT_EQ(collected.all().back().severity, Severity::Note);
+  EXPECT_NE(collected.all().back().message.find("only the first 50 are listed"), std::string::npos);
+  EXPECT_TRUE(collected.hasErrors());
+  EXPECT_LT(collected.formatAll().size(), 4096u);
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -268,5 +268,26 @@ TEST(LensFile, RandomTextIsALensOrALocatedError) {
   }
 }
 
+// Flat surfaces 1 mm apart, glass and air by turns, the stop in the middle: nothing crosses, so
+// only the count can make it an error.
+std::string flatSurfaces(int count) {
+  std::string text;
+  for (int i = 0; i < count; ++i) {
+    text += i == count / 2 ? "0\t1\t0\t10\n" : (i % 2 ? "inf\t1\t1\t20\n" : "inf\t1\t1.5\t20\n");
+  }
+  return text;
+}
+
+TEST(LensFile, AtMost256SurfacesAndTheNextIsAnErrorAtItsRow) {
+  const auto most = parse(flatSurfaces(256));
+  ASSERT_TRUE(most.lens.has_value()) << most.diagnostics.formatAll();
+  EXPECT_EQ(most.lens->prescription.surfaces.size(), 256u);
+  const auto tooMany = parse(flatSurfaces(10'000));
+  EXPECT_FALSE(tooMany.lens.has_value());
+  ASSERT_EQ(tooMany.diagnostics.all().size(), 1u);
+  EXPECT_EQ(tooMany.diagnostics.formatAll(),
+            "t.dat:257:1: error: too many surfaces: a lens file holds at most 256\n");
+}
+
 }  // namespace
 }  // namespace lenslab::optics

@@ -57,6 +57,15 @@ TEST(SceneInput, NonFiniteTransformNumbersAreErrorsAtTheNumber) {
               "test.pbrt:1:9: error: Scale (3 numbers): '-nan' is not a finite");
   expectError("Rotate 1e400 0 1 0\n", "test.pbrt:1:8: error: Rotate (4 numbers)");
   expectError("Translate nan 0 0\n", "test.pbrt:1:11: error: expected a number for Translate");
+  // Too large without an exponent: a 400-digit integer was read as 0 (from_chars gives no value
+  // on overflow, and only exponents were taken for large), a sphere's radius 0 a silent warning.
+  expectError("Translate " + std::string(400, '7') + " 0 0\n",
+              "test.pbrt:1:11: error: Translate (3 numbers): '7777");
+  expectError("WorldBegin\nShape \"sphere\" \"float radius\" [-" + std::string(400, '9') + "]\n",
+              "test.pbrt:2:32: error: \"float radius\": '-999");
+  // Underflow is still zero, as before: 1e-999 is a number, just a small one.
+  expectError("Translate 1e-999 0 0\nLookAt 0 0 0  0 0 0  0 1 0\n",
+              "test.pbrt:2:1: error: LookAt: the eye and the target are the same point");
 }
 
 TEST(SceneInput, SingularCameraTransformIsAnErrorAtCamera) {

@@ -39,6 +39,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"wait-frames", {1, 1}},
       {"wait-spp", {1, 1}},
       {"wait-until-file", {1, 1}},
+      {"wait-scene-load", {0, 0}},
       {"screenshot", {1, 1}},
       {"screenshot-render", {1, 1}},
       {"screenshot-cross-section", {1, 1}},
@@ -647,6 +648,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     return *spp >= *parseInteger(a[0]);
   }
   if (verb == "wait-until-file") return std::filesystem::exists(a[0]);
+  // A failed load does not fail the script: the viewer logs it, as for a file the user dropped.
+  if (verb == "wait-scene-load") return host.sceneLoadOutcome().has_value();
   if (verb == "export-render" || verb == "start-export-render") {
     if (!exportStarted_) {
       int width = 0, height = 0;  // 0 x 0: the scene's film

@@ -27,6 +27,8 @@
 //                                or the export window, as the menu does)
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
+//   wait-scene-load             (until the scene being loaded, say a dropped one, has opened or
+//                                failed; a failure is in the log and does not fail the script)
 //   screenshot FILE.png         screenshot-render FILE      screenshot-cross-section FILE
 //   export-cross-section FILE [WIDTHxHEIGHT] [DPI] [light|dark]
 //                               (the cross-section for slides, off screen: PNG or SVG from the
