@@ -1,8 +1,8 @@
 # LENSLAB_SANITIZE builds every target (libraries, binaries, tests) with gcc's sanitizers:
 #   address   AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (./test --sanitize)
-#   thread    ThreadSanitizer (./test --tsan)
+#   thread    ThreadSanitizer (configures; not yet built to the end nor run by a script)
 # Empty (the default) builds without them. The sanitizer runs set their options and suppression
-# files (scripts/sanitizers/) in the environment; see scripts/test-sanitize and scripts/test-tsan.
+# files (scripts/sanitizers/) in the environment; see scripts/test-sanitize.
 set(LENSLAB_SANITIZE "" CACHE STRING "Sanitizer build: empty, 'address' (ASan+UBSan) or 'thread' (TSan)")
 set_property(CACHE LENSLAB_SANITIZE PROPERTY STRINGS "" address thread)
 
