@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "app/drawing/cross_section_drawing.h"
+#include "app/platform/gl_driver_pin.h"
 #include "app/platform/partial_repaint.h"
 #include "app/platform/ui_scale.h"
 #include "app/resources.h"
@@ -96,6 +97,7 @@ std::unique_ptr<Window> Window::open(const Options& options, std::string* error)
     *error = "cannot load the OpenGL 3.3 functions";
     return nullptr;
   }
+  keepGlDriverLoadedUntilExit();  // only in the sanitizer build (gl_driver_pin.cpp says why)
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();

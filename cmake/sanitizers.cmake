@@ -1,0 +1,27 @@
+# LENSLAB_SANITIZE builds every target (libraries, binaries, tests) with gcc's sanitizers:
+#   address   AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (./test --sanitize)
+#   thread    ThreadSanitizer (configures; not yet built to the end nor run by a script)
+# Empty (the default) builds without them. The sanitizer runs set their options and suppression
+# files (scripts/sanitizers/) in the environment; see scripts/test-sanitize.
+set(LENSLAB_SANITIZE "" CACHE STRING "Sanitizer build: empty, 'address' (ASan+UBSan) or 'thread' (TSan)")
+set_property(CACHE LENSLAB_SANITIZE PROPERTY STRINGS "" address thread)
+
+if(LENSLAB_SANITIZE STREQUAL "address")
+  # -fno-sanitize-recover: undefined behaviour stops the test (non-zero exit), rather than
+  # printing a line that a passing test would hide.
+  set(lenslab_sanitizer_flags -fsanitize=address,undefined -fno-sanitize-recover=undefined)
+  # Tests that bound the viewer's memory with `ulimit -v` use ASan's own limits instead: ASan
+  # reserves terabytes of address space for its shadow memory, which `ulimit -v` forbids.
+  add_compile_definitions(LENSLAB_ADDRESS_SANITIZER=1)
+elseif(LENSLAB_SANITIZE STREQUAL "thread")
+  set(lenslab_sanitizer_flags -fsanitize=thread)
+  add_compile_definitions(LENSLAB_THREAD_SANITIZER=1)
+elseif(NOT LENSLAB_SANITIZE STREQUAL "")
+  message(FATAL_ERROR "LENSLAB_SANITIZE must be empty, 'address' or 'thread', not '${LENSLAB_SANITIZE}'")
+endif()
+
+if(lenslab_sanitizer_flags)
+  # Frame pointers keep the sanitizers' stack traces whole at -O2.
+  add_compile_options(${lenslab_sanitizer_flags} -fno-omit-frame-pointer)
+  add_link_options(${lenslab_sanitizer_flags})
+endif()
