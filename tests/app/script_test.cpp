@@ -1,8 +1,13 @@
 #include "app/automation/script.h"
 
+#include "optics/lens_file.h"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace lenslab::app {
 namespace {
@@ -102,6 +107,52 @@ TEST(ScriptRun, SetFieldsGivesTheHostTheFractions) {
   }
   EXPECT_TRUE(host.errors.empty());
   EXPECT_EQ(host.fields, (std::vector<double>{0.0, 0.5, 1.0}));
+}
+
+// edit-storm at its rate, then undo-all back to the lens the script started with: every edit the
+// storm made was one undo step (refused ones, naming a surface that does not exist, made none).
+TEST(ScriptRun, AnEditStormIsUndoneWholeByUndoAll) {
+  const ParsedScript script = parseScript("edit-storm 100 7\nundo-all\n", "t");
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  FakeHost host;
+  // Compared as the lens file would write them: every digit of every field.
+  const auto text = [&] { return optics::formatLensText(host.prescription()); };
+  const std::string start = text();
+  ScriptRunner runner(script.commands);
+  const auto started = std::chrono::steady_clock::now();
+  bool stormed = false;
+  while (host.frame(runner)) {
+    if (!stormed && host.calls.size() >= 100) {
+      stormed = true;
+      // 100 edits at 200 a second: half a second (the first at once).
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      EXPECT_GT(seconds, 0.45);
+      EXPECT_LT(seconds, 1.5);
+      EXPECT_NE(text(), start);
+    }
+  }
+  EXPECT_TRUE(host.errors.empty());
+  EXPECT_EQ(text(), start);
+  EXPECT_FALSE(host.lens.document().canUndo());
+  // Undos were issued until one was refused.
+  const auto undos = std::count(host.calls.begin(), host.calls.end(), describe(Undo{}));
+  EXPECT_GT(undos, 50);
+}
+
+TEST(ScriptParse, WaitSecondsTakesUpTo60Seconds) {
+  for (const char* bad : {"wait-seconds 0\n", "wait-seconds 61\n", "wait-seconds soon\n"})
+    EXPECT_FALSE(parseScript(bad, "t").diagnostics.empty()) << bad;
+  const ParsedScript script = parseScript("wait-seconds 0.3\n", "t");
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  const auto started = std::chrono::steady_clock::now();
+  while (host.frame(runner)) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_GE(seconds, 0.3);
+  EXPECT_LT(seconds, 2.0);
 }
 
 TEST(ScriptParse, FieldsAndPlotDialogsAreChecked) {

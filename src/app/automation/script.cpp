@@ -37,6 +37,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"undo", {0, 0}},
       {"redo", {0, 0}},
       {"wait-frames", {1, 1}},
+      {"wait-seconds", {1, 1}},
       {"wait-spp", {1, 1}},
       {"wait-until-file", {1, 1}},
       {"wait-scene-load", {0, 0}},
@@ -334,6 +335,14 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
               "export-render, save-cross-section, export-cross-section or save-ID-plot "
               "for a plot: " +
               analysisPlotIds() + ")");
+    }
+  }
+  if (command.verb == "wait-seconds") {
+    const auto seconds = parseNumber(command.arguments[0]);
+    // Longer waits would meet kWaitLimit; a script repeats the command for more.
+    if (!seconds || *seconds <= 0 || *seconds > 60) {
+      return problemAt(command, 0,
+                       "'" + command.arguments[0] + "' is not a number of seconds in (0, 60]");
     }
   }
   const bool countArgument = command.verb == "wait-frames" || command.verb == "wait-spp" ||
@@ -638,6 +647,12 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "wait-frames") {
     // Counted from this command's first frame: "wait-frames 3" lets three frames be drawn.
     return framesWaited_++ >= *parseInteger(a[0]);
+  }
+  if (verb == "wait-seconds") {
+    // step() notes when a command first waits; the idle viewer wakes at least 4 times a second.
+    if (!waitStarted_) return false;
+    return std::chrono::steady_clock::now() - *waitStarted_ >=
+           std::chrono::duration<double>(*parseNumber(a[0]));
   }
   if (verb == "wait-spp") {
     const auto spp = host.previewSpp();

@@ -39,6 +39,7 @@
 //   edit-storm COUNT SEED       (COUNT random lens edits, sensible and absurd, 200 a second;
 //                                automation/edit_storm.h)
 //   undo-all                    (undoes every step there is)
+//   wait-seconds S              (0 < S <= 60)
 //   load-lens FILE keep-film-distance   (opens the lens at its file's film distance)
 //   set film-point MM|off       (the cross-section shows the bundle of the film point MM from
 //                                the axis instead of the fans, as the Illumination panel's slider)
