@@ -4,12 +4,8 @@
 
 #include "render/pbrt_parser.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "render/pbrt/directive_reader.h"
 #include "render/pbrt/directives.h"
-#include "render/pbrt/file_problem.h"
 #include "render/pbrt/parser_state.h"
 
 namespace lenslab::render {
@@ -20,27 +16,25 @@ constexpr int kMaxIncludeDepth = 32;
 
 class FileParser {
  public:
-  FileParser(SceneDescription& scene, Diagnostics& diagnostics)
-      : state_(scene, diagnostics), diagnostics_(diagnostics) {}
+  FileParser(SceneDescription& scene, const SceneFiles& files, Diagnostics& diagnostics)
+      : state_(scene, diagnostics), files_(files), diagnostics_(diagnostics) {}
 
   bool parseFile(const std::filesystem::path& path, const SourceLocation& includedFrom, int depth) {
-    if (const auto problem = pbrt::fileProblem(path, depth == 0 ? "scene file" : "included file")) {
+    if (const auto problem = files_.problem(path, depth == 0 ? "scene file" : "included file")) {
       diagnostics_.error(includedFrom, *problem);
       return false;
     }
-    std::ifstream input(path, std::ios::binary);
-    if (!input) {
+    const std::optional<std::string> text = files_.read(path);
+    if (!text) {
       diagnostics_.error(includedFrom, "cannot open scene file " + path.string());
       return false;
     }
-    std::ostringstream text;
-    text << input.rdbuf();
-    return parseText(text.str(), path.string(), path.parent_path(), depth);
+    return parseText(*text, path.string(), path.parent_path(), depth);
   }
 
   bool parseText(const std::string& text, const std::string& fileName,
                  const std::filesystem::path& directory, int depth) {
-    pbrt::DirectiveReader in(text, fileName, directory, diagnostics_);
+    pbrt::DirectiveReader in(text, fileName, directory, files_, diagnostics_);
     for (;;) {
       Token token = in.next();
       if (diagnostics_.hasErrors()) return false;
@@ -86,6 +80,7 @@ class FileParser {
   }
 
   pbrt::ParserState state_;
+  const SceneFiles& files_;
   Diagnostics& diagnostics_;
 };
 
@@ -106,17 +101,17 @@ ParseResult parsePbrtFile(const std::filesystem::path& path) {
   SceneDescription scene;
   scene.sourcePath = path;
   Diagnostics diagnostics;
-  FileParser parser(scene, diagnostics);
+  FileParser parser(scene, diskSceneFiles(), diagnostics);
   const bool ok = parser.parseFile(path, SourceLocation{path.string(), 0, 0}, 0);
   return finishParse(std::move(scene), std::move(diagnostics), ok, parser);
 }
 
 ParseResult parsePbrtText(const std::string& text, const std::string& fileName,
-                          const std::filesystem::path& directory) {
+                          const std::filesystem::path& directory, const SceneFiles& files) {
   SceneDescription scene;
   scene.sourcePath = directory / fileName;
   Diagnostics diagnostics;
-  FileParser parser(scene, diagnostics);
+  FileParser parser(scene, files, diagnostics);
   const bool ok = parser.parseText(text, fileName, directory, 0);
   return finishParse(std::move(scene), std::move(diagnostics), ok, parser);
 }
