@@ -278,6 +278,14 @@ std::optional<Diagnostic> readMesh(const std::string& data, MeshData& mesh,
                                std::to_string(reader.remainingBytes()) +
                                " bytes of data after the header can hold");
     }
+    // Items without properties take no bytes, so no size bounds their count: a billion of them
+    // once kept the reader looping (and a vertex element growing) for minutes (found by
+    // tests/fuzz/ply_fuzz.cpp).
+    if (element.properties.empty() && element.count > 0) {
+      return places.atLine(element.line, 1,
+                           "element \"" + element.name + "\" declares " +
+                               std::to_string(element.count) + " items but no properties");
+    }
     const bool isVertex = element.name == "vertex";
     for (std::uint64_t item = 0; item < element.count; ++item) {
       glm::dvec3 position3{0.0}, normal{0.0};
