@@ -273,6 +273,14 @@ class PlyInput : public ::testing::Test {
   }
 };
 
+// Items without properties take no bytes: a huge count of them is an error at the element, not
+// a billion-step loop (tests/fuzz/regressions/ply/element-without-properties.ply).
+TEST_F(PlyInput, AnElementWithoutPropertiesIsAnError) {
+  expectPlyError("ply\nformat ascii 1.0\nelement vertex 1000000000\nend_header\n",
+                 "mesh.ply:3:1: error: element \"vertex\" declares 1000000000 items but no "
+                 "properties");
+}
+
 // Faces that come before the vertices (or a file whose vertex element is misspelt) are checked
 // once the whole file is read (tests/fuzz/regressions/ply/misspelt-vertex-element.ply).
 TEST_F(PlyInput, FaceIndicesWithoutTheirVerticesAreAnError) {
