@@ -5,13 +5,11 @@
 #include "render/pbrt_parser.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 #include <vector>
 
 #include "render/pbrt/directive_reader.h"
 #include "render/pbrt/directives.h"
-#include "render/pbrt/file_problem.h"
 #include "render/pbrt/parser_state.h"
 
 namespace lenslab::render {
@@ -22,16 +20,16 @@ constexpr int kMaxIncludeDepth = 32;
 
 class FileParser {
  public:
-  FileParser(SceneDescription& scene, Diagnostics& diagnostics)
-      : state_(scene, diagnostics), diagnostics_(diagnostics) {}
+  FileParser(SceneDescription& scene, const SceneFiles& files, Diagnostics& diagnostics)
+      : state_(scene, diagnostics), files_(files), diagnostics_(diagnostics) {}
 
   bool parseFile(const std::filesystem::path& path, const SourceLocation& includedFrom, int depth) {
-    if (const auto problem = pbrt::fileProblem(path, depth == 0 ? "scene file" : "included file")) {
+    if (const auto problem = files_.problem(path, depth == 0 ? "scene file" : "included file")) {
       diagnostics_.error(includedFrom, *problem);
       return false;
     }
-    std::ifstream input(path, std::ios::binary);
-    if (!input) {
+    const std::optional<std::string> text = files_.read(path);
+    if (!text) {
       diagnostics_.error(includedFrom, "cannot open scene file " + path.string());
       return false;
     }
@@ -45,17 +43,15 @@ class FileParser {
                                            "itself (directly or through other files)");
       return false;
     }
-    std::ostringstream text;
-    text << input.rdbuf();
     reading_.push_back(identity);
-    const bool ok = parseText(text.str(), path.string(), path.parent_path(), depth);
+    const bool ok = parseText(*text, path.string(), path.parent_path(), depth);
     reading_.pop_back();
     return ok;
   }
 
   bool parseText(const std::string& text, const std::string& fileName,
                  const std::filesystem::path& directory, int depth) {
-    pbrt::DirectiveReader in(text, fileName, directory, diagnostics_);
+    pbrt::DirectiveReader in(text, fileName, directory, files_, diagnostics_);
     for (;;) {
       Token token = in.next();
       if (diagnostics_.hasErrors()) return false;
@@ -101,6 +97,7 @@ class FileParser {
   }
 
   pbrt::ParserState state_;
+  const SceneFiles& files_;
   Diagnostics& diagnostics_;
   std::vector<std::filesystem::path> reading_;  // the files being read, outermost first
 };
@@ -122,17 +119,17 @@ ParseResult parsePbrtFile(const std::filesystem::path& path) {
   SceneDescription scene;
   scene.sourcePath = path;
   Diagnostics diagnostics;
-  FileParser parser(scene, diagnostics);
+  FileParser parser(scene, diskSceneFiles(), diagnostics);
   const bool ok = parser.parseFile(path, SourceLocation{path.string(), 0, 0}, 0);
   return finishParse(std::move(scene), std::move(diagnostics), ok, parser);
 }
 
 ParseResult parsePbrtText(const std::string& text, const std::string& fileName,
-                          const std::filesystem::path& directory) {
+                          const std::filesystem::path& directory, const SceneFiles& files) {
   SceneDescription scene;
   scene.sourcePath = directory / fileName;
   Diagnostics diagnostics;
-  FileParser parser(scene, diagnostics);
+  FileParser parser(scene, files, diagnostics);
   const bool ok = parser.parseText(text, fileName, directory, 0);
   return finishParse(std::move(scene), std::move(diagnostics), ok, parser);
 }

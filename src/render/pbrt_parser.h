@@ -8,6 +8,7 @@
 
 #include "common/diagnostics.h"
 #include "render/scene_description.h"
+#include "render/scene_file_access.h"
 
 namespace lenslab::render {
 
@@ -19,8 +20,9 @@ struct ParseResult {
 ParseResult parsePbrtFile(const std::filesystem::path& path);
 
 // Parses text as if it were the file `fileName`; Include and file names resolve against
-// `directory`.
+// `directory`, and the files they name are read through `files` (the disk unless given).
 ParseResult parsePbrtText(const std::string& text, const std::string& fileName,
-                          const std::filesystem::path& directory);
+                          const std::filesystem::path& directory,
+                          const SceneFiles& files = diskSceneFiles());
 
 }  // namespace lenslab::render

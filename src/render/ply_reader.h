@@ -4,18 +4,19 @@
 // fan). Counts, indices and coordinates are checked as they are read, so that a corrupt file
 // neither allocates without bound nor wraps a negative index around.
 
-#include <filesystem>
+#include <string>
 
 #include "common/diagnostics.h"
 #include "render/scene_description.h"
 
 namespace lenslab::render {
 
-// Fills `mesh`, or reports what is wrong with the file and returns false. Problems in the header
-// and in ASCII data are reported at the PLY file's line and column; the others (the file cannot be
-// opened, binary data, where the message names the byte offset) at `includedAt`, where the scene
-// names the file, with the PLY file's path in front of the message.
-bool readPlyMesh(const std::filesystem::path& path, MeshData& mesh,
-                 const SourceLocation& includedAt, Diagnostics& diagnostics);
+// Fills `mesh` from a PLY file's bytes (the scene parser reads them through its SceneFiles,
+// scene_file_access.h), or reports what is wrong with the file and returns false. Problems in the
+// header and in ASCII data are reported at the PLY file's line and column (`fileName` names it);
+// the others (binary data, where the message names the byte offset) at `includedAt`, where the
+// scene names the file, with the file's name in front of the message.
+bool readPlyMeshData(const std::string& data, const std::string& fileName, MeshData& mesh,
+                     const SourceLocation& includedAt, Diagnostics& diagnostics);
 
 }  // namespace lenslab::render

@@ -173,6 +173,15 @@ std::optional<std::vector<double>> readSpectrumFile(const std::filesystem::path&
     if (whyNot) *whyNot = "cannot open spectrum file " + path.string();
     return std::nullopt;
   }
+  std::ostringstream text;
+  text << input.rdbuf();
+  return parseSpectrumText(text.str(), path.string(), whyNot);
+}
+
+std::optional<std::vector<double>> parseSpectrumText(const std::string& text,
+                                                     const std::string& fileName,
+                                                     std::string* whyNot) {
+  std::istringstream input(text);
   std::vector<double> numbers;
   std::string line;
   int lineNumber = 0;
@@ -188,7 +197,7 @@ std::optional<std::vector<double>> readSpectrumFile(const std::filesystem::path&
       if (error != std::errc() || stop != word.data() + word.size()) {
         if (whyNot) {
           *whyNot =
-              path.string() + ":" + std::to_string(lineNumber) + ": '" + word + "' is not a number";
+              fileName + ":" + std::to_string(lineNumber) + ": '" + word + "' is not a number";
         }
         return std::nullopt;
       }

@@ -40,5 +40,9 @@ std::optional<glm::dvec3> namedSpectrumRgb(const std::string& name);
 // to the end of a line is a comment. Nothing, with a reason in `whyNot`, if it cannot be read.
 std::optional<std::vector<double>> readSpectrumFile(const std::filesystem::path& path,
                                                     std::string* whyNot);
+// The same for the file's text already read; `fileName` names it in `whyNot`.
+std::optional<std::vector<double>> parseSpectrumText(const std::string& text,
+                                                     const std::string& fileName,
+                                                     std::string* whyNot);
 
 }  // namespace lenslab::render

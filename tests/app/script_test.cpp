@@ -205,6 +205,29 @@ TEST(ScriptParse, KeepFilmDistanceTakesOnlyItsOwnWords) {
       << script.diagnostics.all()[1].format();
 }
 
+// Surfaces count from 1: make-stop 0 is refused where it is written, not passed on to the viewer
+// as surface SIZE_MAX (tests/fuzz/regressions/script/make-stop-0.script).
+TEST(ScriptParse, MakeStopCountsSurfacesFromOne) {
+  const ParsedScript script = parseScript("make-stop 0\nmake-stop 1\n", "t.script");
+  ASSERT_EQ(script.diagnostics.all().size(), 1u);
+  EXPECT_EQ(script.diagnostics.all()[0].format(),
+            "t.script:1:11: error: '0' is not a surface number (1, 2, ...)");
+  ASSERT_EQ(script.commands.size(), 1u);
+  EXPECT_EQ(script.commands[0].arguments, std::vector<std::string>{"1"});
+}
+
+// A carriage return separates words wherever it is: "a.png\r\r" is the file a.png, as the viewer
+// shows it (tests/fuzz/regressions/script/carriage-returns.script).
+TEST(ScriptParse, CarriageReturnsSeparateWords) {
+  const ParsedScript script =
+      parseScript("show-panel a\r\r\nscreenshot b.png\r\n\rundo\r\n", "t.script");
+  EXPECT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  ASSERT_EQ(script.commands.size(), 3u);
+  EXPECT_EQ(script.commands[0].arguments, std::vector<std::string>{"a"});
+  EXPECT_EQ(script.commands[1].arguments, std::vector<std::string>{"b.png"});
+  EXPECT_EQ(script.commands[2].verb, "undo");
+}
+
 TEST(ScriptParse, ReportsFileLineColumnForEachBadLine) {
   const ParsedScript script = parseScript(
       "load-lens a.dat\n"

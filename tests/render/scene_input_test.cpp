@@ -282,6 +282,24 @@ class PlyInput : public ::testing::Test {
   }
 };
 
+// Items without properties take no bytes: a huge count of them is an error at the element, not
+// a billion-step loop (tests/fuzz/regressions/ply/element-without-properties.ply).
+TEST_F(PlyInput, AnElementWithoutPropertiesIsAnError) {
+  expectPlyError("ply\nformat ascii 1.0\nelement vertex 1000000000\nend_header\n",
+                 "mesh.ply:3:1: error: element \"vertex\" declares 1000000000 items but no "
+                 "properties");
+}
+
+// Faces that come before the vertices (or a file whose vertex element is misspelt) are checked
+// once the whole file is read (tests/fuzz/regressions/ply/misspelt-vertex-element.ply).
+TEST_F(PlyInput, FaceIndicesWithoutTheirVerticesAreAnError) {
+  expectPlyError(
+      "ply\nformat ascii 1.0\nelement vertexes 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+      "mesh.ply: vertex index 0 is out of range (0 vertices)");
+}
+
 TEST_F(PlyInput, NegativeFaceCountIsAnErrorAtItsPlace) {
   expectPlyError(asciiHeader + "0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n",
                  "mesh.ply:13:1: error: face 0: the vertex_indices list has a count of -1");

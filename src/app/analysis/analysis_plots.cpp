@@ -1,12 +1,14 @@
 #include "app/analysis/analysis_plots.h"
 
+#include <iterator>
+
 #include "app/analysis/plot_sources.h"
 
 namespace lenslab::app {
 
 namespace {
 
-const AnalysisPlotSource kPlots[] = {
+constexpr AnalysisPlotSource kPlots[] = {
     {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
     {"seidel", "Seidel sums", seidelCurrentPlot, seidelSettled},
     {"colour", "chromatic focal shift", colourCurrentPlot, colourSettled},
@@ -21,6 +23,16 @@ const AnalysisPlotSource kPlots[] = {
     {"mtf", "MTF", mtfCurrentPlot, mtfSettled},
 };
 
+// The registry and the id list the script parser checks names against (analysis_plot_ids.h) are
+// the same plots in the same order.
+constexpr bool sameIds() {
+  if (std::size(kPlots) != std::size(kAnalysisPlotIds)) return false;
+  for (std::size_t i = 0; i < std::size(kPlots); ++i)
+    if (std::string_view(kPlots[i].id) != kAnalysisPlotIds[i]) return false;
+  return true;
+}
+static_assert(sameIds(), "kPlots and kAnalysisPlotIds must list the same ids in the same order");
+
 }  // namespace
 
 std::span<const AnalysisPlotSource> analysisPlots() { return kPlots; }
@@ -29,22 +41,6 @@ const AnalysisPlotSource* findAnalysisPlot(std::string_view id) {
   for (const AnalysisPlotSource& plot : kPlots)
     if (id == plot.id) return &plot;
   return nullptr;
-}
-
-std::string analysisPlotIds() {
-  std::string ids;
-  for (const AnalysisPlotSource& plot : kPlots)
-    ids += (ids.empty() ? "" : ", ") + std::string(plot.id);
-  return ids;
-}
-
-std::optional<std::string> plotIdOfSaveDialog(std::string_view dialog) {
-  constexpr std::string_view kPrefix = "save-", kSuffix = "-plot";
-  if (dialog.size() <= kPrefix.size() + kSuffix.size() || !dialog.starts_with(kPrefix) ||
-      !dialog.ends_with(kSuffix))
-    return std::nullopt;
-  return std::string(
-      dialog.substr(kPrefix.size(), dialog.size() - kPrefix.size() - kSuffix.size()));
 }
 
 }  // namespace lenslab::app

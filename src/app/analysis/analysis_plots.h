@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/analysis/analysis_plot_ids.h"
 #include "app/plot/plot_spec.h"
 
 namespace lenslab::app {
@@ -32,10 +33,5 @@ struct AnalysisPlotSource {
 
 std::span<const AnalysisPlotSource> analysisPlots();
 const AnalysisPlotSource* findAnalysisPlot(std::string_view id);
-// "illumination, ray-fan, ...": for messages.
-std::string analysisPlotIds();
-// The plot that `open-dialog save-ID-plot` names: "save-ray-fan-plot" -> "ray-fan"; nullopt for
-// a name of another shape (whether the id is registered is the caller's check).
-std::optional<std::string> plotIdOfSaveDialog(std::string_view dialog);
 
 }  // namespace lenslab::app

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/analysis/field_fractions.h"
 #include "optics/analysis/field_point.h"
 #include "optics/lens_system.h"
 
@@ -30,11 +31,5 @@ AnalysisRequest analysisRequestOf(const ViewerState& state);
 
 // On the worker: the optics setup for the request (the lens must be non-null).
 optics::AnalysisSetup analysisSetupFor(const AnalysisRequest& request);
-
-// "0, 0.7, 1" or "0,0.7,1": one to eight fractions of the half diagonal, each from 0 to 1.
-// nullopt with *why set (when given) otherwise.
-std::optional<std::vector<double>> parseFieldFractions(std::string_view text, std::string* why);
-// The fractions as the Fields box shows them: "0, 0.7, 1".
-std::string fieldFractionsText(const std::vector<double>& fractions);
 
 }  // namespace lenslab::app

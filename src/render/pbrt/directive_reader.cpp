@@ -32,9 +32,11 @@ bool isStringType(const std::string& type) {
 }  // namespace
 
 DirectiveReader::DirectiveReader(std::string text, std::string fileName,
-                                 std::filesystem::path directory, Diagnostics& diagnostics)
+                                 std::filesystem::path directory, const SceneFiles& files,
+                                 Diagnostics& diagnostics)
     : tokens_(std::move(text), std::move(fileName)),
       directory_(std::move(directory)),
+      files_(files),
       diagnostics_(diagnostics) {}
 
 std::optional<double> DirectiveReader::number(const std::string& what) {
@@ -160,7 +162,7 @@ std::optional<ParamSet> DirectiveReader::params(const std::string& owner) {
     } else if (!takeValue(param, declaration.text, value)) {
       return std::nullopt;
     }
-    const auto keep = convertSpectrumParam(param, directory_, diagnostics_);
+    const auto keep = convertSpectrumParam(param, directory_, files_, diagnostics_);
     if (!keep) return std::nullopt;
     if (*keep) set.add(std::move(param));
   }

@@ -10,14 +10,16 @@
 #include "common/diagnostics.h"
 #include "render/param_set.h"
 #include "render/pbrt_tokenizer.h"
+#include "render/scene_file_access.h"
 
 namespace lenslab::render::pbrt {
 
 class DirectiveReader {
  public:
-  // `directory` is the file's own: relative names in it resolve against it.
+  // `directory` is the file's own: relative names in it resolve against it, and the files they
+  // name are read (and checked) through `files`.
   DirectiveReader(std::string text, std::string fileName, std::filesystem::path directory,
-                  Diagnostics& diagnostics);
+                  const SceneFiles& files, Diagnostics& diagnostics);
 
   Token next() { return tokens_.next(diagnostics_); }
   const Token& peek() { return tokens_.peek(diagnostics_); }
@@ -34,12 +36,14 @@ class DirectiveReader {
 
   // A file name as the scene wrote it, relative to this file's directory.
   std::filesystem::path resolve(const std::string& name) const;
+  const SceneFiles& files() const { return files_; }
 
  private:
   bool takeValue(Param& param, const std::string& declaration, const Token& value);
 
   PbrtTokenizer tokens_;
   std::filesystem::path directory_;
+  const SceneFiles& files_;
   Diagnostics& diagnostics_;
 };
 

@@ -2,7 +2,6 @@
 
 #include <glm/matrix.hpp>
 
-#include "render/pbrt/file_problem.h"
 #include "render/pbrt/handlers.h"
 #include "render/pbrt/param_checks.h"
 #include "render/transform_check.h"
@@ -86,7 +85,7 @@ bool camera(const DirectiveCall& call) {
       return false;
     }
     camera.lensPath = call.in.resolve(which->strings[0]);
-    if (const auto problem = fileProblem(camera.lensPath, "lens file")) {
+    if (const auto problem = call.in.files().problem(camera.lensPath, "lens file")) {
       diagnostics.error(which->location, *problem);
       return false;
     }

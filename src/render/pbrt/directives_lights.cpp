@@ -1,6 +1,5 @@
 // Light sources and the area light that the following shapes emit.
 
-#include "render/pbrt/file_problem.h"
 #include "render/pbrt/handlers.h"
 #include "render/transform_check.h"
 
@@ -27,7 +26,7 @@ bool lightSource(const DirectiveCall& call) {
     if (!map) map = set->find("filename");
     if (map && !map->strings.empty()) {
       light.mapPath = call.in.resolve(map->strings[0]);
-      if (const auto problem = fileProblem(light.mapPath, "environment map")) {
+      if (const auto problem = call.in.files().problem(light.mapPath, "environment map")) {
         diagnostics.error(map->location, *problem);
         return false;
       }

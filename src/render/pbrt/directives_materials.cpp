@@ -1,6 +1,5 @@
 // Materials (current and named) and textures.
 
-#include "render/pbrt/file_problem.h"
 #include "render/pbrt/handlers.h"
 
 namespace lenslab::render::pbrt {
@@ -95,7 +94,7 @@ bool texture(const DirectiveCall& call) {
     }
     texture.imagePath = call.in.resolve(file->strings[0]);
     texture.location = file->location;
-    if (const auto problem = fileProblem(texture.imagePath, "texture file")) {
+    if (const auto problem = call.in.files().problem(texture.imagePath, "texture file")) {
       diagnostics.error(file->location, *problem);
       return false;
     }

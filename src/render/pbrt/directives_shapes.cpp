@@ -5,7 +5,6 @@
 
 #include "render/mesh_check.h"
 #include "render/pbrt/diagnostic_text.h"
-#include "render/pbrt/file_problem.h"
 #include "render/pbrt/handlers.h"
 #include "render/ply_reader.h"
 #include "render/transform_check.h"
@@ -67,11 +66,16 @@ bool readPlyShape(ShapeDescription& shape, const ParamSet& set, const DirectiveR
     return false;
   }
   const auto path = in.resolve(file->strings[0]);
-  if (const auto problem = fileProblem(path, "PLY file")) {
+  if (const auto problem = in.files().problem(path, "PLY file")) {
     diagnostics.error(file->location, *problem);
     return false;
   }
-  if (!readPlyMesh(path, shape.mesh, file->location, diagnostics)) return false;
+  const std::optional<std::string> data = in.files().read(path);
+  if (!data) {
+    diagnostics.error(file->location, "cannot open PLY file " + path.string());
+    return false;
+  }
+  if (!readPlyMeshData(*data, path.string(), shape.mesh, file->location, diagnostics)) return false;
   if (!checkMesh(shape.mesh, file->location, diagnostics)) return false;
   shape.type = "trianglemesh";
   return true;

@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "render/pbrt/diagnostic_text.h"
-#include "render/pbrt/file_problem.h"
 #include "render/spectrum.h"
 
 namespace lenslab::render::pbrt {
@@ -15,7 +14,8 @@ std::vector<double> rgbNumbers(glm::dvec3 rgb) { return {rgb.x, rgb.y, rgb.z}; }
 
 // "spectrum" given by a name: a built-in named spectrum or a .spd file of wavelength-value pairs.
 bool convertNamedSpectrum(Param& param, const std::string& what,
-                          const std::filesystem::path& directory, Diagnostics& diagnostics) {
+                          const std::filesystem::path& directory, const SceneFiles& files,
+                          Diagnostics& diagnostics) {
   const std::string name = param.strings[0];
   param.strings.clear();
   if (const auto rgb = namedSpectrumRgb(name)) {
@@ -26,7 +26,12 @@ bool convertNamedSpectrum(Param& param, const std::string& what,
   const std::filesystem::path path = given.is_absolute() ? given : directory / given;
   std::string whyNot;
   std::optional<std::vector<double>> pairs;
-  if (!fileProblem(path, "spectrum file")) pairs = readSpectrumFile(path, &whyNot);
+  if (!files.problem(path, "spectrum file")) {
+    if (const auto text = files.read(path))
+      pairs = parseSpectrumText(*text, path.string(), &whyNot);
+    else
+      whyNot = "cannot open spectrum file " + path.string();
+  }
   const auto rgb = pairs ? sampledSpectrumToRgb(*pairs, &whyNot) : std::nullopt;
   if (rgb) {
     param.numbers = rgbNumbers(*rgb);
@@ -43,10 +48,11 @@ bool convertNamedSpectrum(Param& param, const std::string& what,
 }  // namespace
 
 std::optional<bool> convertSpectrumParam(Param& param, const std::filesystem::path& directory,
-                                         Diagnostics& diagnostics) {
+                                         const SceneFiles& files, Diagnostics& diagnostics) {
   const std::string what = "\"" + param.type + " " + param.name + "\"";
   if (param.type == "spectrum") {
-    if (!param.strings.empty()) return convertNamedSpectrum(param, what, directory, diagnostics);
+    if (!param.strings.empty())
+      return convertNamedSpectrum(param, what, directory, files, diagnostics);
     if (param.numbers.size() == 1) return true;  // a grey value, as for rgb
     std::string whyNot;
     const auto rgb = sampledSpectrumToRgb(param.numbers, &whyNot);

@@ -8,12 +8,14 @@
 
 #include "common/diagnostics.h"
 #include "render/param_set.h"
+#include "render/scene_file_access.h"
 
 namespace lenslab::render::pbrt {
 
 // Converts `param` in place. Returns false to drop the parameter (with a warning: its consumer's
-// default is used), nothing after an error. A named .spd file resolves against `directory`.
+// default is used), nothing after an error. A named .spd file resolves against `directory` and
+// is read through `files`.
 std::optional<bool> convertSpectrumParam(Param& param, const std::filesystem::path& directory,
-                                         Diagnostics& diagnostics);
+                                         const SceneFiles& files, Diagnostics& diagnostics);
 
 }  // namespace lenslab::render::pbrt

@@ -1,0 +1,35 @@
+#include "app/automation/script_words.h"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace lenslab::app::script_words {
+
+std::optional<double> parseNumber(const std::string& text) {
+  if (text == "none") return std::nan("");
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || text.empty() || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<double> parseSurfaceValue(SurfaceField field, const std::string& text) {
+  if (field == SurfaceField::RadiusMm && (text == "inf" || text == "-inf")) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return parseNumber(text);
+}
+
+std::optional<long> parseInteger(const std::string& text) {
+  long value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end || text.empty()) return std::nullopt;
+  return value;
+}
+
+}  // namespace lenslab::app::script_words
