@@ -135,9 +135,9 @@ TEST(ScriptRun, AnEditStormIsUndoneWholeByUndoAll) {
   EXPECT_TRUE(host.errors.empty());
   EXPECT_EQ(text(), start);
   EXPECT_FALSE(host.lens.document().canUndo());
-  // Undos were issued until one was refused.
+  // Undos were issued, a batch a frame, until one was refused.
   const auto undos = std::count(host.calls.begin(), host.calls.end(), describe(Undo{}));
-  EXPECT_GT(undos, 50);
+  EXPECT_GE(undos, 16);
 }
 
 TEST(ScriptParse, WaitSecondsTakesUpTo60Seconds) {

@@ -31,11 +31,16 @@ struct IlluminationView {
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<IlluminationResult>> job;
   std::string renderNote;  // what the plot last said of the render's toggles ("" when all on)
-  // What the panel drew in frame `drawnInFrame`: whether its curve (and footprint) were the
-  // current lens's. Scripts' captures wait for that, not merely for the result to exist: one
-  // that arrives after the panel was drawn shows only in the next frame.
+  // What was drawn from the result in frame `drawnInFrame` (the panel's curve and footprint, the
+  // preview's heat map): whether all of it was the current lens's. Scripts' captures wait for
+  // that, not merely for the result to exist: one that arrives after they were drawn shows only
+  // in the next frame.
   std::uint64_t drawnInFrame = 0;
   bool drewCurrent = false;
+  void noteDrawn(std::uint64_t frame, bool current) {
+    drewCurrent = (drawnInFrame == frame ? drewCurrent : true) && current;
+    drawnInFrame = frame;
+  }
 };
 
 inline constexpr int kIlluminationPoints = 64;

@@ -99,9 +99,10 @@ std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string*
 bool illuminationSettled(const ViewerState& state) {
   const IlluminationView& view = state.illumination;
   if (!state.lensSystem || view.requestedLens != state.lensSystem) return true;
-  // A panel not drawn in this frame (another tab shows) has nothing on screen to wait for.
-  if (view.drawnInFrame != state.frameNumber) return true;
-  return view.drewCurrent;
+  const auto result = view.job->latest();
+  if (!result || result->lens != state.lensSystem) return false;
+  // Drawn in this frame (the panel, the heat map): from the current result, or it arrived after.
+  return view.drawnInFrame != state.frameNumber || view.drewCurrent;
 }
 
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
@@ -145,8 +146,7 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && result->lens == state.lensSystem &&
                          result->filmDiagonalMm == state.filmDiagonalMm;
-    view.drawnInFrame = state.frameNumber;
-    view.drewCurrent = current;
+    view.noteDrawn(state.frameNumber, current);
     if (!current) {
       ImGui::SameLine();
       ImGui::TextDisabled("computing...");

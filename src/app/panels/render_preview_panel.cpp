@@ -105,6 +105,9 @@ void drawControls(ViewerState& state) {
 void drawVignettingOverlay(ViewerState& state, ImDrawList* draw, ImVec2 topLeft, ImVec2 size) {
   requestIllumination(state.illumination, state.lensSystem, state.filmDiagonalMm);
   const auto result = state.illumination.job ? state.illumination.job->latest() : nullptr;
+  state.illumination.noteDrawn(
+      state.frameNumber,
+      result && result->lens == state.lensSystem && result->filmDiagonalMm == state.filmDiagonalMm);
   if (!result || !result->curve) return;
   std::vector<double> heights, shares;
   for (const optics::RelativeIlluminationPoint& p : result->curve->points) {
