@@ -34,27 +34,53 @@ struct Plans {
   fftw_plan line = nullptr;   // a real line of N to its N/2 + 1 complex coefficients
 };
 
-// One set of plans per (n, N), made on scratch buffers and kept for the process's life.
-const Plans& plansFor(int samples, int fftSize) {
-  static std::mutex mutex;
-  static std::map<std::pair<int, int>, Plans> cache;
-  const std::lock_guard lock(mutex);
-  auto found = cache.find({samples, fftSize});
-  if (found != cache.end()) return found->second;
+// One set of plans per (n, N), made on scratch buffers and kept until the process exits. The
+// cache owns its plans and destroys them when static objects are destroyed: a map of bare
+// fftw_plan handles would free its nodes and leave the plans unreachable, which LeakSanitizer
+// reports at exit (./test --sanitize). Every thread that executes plans has been joined by then.
+class PlanCache {
+ public:
+  PlanCache() = default;
+  PlanCache(const PlanCache&) = delete;
+  PlanCache& operator=(const PlanCache&) = delete;
+  ~PlanCache() {
+    for (auto& [size, plans] : cache_) {
+      fftw_destroy_plan(plans.lines);
+      fftw_destroy_plan(plans.line);
+    }
+  }
 
-  auto lines = allocate<fftw_complex>(static_cast<std::size_t>(samples) * fftSize);
-  auto line = allocate<double>(fftSize);
-  auto lineOut = allocate<fftw_complex>(fftSize / 2 + 1);
-  Plans plans;
-  int length = fftSize;
-  // FFTW_ESTIMATE: planning in microseconds, and the same plan (hence the same rounding) on
-  // every run.
-  plans.lines = fftw_plan_many_dft(1, &length, samples, lines.get(), nullptr, 1, fftSize,
-                                   lines.get(), nullptr, 1, fftSize, FFTW_FORWARD, FFTW_ESTIMATE);
-  plans.line = fftw_plan_dft_r2c_1d(fftSize, line.get(), lineOut.get(), FFTW_ESTIMATE);
-  if (!plans.lines || !plans.line)
-    throw std::runtime_error("FFTW could not plan the pupil transforms");
-  return cache.emplace(std::make_pair(samples, fftSize), plans).first->second;
+  const Plans& plansFor(int samples, int fftSize) {
+    const std::lock_guard lock(mutex_);
+    auto found = cache_.find({samples, fftSize});
+    if (found != cache_.end()) return found->second;
+
+    auto lines = allocate<fftw_complex>(static_cast<std::size_t>(samples) * fftSize);
+    auto line = allocate<double>(fftSize);
+    auto lineOut = allocate<fftw_complex>(fftSize / 2 + 1);
+    Plans plans;
+    int length = fftSize;
+    // FFTW_ESTIMATE: planning in microseconds, and the same plan (hence the same rounding) on
+    // every run. FFTW's planner is not thread-safe, hence planning under the lock.
+    plans.lines = fftw_plan_many_dft(1, &length, samples, lines.get(), nullptr, 1, fftSize,
+                                     lines.get(), nullptr, 1, fftSize, FFTW_FORWARD, FFTW_ESTIMATE);
+    plans.line = fftw_plan_dft_r2c_1d(fftSize, line.get(), lineOut.get(), FFTW_ESTIMATE);
+    if (!plans.lines || !plans.line) {
+      if (plans.lines) fftw_destroy_plan(plans.lines);
+      if (plans.line) fftw_destroy_plan(plans.line);
+      throw std::runtime_error("FFTW could not plan the pupil transforms");
+    }
+    return cache_.emplace(std::make_pair(samples, fftSize), plans).first->second;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::pair<int, int>, Plans> cache_;
+};
+
+const Plans& plansFor(int samples, int fftSize) {
+  static PlanCache cache;
+  return cache.plansFor(samples, fftSize);
 }
 
 // Each thread's buffers, for the largest size asked for.
