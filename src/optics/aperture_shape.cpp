@@ -166,6 +166,31 @@ std::vector<glm::dvec2> ApertureShape::outlineUnit(int pointsPerEdge) const {
   return out;
 }
 
+ApertureShape ApertureShape::mirroredLeftToRight() const {
+  ApertureShape seen = *this;
+  if (kind == Kind::Blades) seen.rotationDeg = 180.0 - rotationDeg;
+  if (kind == Kind::Image) {
+    seen.mirrored = !mirrored;
+    if (mask) seen.mask = mirroredMask(*mask);
+  }
+  return seen;
+}
+
+void ApertureShape::attachLoadedMask(std::shared_ptr<const ApertureMask> loaded) {
+  mask = mirrored && loaded ? mirroredMask(*loaded) : std::move(loaded);
+}
+
+std::shared_ptr<const ApertureMask> mirroredMask(const ApertureMask& mask) {
+  auto seen = std::make_shared<ApertureMask>(mask);
+  const int n = mask.sizePx;
+  for (int row = 0; row < n; ++row) {
+    auto first = seen->open.begin() + static_cast<std::ptrdiff_t>(row) * n;
+    std::reverse(first, first + n);
+  }
+  // The farthest open corner's distance is the same in the mirror image.
+  return seen;
+}
+
 std::string ApertureShape::spec() const {
   switch (kind) {
     case Kind::Circle:
@@ -174,7 +199,7 @@ std::string ApertureShape::spec() const {
       return joined("blades ", bladeCount, " curvature ", number(curvature), " rotation ",
                     number(rotationDeg));
     case Kind::Image:
-      return joined("image ", imageName);
+      return joined(mirrored ? "image-mirrored " : "image ", imageName);
   }
   return "circle";
 }
@@ -187,8 +212,9 @@ bool ApertureShape::operator==(const ApertureShape& o) const {
     case Kind::Blades:
       return bladeCount == o.bladeCount && curvature == o.curvature && rotationDeg == o.rotationDeg;
     case Kind::Image:
-      return imageName == o.imageName && (mask ? mask->source : std::filesystem::path()) ==
-                                             (o.mask ? o.mask->source : std::filesystem::path());
+      return imageName == o.imageName && mirrored == o.mirrored &&
+             (mask ? mask->source : std::filesystem::path()) ==
+                 (o.mask ? o.mask->source : std::filesystem::path());
   }
   return false;
 }
@@ -223,14 +249,15 @@ ApertureSpecResult parseApertureSpec(std::string_view text) {
     result.shape = shape;
     return result;
   }
-  if (head.text == "image") {
-    if (words.size() < 2) return fail(head.column, "'image' needs a file name");
+  if (head.text == "image" || head.text == "image-mirrored") {
+    if (words.size() < 2) return fail(head.column, joined("'", head.text, "' needs a file name"));
     // The name is the rest of the text (file names may hold spaces), trailing blanks dropped.
     std::string_view name = text.substr(static_cast<std::size_t>(words[1].column));
     while (!name.empty() && (name.back() == ' ' || name.back() == '\t' || name.back() == '\r'))
       name.remove_suffix(1);
     shape.kind = ApertureShape::Kind::Image;
     shape.imageName = std::string(name);
+    shape.mirrored = head.text == "image-mirrored";
     result.shape = shape;
     return result;
   }
@@ -338,12 +365,53 @@ std::optional<ApertureShape> builtinPbrtAperture(std::string_view name, std::str
     shape.mask = rasterizeApertureMask(corners, 256, "star");
     return shape;
   }
-  if (name == "gaussian" && note) {
-    *note =
-        "aperture \"gaussian\" (a graded transmission) is not supported by lenslab's binary stop; "
-        "the circular stop is used";
+  if (name == "gaussian") {
+    shape.kind = ApertureShape::Kind::Image;
+    shape.imageName = "gaussian";
+    shape.mask = gaussianHalftoneMask(kGaussianMaskSizePx);
+    return shape;
   }
+  (void)note;  // every built-in name is usable; the caller resolves other names as files
   return std::nullopt;
+}
+
+double gaussianApertureTransmission(double xUnit, double yUnit) {
+  // pbrt-v4's built-in "gaussian": exp(-r^2 / sigma^2) - exp(-1 / sigma^2) with sigma = 1, r in
+  // units of the stop's radius, clamped at 0 (so it reaches 0 at the rim).
+  const double r2 = xUnit * xUnit + yUnit * yUnit;
+  return std::max(0.0, std::exp(-r2) - std::exp(-1.0));
+}
+
+std::shared_ptr<const ApertureMask> gaussianHalftoneMask(int sizePx) {
+  // The 16 x 16 Bayer threshold matrix, built by the recursion M(2n) = [[4M, 4M + 2],
+  // [4M + 3, 4M + 1]] from M(1) = [0]: each of 0..255 once, spread so that the first k of them
+  // are as evenly scattered over the block as can be.
+  constexpr int kBlock = 16;
+  int bayer[kBlock][kBlock] = {{0}};
+  for (int size = 1; size < kBlock; size *= 2)
+    for (int row = size - 1; row >= 0; --row)
+      for (int col = size - 1; col >= 0; --col) {
+        const int m = 4 * bayer[row][col];
+        bayer[row][col] = m;
+        bayer[row][col + size] = m + 2;
+        bayer[row + size][col] = m + 3;
+        bayer[row + size][col + size] = m + 1;
+      }
+  auto mask = std::make_shared<ApertureMask>();
+  mask->sizePx = sizePx;
+  mask->source = "gaussian";
+  mask->open.assign(static_cast<std::size_t>(sizePx) * sizePx, 0);
+  for (int row = 0; row < sizePx; ++row) {
+    for (int col = 0; col < sizePx; ++col) {
+      const double x = -1.0 + 2.0 * (col + 0.5) / sizePx;
+      const double y = 1.0 - 2.0 * (row + 0.5) / sizePx;
+      const double threshold = (bayer[row % kBlock][col % kBlock] + 0.5) / (kBlock * kBlock);
+      mask->open[static_cast<std::size_t>(row) * sizePx + col] =
+          gaussianApertureTransmission(x, y) > threshold ? 1 : 0;
+    }
+  }
+  mask->measureOpenRadius();
+  return mask;
 }
 
 StopShapeTest::StopShapeTest(const ApertureShape& shape, double stopRadiusMm)

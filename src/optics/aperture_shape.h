@@ -57,6 +57,9 @@ struct ApertureShape {
   // Image: the mask, and the name as written (in a lens file, relative to its folder).
   std::shared_ptr<const ApertureMask> mask;
   std::string imageName;
+  // Image: the file's picture mirrored left to right (x -> -x), as the iris of a lens turned
+  // front to back is seen from the film. `mask` then holds the mirrored pixels.
+  bool mirrored = false;
 
   bool isCircle() const { return kind == Kind::Circle; }
   // Radius of the circle around the axis that contains the shape, over R: 1, or for an image
@@ -71,14 +74,24 @@ struct ApertureShape {
   // an image gives its bounding square. `pointsPerEdge` subdivides curved edges.
   std::vector<glm::dvec2> outlineUnit(int pointsPerEdge = 8) const;
 
-  // "circle", "blades 6 curvature 0.5 rotation 15", "image NAME": the lens-file and script
-  // form, which parseApertureSpec reads back (the mask is loaded by the caller).
+  // The same iris seen from its other side (the lens turned front to back): mirrored left to
+  // right. A circle stays a circle; blades' corners at angle a go to 180 - a; an image toggles
+  // `mirrored` and its mask is mirrored.
+  ApertureShape mirroredLeftToRight() const;
+  // Sets the mask of an image shape from the file's pixels as loaded, mirroring them when the
+  // shape is `mirrored`.
+  void attachLoadedMask(std::shared_ptr<const ApertureMask> loaded);
+
+  // "circle", "blades 6 curvature 0.5 rotation 15", "image NAME", "image-mirrored NAME": the
+  // lens-file and script form, which parseApertureSpec reads back (the mask is loaded by the
+  // caller).
   std::string spec() const;
   // Same shape (a mask compares by its source).
   bool operator==(const ApertureShape& other) const;
 };
 
-// What parseApertureSpec makes of "circle" / "blades N [curvature C] [rotation D]" / "image NAME".
+// What parseApertureSpec makes of "circle" / "blades N [curvature C] [rotation D]" /
+// "image NAME" / "image-mirrored NAME".
 // On an error, `column` (0-based offset into the text) points at the offending word.
 struct ApertureSpecResult {
   std::optional<ApertureShape> shape;  // an image shape has imageName set and no mask yet
@@ -91,19 +104,34 @@ ApertureSpecResult parseApertureSpec(std::string_view text);
 // unreadable, non-square or all-black image is refused with the reason in `error`.
 std::shared_ptr<const ApertureMask> loadApertureMask(const std::filesystem::path& path,
                                                      std::string* error);
+// The mask mirrored left to right (column c -> size - 1 - c); same source.
+std::shared_ptr<const ApertureMask> mirroredMask(const ApertureMask& mask);
 // A mask rasterized from a polygon in units of R (the image's square is [-1, 1]^2), the
 // non-zero winding rule, at the pixel centres: pbrt-v4's built-in "star" is made this way.
 std::shared_ptr<const ApertureMask> rasterizeApertureMask(const std::vector<glm::dvec2>& polygon,
                                                           int sizePx, std::string name);
 
-// pbrt-v4's realistic camera "string aperture": "square", "pentagon", "star" (built in) and
-// "gaussian" (refused: a graded transmission, which a binary stop cannot be); other values are
-// image files (resolved by the caller). Returns nullopt with `note` set for "gaussian";
-// nullopt with no note for a file name.
+// pbrt-v4's realistic camera "string aperture": "square", "pentagon", "star" and "gaussian"
+// (built in); other values are image files (resolved by the caller), for which it returns
+// nullopt. `note` is unused (kept for callers that report why a name is not built in).
 //   square   -> 4 straight blades, edges along x and y (inscribed in the stop circle)
 //   pentagon -> 5 straight blades, a corner up (pbrt draws it at 0.8 R; lenslab inscribes it)
 //   star     -> pbrt-v4's five-pointed star (outer radius R, inner R cos 72 / cos 36), as a mask
+//   gaussian -> pbrt-v4's graded transmission T(r) = max(0, exp(-r^2) - exp(-1)) (r in units of
+//               R) as a halftone mask (gaussianHalftoneMask): it passes pi (1 - 2/e) R^2 =
+//               0.830 R^2 of light, 26% of the circle's, and its bokeh fades toward the rim
 std::optional<ApertureShape> builtinPbrtAperture(std::string_view name, std::string* note);
+
+// pbrt-v4's "gaussian" transmission at (x, y) in units of R.
+double gaussianApertureTransmission(double xUnit, double yUnit);
+// lenslab's stop is binary (a ray passes or not), so a graded transmission is laid down as a
+// halftone, as apodization filters have been made: ordered dithering with the 16 x 16 Bayer
+// matrix, a pixel open when T at its centre exceeds its threshold (k + 0.5) / 256. Over any
+// aligned 16 x 16 block the open share is T to within 1/256 plus T's change across the block, so
+// at 1024 pixels (64 blocks across the stop) a bokeh disc or a pixel's bundle sees the graded
+// transmission, not the dots.
+inline constexpr int kGaussianMaskSizePx = 1024;
+std::shared_ptr<const ApertureMask> gaussianHalftoneMask(int sizePx);
 
 // The shape compiled for one stop radius: what the traces test hits against.
 class StopShapeTest {

@@ -113,7 +113,7 @@ std::optional<std::pair<int, std::string>> readApertureLine(std::string_view spe
     if (imagePath.is_relative())
       imagePath = std::filesystem::path(fileName).parent_path() / imagePath;
     std::string error;
-    read.mask = loadApertureMask(imagePath.lexically_normal(), &error);
+    read.attachLoadedMask(loadApertureMask(imagePath.lexically_normal(), &error));
     if (!read.mask) {
       const int column = firstColumn + static_cast<int>(spec.find(read.imageName));
       diagnostics.warning({fileName, line, column}, error + "; the circular stop is kept");

@@ -41,8 +41,8 @@ std::shared_ptr<const optics::LensSystem> focusAt(std::shared_ptr<const optics::
 }
 
 // pbrt-v4's "string aperture" on the lens's stop: a built-in shape or an image. One that cannot
-// be used (gaussian, an image missing, unreadable, not square or all black) is a warning, and
-// the lens keeps its own stop.
+// be used (an image missing, unreadable, not square or all black) is a warning, and the lens
+// keeps its own stop.
 std::shared_ptr<const optics::LensSystem> withSceneAperture(
     std::shared_ptr<const optics::LensSystem> system, const CameraDescription& camera,
     Diagnostics& diagnostics) {

@@ -52,10 +52,42 @@ TEST(ApertureEdit, FlippingTheLensMirrorsTheIris) {
       EXPECT_EQ(a.containsUnit({x, y}), b.containsUnit({-x, y})) << x << ", " << y;
 }
 
+TEST(ApertureEdit, FlippingTheLensMirrorsAnImageIrisAndFlippingBackRestoresIt) {
+  // A right triangle in the upper left: mirrored, it opens in the upper right.
+  optics::Prescription lens = triplet();
+  lens.stopShape.kind = optics::ApertureShape::Kind::Image;
+  lens.stopShape.imageName = "corner.png";
+  lens.stopShape.mask =
+      optics::rasterizeApertureMask({{-1, 1}, {-1, -0.2}, {0.3, 1}}, 64, "corner.png");
+  const optics::Prescription turned = flipped(lens);
+  const optics::ApertureShape& a = lens.stopShape;
+  const optics::ApertureShape& b = turned.stopShape;
+  EXPECT_TRUE(b.mirrored);
+  EXPECT_EQ(b.spec(), "image-mirrored corner.png");
+  EXPECT_TRUE(a.containsUnit({-0.8, 0.8}));
+  EXPECT_FALSE(b.containsUnit({-0.8, 0.8}));
+  EXPECT_TRUE(b.containsUnit({0.8, 0.8}));
+  // Points off the pixels' edges (multiples of 1/32), where which side a point falls on is
+  // decided by rounding.
+  for (double x = -0.937; x <= 0.95; x += 0.1)
+    for (double y = -0.937; y <= 0.95; y += 0.1)
+      EXPECT_EQ(a.containsUnit({x, y}), b.containsUnit({-x, y})) << x << ", " << y;
+  // The traces' test sees the same mirror image.
+  const optics::StopShapeTest before(a, 10.0), after(b, 10.0);
+  for (double x = -9.37; x <= 9.5; x += 1.0)
+    for (double y = -9.37; y <= 9.5; y += 1.0)
+      EXPECT_EQ(before.contains(x, y), after.contains(-x, y)) << x << ", " << y;
+
+  const optics::Prescription back = flipped(turned);
+  EXPECT_EQ(back.stopShape, lens.stopShape);
+  EXPECT_FALSE(back.stopShape.mirrored);
+  EXPECT_EQ(back.stopShape.mask->open, lens.stopShape.mask->open);
+}
+
 TEST(ApertureEdit, ScriptChecksTheShapeAtItsArgument) {
   const ParsedScript good = parseScript(
       "set aperture blades 6 curvature 0.5 rotation 15\nset aperture circle\n"
-      "set aperture image some file.png\n",
+      "set aperture image some file.png\nset aperture image-mirrored some file.png\n",
       "t");
   EXPECT_TRUE(good.diagnostics.empty()) << good.diagnostics.formatAll();
   const ParsedScript bad = parseScript(

@@ -97,5 +97,33 @@ TEST(ApertureLensFile, AnImageBesideTheLensIsLoadedAndAMissingOneKeepsTheCircle)
   std::filesystem::remove_all(dir);
 }
 
+TEST(ApertureLensFile, AMirroredImageIsReadMirroredAndWrittenBackAsMirrored) {
+  // A flipped lens saves its image iris as "image-mirrored": the file's picture seen from behind.
+  const auto dir = std::filesystem::temp_directory_path() / "lenslab-aperture-mirrored";
+  std::filesystem::create_directories(dir);
+  // Open where column < 5 or row < 3: no left-right symmetry.
+  std::vector<unsigned char> pixels(16 * 16, 0);
+  for (int row = 0; row < 16; ++row)
+    for (int col = 0; col < 16; ++col)
+      if (col < 5 || row < 3) pixels[row * 16 + col] = 255;
+  ASSERT_NE(stbi_write_png((dir / "iris.png").c_str(), 16, 16, 1, pixels.data(), 16), 0);
+  std::ofstream(dir / "turned.dat") << "# lenslab aperture: image-mirrored iris.png\n" << kRows;
+  const auto read = readLensFile(dir / "turned.dat");
+  ASSERT_TRUE(read.ok()) << read.diagnostics.formatAll();
+  const ApertureShape& shape = read.lens->prescription.stopShape;
+  ASSERT_EQ(shape.kind, ApertureShape::Kind::Image);
+  EXPECT_TRUE(shape.mirrored);
+  ASSERT_TRUE(shape.mask);
+  ASSERT_EQ(shape.mask->sizePx, 16);
+  for (int row = 0; row < 16; ++row)
+    for (int col = 0; col < 16; ++col)
+      EXPECT_EQ(shape.mask->open[row * 16 + col], pixels[row * 16 + (15 - col)] ? 1 : 0)
+          << row << ", " << col;
+  EXPECT_NE(
+      formatLensText(read.lens->prescription).find("# lenslab aperture: image-mirrored iris.png\n"),
+      std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace lenslab::optics

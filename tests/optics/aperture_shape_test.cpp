@@ -73,6 +73,44 @@ TEST(ApertureShape, BladeAreaByMonteCarloCountMatchesGeometry) {
   EXPECT_NEAR(analyticBladeArea(7, 1.0), kPi, 1e-12);  // fully rounded: the circle
 }
 
+TEST(ApertureShape, PbrtsGaussianIsAHalftoneOfItsTransmission) {
+  std::string note;
+  const auto gaussian = builtinPbrtAperture("gaussian", &note);
+  ASSERT_TRUE(gaussian);
+  EXPECT_TRUE(note.empty()) << note;
+  ASSERT_EQ(gaussian->kind, ApertureShape::Kind::Image);
+  ASSERT_TRUE(gaussian->mask);
+  const ApertureMask& mask = *gaussian->mask;
+  const int n = mask.sizePx;
+  ASSERT_EQ(n % 16, 0);
+  // pbrt-v4's transmission, written out here: exp(-r^2) - exp(-1), 0 beyond the rim.
+  auto transmission = [](double x, double y) {
+    const double r2 = x * x + y * y;
+    return r2 < 1.0 ? std::exp(-r2) - std::exp(-1.0) : 0.0;
+  };
+  // Each aligned 16 x 16 block passes the transmission at its centre: to within 1/256 of the
+  // dither, plus T's change across the block (|dT/dr| = 2 r exp(-r^2) <= 0.86, over half a
+  // diagonal of 32 / 1024 * sqrt(2) / 2 units).
+  const double tolerance = 1.0 / 256.0 + 0.86 * (16.0 / n) * std::sqrt(2.0);
+  double worst = 0.0;
+  for (int blockRow = 0; blockRow < n / 16; ++blockRow) {
+    for (int blockCol = 0; blockCol < n / 16; ++blockCol) {
+      int open = 0;
+      for (int row = 16 * blockRow; row < 16 * blockRow + 16; ++row)
+        for (int col = 16 * blockCol; col < 16 * blockCol + 16; ++col)
+          open += mask.open[static_cast<std::size_t>(row) * n + col];
+      const double x = -1.0 + 2.0 * (16 * blockCol + 8) / n;
+      const double y = 1.0 - 2.0 * (16 * blockRow + 8) / n;
+      worst = std::max(worst, std::abs(open / 256.0 - transmission(x, y)));
+    }
+  }
+  EXPECT_LT(worst, tolerance);
+  // In all: the integral of T over the unit disk, pi (1 - 2/e).
+  EXPECT_NEAR(gaussian->areaFactor(), kPi * (1.0 - 2.0 / std::numbers::e), 0.002 * kPi);
+  // Open out to the rim, so the exit-pupil table's circle is the stop's.
+  EXPECT_NEAR(gaussian->boundRadiusFactor(), 1.0, 0.01);
+}
+
 TEST(ApertureShape, CornersFollowTheRotation) {
   // A square with its first corner at 45 degrees has its edges along x and y at 1/sqrt(2).
   const ApertureShape square = blades(4, 0.0, 45.0);

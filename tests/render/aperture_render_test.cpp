@@ -65,6 +65,9 @@ TEST(ApertureRender, UniformSkyBrightnessFollowsTheStopArea) {
   // "pentagon" likewise the inscribed regular pentagon, (5/2) sin 72 R^2.
   const double square = centralFurnaceMean(directory, "square");
   const double pentagon = centralFurnaceMean(directory, "pentagon");
+  // pbrt-v4's "gaussian", T(r) = exp(-r^2) - exp(-1): its integral over the disk over the
+  // circle's area, 1 - 2/e.
+  const double gaussian = centralFurnaceMean(directory, "gaussian");
   // 36 pixels x 1024 samples, each passing with p ~ 0.6: 0.4% standard error; the pupil's own
   // distortion at f/8 is far smaller.
   std::printf(
@@ -72,6 +75,9 @@ TEST(ApertureRender, UniformSkyBrightnessFollowsTheStopArea) {
       square / circle, 2.0 / kPi, pentagon / circle, 2.5 * std::sin(0.4 * kPi) / kPi);
   EXPECT_NEAR(square / circle, 2.0 / kPi, 0.015);
   EXPECT_NEAR(pentagon / circle, 2.5 * std::sin(0.4 * kPi) / kPi, 0.015);
+  std::printf("uniform sky, centre: gaussian / circle %.4f (1 - 2/e %.4f)\n", gaussian / circle,
+              1.0 - 2.0 / std::numbers::e);
+  EXPECT_NEAR(gaussian / circle, 1.0 - 2.0 / std::numbers::e, 0.015);
 }
 
 TEST(ApertureRender, SceneApertureNamesAndRefusals) {
@@ -84,7 +90,7 @@ TEST(ApertureRender, SceneApertureNamesAndRefusals) {
   };
   for (const Case& c : {Case{"pentagon", optics::ApertureShape::Kind::Blades, ""},
                         Case{"star", optics::ApertureShape::Kind::Image, ""},
-                        Case{"gaussian", optics::ApertureShape::Kind::Circle, "gaussian"},
+                        Case{"gaussian", optics::ApertureShape::Kind::Image, ""},
                         Case{"nowhere.png", optics::ApertureShape::Kind::Circle,
                              "not found; the lens's own stop is kept"}}) {
     const auto path = writeFile(directory / "scene.pbrt",

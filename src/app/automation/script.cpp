@@ -194,7 +194,7 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
           host.reportError(error + "; the stop keeps its shape");
           return true;
         }
-        shape = *image;
+        shape = shape.mirrored ? image->mirroredLeftToRight() : *image;
       }
       return editAndWait(command, host, SetStopShape{shape});
     }

@@ -6,7 +6,7 @@
 //   load-lens FILE              load-scene FILE             save-lens FILE
 //   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
-//   set aperture circle|blades N [curvature C] [rotation D]|image FILE
+//   set aperture circle|blades N [curvature C] [rotation D]|image FILE|image-mirrored FILE
 //                               (the stop's shape, as the lens file's aperture line; N 3..32;
 //                                a missing, unreadable, non-square or black image is logged and
 //                                the stop keeps its shape)

@@ -256,11 +256,8 @@ optics::Prescription flipped(const optics::Prescription& lens) {
   const std::size_t n = old.size();
   optics::Prescription result;
   result.surfaces.resize(n);
-  // Seen from the other side the iris is mirrored left to right: a corner at angle a goes to
-  // 180 - a.
-  result.stopShape = lens.stopShape;
-  if (result.stopShape.kind == optics::ApertureShape::Kind::Blades)
-    result.stopShape.rotationDeg = 180.0 - result.stopShape.rotationDeg;
+  // Seen from the other side the iris is mirrored left to right.
+  result.stopShape = lens.stopShape.mirroredLeftToRight();
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t i = n - 1 - j;
     optics::Surface& surface = result.surfaces[j];

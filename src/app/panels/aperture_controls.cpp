@@ -106,6 +106,13 @@ void drawApertureControls(ViewerState& state) {
         state.log.error(error + "; the stop keeps its shape");
       }
     }
+    if (shape.kind == optics::ApertureShape::Kind::Image && shape.mirrored) {
+      row.next(ImGui::CalcTextSize("mirrored").x);
+      ImGui::TextDisabled("mirrored");
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "The lens was turned front to back: the film sees the image mirrored left to right");
+    }
   }
 }
 
