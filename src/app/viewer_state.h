@@ -122,6 +122,7 @@ struct ViewerState {
   } lensFigures;
   std::string inFocusText;
   std::string axialBeamText, unvignettedText, fNumberText;
+  std::string areaFNumberText;  // empty for a circular stop (LensFigures::areaFNumberText)
   std::string colourFocusText;  // the first-order data's chromatic focal shift (F-C)
   // The "Focus at" field: the distance in focus (from the film) once the lens has one, else the
   // last typed; its text while it is typed into, and what it showed last frame (dump-ui).

@@ -12,6 +12,7 @@
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
 #include "optics/analysis/chromatic.h"
+#include "optics/axial_beam_area.h"
 #include "optics/field.h"
 #include "optics/focus.h"
 #include "optics/limiting_aperture.h"
@@ -53,11 +54,16 @@ struct BeamFigures {
   optics::LimitingAperture limit;
   std::optional<double> unvignettedFieldDeg;
   optics::InfinityImage image;
+  // With a shaped stop (blades, an image): the light it admits, as a circle's f-number.
+  std::optional<optics::AxialBeamArea> shapedBeam;
 };
 
 BeamFigures beamFigures(const optics::LensSystem& lens) {
-  return {optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity()),
-          optics::unvignettedFieldOfViewDeg(lens), optics::infinityImage(lens)};
+  BeamFigures figures{optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity()),
+                      optics::unvignettedFieldOfViewDeg(lens), optics::infinityImage(lens),
+                      std::nullopt};
+  if (!lens.stopShape().isCircle()) figures.shapedBeam = optics::axialBeamAreaFromInfinity(lens);
+  return figures;
 }
 
 // "before the iris" / "after the iris" / "the iris".
@@ -101,6 +107,14 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       // entrance pupil, or less when a rim limits the beam first: limiting_aperture.h).
       {"f_number", beam.limit.paraxial ? focal(fo, beam.limit.paraxial->workingFNumber)
                                        : focal(fo, fo.fNumber)},
+      // The stop's shape as the lens file writes it, and for a shape other than the circle the
+      // f-number of the circular beam that passes as much light (axial_beam_area.h); null for
+      // the circle, whose f_number above already says it.
+      {"stop_shape", lens.stopShape().spec()},
+      {"f_number_by_area",
+       beam.shapedBeam ? focal(fo, beam.shapedBeam->fNumberByArea) : nlohmann::json(nullptr)},
+      {"passing_beam_area_mm2",
+       beam.shapedBeam ? number(beam.shapedBeam->areaMm2) : nlohmann::json(nullptr)},
       {"total_track_mm", fo.totalTrackMm},
       {"lens_length_mm", fo.lensLengthMm},
       {"film_distance_mm", lens.filmDistanceMm()},
@@ -203,6 +217,13 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
               "(paraxial: EFL / limited entrance pupil, below)");
   else
     focalLine("f-number (infinity)", fo.fNumber, "(paraxial: EFL / entrance pupil)");
+  if (beam.shapedBeam) {
+    char why[256];
+    std::snprintf(why, sizeof why,
+                  "(a circle passing the light of the stop's %s: a %.2f mm2 beam from infinity)",
+                  lens.stopShape().spec().c_str(), beam.shapedBeam->areaMm2);
+    focalLine("f-number by area", beam.shapedBeam->fNumberByArea, why);
+  }
   line("entrance pupil diameter", fo.entrancePupil.diameterMm, "mm (the iris's image)");
   line("entrance pupil position", fo.entrancePupil.positionMm, "mm from the front vertex");
   line("exit pupil diameter", fo.exitPupil.diameterMm, "mm");

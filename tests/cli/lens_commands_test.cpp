@@ -24,6 +24,40 @@ class LensCommands : public ::testing::Test {
   }
 };
 
+TEST_F(LensCommands, InfoGivesTheFNumberByAreaOfAShapedStop) {
+  // A 10 mm stop 2 mm ahead of a biconvex singlet (R 50, -50, 4 mm of n 1.5): the beam from
+  // infinity has the stop's shape. EFL by the thick-lens formula: 1 / (0.5 (0.04 - 2 / 3750)) =
+  // 50.6757 mm. A square inscribed in the 5 mm circle passes 2 R^2 = 50 mm^2, the light of a
+  // circle 2 sqrt(50 / pi) = 7.9788 mm across: f/6.3513 by area, against f/5.0676 for the circle.
+  const std::string rows = "0 2 0 10\n50 4 1.5 20\n-50 48 1 20\n";
+  const std::string square = writeFile("square.dat", "# lenslab aperture: blades 4\n" + rows);
+  const std::string round = writeFile("round.dat", rows);
+  const double efl = 1.0 / (0.5 * (0.04 - 2.0 / 3750.0));
+
+  auto result = testing::runProcess(lenslab("info --json " + square), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json.at("stop_shape").get<std::string>(), "blades 4 curvature 0 rotation 0");
+  EXPECT_NEAR(json.at("passing_beam_area_mm2").get<double>(), 50.0, 0.15);
+  EXPECT_NEAR(json.at("f_number_by_area").get<double>(), efl / 7.978846, 0.01);
+  EXPECT_NEAR(json.at("f_number").get<double>(), efl / 10.0, 0.01);
+
+  result = testing::runProcess(lenslab("info " + square), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_NE(result.out.find("f-number by area"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("stop's blades 4 curvature 0 rotation 0"), std::string::npos)
+      << result.out;
+
+  // The circle: its f-number already says it.
+  result = testing::runProcess(lenslab("info --json " + round), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json.at("stop_shape").get<std::string>(), "circle");
+  EXPECT_TRUE(json.at("f_number_by_area").is_null());
+  result = testing::runProcess(lenslab("info " + round), scratch);
+  EXPECT_EQ(result.out.find("f-number by area"), std::string::npos) << result.out;
+}
+
 TEST_F(LensCommands, InfoJsonHasTheFirstOrderKeys) {
   const auto result =
       testing::runProcess(lenslab("info --json " + lensPath("dgauss-50mm.dat")), scratch);

@@ -6,6 +6,7 @@
 
 #include "common/distance_text.h"
 #include "optics/analysis/chromatic.h"
+#include "optics/axial_beam_area.h"
 #include "optics/focus.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unvignetted_field.h"
@@ -65,6 +66,15 @@ LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSys
                              : lens.firstOrder().fNumber;
   std::snprintf(text, sizeof text, "f/%.2f", fNumber);
   figures.fNumberText = text;
+  if (!lens.stopShape().isCircle()) {
+    if (const auto beam = optics::axialBeamAreaFromInfinity(lens)) {
+      std::snprintf(text, sizeof text, "f/%.2f (a %.1f mm2 beam from infinity)",
+                    beam->fNumberByArea, beam->areaMm2);
+      figures.areaFNumberText = text;
+    } else {
+      figures.areaFNumberText = "- (no axial beam passes)";
+    }
+  }
   if (const auto unvignetted = optics::unvignettedFieldOfViewDeg(lens)) {
     std::snprintf(text, sizeof text, "%.1f deg from infinity", *unvignetted);
     figures.unvignettedText = text;

@@ -28,6 +28,9 @@ struct LensFigures {
   std::string fNumberText;      // "f/2.07": EFL over the paraxial beam that passes every rim
   std::string axialBeamText;    // "surface 3, before the iris: working f/2.03"
   std::string unvignettedText;  // "1.1 deg from infinity"
+  // With a stop other than the circle: "f/2.21 (a 514.3 mm2 beam from infinity)", the f-number of
+  // the circle that admits as much light (optics/axial_beam_area.h); empty for the circle.
+  std::string areaFNumberText;
 };
 
 // "F-C" of the first-order data: the paraxial focus at F minus at C, object at infinity.

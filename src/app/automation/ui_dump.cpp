@@ -87,6 +87,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
        {{"f_number", state.fNumberText},
         {"axial_beam", state.axialBeamText},
         {"unvignetted", state.unvignettedText},
+        {"f_number_by_area", state.areaFNumberText},
         {"colour_focus", state.colourFocusText}}},
       // File > Export render...: the window's fields and the running or last export.
       {"export",

@@ -155,6 +155,7 @@ void updateLensFigures(ViewerState& state) {
     state.fNumberText = figures->fNumberText;
     state.axialBeamText = figures->axialBeamText;
     state.unvignettedText = figures->unvignettedText;
+    state.areaFNumberText = figures->areaFNumberText;
   }
 }
 
@@ -219,6 +220,15 @@ void drawFirstOrderSection(ViewerState& state) {
           "The aperture that limits the beam from an axial object at infinity, and the working\n"
           "f-number of the widest ray that passes it: 1 / (2 n' sin u'), real rays (as `lenslab\n"
           "info` reports them).");
+    }
+    if (!state.areaFNumberText.empty()) {
+      textRow("By area", state.areaFNumberText);
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "The f-number of a round stop that admits as much light as this shaped one: the\n"
+            "beam from infinity that passes every aperture, by real rays on a grid, as a circle\n"
+            "(as `lenslab info` reports it). A smaller opening than the circle is a slower lens.");
+      }
     }
     textRow("FOV unvignetted", state.unvignettedText);
     if (ImGui::IsItemHovered()) {
