@@ -63,6 +63,42 @@ TEST_F(FailedViewerSave, TheLensSavedFromTheMenuLogsTheErrorAndKeepsTheOldFile) 
   EXPECT_TRUE(logged) << dump["state"]["log"];
 }
 
+// The other saves behind a file browser (File > Save render, the cross-section's and a plot's
+// Save buttons), chosen as a user does: each error goes to the log, with the file and the
+// system's reason, and the viewer goes on.
+TEST_F(FailedViewerSave, EveryBrowserSaveLogsTheErrorAndKeepsTheOldFile) {
+  struct Save {
+    std::string name, dialog;
+  };
+  const Save saves[] = {
+      {"preview.png", "save-render"},         {"preview.exr", "save-render"},
+      {"panel.svg", "save-cross-section"},    {"plot.svg", "save-illumination-plot"},
+      {"plot.csv", "save-illumination-plot"},
+  };
+  for (const Save& save : saves) {
+    SCOPED_TRACE(save.dialog + " " + save.name);
+    const std::string path = (disk / save.name).string();
+    const auto run =
+        runViewer(save.name,
+                  "set auto-exposure off\nshow-panel illumination\n"
+                  "wait-spp 1\nopen-dialog " +
+                      save.dialog + "\ndialog-choose " + path + "\nwait-frames 5\ndump-ui " +
+                      (scratch / "dump.json").string() + "\nquit\n");
+    ASSERT_EQ(run.result.exitCode, 0) << run.result.err;
+    expectOldFileKept(run, save.name);
+    std::ifstream dumpFile(scratch / "dump.json");
+    const nlohmann::json dump = nlohmann::json::parse(dumpFile, nullptr, false);
+    ASSERT_TRUE(dump.is_object());
+    bool logged = false;
+    for (const auto& entry : dump["state"]["log"]) {
+      const std::string text = entry["text"];
+      logged |= entry["level"] == "error" && text.find(path) != std::string::npos &&
+                text.find("No space left on device") != std::string::npos;
+    }
+    EXPECT_TRUE(logged) << dump["state"]["log"];
+  }
+}
+
 // The script commands that save: each fails the script with the save's error.
 TEST_F(FailedViewerSave, EverySaveCommandFailsCleanly) {
   struct Save {
