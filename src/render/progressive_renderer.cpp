@@ -4,10 +4,13 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <thread>
+#include <vector>
 
 #include "render/sampler_batch.h"
 #include "render/spectral_film.h"
@@ -189,24 +192,44 @@ bool runWave(tbb::task_arena& arena, const RenderJob& job, const Wave& wave,
              std::vector<RenderStatistics>& tileStatistics, const std::function<bool()>& cancelled,
              std::atomic<std::uint64_t>* pixelSamplesDone = nullptr) {
   std::atomic<bool> stopped{false};
+  // One tile; false when cancelled.
+  auto runTile = [&](std::size_t t) {
+    if (!renderTile(job, wave, tiles[t], sums, cancelled, tileStatistics[t])) {
+      stopped = true;
+      return false;
+    }
+    if (pixelSamplesDone != nullptr) {
+      pixelSamplesDone->fetch_add(static_cast<std::uint64_t>(tiles[t].pixelCount()) *
+                                      static_cast<std::uint64_t>(wave.count),
+                                  std::memory_order_relaxed);
+    }
+    return true;
+  };
+#ifdef LENSLAB_THREAD_SANITIZER
+  // ThreadSanitizer cannot see how TBB hands tasks to its threads and waits for them (libtbb is a
+  // Debian library not built with the sanitizer), so every hand-over would look like a race. In
+  // that build (./test --sanitize-thread) the wave runs on plain threads that take tiles in
+  // turn: the same tile code on as many threads, synchronized by what the sanitizer sees.
+  std::atomic<std::size_t> nextTile{0};
+  auto work = [&] {
+    for (std::size_t t = nextTile++; t < tiles.size() && !stopped; t = nextTile++)
+      if (!runTile(t)) return;
+  };
+  std::vector<std::thread> workers;
+  for (int i = 1; i < std::max(1, arena.max_concurrency()); ++i) workers.emplace_back(work);
+  work();
+  for (std::thread& worker : workers) worker.join();
+#else
   arena.execute([&] {
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
         [&](const tbb::blocked_range<std::size_t>& range) {
-          for (std::size_t t = range.begin(); t != range.end(); ++t) {
-            if (!renderTile(job, wave, tiles[t], sums, cancelled, tileStatistics[t])) {
-              stopped = true;
-              return;
-            }
-            if (pixelSamplesDone != nullptr) {
-              pixelSamplesDone->fetch_add(static_cast<std::uint64_t>(tiles[t].pixelCount()) *
-                                              static_cast<std::uint64_t>(wave.count),
-                                          std::memory_order_relaxed);
-            }
-          }
+          for (std::size_t t = range.begin(); t != range.end(); ++t)
+            if (!runTile(t)) return;
         },
         tbb::simple_partitioner());
   });
+#endif
   return !stopped && !cancelled();
 }
 
