@@ -1,6 +1,6 @@
 # LENSLAB_SANITIZE builds every target (libraries, binaries, tests) with gcc's sanitizers:
 #   address   AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (./test --sanitize)
-#   thread    ThreadSanitizer (configures; not yet built to the end nor run by a script)
+#   thread    ThreadSanitizer (./test --sanitize-thread: the threaded tests)
 # Empty (the default) builds without them. The sanitizer runs set their options and suppression
 # files (scripts/sanitizers/) in the environment; see scripts/test-sanitize.
 set(LENSLAB_SANITIZE "" CACHE STRING "Sanitizer build: empty, 'address' (ASan+UBSan) or 'thread' (TSan)")

@@ -218,11 +218,15 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   else
     focalLine("f-number (infinity)", fo.fNumber, "(paraxial: EFL / entrance pupil)");
   if (beam.shapedBeam) {
-    char why[256];
-    std::snprintf(why, sizeof why,
-                  "(a circle passing the light of the stop's %s: a %.2f mm2 beam from infinity)",
-                  lens.stopShape().spec().c_str(), beam.shapedBeam->areaMm2);
-    focalLine("f-number by area", beam.shapedBeam->fNumberByArea, why);
+    char area[64];
+    std::snprintf(area, sizeof area, "%.2f", beam.shapedBeam->areaMm2);
+    // Appended piece by piece: GCC 12 flags operator+ chains with a false -Wrestrict.
+    std::string why = "(a circle passing the light of the stop's ";
+    why += lens.stopShape().spec();
+    why += ": a ";
+    why += area;
+    why += " mm2 beam from infinity)";
+    focalLine("f-number by area", beam.shapedBeam->fNumberByArea, why.c_str());
   }
   line("entrance pupil diameter", fo.entrancePupil.diameterMm, "mm (the iris's image)");
   line("entrance pupil position", fo.entrancePupil.positionMm, "mm from the front vertex");

@@ -9,11 +9,12 @@
 // diameter is f/2.2 rather than f/2 by the light it lets through. "By area" is how a stop of
 // any shape is compared with a round one (the T-stop idea, without transmission losses).
 //
-// Method: real rays parallel to the axis, one at a random place in each cell of a square grid
-// over the front surface's clear aperture (cells of side h; a fixed seed), each traced with every
-// clipping; the area is h^2 times the number that pass. Only the cells the boundary crosses add
-// noise: with the default 192 cells across, about 600 of them for a stop filling the front rim,
-// a standard error near 0.05% of the area.
+// Method: real rays parallel to the axis, traced with every clipping. A coarse pass (128 x 128
+// cells over the front rim) finds the box the passing beam lies in; the fine pass puts one ray
+// at a random place in each cell of a `cellsAcross` x `cellsAcross` grid over that box (a fixed
+// seed), and the area is the cell area times the number that pass. Only the cells the boundary
+// crosses add noise: with the default 192 cells across the beam, about 600 of them, a standard
+// error near 0.05% of the area.
 
 #include <optional>
 

@@ -113,9 +113,20 @@ std::optional<std::pair<int, std::string>> readApertureLine(std::string_view spe
     if (imagePath.is_relative())
       imagePath = std::filesystem::path(fileName).parent_path() / imagePath;
     std::string error;
-    read.attachLoadedMask(loadApertureMask(imagePath.lexically_normal(), &error));
+    std::error_code ec;
+    const std::optional<ApertureShape> builtin = builtinPbrtAperture(read.imageName, nullptr);
+    if (builtin && builtin->kind == ApertureShape::Kind::Image &&
+        !std::filesystem::exists(imagePath, ec)) {
+      // pbrt-v4's built-in masks ("star", "gaussian"), as a lens opened from a scene with one
+      // saves them, when no file of that name is beside the lens.
+      read.attachLoadedMask(builtin->mask);
+    } else {
+      read.attachLoadedMask(loadApertureMask(imagePath.lexically_normal(), &error));
+    }
     if (!read.mask) {
-      const int column = firstColumn + static_cast<int>(spec.find(read.imageName));
+      // The name is the text after the keyword (parseApertureSpec).
+      const std::size_t keywordEnd = spec.find_first_of(" \t", spec.find_first_not_of(" \t"));
+      const int column = firstColumn + static_cast<int>(spec.find(read.imageName, keywordEnd));
       diagnostics.warning({fileName, line, column}, error + "; the circular stop is kept");
       return std::nullopt;
     }

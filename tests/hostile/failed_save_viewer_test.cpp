@@ -78,12 +78,15 @@ TEST_F(FailedViewerSave, EveryBrowserSaveLogsTheErrorAndKeepsTheOldFile) {
   for (const Save& save : saves) {
     SCOPED_TRACE(save.dialog + " " + save.name);
     const std::string path = (disk / save.name).string();
-    const auto run =
-        runViewer(save.name,
-                  "set auto-exposure off\nshow-panel illumination\n"
-                  "wait-spp 1\nopen-dialog " +
-                      save.dialog + "\ndialog-choose " + path + "\nwait-frames 5\ndump-ui " +
-                      (scratch / "dump.json").string() + "\nquit\n");
+    std::filesystem::remove(scratch / "dump.json");
+    // export-plot waits until the plot is computed (to a file off the full disk): the browser's
+    // Save would otherwise find it still computing and say so instead of trying the disk.
+    const auto run = runViewer(
+        save.name,
+        "set auto-exposure off\nshow-panel illumination\n"
+        "wait-spp 1\nexport-plot illumination " +
+            (scratch / "ready.csv").string() + "\nopen-dialog " + save.dialog + "\ndialog-choose " +
+            path + "\nwait-frames 5\ndump-ui " + (scratch / "dump.json").string() + "\nquit\n");
     ASSERT_EQ(run.result.exitCode, 0) << run.result.err;
     expectOldFileKept(run, save.name);
     std::ifstream dumpFile(scratch / "dump.json");

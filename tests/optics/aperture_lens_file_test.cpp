@@ -125,5 +125,27 @@ TEST(ApertureLensFile, AMirroredImageIsReadMirroredAndWrittenBackAsMirrored) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ApertureLensFile, PbrtsBuiltInMasksReadBackByName) {
+  // A lens opened from a scene with "string aperture" "star" or "gaussian" saves the mask's
+  // name; with no file of that name beside the lens, the built-in mask is used again.
+  const auto dir = std::filesystem::temp_directory_path() / "lenslab-aperture-builtin";
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"star", "gaussian"}) {
+    SCOPED_TRACE(name);
+    std::ofstream(dir / "lens.dat") << "# lenslab aperture: image-mirrored " << name << "\n"
+                                    << kRows;
+    const auto read = readLensFile(dir / "lens.dat");
+    ASSERT_TRUE(read.ok()) << read.diagnostics.formatAll();
+    EXPECT_TRUE(read.diagnostics.empty()) << read.diagnostics.formatAll();
+    const ApertureShape& shape = read.lens->prescription.stopShape;
+    ASSERT_EQ(shape.kind, ApertureShape::Kind::Image);
+    ASSERT_TRUE(shape.mask);
+    EXPECT_TRUE(shape.mirrored);
+    const auto builtin = builtinPbrtAperture(name, nullptr);
+    EXPECT_EQ(shape.mask->open, mirroredMask(*builtin->mask)->open);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace lenslab::optics

@@ -85,5 +85,48 @@ TEST(AxialBeamArea, ARimNarrowerThanTheStopLimitsTheBeamInstead) {
   EXPECT_NEAR(beam->areaMm2, kPi * 9.0, 0.003 * kPi * 9.0);
 }
 
+TEST(AxialBeamArea, AnImageOpenToItsCornersPassesItsWholeSquare) {
+  // A mask open everywhere spans the square about the stop circle: 4 R^2 passes, not the
+  // circle's pi R^2 (the stop is the front surface, so its clip is the circle through the
+  // square's corners).
+  ApertureShape open;
+  open.kind = ApertureShape::Kind::Image;
+  open.imageName = "open";
+  open.mask =
+      rasterizeApertureMask({{-1.1, -1.1}, {1.1, -1.1}, {1.1, 1.1}, {-1.1, 1.1}}, 16, "open");
+  expectArea(open, 4.0);
+}
+
+TEST(AxialBeamArea, ADeepConcaveFrontSurfaceIsNotSkipped) {
+  // A front surface concave to the object (R -20, 18 mm across: its rim is 2.14 mm in front of
+  // the vertex) with every other aperture wide: the whole 9 mm-radius disk passes, pi 81 mm^2.
+  // Rays starting 1 mm in front of the vertex began behind that surface beyond 6.2 mm.
+  Prescription p;
+  p.surfaces = {{-20.0, 3.0, 1.5, std::nullopt, 18.0},
+                {INFINITY, 1.0, 1.0, std::nullopt, 40.0},
+                {0.0, 30.0, 1.0, std::nullopt, 40.0}};
+  const BuildResult built = LensSystem::build(p);
+  ASSERT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().message);
+  const auto beam = axialBeamAreaFromInfinity(*built.system);
+  ASSERT_TRUE(beam);
+  EXPECT_NEAR(beam->areaMm2, kPi * 81.0, 0.003 * kPi * 81.0);
+}
+
+TEST(AxialBeamArea, AStoppedDownBeamStillGetsTheFineGrid) {
+  // A 1 mm stop behind a 60 mm-wide front (R 200 plano-convex, 3 mm): the stop is 12 mm behind
+  // a weak lens, so the beam is barely wider than the stop; its area must still come out within
+  // 0.3% of the paraxial pupil's (no pupil aberration to speak of at 1 mm).
+  Prescription p;
+  p.surfaces = {{200.0, 3.0, 1.5, std::nullopt, 60.0},
+                {INFINITY, 12.0, 1.0, std::nullopt, 60.0},
+                {0.0, 100.0, 1.0, std::nullopt, 1.0}};
+  const BuildResult built = LensSystem::build(p);
+  ASSERT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().message);
+  const auto beam = axialBeamAreaFromInfinity(*built.system);
+  ASSERT_TRUE(beam);
+  const double pupilMm = built.system->firstOrder().entrancePupil.diameterMm;
+  EXPECT_NEAR(beam->areaMm2, kPi * pupilMm * pupilMm / 4.0, 0.003 * kPi * pupilMm * pupilMm / 4.0);
+}
+
 }  // namespace
 }  // namespace lenslab::optics
