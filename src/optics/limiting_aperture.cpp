@@ -53,8 +53,13 @@ std::optional<ParaxialAxialLimit> paraxialLimit(const LensSystem& lens, double o
 LensRay axialRayFromObject(const LensSystem& lens, double objectFromFrontVertexMm,
                            double heightMm) {
   const double zFront = lens.frontVertexZ();
-  if (std::isinf(objectFromFrontVertexMm)) return {{heightMm, 0.0, zFront + 1.0}, {0.0, 0.0, -1.0}};
-  const double ahead = std::min(1.0, 0.5 * objectFromFrontVertexMm);  // start this far before it
+  // Clear of the front surface's sag (a surface concave to the object reaches in front of its
+  // vertex: R -20 over 18 mm by 2.1 mm), as the ray fans start.
+  const double clearMm = 5.0 + 2.0 * lens.surfaces().front().semiApertureMm;
+  if (std::isinf(objectFromFrontVertexMm))
+    return {{heightMm, 0.0, zFront + clearMm}, {0.0, 0.0, -1.0}};
+  const double ahead =
+      std::min(clearMm, 0.5 * objectFromFrontVertexMm);  // start this far before it
   return {{heightMm * (1.0 - ahead / objectFromFrontVertexMm), 0.0, zFront + ahead},
           glm::normalize(glm::dvec3{heightMm / objectFromFrontVertexMm, 0.0, -1.0})};
 }
