@@ -35,6 +35,20 @@ class FailedViewerSave : public ::testing::Test {
     EXPECT_EQ(testing::readWholeFile(run.after / name), oldContents);
     EXPECT_EQ(hostile::listing(run.after), name + "\n");  // no temporary beside it
   }
+  // The viewer's log, as the run's `dump-ui` of scratch/dump.json wrote it, holds an error that
+  // contains `needle` and the system's "No space left on device".
+  void expectFullDiskErrorLogged(const std::string& needle) {
+    std::ifstream dumpFile(scratch / "dump.json");
+    const nlohmann::json dump = nlohmann::json::parse(dumpFile, nullptr, false);
+    ASSERT_TRUE(dump.is_object());
+    bool logged = false;
+    for (const auto& entry : dump["state"]["log"]) {
+      const std::string text = entry["text"];
+      logged |= entry["level"] == "error" && text.find(needle) != std::string::npos &&
+                text.find("No space left on device") != std::string::npos;
+    }
+    EXPECT_TRUE(logged) << dump["state"]["log"];
+  }
   fs::path scratch = testing::makeTestDirectory("failed-save-viewer");
   fs::path disk = scratch / "disk";
   const std::string oldContents = "the old file, which a failed save must leave alone\n";
@@ -50,17 +64,7 @@ TEST_F(FailedViewerSave, TheLensSavedFromTheMenuLogsTheErrorAndKeepsTheOldFile) 
                                  (scratch / "dump.json").string() + "\nquit\n");
   ASSERT_EQ(run.result.exitCode, 0) << run.result.err;
   expectOldFileKept(run, "lens.dat");
-  std::ifstream dumpFile(scratch / "dump.json");
-  const nlohmann::json dump = nlohmann::json::parse(dumpFile, nullptr, false);
-  ASSERT_TRUE(dump.is_object());
-  bool logged = false;
-  for (const auto& entry : dump["state"]["log"]) {
-    const std::string text = entry["text"];
-    logged |= entry["level"] == "error" &&
-              text.find("cannot write " + (disk / "lens.dat").string()) != std::string::npos &&
-              text.find("No space left on device") != std::string::npos;
-  }
-  EXPECT_TRUE(logged) << dump["state"]["log"];
+  expectFullDiskErrorLogged("cannot write " + (disk / "lens.dat").string());
 }
 
 // The other saves behind a file browser (File > Save render, the cross-section's and a plot's
@@ -89,16 +93,7 @@ TEST_F(FailedViewerSave, EveryBrowserSaveLogsTheErrorAndKeepsTheOldFile) {
             path + "\nwait-frames 5\ndump-ui " + (scratch / "dump.json").string() + "\nquit\n");
     ASSERT_EQ(run.result.exitCode, 0) << run.result.err;
     expectOldFileKept(run, save.name);
-    std::ifstream dumpFile(scratch / "dump.json");
-    const nlohmann::json dump = nlohmann::json::parse(dumpFile, nullptr, false);
-    ASSERT_TRUE(dump.is_object());
-    bool logged = false;
-    for (const auto& entry : dump["state"]["log"]) {
-      const std::string text = entry["text"];
-      logged |= entry["level"] == "error" && text.find(path) != std::string::npos &&
-                text.find("No space left on device") != std::string::npos;
-    }
-    EXPECT_TRUE(logged) << dump["state"]["log"];
+    expectFullDiskErrorLogged(path);
   }
 }
 

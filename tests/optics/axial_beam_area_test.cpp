@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "optics/axial_beam_area.h"
+#include "test_lenses.h"
 
 namespace lenslab::optics {
 namespace {
@@ -98,14 +99,10 @@ TEST(AxialBeamArea, AnImageOpenToItsCornersPassesItsWholeSquare) {
 }
 
 TEST(AxialBeamArea, ADeepConcaveFrontSurfaceIsNotSkipped) {
-  // A front surface concave to the object (R -20, 18 mm across: its rim is 2.14 mm in front of
-  // the vertex) with every other aperture wide: the whole 9 mm-radius disk passes, pi 81 mm^2.
-  // Rays starting 1 mm in front of the vertex began behind that surface beyond 6.2 mm.
-  Prescription p;
-  p.surfaces = {{-20.0, 3.0, 1.5, std::nullopt, 18.0},
-                {INFINITY, 1.0, 1.0, std::nullopt, 40.0},
-                {0.0, 30.0, 1.0, std::nullopt, 40.0}};
-  const BuildResult built = LensSystem::build(p);
+  // The front rim limits the beam (test_lenses.h): the whole 9 mm-radius disk passes,
+  // pi 81 mm^2. Rays starting 1 mm in front of the vertex began behind that surface beyond
+  // 6.2 mm.
+  const BuildResult built = LensSystem::build(testing::concaveFrontLens());
   ASSERT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().message);
   const auto beam = axialBeamAreaFromInfinity(*built.system);
   ASSERT_TRUE(beam);

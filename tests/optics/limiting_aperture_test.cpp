@@ -123,15 +123,10 @@ std::shared_ptr<const LensSystem> doubleGauss(double irisDiameterMm = 0.0) {
 // does (paraxially, an entrance pupil of 24.29 mm against the iris's 24.81 mm; with real rays the
 // widest axial ray that passes enters at 24.96 mm and is stopped by surface 3, not the iris)".
 TEST(LimitingAperture, ADeepConcaveFrontSurfaceLimitsAtItsRim) {
-  // A front surface concave to the object (R -20, 18 mm across: its rim is 2.14 mm in front of
-  // its vertex), every other aperture wide: the widest passing ray from infinity is at the front
-  // rim, 9 mm. Rays that started 1 mm in front of the vertex began behind that surface beyond
-  // 6.2 mm and were taken as blocked.
-  Prescription p;
-  p.surfaces = {{-20.0, 3.0, 1.5, std::nullopt, 18.0},
-                {INFINITY, 1.0, 1.0, std::nullopt, 40.0},
-                {0.0, 30.0, 1.0, std::nullopt, 40.0}};
-  const BuildResult built = LensSystem::build(p);
+  // The front rim limits the beam (test_lenses.h): the widest passing ray from infinity is at
+  // the rim, 9 mm. Rays that started 1 mm in front of the vertex began behind that surface
+  // beyond 6.2 mm and were taken as blocked.
+  const BuildResult built = LensSystem::build(testing::concaveFrontLens());
   ASSERT_TRUE(built.ok());
   const LimitingAperture limit =
       findLimitingAperture(*built.system, std::numeric_limits<double>::infinity());

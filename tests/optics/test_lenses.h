@@ -48,6 +48,17 @@ inline const CourseLens kCourseLenses[] = {
     {"wide.22mm.dat", "wide-22mm.dat", 22.02, 14.54},
 };
 
+// A front surface concave to the object (R -20, 18 mm across: its rim is 2.14 mm in front of its
+// vertex) on a plano-concave lens, with the stop and every other aperture 40 mm wide: a beam
+// from infinity is limited by that front rim alone.
+inline Prescription concaveFrontLens() {
+  Prescription p;
+  p.surfaces = {{-20.0, 3.0, 1.5, std::nullopt, 18.0},
+                {INFINITY, 1.0, 1.0, std::nullopt, 40.0},
+                {0.0, 30.0, 1.0, std::nullopt, 40.0}};
+  return p;
+}
+
 // A thick lens in air followed by a stop behind it; radii, thickness, index given.
 inline Prescription singlet(double r1, double r2, double thickness, double n, double film,
                             double diameter = 20.0) {
