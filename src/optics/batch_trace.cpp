@@ -1,8 +1,8 @@
-// The batch film-to-scene trace: structure-of-arrays, single precision, one surface at a time over
-// all rays so that the inner loop has no data-dependent control flow and vectorizes (blocked rays
-// keep being computed and are masked out). The same kernel is compiled for AVX2+FMA and for the
-// baseline ISA; the CPU picks at run time. The file is built with -O3 -fno-math-errno
-// -fno-trapping-math so that GCC vectorizes sqrtf (see src/optics/CMakeLists.txt).
+// The batch traces (film to scene, and scene to film): structure-of-arrays, single precision, one
+// surface at a time over all rays so that the inner loop has no data-dependent control flow and
+// vectorizes (blocked rays keep being computed and are masked out). The same kernel is compiled for
+// AVX2+FMA and for the baseline ISA; the CPU picks at run time. The file is built with -O3
+// -fno-math-errno -fno-trapping-math so that GCC vectorizes sqrtf (see src/optics/CMakeLists.txt).
 //
 // The geometry is the same as the scalar trace (surface_geometry.h): vertex-relative sphere
 // intersection without cancellation, Heckbert's refraction.
@@ -253,20 +253,32 @@ void LensSystem::traceFromFilmBatch(LensRayBatch& rays) const {
 }
 
 void LensSystem::traceFromFilmBatch(LensRayBatch& rays, BatchKernel kernel) const {
-  traceBatch(rays, nullptr, kernel);
+  traceBatch(rays, nullptr, kernel, true);
 }
+
+namespace {
+const float* inverseSquares(const float* wavelengthsNm, std::size_t n) {
+  thread_local std::vector<float> invWavelengthSq;
+  invWavelengthSq.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    invWavelengthSq[i] = 1.0f / (wavelengthsNm[i] * wavelengthsNm[i]);
+  return invWavelengthSq.data();
+}
+}  // namespace
 
 void LensSystem::traceFromFilmBatch(LensRayBatch& rays, const float* wavelengthsNm,
                                     BatchKernel kernel) const {
-  thread_local std::vector<float> invWavelengthSq;
-  invWavelengthSq.resize(rays.size());
-  for (std::size_t i = 0; i < rays.size(); ++i)
-    invWavelengthSq[i] = 1.0f / (wavelengthsNm[i] * wavelengthsNm[i]);
-  traceBatch(rays, invWavelengthSq.data(), kernel);
+  traceBatch(rays, inverseSquares(wavelengthsNm, rays.size()), kernel, true);
 }
 
-void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq,
-                            BatchKernel kernel) const {
+void LensSystem::traceFromSceneBatch(LensRayBatch& rays, const float* wavelengthsNm,
+                                     BatchKernel kernel) const {
+  traceBatch(rays, wavelengthsNm ? inverseSquares(wavelengthsNm, rays.size()) : nullptr, kernel,
+             false);
+}
+
+void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, BatchKernel kernel,
+                            bool fromFilm) const {
   constexpr int kMaxOnStack = 64;
   SurfaceF stackSurfaces[kMaxOnStack];
   std::vector<SurfaceF> heapSurfaces;
@@ -277,29 +289,33 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq,
     list = heapSurfaces.data();
   }
   // Film to scene: rear surface first; the ray goes from the rear medium into the front one.
+  // Scene to film: front surface first, from the front medium into the rear one. (The kernels
+  // do not care which way a ray travels: they take the nearest hit ahead of it.)
   for (int step = 0; step < count; ++step) {
-    const int k = count - 1 - step;
+    const int k = fromFilm ? count - 1 - step : step;
     const SurfaceGeometry& s = surfaces_[k];
-    const double eta = s.indexRear / s.indexFront;
+    const double eta = fromFilm ? s.indexRear / s.indexFront : s.indexFront / s.indexRear;
     const bool flat = s.curvaturePerMm == 0.0;
-    list[step] = {static_cast<float>(s.vertexZMm),
-                  static_cast<float>(s.curvaturePerMm),
-                  flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
-                  static_cast<float>(clipRadiusSqMm2_[k]),
-                  static_cast<float>(eta),
-                  eta != 1.0,
-                  flat,
-                  count - 1 - step == static_cast<int>(stopIndex_) && !stopTest_.isCircle()
-                      ? &stopTest_
-                      : nullptr};
+    list[step] = {
+        static_cast<float>(s.vertexZMm),
+        static_cast<float>(s.curvaturePerMm),
+        flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
+        static_cast<float>(clipRadiusSqMm2_[k]),
+        static_cast<float>(eta),
+        eta != 1.0,
+        flat,
+        k == static_cast<int>(stopIndex_) && !stopTest_.isCircle() ? &stopTest_ : nullptr};
     if (invWavelengthSq) {
+      // SurfaceF's "rear" is the medium the ray comes from, its "front" the one it enters.
       const CauchyCoefficients& rear = glassRear_[k];
       const CauchyCoefficients front = k == 0 ? CauchyCoefficients{} : glassRear_[k - 1];
+      const CauchyCoefficients& from = fromFilm ? rear : front;
+      const CauchyCoefficients& into = fromFilm ? front : rear;
       SurfaceF& f = list[step];
-      f.aRear = static_cast<float>(rear.a);
-      f.bRear = static_cast<float>(rear.bNm2);
-      f.aFront = static_cast<float>(front.a);
-      f.bFront = static_cast<float>(front.bNm2);
+      f.aRear = static_cast<float>(from.a);
+      f.bRear = static_cast<float>(from.bNm2);
+      f.aFront = static_cast<float>(into.a);
+      f.bFront = static_cast<float>(into.bNm2);
       f.disperses = rear.bNm2 != 0.0 || front.bNm2 != 0.0;
     }
   }

@@ -475,6 +475,17 @@ double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
   return density;
 }
 
+double ExitPupilTable::pdfInPassRegion(double r) const {
+  if (bins_.empty() || r > filmRadiusMaxMm_) {
+    if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return 0.0;  // no sample
+    return 1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_);
+  }
+  // As sampleInline: bin j with probability 1 - f, bin j + 1 with f, each uniform over its area
+  // (an empty bin's inverse area is 0: its share of the samples is dropped).
+  const Lookup l = lookup(r);
+  return (1.0 - l.f) * bins_[l.j].invAreaPerMm2 + l.f * bins_[l.j + 1].invAreaPerMm2;
+}
+
 // The sampling routine shared by sample() and sampleRays(); false when there is no sample.
 inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, double u1,
                                          double& pointX, double& pointY, double& pdf) const {

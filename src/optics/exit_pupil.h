@@ -65,6 +65,11 @@ class ExitPupilTable {
   // The density sample() has at a point of the plane (0 outside the sampled region), for tests
   // and for multiple importance sampling.
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
+  // The same at a plane point whose ray passes the lens, from a film point at this distance from
+  // the axis: the sampled region contains every such point, so no point-in-polygon test is
+  // needed (multiple importance sampling between the spectral render's wavelengths; 0 where no
+  // sample is drawn).
+  double pdfInPassRegion(double filmRadiusMm) const;
 
   // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
   // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture;

@@ -179,6 +179,12 @@ class LensSystem {
   // between non-dispersive media take the RGB kernel's path.
   void traceFromFilmBatch(LensRayBatch& rays, const float* wavelengthsNm,
                           BatchKernel kernel = BatchKernel::Auto) const;
+  // The scene-to-film batch trace: rays start in front of the lens travelling toward -z and, when
+  // they pass, leave the rear surface toward the film. `wavelengthsNm`: each ray's wavelength as
+  // above, or null for the system's own indices. (The spectral render's hero wavelengths trace a
+  // scene ray back to the film at each of the other wavelengths of its sample.)
+  void traceFromSceneBatch(LensRayBatch& rays, const float* wavelengthsNm,
+                           BatchKernel kernel = BatchKernel::Auto) const;
   // Some medium has an Abbe number: the lens disperses (optics/analysis/chromatic.h's
   // lensHasDispersion of the prescription).
   bool disperses() const { return disperses_; }
@@ -239,7 +245,8 @@ class LensSystem {
  private:
   void place();  // fills surfaces_, firstOrder_ from prescription_ and wavelengthNm_
   // The batch trace; invWavelengthSq null for the system's own indices.
-  void traceBatch(LensRayBatch& rays, const float* invWavelengthSq, BatchKernel kernel) const;
+  void traceBatch(LensRayBatch& rays, const float* invWavelengthSq, BatchKernel kernel,
+                  bool fromFilm) const;
   template <bool kRecord>
   // opticalPathMm, when not null, accumulates index x distance along the way.
   std::optional<LensRay> trace(LensRay ray, bool fromFilm, RayPath* path,

@@ -3,6 +3,7 @@
 // world-space ray and an exposure weight. Framing follows pbrt: camera space looks down +z with
 // +y up, and raster (0, 0) is the top-left corner of the image.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -17,21 +18,37 @@ struct CameraRay {
   float weight = 1.0f;                    // exposure weight; 0 means the lens blocked it
 };
 
+// The wavelengths of a batch of spectral camera samples (render/spectral_film.h): sample i
+// carries `perSample` of them, nm[i * perSample + j]. Its ray is traced through the lens at the
+// first (the hero wavelength, Wilkie et al. 2014); the scene radiance along that ray is then
+// counted at every wavelength of the sample, each with the exposure weight the camera writes to
+// weights[i * perSample + j], in the raster pixel pixels[i * perSample + j] (y * width + x):
+// through a lens that disperses, the same scene ray meets the film elsewhere at another
+// wavelength. A weight of 0 (pixel -1) where that wavelength's ray does not reach the film. The
+// weights replace CameraRay::weight for a spectral sample.
+struct SampleWavelengths {
+  int perSample = 1;
+  const float* nm = nullptr;
+  float* weights = nullptr;
+  std::int32_t* pixels = nullptr;
+};
+
 class Camera {
  public:
   virtual ~Camera() = default;
   // Returns false when no ray leaves the lens for this sample (vignetted or blocked).
   virtual bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const = 0;
   // Many rays at once (cameras with a lens trace them as a batch); passed[i] says whether
-  // rays[i] left the lens. `wavelengthsNm`: each sample's wavelength when the camera is
-  // spectral() (the renderer draws them), else null; a camera that does not disperse ignores it.
+  // rays[i] left the lens. `wavelengths`: the samples' wavelengths when the camera is spectral()
+  // (the renderer draws them), else null. A camera that does not disperse shares each ray's
+  // weight evenly among its sample's wavelengths.
   virtual void generateRays(std::size_t count, const glm::vec2* rasterPoints,
                             const glm::vec2* lensSamples, CameraRay* rays, std::uint8_t* passed,
-                            const float* wavelengthsNm = nullptr) const {
-    (void)wavelengthsNm;
+                            const SampleWavelengths* wavelengths = nullptr) const {
     for (std::size_t i = 0; i < count; ++i) {
       passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
     }
+    if (wavelengths) shareWeightEvenly(count, rasterPoints, rays, passed, *wavelengths);
   }
   // False only when no ray from any film point of the raster rectangle [min, max] can leave the
   // lens (outside its image circle): the renderer then leaves those pixels black unsampled.
@@ -50,6 +67,26 @@ class Camera {
 
  protected:
   Camera(int width, int height) : width_(width), height_(height) {}
+  // The sample's own pixel (y * width + x) of a raster point.
+  std::int32_t pixelIndex(glm::vec2 rasterPoint) const {
+    const int x = std::clamp(static_cast<int>(rasterPoint.x), 0, width_ - 1);
+    const int y = std::clamp(static_cast<int>(rasterPoint.y), 0, height_ - 1);
+    return static_cast<std::int32_t>(y * width_ + x);
+  }
+  // Weights of sample i's wavelengths = rays[i].weight / perSample (0 for a blocked sample), all
+  // in the sample's own pixel: the ray is the same at every wavelength.
+  void shareWeightEvenly(std::size_t count, const glm::vec2* rasterPoints, const CameraRay* rays,
+                         const std::uint8_t* passed, const SampleWavelengths& wavelengths) const {
+    const std::size_t k = static_cast<std::size_t>(wavelengths.perSample);
+    const float share = 1.0f / static_cast<float>(wavelengths.perSample);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::int32_t pixel = pixelIndex(rasterPoints[i]);
+      for (std::size_t j = 0; j < k; ++j) {
+        wavelengths.weights[i * k + j] = passed[i] ? rays[i].weight * share : 0.0f;
+        wavelengths.pixels[i * k + j] = pixel;
+      }
+    }
+  }
   int width_;
   int height_;
 };

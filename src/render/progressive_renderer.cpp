@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <thread>
 #include <vector>
@@ -70,10 +71,57 @@ struct Wave {
   }
 };
 
-// Renders the wave's samples of every pixel in the tile and adds their sum to `sums`. Returns
-// false when cancelled part-way.
+// What spectral samples add to other pixels than their own: through a lens that disperses, a
+// sample's other wavelengths meet the film elsewhere (Camera's SampleWavelengths). Tiles render
+// in parallel and each owns only its pixels, so these go to an image of their own, in batches
+// under a lock, and the wave adds it to its sums when all tiles are done. (The order of the
+// batches depends on the threads, so such an image can differ from run to run in its last
+// bits; an RGB render, or a spectral one through a lens without dispersion, has no splats.)
+struct Splat {
+  std::int32_t pixel;
+  glm::vec3 rgb;
+};
+
+class SplatImage {
+ public:
+  explicit SplatImage(std::size_t pixels) : pixels_(pixels) {}
+  SplatImage(const SplatImage&) = delete;
+  SplatImage& operator=(const SplatImage&) = delete;
+  // Adds `pending` and empties it.
+  void add(std::vector<Splat>& pending) {
+    if (pending.empty()) return;
+    std::lock_guard lock(mutex_);
+    if (sums_.empty()) sums_.assign(3 * pixels_, 0.0);  // only a dispersive spectral render
+    used_ = true;
+    for (const Splat& splat : pending) {
+      double* pixel = &sums_[3 * static_cast<std::size_t>(splat.pixel)];
+      pixel[0] += splat.rgb.x;
+      pixel[1] += splat.rgb.y;
+      pixel[2] += splat.rgb.z;
+    }
+    pending.clear();
+  }
+  // After the wave: adds the image to `sums` and clears it for the next (kept allocated: a job's
+  // waves reuse it).
+  void moveTo(std::vector<double>& sums) {
+    if (!used_) return;
+    for (std::size_t i = 0; i < sums_.size(); ++i) sums[i] += sums_[i];
+    std::fill(sums_.begin(), sums_.end(), 0.0);
+    used_ = false;
+  }
+
+ private:
+  std::size_t pixels_;
+  std::mutex mutex_;
+  std::vector<double> sums_;
+  bool used_ = false;
+};
+
+// Renders the wave's samples of every pixel in the tile and adds their sum to `sums` (and what
+// they add to other pixels to `splats`). Returns false when cancelled part-way.
 bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::vector<double>& sums,
-                const std::function<bool()>& cancelled, RenderStatistics& statistics) {
+                SplatImage& splats, const std::function<bool()>& cancelled,
+                RenderStatistics& statistics) {
   const Camera& camera = *job.camera;
   const int width = wave.width;
   const int firstSample = wave.firstSample;
@@ -87,10 +135,20 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   thread_local std::vector<CameraRay> rays;
   thread_local std::vector<std::uint8_t> passed;
   thread_local std::vector<PixelSeeds> seeds;
-  // A spectral camera's wavelengths, one per sample (render/spectral_film.h).
+  // A spectral camera's wavelengths, perSample of them per sample (render/spectral_film.h and
+  // Camera's SampleWavelengths).
   const bool spectral = camera.spectral();
+  const std::size_t perSample =
+      spectral ? static_cast<std::size_t>(std::clamp(job.settings.wavelengthsPerSample, 1, 16)) : 1;
   thread_local std::vector<SpectralSample> spectralSamples;
-  thread_local std::vector<float> wavelengths;
+  thread_local std::vector<float> wavelengths, wavelengthWeights;
+  thread_local std::vector<std::int32_t> wavelengthPixels;
+  thread_local std::vector<Splat> pendingSplats;
+  constexpr std::size_t kSplatBatch = 4096;
+  struct FlushAtExit {  // also when cancelled
+    SplatImage& image;
+    ~FlushAtExit() { image.add(pendingSplats); }
+  } flushAtExit{splats};
   // The tile's pixels that some camera ray can leave the lens from; the others (outside a
   // lens's image circle) stay black, and their samples are counted without being taken.
   thread_local std::vector<glm::ivec2> visible;
@@ -142,33 +200,77 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         rasterPoints[static_cast<std::size_t>(p) * samplesPerPixel + s] += glm::vec2(x, y);
       }
     }
+    SampleWavelengths sampleWavelengths;
     if (spectral) {
+      // The hero at the stratified u, the others at u + j / perSample (mod 1) of the film's
+      // wavelength distribution: each is distributed as the hero, and together they spread
+      // over the spectrum.
       const SpectralFilm& film = SpectralFilm::instance();
-      spectralSamples.resize(n);
-      wavelengths.resize(n);
+      spectralSamples.resize(n * perSample);
+      wavelengths.resize(n * perSample);
+      wavelengthWeights.resize(n * perSample);
+      wavelengthPixels.resize(n * perSample);
+      const float spacing = 1.0f / static_cast<float>(perSample);
       for (int p = 0; p < pixels; ++p) {
         for (int s = 0; s < count; ++s) {
           const std::size_t i = static_cast<std::size_t>(p) * samplesPerPixel + s;
-          spectralSamples[i] =
-              film.sample(spectralSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s)));
-          wavelengths[i] = spectralSamples[i].wavelengthNm;
+          const float u = spectralSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s));
+          for (std::size_t j = 0; j < perSample; ++j) {
+            float v = u + static_cast<float>(j) * spacing;
+            if (v >= 1.0f) v -= 1.0f;
+            spectralSamples[i * perSample + j] = film.sample(v);
+            wavelengths[i * perSample + j] = spectralSamples[i * perSample + j].wavelengthNm;
+          }
         }
       }
+      sampleWavelengths = {static_cast<int>(perSample), wavelengths.data(),
+                           wavelengthWeights.data(), wavelengthPixels.data()};
     }
     camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
-                        spectral ? wavelengths.data() : nullptr);
+                        spectral ? &sampleWavelengths : nullptr);
     statistics.cameraSamples += n;
     for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
+      const auto ownPixel =
+          static_cast<std::int32_t>(visible[first + p].y * width + visible[first + p].x);
       for (std::size_t i = p * samplesPerPixel; i < (p + 1) * samplesPerPixel; ++i) {
         // Look for a newer job every few samples too, not only between batches.
         if ((i & 63u) == 63u && cancelled()) return false;
         if (!passed[i]) continue;
         ++statistics.lensPassed;
         const CameraRay& ray = rays[i];
-        glm::vec3 radiance = ray.weight * incomingRadiance(*job.scene, ray.origin, ray.direction,
-                                                           samplers[i], wave.integrator);
-        if (spectral) radiance = spectralSamples[i].toRgb(radiance);
+        const glm::vec3 incoming =
+            incomingRadiance(*job.scene, ray.origin, ray.direction, samplers[i], wave.integrator);
+        glm::vec3 radiance(0.0f);
+        if (spectral) {
+          // The scene is RGB: its radiance at each of the sample's wavelengths, with the weight
+          // the camera gave that wavelength, in the pixel that wavelength reaches.
+          bool finite = true;
+          for (std::size_t j = i * perSample; j < (i + 1) * perSample; ++j) {
+            if (wavelengthWeights[j] == 0.0f) continue;
+            const glm::vec3 colour = wavelengthWeights[j] * spectralSamples[j].toRgb(incoming);
+            const std::int32_t target = wavelengthPixels[j];
+            if (target == ownPixel) {
+              radiance += colour;
+            } else if (!std::isfinite(colour.x) || !std::isfinite(colour.y) ||
+                       !std::isfinite(colour.z)) {
+              finite = false;
+            } else if (const int tx = target % width, ty = target / width;
+                       tx >= tile.x0 && tx < tile.x1 && ty >= tile.y0 && ty < tile.y1) {
+              // In this tile: its pixels are this thread's alone during the wave.
+              double* pixel = &sums[3 * static_cast<std::size_t>(target)];
+              pixel[0] += colour.x;
+              pixel[1] += colour.y;
+              pixel[2] += colour.z;
+            } else {
+              pendingSplats.push_back({target, colour});
+            }
+          }
+          if (pendingSplats.size() >= kSplatBatch) splats.add(pendingSplats);
+          if (!finite) ++statistics.discardedSamples;
+        } else {
+          radiance = ray.weight * incoming;
+        }
         if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
             !std::isfinite(radiance.z)) {
           ++statistics.discardedSamples;
@@ -188,13 +290,13 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
 
 // Runs one wave over all tiles on the arena. False when cancelled.
 bool runWave(tbb::task_arena& arena, const RenderJob& job, const Wave& wave,
-             const std::vector<Tile>& tiles, std::vector<double>& sums,
+             const std::vector<Tile>& tiles, std::vector<double>& sums, SplatImage& splats,
              std::vector<RenderStatistics>& tileStatistics, const std::function<bool()>& cancelled,
              std::atomic<std::uint64_t>* pixelSamplesDone = nullptr) {
   std::atomic<bool> stopped{false};
   // One tile; false when cancelled.
   auto runTile = [&](std::size_t t) {
-    if (!renderTile(job, wave, tiles[t], sums, cancelled, tileStatistics[t])) {
+    if (!renderTile(job, wave, tiles[t], sums, splats, cancelled, tileStatistics[t])) {
       stopped = true;
       return false;
     }
@@ -230,6 +332,7 @@ bool runWave(tbb::task_arena& arena, const RenderJob& job, const Wave& wave,
         tbb::simple_partitioner());
   });
 #endif
+  splats.moveTo(sums);
   return !stopped && !cancelled();
 }
 
@@ -261,7 +364,7 @@ std::shared_ptr<RenderSnapshot> makeSnapshot(int width, int height, const std::v
 // added to `sums` (the full image's) and published as an image of one pixel per block. False
 // when cancelled.
 bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
-                      std::vector<double>& sums, RenderStatistics& statistics,
+                      std::vector<double>& sums, SplatImage& splats, RenderStatistics& statistics,
                       std::uint64_t generation, Clock::time_point started,
                       const std::function<bool()>& cancelled,
                       const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
@@ -272,19 +375,19 @@ bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
   const std::vector<Tile> tiles =
       makeTiles(wave.width, wave.height, std::max(4, job.settings.tileSize) * divisor);
   std::vector<RenderStatistics> tileStatistics(tiles.size());
-  if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled)) return false;
+  if (!runWave(arena, job, wave, tiles, sums, splats, tileStatistics, cancelled)) return false;
   statistics = total(tileStatistics);
   const int width = (wave.width + divisor - 1) / divisor;
   const int height = (wave.height + divisor - 1) / divisor;
-  std::vector<double> centres(static_cast<std::size_t>(width) * height * 3);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const int fullX = blockCentre(x * divisor, divisor, wave.width);
-      const int fullY = blockCentre(y * divisor, divisor, wave.height);
-      for (int c = 0; c < 3; ++c) {
-        centres[3 * (static_cast<std::size_t>(y) * width + x) + c] =
+  // Each block's sum: its centre's sample, and what spectral samples of a dispersive lens added
+  // to the block's other pixels (else nothing: the coarse look is the first thing rendered).
+  std::vector<double> centres(static_cast<std::size_t>(width) * height * 3, 0.0);
+  for (int fullY = 0; fullY < wave.height; ++fullY) {
+    for (int fullX = 0; fullX < wave.width; ++fullX) {
+      const std::size_t block = static_cast<std::size_t>(fullY / divisor) * width + fullX / divisor;
+      for (int c = 0; c < 3; ++c)
+        centres[3 * block + c] +=
             sums[3 * (static_cast<std::size_t>(fullY) * wave.width + fullX) + c];
-      }
     }
   }
   auto snapshot = makeSnapshot(width, height, centres, 1, generation);
@@ -321,6 +424,7 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
   }
   const std::vector<Tile> tiles = makeTiles(width, height, std::max(4, job.settings.tileSize));
   std::vector<double> sums(static_cast<std::size_t>(width) * height * 3, 0.0);
+  SplatImage splats(static_cast<std::size_t>(width) * height);
   std::vector<RenderStatistics> tileStatistics(tiles.size());
   RenderStatistics coarseStatistics;  // the coarse look's part of the first wave
   const int target = job.settings.samplesPerPixel;
@@ -334,13 +438,14 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     wave.pixels = WavePixels::All;
     if (index == 0 && job.settings.coarseDivisor > 1) {
       wave.blockSize = job.settings.coarseDivisor;
-      if (!renderCoarseLook(arena, job, wave, sums, coarseStatistics, generation, started,
+      if (!renderCoarseLook(arena, job, wave, sums, splats, coarseStatistics, generation, started,
                             cancelled, publish)) {
         return;
       }
       wave.pixels = WavePixels::AllButBlockCentres;
     }
-    if (!runWave(arena, job, wave, tiles, sums, tileStatistics, cancelled, pixelSamplesDone)) {
+    if (!runWave(arena, job, wave, tiles, sums, splats, tileStatistics, cancelled,
+                 pixelSamplesDone)) {
       return;
     }
     done += count;

@@ -33,6 +33,10 @@ struct RenderSettings {
   // rest of the wave then renders the other pixels: the look costs no samples of its own, and
   // the image is the same as without it.
   int coarseDivisor = 1;
+  // A spectral camera's wavelengths per sample (hero wavelength sampling, Camera's
+  // SampleWavelengths): the first chosen by the pixel's stratified sample, the others spaced
+  // evenly after it in the film's wavelength distribution. 1 is one wavelength per path.
+  int wavelengthsPerSample = 4;
 };
 
 struct RenderJob {

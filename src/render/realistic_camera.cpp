@@ -109,9 +109,17 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
 
 void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoints,
                                    const glm::vec2* lensSamples, CameraRay* rays,
-                                   std::uint8_t* passed, const float* wavelengthsNm) const {
+                                   std::uint8_t* passed,
+                                   const SampleWavelengths* wavelengths) const {
   // The RGB path below is as it was when there are no wavelengths to trace.
-  const bool spectral = spectral_ && wavelengthsNm != nullptr;
+  const bool spectral = spectral_ && wavelengths != nullptr;
+  // The hero wavelengths, one per ray, for the spectral trace.
+  thread_local std::vector<float> heroNm;
+  if (spectral) {
+    heroNm.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+      heroNm[i] = wavelengths->nm[i * static_cast<std::size_t>(wavelengths->perSample)];
+  }
   thread_local optics::LensRayBatch batch;
   thread_local std::vector<float> filmX, filmY, u0, u1, pdfPerMm2;
   filmX.resize(count);
@@ -177,8 +185,21 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
       alive[i] &= static_cast<std::uint8_t>(pdf > 0.0f);
     }
   }
+  // The hero rays' density in the film-side ray space (see heroWavelengthWeights): the sampling
+  // density on the plane over Kolb's geometric factor cos^4(theta) / Z^2.
+  const bool weighWavelengths = spectral && wavelengths->perSample > 1 && lens_->disperses();
+  thread_local std::vector<float> heroDensity, heroCos4;
+  if (weighWavelengths) {
+    heroDensity.resize(count);
+    heroCos4.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const float cos2 = dz[i] * dz[i];
+      heroCos4[i] = cos2 * cos2;
+      heroDensity[i] = pdfs[i] / (cos2 * cos2 * invPlaneZSquared);
+    }
+  }
   if (spectral)
-    lens_->traceFromFilmBatch(batch, wavelengthsNm);
+    lens_->traceFromFilmBatch(batch, heroNm.data());
   else
     lens_->traceFromFilmBatch(batch);
   for (std::size_t i = 0; i < count; ++i) {
@@ -187,6 +208,148 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
     if (!passed[i]) continue;
     finishRay({batch.ox[i], batch.oy[i], batch.oz[i]}, {batch.dx[i], batch.dy[i], batch.dz[i]},
               rays[i]);
+  }
+  if (weighWavelengths)
+    heroWavelengthWeights(count, rasterPoints, batch, heroDensity.data(), heroCos4.data(),
+                          *wavelengths);
+  else if (spectral)
+    shareWeightEvenly(count, rasterPoints, rays, passed, *wavelengths);
+}
+
+glm::dvec2 RealisticCamera::rasterPoint(glm::dvec2 filmMm) const {
+  return {(0.5 * filmWidthMm_ - filmMm.x) / mmPerRasterX_,
+          (filmMm.y + 0.5 * filmHeightMm_) / mmPerRasterY_};
+}
+
+// Hero wavelengths through a lens that disperses (after Wilkie, Nawaz, Droske, Weidlich and
+// Hanika, "Hero wavelength spectral sampling", EGSR 2014, with the lens as the one dispersive
+// part of the path).
+//
+// A pixel's value at wavelength lambda is the integral, over the rays R leaving the lens, of the
+// radiance along R times the indicator that R, traced back through the lens at lambda, lands in
+// the pixel. The measure is the throughput (etendue) dA cos dw, which the lens conserves at every
+// wavelength (air on both sides), and in which Kolb's factor cos^4(theta) dA_film dA_plane / Z^2
+// is the film-side ray's measure. So the sampler at wavelength k - a uniform film point in the
+// pixel, a plane point from the exit-pupil table - has the density
+//   p_k(R) = pdf_plane(q_k | x_k) Z^2 / cos^4(theta_k)   (per unit pixel area)
+// at the ray R, where (x_k, q_k, theta_k) is R traced back at lambda_k; 0 when that ray is
+// blocked or misses the film. (Every pixel is sampled alike, so the film point's own density is
+// the same constant for all k.) The sample traced R at its hero wavelength; each wavelength j of
+// the sample then gets the balance heuristic's weight over the sample's K strategies (which of
+// its wavelengths was the hero), in the pixel its own ray lands in:
+//   weight_j = [R reaches the film at lambda_j] c_j / sum_k p_k(R),
+// with c_j = 1 (c_j = 1 / cos^4(theta_j) for the teaching toggle without cos^4). Where the lens
+// does not disperse every p_k is the hero's and weight_j = Kolb's weight / K. The estimate is
+// unbiased for every pixel and wavelength and carries K wavelengths of colour per scene path:
+// the colour noise of one wavelength per path (the weight's variance across the spectrum) mostly
+// cancels. A lens with strong longitudinal colour sends the other wavelengths pixels away (the
+// flint landscape lens's F-C focus shift of 2 mm blurs them by several pixels), so the renderer
+// adds them to other pixels than the sample's. The cost is K - 1 traces back through the lens
+// per sample, vectorised as the forward trace.
+void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
+                                            const optics::LensRayBatch& exit,
+                                            const float* heroDensity, const float* heroCos4,
+                                            const SampleWavelengths& wavelengths) const {
+  const std::size_t k = static_cast<std::size_t>(wavelengths.perSample);
+  const std::size_t others = k - 1;
+  thread_local optics::LensRayBatch back;
+  thread_local std::vector<float> backNm;
+  thread_local std::vector<std::uint32_t> backOf;  // back rays of sample i start at backOf[i]
+  thread_local std::vector<double> scratchDensity, scratchCosine;  // of a sample's others
+  // Each passing hero ray (only those: the rear-disk sampling of the course scenes blocks many),
+  // from 1 mm out along it (clear of the front surface it left; the batch trace takes the
+  // nearest hit ahead), back into the lens at each other wavelength.
+  backOf.resize(count);
+  std::size_t backCount = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    backOf[i] = static_cast<std::uint32_t>(backCount);
+    if (exit.alive[i]) backCount += others;
+  }
+  back.resize(backCount);
+  backNm.resize(backCount);
+  constexpr float kBackOffMm = 1.0f;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!exit.alive[i]) continue;
+    for (std::size_t j = 0; j < others; ++j) {
+      const std::size_t b = backOf[i] + j;
+      const float dx = exit.dx[i], dy = exit.dy[i], dz = exit.dz[i];
+      back.ox[b] = exit.ox[i] + kBackOffMm * dx;
+      back.oy[b] = exit.oy[i] + kBackOffMm * dy;
+      back.oz[b] = exit.oz[i] + kBackOffMm * dz;
+      back.dx[b] = -dx;
+      back.dy[b] = -dy;
+      back.dz[b] = -dz;
+      back.alive[b] = 1;
+      backNm[b] = wavelengths.nm[i * k + 1 + j];
+    }
+  }
+  lens_->traceFromSceneBatch(back, backNm.data());
+
+  const bool exitPupil = sampling_ == LensSampling::ExitPupil;
+  const optics::ExitPupilTable* table = exitPupil ? &lens_->spectralExitPupilTable() : nullptr;
+  const auto planeZ = static_cast<float>(lens_->rearVertexZ());
+  const float planeZSquared = planeZ * planeZ;
+  const auto diskRadiusSq =
+      static_cast<float>(lens_->rearApertureRadiusMm() * lens_->rearApertureRadiusMm());
+  const auto diskPdf = static_cast<float>(exitPupil ? 0.0 : rearDiskPdfPerMm2());
+  // rasterPoint(), in single precision with the divisions taken out.
+  const auto halfWidthMm = static_cast<float>(0.5 * filmWidthMm_);
+  const auto halfHeightMm = static_cast<float>(0.5 * filmHeightMm_);
+  const auto rasterPerMmX = static_cast<float>(1.0 / mmPerRasterX_);
+  const auto rasterPerMmY = static_cast<float>(1.0 / mmPerRasterY_);
+  const auto widthF = static_cast<float>(width_), heightF = static_cast<float>(height_);
+  float* weights = wavelengths.weights;
+  std::vector<double>&density = scratchDensity, &cosine = scratchCosine;
+  density.resize(others);
+  cosine.resize(others);
+  for (std::size_t i = 0; i < count; ++i) {
+    float* out = weights + i * k;
+    std::int32_t* pixelOut = wavelengths.pixels + i * k;
+    if (!exit.alive[i]) {
+      std::fill(out, out + k, 0.0f);
+      std::fill(pixelOut, pixelOut + k, -1);
+      continue;
+    }
+    pixelOut[0] = pixelIndex(rasterPoints[i]);
+    double total = heroDensity[i];
+    for (std::size_t j = 0; j < others; ++j) {
+      const std::size_t b = backOf[i] + j;
+      density[j] = 0.0;
+      pixelOut[1 + j] = -1;
+      // Directions stay unit length through the trace: -dz is the cosine to the axis.
+      const float dz = back.dz[b];
+      if (!back.alive[b] || !(dz < 0.0f)) continue;
+      const float toFilm = -back.oz[b] / dz;
+      const float filmX = back.ox[b] + toFilm * back.dx[b];
+      const float filmY = back.oy[b] + toFilm * back.dy[b];
+      const float rasterX = (halfWidthMm - filmX) * rasterPerMmX;
+      const float rasterY = (filmY + halfHeightMm) * rasterPerMmY;
+      if (!(rasterX >= 0.0f && rasterX < widthF && rasterY >= 0.0f && rasterY < heightF))
+        continue;  // off the film
+      float planePdf = 0.0f;
+      if (exitPupil) {
+        planePdf = static_cast<float>(table->pdfInPassRegion(std::hypot(filmX, filmY)));
+      } else {
+        const float toPlane = (planeZ - back.oz[b]) / dz;
+        const float qx = back.ox[b] + toPlane * back.dx[b];
+        const float qy = back.oy[b] + toPlane * back.dy[b];
+        planePdf = qx * qx + qy * qy <= diskRadiusSq ? diskPdf : 0.0f;
+      }
+      if (!(planePdf > 0.0f)) continue;
+      const double cos2 = static_cast<double>(dz) * dz;
+      cosine[j] = cos2 * cos2;
+      density[j] = planePdf * planeZSquared / cosine[j];
+      total += density[j];
+      pixelOut[1 + j] = pixelIndex(glm::vec2(rasterX, rasterY));
+    }
+    // c_j: 1 with Kolb's cos^4; the teaching toggle measures the radiance without it, c_j =
+    // 1 / cos^4 of the wavelength's own film ray.
+    const double invTotal = 1.0 / total;
+    out[0] = static_cast<float>(cos4Weighting_ ? invTotal : invTotal / heroCos4[i]);
+    for (std::size_t j = 0; j < others; ++j) {
+      const double c = cos4Weighting_ ? 1.0 : 1.0 / cosine[j];
+      out[1 + j] = density[j] > 0.0 ? static_cast<float>(c * invTotal) : 0.0f;
+    }
   }
 }
 

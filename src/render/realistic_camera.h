@@ -38,12 +38,14 @@ class RealisticCamera final : public Camera {
                   bool spectral = false);
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override;
   // Traces the whole batch with the optics library's vectorised trace.
-  // Spectral (the constructor's `spectral` and wavelengths given): ray i is traced at its own
+  // Spectral (the constructor's `spectral` and wavelengths given): ray i is traced at its hero
   // wavelength, aimed by the lens's spectral exit-pupil table, which contains the pass region at
-  // every wavelength of the spectral range (optics::LensSystem::spectralExitPupilTable).
+  // every wavelength of the spectral range (optics::LensSystem::spectralExitPupilTable). Through
+  // a lens that disperses, the ray's other wavelengths are weighted as heroWavelengthWeights
+  // explains.
   void generateRays(std::size_t count, const glm::vec2* rasterPoints, const glm::vec2* lensSamples,
                     CameraRay* rays, std::uint8_t* passed,
-                    const float* wavelengthsNm = nullptr) const override;
+                    const SampleWavelengths* wavelengths = nullptr) const override;
   // Traces each sample at its wavelength: the lens's dispersion is in the picture.
   bool spectral() const override { return spectral_; }
 
@@ -59,6 +61,14 @@ class RealisticCamera final : public Camera {
   glm::vec2 rearDiskPointMm(glm::vec2 u) const;  // LensSampling::RearElementDisk
   double rearDiskPdfPerMm2() const;
   void finishRay(glm::vec3 exitOriginMm, glm::vec3 exitDirection, CameraRay& ray) const;
+  // The exposure weight of each wavelength of each sample, for a lens that disperses: `exit` is
+  // the batch of rays leaving the lens at the hero wavelengths, heroDensity[i] the density of
+  // ray i in the film-side ray space (see the .cpp), heroCos4[i] its cos^4(theta).
+  void heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
+                             const optics::LensRayBatch& exit, const float* heroDensity,
+                             const float* heroCos4, const SampleWavelengths& wavelengths) const;
+  // Raster point of a film point (the inverse of filmPointMm).
+  glm::dvec2 rasterPoint(glm::dvec2 filmMm) const;
 
   std::shared_ptr<const optics::LensSystem> lens_;
   glm::mat4 worldFromLensMm_;

@@ -87,14 +87,18 @@ SpectralFilm::SpectralFilm() {
   cdf_[kBins] = 1.0;
   for (int k = 0; k < kBins; ++k) {
     const double low = kMinNm + k, high = low + 1.0;
-    binColour_[k] = {glm::vec3(basis(low)), glm::vec3(basis(high)), glm::vec3(srgbOfLine(low)),
-                     glm::vec3(srgbOfLine(high)), static_cast<float>(1.0 / pdf_[k])};
+    binColour_[k] = {glm::vec3(basis(low)),
+                     glm::vec3(basis(high)),
+                     glm::vec3(srgbOfLine(low)),
+                     glm::vec3(srgbOfLine(high)),
+                     static_cast<float>(1.0 / pdf_[k]),
+                     static_cast<float>(cdf_[k])};
   }
   int k = 0;
   for (int j = 0; j <= kGuide; ++j) {
     const double u = static_cast<double>(j) / kGuide;
     while (k < kBins - 1 && cdf_[k + 1] <= u) ++k;
-    guide_[j] = k;
+    guide_[j] = static_cast<std::uint16_t>(k);
   }
 }
 
@@ -113,21 +117,6 @@ glm::dvec3 SpectralFilm::basis(double wavelengthNm) const {
 double SpectralFilm::pdfPerNm(double wavelengthNm) const {
   if (!(wavelengthNm >= kMinNm && wavelengthNm < kMaxNm)) return 0.0;
   return pdf_[std::min(kBins - 1, static_cast<int>(wavelengthNm - kMinNm))];
-}
-
-SpectralSample SpectralFilm::sample(float u) const {
-  const double v = std::clamp(static_cast<double>(u), 0.0, 1.0);
-  // The bin whose CDF interval holds v (from the guide table's start), then uniform inside it.
-  int k = guide_[std::min(kGuide, static_cast<int>(v * kGuide))];
-  while (k < kBins - 1 && cdf_[k + 1] <= v) ++k;
-  const double inside = std::clamp((v - cdf_[k]) / pdf_[k], 0.0, 1.0 - 1e-9);
-  const BinColour& c = binColour_[k];
-  const auto t = static_cast<float>(inside);
-  SpectralSample s;
-  s.wavelengthNm = static_cast<float>(kMinNm + k + inside);
-  s.basis = c.basisLow + t * (c.basisHigh - c.basisLow);
-  s.srgbOverPdf = (c.srgbLow + t * (c.srgbHigh - c.srgbLow)) * c.invPdf;
-  return s;
 }
 
 }  // namespace lenslab::render

@@ -31,7 +31,9 @@
 //
 // The range is LensSystem::kSpectralMinNm..kSpectralMaxNm (380-780 nm).
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <glm/vec3.hpp>
 
 namespace lenslab::render {
@@ -56,8 +58,9 @@ class SpectralFilm {
   static const SpectralFilm& instance();
 
   // u in [0, 1): the wavelength by inversion of p's distribution (a stratified u gives stratified
-  // wavelengths).
-  SpectralSample sample(float u) const;
+  // wavelengths). Inline: the renderer calls it four times per camera sample, and a call that
+  // returns the struct through memory stalls on reading it back.
+  inline SpectralSample sample(float u) const;
   double pdfPerNm(double wavelengthNm) const;
   // Linear sRGB of a line of unit spectral radiance (the film's response).
   glm::dvec3 srgbOfLine(double wavelengthNm) const;
@@ -76,11 +79,31 @@ class SpectralFilm {
   struct BinColour {
     glm::vec3 basisLow, basisHigh, srgbLow, srgbHigh;
     float invPdf;
+    float cdfLow;  // the distribution's value at the bin's start
   };
   std::array<BinColour, kBins> binColour_{};
   // guide_[j]: the first bin whose CDF interval reaches j / kGuide (a guide table for inversion).
-  static constexpr int kGuide = 512;
-  std::array<int, kGuide + 1> guide_{};
+  // Finer than the least likely bin (the density's floor; spectral_film_test checks it), so that
+  // a sample is in the guide's bin or the next: the search's loop runs once at most and is
+  // rarely taken (the renderer draws four wavelengths per camera sample).
+  static constexpr int kGuide = 16384;
+  std::array<std::uint16_t, kGuide + 1> guide_{};
 };
+
+inline SpectralSample SpectralFilm::sample(float u) const {
+  // In single precision (the renderer draws four per camera sample): the CDF's values need no
+  // more than float's 6e-8 against bins of at least 8e-5.
+  const float v = std::clamp(u, 0.0f, 0x1.fffffep-1f);
+  // The bin whose CDF interval holds v: the guide's, or rarely one after it.
+  int k = guide_[static_cast<int>(v * static_cast<float>(kGuide))];
+  while (k < kBins - 1 && binColour_[k + 1].cdfLow <= v) ++k;
+  const BinColour& c = binColour_[k];
+  const float t = std::clamp((v - c.cdfLow) * c.invPdf, 0.0f, 0x1.fffffep-1f);
+  SpectralSample s;
+  s.wavelengthNm = static_cast<float>(kMinNm) + static_cast<float>(k) + t;
+  s.basis = c.basisLow + t * (c.basisHigh - c.basisLow);
+  s.srgbOverPdf = (c.srgbLow + t * (c.srgbHigh - c.srgbLow)) * c.invPdf;
+  return s;
+}
 
 }  // namespace lenslab::render

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -107,6 +108,122 @@ TEST(SpectralTrace, BatchAtEachRaysWavelengthMatchesTheScalarTraceAtIt) {
       if (blue.alive[i] && red.alive[i])
         largest = std::max(largest, std::abs(double(blue.dx[i]) - red.dx[i]));
     EXPECT_GT(largest, 2e-4);
+  }
+}
+
+// The scene-to-film batch (the spectral render traces a scene ray back at a sample's other
+// wavelengths): rays aimed from in front of the lens through random points of its front
+// aperture, against the scalar double trace of the lens rebuilt at each ray's wavelength.
+TEST(SpectralTrace, SceneToFilmBatchAtEachRaysWavelengthMatchesTheScalarTraceAtIt) {
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const auto& lens : dispersiveLenses()) {
+    const std::size_t n = 12000;  // at f/8 a few percent of them pass
+    const double frontZ = lens->surfaces().front().vertexZMm;
+    const double frontRadius = lens->surfaces().front().semiApertureMm;
+    LensRayBatch batch;
+    batch.resize(n);
+    std::vector<float> wavelengths(n);
+    std::vector<LensRay> starts(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      // From 40 mm ahead of the front vertex, off axis up to 1.5 front radii, toward a point of
+      // the front aperture's disk.
+      const double a = 2.0 * std::numbers::pi * uniform(rng), r = 1.5 * frontRadius * uniform(rng);
+      const glm::dvec3 origin{r * std::cos(a), r * std::sin(a), frontZ + 40.0};
+      const double b = 2.0 * std::numbers::pi * uniform(rng);
+      const double s = frontRadius * std::sqrt(uniform(rng));
+      const glm::dvec3 target{s * std::cos(b), s * std::sin(b), frontZ};
+      starts[i] = {origin, glm::normalize(target - origin)};
+      batch.ox[i] = static_cast<float>(origin.x);
+      batch.oy[i] = static_cast<float>(origin.y);
+      batch.oz[i] = static_cast<float>(origin.z);
+      batch.dx[i] = static_cast<float>(starts[i].direction.x);
+      batch.dy[i] = static_cast<float>(starts[i].direction.y);
+      batch.dz[i] = static_cast<float>(starts[i].direction.z);
+      wavelengths[i] = static_cast<float>(380.0 + 400.0 * uniform(rng));
+    }
+    std::vector<std::optional<LensRay>> scalars(n);
+    for (std::size_t i = 0; i < n; ++i)
+      scalars[i] = lens->withWavelength(wavelengths[i])->traceFromScene(starts[i]);
+    for (auto kernel : {LensSystem::BatchKernel::Portable, LensSystem::BatchKernel::Auto}) {
+      LensRayBatch traced = batch;
+      lens->traceFromSceneBatch(traced, wavelengths.data(), kernel);
+      int agree = 0, compared = 0, disagreeOnPassing = 0;
+      double worstDirection = 0.0, worstPosition = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& scalar = scalars[i];
+        if (scalar.has_value() != (traced.alive[i] != 0)) {
+          ++disagreeOnPassing;  // grazing a rim: may pass in one precision only
+          continue;
+        }
+        if (!scalar) continue;
+        ++compared;
+        const double position =
+            glm::length(glm::dvec3(traced.ox[i], traced.oy[i], traced.oz[i]) - scalar->origin);
+        const double direction =
+            glm::length(glm::dvec3(traced.dx[i], traced.dy[i], traced.dz[i]) - scalar->direction);
+        worstPosition = std::max(worstPosition, position);
+        worstDirection = std::max(worstDirection, direction);
+        if (position < 2e-3 && direction < 2e-5) ++agree;
+      }
+      EXPECT_GT(compared, 300);
+      EXPECT_LE(disagreeOnPassing, 3) << "rays passing in one trace only";
+      EXPECT_EQ(agree, compared) << "worst position " << worstPosition << " mm, direction "
+                                 << worstDirection;
+    }
+  }
+}
+
+// What the film-to-scene batch sends out, the scene-to-film batch brings back to its film point
+// (the render's hero wavelengths rely on it to find where another wavelength lands).
+TEST(SpectralTrace, SceneToFilmBatchReversesTheFilmToSceneBatch) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const auto& lens : dispersiveLenses()) {
+    const ExitPupilTable& table = lens->spectralExitPupilTable();
+    const std::size_t n = 2000;
+    LensRayBatch batch;
+    batch.resize(n);
+    std::vector<float> wavelengths(n), filmX(n), filmY(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = table.imageCircleRadiusMm() * std::sqrt(uniform(rng));
+      const double phi = 2.0 * std::numbers::pi * uniform(rng);
+      filmX[i] = static_cast<float>(r * std::cos(phi));
+      filmY[i] = static_cast<float>(r * std::sin(phi));
+      const auto pupil = table.sample({filmX[i], filmY[i]}, {uniform(rng), uniform(rng)});
+      const glm::dvec3 to = pupil ? pupil->pointMm : glm::dvec3(0.0, 0.0, table.planeZMm());
+      const glm::dvec3 d = glm::normalize(to - glm::dvec3(filmX[i], filmY[i], 0.0));
+      batch.ox[i] = filmX[i];
+      batch.oy[i] = filmY[i];
+      batch.oz[i] = 0.0f;
+      batch.dx[i] = static_cast<float>(d.x);
+      batch.dy[i] = static_cast<float>(d.y);
+      batch.dz[i] = static_cast<float>(d.z);
+      wavelengths[i] = static_cast<float>(380.0 + 400.0 * uniform(rng));
+    }
+    lens->traceFromFilmBatch(batch, wavelengths.data());
+    LensRayBatch back = batch;
+    for (std::size_t i = 0; i < n; ++i) {  // 1 mm out along each leaving ray, and back
+      back.ox[i] += batch.dx[i];
+      back.oy[i] += batch.dy[i];
+      back.oz[i] += batch.dz[i];
+      back.dx[i] = -batch.dx[i];
+      back.dy[i] = -batch.dy[i];
+      back.dz[i] = -batch.dz[i];
+    }
+    lens->traceFromSceneBatch(back, wavelengths.data());
+    int passed = 0, returned = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!batch.alive[i]) continue;
+      ++passed;
+      if (!back.alive[i] || !(back.dz[i] < 0.0f)) continue;
+      const float t = -back.oz[i] / back.dz[i];
+      const double miss = std::hypot(back.ox[i] + t * back.dx[i] - filmX[i],
+                                     back.oy[i] + t * back.dy[i] - filmY[i]);
+      if (miss < 1e-3) ++returned;  // a micrometre: under a sixtieth of a 60 um pixel
+    }
+    EXPECT_GT(passed, 500);
+    EXPECT_GE(returned, passed - 3) << "of " << passed;
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -93,6 +94,11 @@ TEST(SpectralFilm, DensityIsNormalisedAndPositiveAndWhiteIsAPositiveSpectrum) {
     EXPECT_GT(b.x + b.y + b.z, 0.0) << nm;
   }
   EXPECT_NEAR(total, 1.0, 1e-6);
+  // Every 1 nm bin is likelier than a cell of the sampler's guide table (see kGuide).
+  double least = 1.0;
+  for (double nm = 380.5; nm < 780.0; nm += 1.0) least = std::min(least, film.pdfPerNm(nm));
+  std::printf("least likely 1 nm bin: %.3g\n", least);
+  EXPECT_GT(least, 1.0 / 16384);
   EXPECT_EQ(film.pdfPerNm(379.0), 0.0);
   EXPECT_EQ(film.pdfPerNm(781.0), 0.0);
   const SpectralSample s = film.sample(0.5f);

@@ -89,9 +89,10 @@ TEST(SpectralRender, WithoutDispersionItIsTheRgbRenderWithinNoise) {
     rgbNoise = std::sqrt(rgbNoise / n);
     spectralNoise = std::sqrt(spectralNoise / n);
     // No bias: the image means agree to within 4 standard errors of the block differences, and
-    // within 1%. Block by block the spectral picture differs from an RGB one by noise alone, but
-    // more of it: one wavelength per sample adds colour noise (measured 1.4 to 2.7 times the
-    // block noise of two RGB renders at 32 spp; bench/README.md), bounded here at 3.5 times.
+    // within 1%. Block by block the spectral picture differs from an RGB one by noise alone, and
+    // little more of it: four wavelengths per sample (the lens does not disperse: all on the
+    // same ray) leave little colour noise (measured 0.99 to 1.14 times the block noise of two
+    // RGB renders at 32 spp; one wavelength per sample measured 1.4 to 2.7), bounded at 1.3.
     // The error against the truth, spectral over RGB: |S - A|^2 = e_S^2 + e_A^2, |B - A|^2 = 2
     // e_A^2.
     const double ratio = spectralNoise / rgbNoise;
@@ -99,9 +100,78 @@ TEST(SpectralRender, WithoutDispersionItIsTheRgbRenderWithinNoise) {
                 std::sqrt(std::max(0.0, 2.0 * ratio * ratio - 1.0)));
     EXPECT_LT(std::abs(meanDiff), 4.0 * spectralNoise / std::sqrt(n)) << "channel " << c;
     EXPECT_LT(std::abs(meanDiff), 0.01 * meanA) << "channel " << c;
-    EXPECT_LT(spectralNoise, 3.5 * rgbNoise) << "channel " << c;
+    EXPECT_LT(spectralNoise, 1.3 * rgbNoise) << "channel " << c;
     EXPECT_GT(spectralNoise, 0.0);
   }
+}
+
+double rmsDifference(const RenderSnapshot& a, const RenderSnapshot& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i)
+    sum += (a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
+  return std::sqrt(sum / static_cast<double>(a.rgb.size()));
+}
+
+// Hero wavelengths (four per camera sample, RealisticCamera::heroWavelengthWeights) through the
+// bundled double-Gauss 50 mm, which carries the course table's V_d, against the simple estimator
+// of one wavelength per path:
+// - no bias: at 256 samples per pixel the two converge to the same picture, 8 x 8 block by
+//   block, within their noise (and the hero estimator sends other wavelengths to other pixels
+//   wherever the lens's colour moves them, which this checks too: a wrong pixel or weight
+//   shifts or dims the blocks);
+// - less colour noise: at 16 samples per pixel, the error against the converged picture is
+//   under 0.6 of one wavelength per path's (measured 0.42), and at most 1.6 times the RGB
+//   render's against its own converged picture (measured 1.46; issue 23 asks for 1.5 on its
+//   benchmark, bench/spectral-error.sh).
+TEST(SpectralRender, HeroWavelengthsAreUnbiasedAndCutTheColourNoise) {
+  const auto scene = std::filesystem::path(LENSLAB_SOURCE_DIR) / "scenes" / "default.pbrt";
+  CameraOverrides overrides;
+  overrides.lensPath = lensPath("dgauss-50mm.dat");
+  overrides.width = 120;
+  overrides.height = 80;
+  overrides.falloff.spectral = SpectralMode::On;
+  auto render = [&](SpectralMode mode, int spp, int wavelengths, std::uint32_t seed) {
+    overrides.falloff.spectral = mode;
+    RenderJob job = loadJob(scene, spp, overrides);
+    EXPECT_TRUE(job.camera && job.scene);
+    job.settings.wavelengthsPerSample = wavelengths;
+    job.settings.seed = seed;
+    return renderToCompletion(job);
+  };
+  const auto heroReference = render(SpectralMode::On, 256, 4, 7);
+  const auto singleReference = render(SpectralMode::On, 256, 1, 8);
+  ASSERT_TRUE(heroReference && singleReference);
+  for (int c = 0; c < 3; ++c) {
+    const auto a = blockMeans(*heroReference, 8, c), b = blockMeans(*singleReference, 8, c);
+    // The single-wavelength picture's block noise dominates; its size from the blocks' spread
+    // about the hero picture (a bias would add to it, and the check below catches that).
+    double meanA = 0, meanDiff = 0, spread = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      meanA += a[k];
+      meanDiff += b[k] - a[k];
+      spread += (b[k] - a[k]) * (b[k] - a[k]);
+    }
+    const double n = static_cast<double>(a.size());
+    meanA /= n;
+    meanDiff /= n;
+    spread = std::sqrt(spread / n);
+    std::printf("channel %d: image mean %.5f, hero - single %.6f, block spread %.6f\n", c, meanA,
+                meanDiff, spread);
+    EXPECT_LT(std::abs(meanDiff), 4.0 * spread / std::sqrt(n)) << "channel " << c;
+    EXPECT_LT(std::abs(meanDiff), 0.005 * meanA) << "channel " << c;
+  }
+  const auto hero = render(SpectralMode::On, 16, 4, 1);
+  const auto single = render(SpectralMode::On, 16, 1, 1);
+  const auto rgb = render(SpectralMode::Off, 16, 4, 1);
+  const auto rgbReference = render(SpectralMode::Off, 256, 4, 7);
+  ASSERT_TRUE(hero && single && rgb && rgbReference);
+  const double heroError = rmsDifference(*hero, *heroReference);
+  const double singleError = rmsDifference(*single, *heroReference);
+  const double rgbError = rmsDifference(*rgb, *rgbReference);
+  std::printf("RMS error at 16 spp: hero %.5f, one wavelength %.5f, RGB %.5f\n", heroError,
+              singleError, rgbError);
+  EXPECT_LT(heroError, 0.6 * singleError);
+  EXPECT_LT(heroError, 1.6 * rgbError);
 }
 
 // Where the light of the dot lands on the film at one wavelength: the mean of the real rays from
