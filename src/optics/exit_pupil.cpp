@@ -486,6 +486,30 @@ double ExitPupilTable::pdfInPassRegion(double r) const {
   return (1.0 - l.f) * bins_[l.j].invAreaPerMm2 + l.f * bins_[l.j + 1].invAreaPerMm2;
 }
 
+void ExitPupilTable::pdfInPassRegion(const float* filmRadiusMm, float* pdfPerMm2,
+                                     std::size_t n) const {
+  if (bins_.empty()) {
+    for (std::size_t i = 0; i < n; ++i) pdfPerMm2[i] = static_cast<float>(pdfInPassRegion(0.0));
+    return;
+  }
+  // As lookup() and the scalar form, without branches.
+  const auto fallback = static_cast<float>(1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_));
+  const auto rMax = static_cast<float>(filmRadiusMaxMm_);
+  const auto invRMax = static_cast<float>(invFilmRadiusMaxMm_);
+  const auto scale = static_cast<float>(binScale_);
+  const int lastPair = static_cast<int>(samplingBins_.size()) - 2;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float r = filmRadiusMm[i];
+    const float x = r * invRMax;
+    const float t = 0.5f * (x + x * x) * scale;
+    const int j = std::clamp(static_cast<int>(t), 0, lastPair);
+    const float f = std::clamp(t - static_cast<float>(j), 0.0f, 1.0f);
+    const float inside =
+        (1.0f - f) * samplingBins_[j].invAreaPerMm2 + f * samplingBins_[j + 1].invAreaPerMm2;
+    pdfPerMm2[i] = r > rMax ? fallback : inside;
+  }
+}
+
 // The sampling routine shared by sample() and sampleRays(); false when there is no sample.
 inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, double u1,
                                          double& pointX, double& pointY, double& pdf) const {

@@ -70,6 +70,8 @@ class ExitPupilTable {
   // needed (multiple importance sampling between the spectral render's wavelengths; 0 where no
   // sample is drawn).
   double pdfInPassRegion(double filmRadiusMm) const;
+  // The same for n film radii at once, in single precision (pdfPerMm2 may be filmRadiusMm).
+  void pdfInPassRegion(const float* filmRadiusMm, float* pdfPerMm2, std::size_t n) const;
 
   // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
   // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture;

@@ -255,7 +255,6 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   thread_local optics::LensRayBatch back;
   thread_local std::vector<float> backNm;
   thread_local std::vector<std::uint32_t> backOf;  // back rays of sample i start at backOf[i]
-  thread_local std::vector<double> scratchDensity, scratchCosine;  // of a sample's others
   // Each passing hero ray (only those: the rear-disk sampling of the course scenes blocks many),
   // from 1 mm out along it (clear of the front surface it left; the batch trace takes the
   // nearest hit ahead), back into the lens at each other wavelength.
@@ -286,7 +285,6 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   lens_->traceFromSceneBatch(back, backNm.data());
 
   const bool exitPupil = sampling_ == LensSampling::ExitPupil;
-  const optics::ExitPupilTable* table = exitPupil ? &lens_->spectralExitPupilTable() : nullptr;
   const auto planeZ = static_cast<float>(lens_->rearVertexZ());
   const float planeZSquared = planeZ * planeZ;
   const auto diskRadiusSq =
@@ -298,10 +296,50 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   const auto rasterPerMmX = static_cast<float>(1.0 / mmPerRasterX_);
   const auto rasterPerMmY = static_cast<float>(1.0 / mmPerRasterY_);
   const auto widthF = static_cast<float>(width_), heightF = static_cast<float>(height_);
+
+  // Each back ray, without branches: where it meets the film (pixel -1 off it), its cos^4, and
+  // its density p_k (0 when it does not reach the film).
+  thread_local std::vector<float> backDensity, backCos4, planePdf;
+  thread_local std::vector<std::int32_t> backPixel;
+  backDensity.resize(backCount);
+  backCos4.resize(backCount);
+  planePdf.resize(backCount);
+  backPixel.resize(backCount);
+  for (std::size_t b = 0; b < backCount; ++b) {
+    const float dz = back.dz[b];
+    const bool towardFilm = back.alive[b] && dz < 0.0f;
+    const float safeDz = towardFilm ? dz : -1.0f;
+    const float toFilm = -back.oz[b] / safeDz;
+    const float filmX = back.ox[b] + toFilm * back.dx[b];
+    const float filmY = back.oy[b] + toFilm * back.dy[b];
+    const float rasterX = (halfWidthMm - filmX) * rasterPerMmX;
+    const float rasterY = (filmY + halfHeightMm) * rasterPerMmY;
+    const bool onFilm =
+        towardFilm && rasterX >= 0.0f && rasterX < widthF && rasterY >= 0.0f && rasterY < heightF;
+    backPixel[b] = onFilm ? static_cast<int>(rasterY) * width_ + static_cast<int>(rasterX) : -1;
+    // Directions stay unit length through the trace: -dz is the cosine to the axis.
+    const float cos2 = dz * dz;
+    backCos4[b] = cos2 * cos2;
+    backDensity[b] = onFilm ? planeZSquared / (cos2 * cos2) : 0.0f;
+    if (exitPupil) {
+      planePdf[b] = std::sqrt(filmX * filmX + filmY * filmY);  // the film radius, for now
+    } else {
+      const float toPlane = (planeZ - back.oz[b]) / safeDz;
+      const float qx = back.ox[b] + toPlane * back.dx[b];
+      const float qy = back.oy[b] + toPlane * back.dy[b];
+      planePdf[b] = qx * qx + qy * qy <= diskRadiusSq ? diskPdf : 0.0f;
+    }
+  }
+  if (exitPupil)
+    lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), planePdf.data(), backCount);
+  for (std::size_t b = 0; b < backCount; ++b) {
+    backDensity[b] *= planePdf[b];
+    if (!(backDensity[b] > 0.0f)) backPixel[b] = -1;
+  }
+
+  // The balance heuristic per sample. c_j: 1 with Kolb's cos^4; the teaching toggle measures
+  // the radiance without it, c_j = 1 / cos^4 of the wavelength's own film ray.
   float* weights = wavelengths.weights;
-  std::vector<double>&density = scratchDensity, &cosine = scratchCosine;
-  density.resize(others);
-  cosine.resize(others);
   for (std::size_t i = 0; i < count; ++i) {
     float* out = weights + i * k;
     std::int32_t* pixelOut = wavelengths.pixels + i * k;
@@ -310,45 +348,17 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
       std::fill(pixelOut, pixelOut + k, -1);
       continue;
     }
-    pixelOut[0] = pixelIndex(rasterPoints[i]);
+    const std::size_t first = backOf[i];
     double total = heroDensity[i];
-    for (std::size_t j = 0; j < others; ++j) {
-      const std::size_t b = backOf[i] + j;
-      density[j] = 0.0;
-      pixelOut[1 + j] = -1;
-      // Directions stay unit length through the trace: -dz is the cosine to the axis.
-      const float dz = back.dz[b];
-      if (!back.alive[b] || !(dz < 0.0f)) continue;
-      const float toFilm = -back.oz[b] / dz;
-      const float filmX = back.ox[b] + toFilm * back.dx[b];
-      const float filmY = back.oy[b] + toFilm * back.dy[b];
-      const float rasterX = (halfWidthMm - filmX) * rasterPerMmX;
-      const float rasterY = (filmY + halfHeightMm) * rasterPerMmY;
-      if (!(rasterX >= 0.0f && rasterX < widthF && rasterY >= 0.0f && rasterY < heightF))
-        continue;  // off the film
-      float planePdf = 0.0f;
-      if (exitPupil) {
-        planePdf = static_cast<float>(table->pdfInPassRegion(std::hypot(filmX, filmY)));
-      } else {
-        const float toPlane = (planeZ - back.oz[b]) / dz;
-        const float qx = back.ox[b] + toPlane * back.dx[b];
-        const float qy = back.oy[b] + toPlane * back.dy[b];
-        planePdf = qx * qx + qy * qy <= diskRadiusSq ? diskPdf : 0.0f;
-      }
-      if (!(planePdf > 0.0f)) continue;
-      const double cos2 = static_cast<double>(dz) * dz;
-      cosine[j] = cos2 * cos2;
-      density[j] = planePdf * planeZSquared / cosine[j];
-      total += density[j];
-      pixelOut[1 + j] = pixelIndex(glm::vec2(rasterX, rasterY));
-    }
-    // c_j: 1 with Kolb's cos^4; the teaching toggle measures the radiance without it, c_j =
-    // 1 / cos^4 of the wavelength's own film ray.
+    for (std::size_t j = 0; j < others; ++j) total += backDensity[first + j];
     const double invTotal = 1.0 / total;
     out[0] = static_cast<float>(cos4Weighting_ ? invTotal : invTotal / heroCos4[i]);
+    pixelOut[0] = pixelIndex(rasterPoints[i]);
     for (std::size_t j = 0; j < others; ++j) {
-      const double c = cos4Weighting_ ? 1.0 : 1.0 / cosine[j];
-      out[1 + j] = density[j] > 0.0 ? static_cast<float>(c * invTotal) : 0.0f;
+      const std::size_t b = first + j;
+      const double c = cos4Weighting_ ? 1.0 : 1.0 / backCos4[b];
+      out[1 + j] = backPixel[b] >= 0 ? static_cast<float>(c * invTotal) : 0.0f;
+      pixelOut[1 + j] = backPixel[b];
     }
   }
 }

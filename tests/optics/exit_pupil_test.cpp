@@ -385,6 +385,15 @@ TEST(ExitPupil, DensityInThePassRegionIsThePdfAtEveryPassingPoint) {
       ASSERT_NEAR(table.pdfInPassRegion(r), pdf, 1e-9 * pdf) << "film radius " << r;
     }
     EXPECT_GT(checked, 1000);
+    // The batch form in single precision, at radii across the table and beyond it.
+    std::vector<float> radii(500), batch(500);
+    for (std::size_t i = 0; i < radii.size(); ++i)
+      radii[i] = static_cast<float>(1.2 * table.filmRadiusMaxMm() * i / radii.size());
+    table.pdfInPassRegion(radii.data(), batch.data(), radii.size());
+    for (std::size_t i = 0; i < radii.size(); ++i) {
+      const double expected = table.pdfInPassRegion(radii[i]);
+      EXPECT_NEAR(batch[i], expected, 1e-4 * expected + 1e-12) << "film radius " << radii[i];
+    }
   }
 }
 
