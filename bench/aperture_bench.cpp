@@ -5,7 +5,8 @@
 // a "vignetted" verdict: sampleCameraRays then traceFromFilmBatch, 4096 rays per batch, as the
 // renderer does. items_per_second is camera rays per second; kept_fraction the share that leaves
 // the lens. Shapes: 0 circle, 1 six straight blades, 2 six blades of curvature 0.5, 3 an image
-// mask (pbrt-v4's star rasterized at 256 x 256), 4 nine blades.
+// mask (pbrt-v4's star rasterized at 256 x 256), 4 nine blades, 5 pbrt-v4's gaussian (a 1024 x
+// 1024 halftone mask), 6 three straight blades.
 // BM_AperturePass/<shape>: the viewer's 1-spp preview pass of the default scene (488 x 325, all
 // threads), wall time: the render cost as the viewer sees it.
 // BM_ApertureFirstPass/<shape>: edit to first pass (a new film distance, so a new LensSystem and
@@ -36,15 +37,15 @@ namespace render = lenslab::render;
 
 ApertureShape shapeNumber(std::int64_t which) {
   ApertureShape shape;
-  if (which == 1 || which == 2 || which == 4) {
+  if (which == 1 || which == 2 || which == 4 || which == 6) {
     shape.kind = ApertureShape::Kind::Blades;
-    shape.bladeCount = which == 4 ? 9 : 6;
+    shape.bladeCount = which == 4 ? 9 : which == 6 ? 3 : 6;
     shape.curvature = which == 2 ? 0.5 : 0.0;
     shape.rotationDeg = 10.0;
   }
-  if (which == 3) {
+  if (which == 3 || which == 5) {
     std::string note;
-    shape = *lenslab::optics::builtinPbrtAperture("star", &note);
+    shape = *lenslab::optics::builtinPbrtAperture(which == 3 ? "star" : "gaussian", &note);
   }
   return shape;
 }
@@ -87,7 +88,7 @@ void BM_ApertureRays(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<int64_t>(total));
   state.counters["kept_fraction"] = total ? static_cast<double>(kept) / total : 0.0;
 }
-BENCHMARK(BM_ApertureRays)->DenseRange(0, 4)->ArgName("shape");
+BENCHMARK(BM_ApertureRays)->DenseRange(0, 6)->ArgName("shape");
 
 render::RenderJob passJob(const DefaultScene& loaded, std::shared_ptr<const LensSystem> lens,
                           int coarseDivisor) {
@@ -106,7 +107,7 @@ void BM_AperturePass(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AperturePass)
-    ->DenseRange(0, 3)
+    ->DenseRange(0, 6)
     ->ArgName("shape")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();

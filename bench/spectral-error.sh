@@ -4,8 +4,9 @@
 #
 #   bench/spectral-error.sh [BUILD_DIR] [SPP] [REFERENCE_SPP] [WIDTHxHEIGHT]
 #
-# Renders scenes/default.pbrt through the flint landscape lens (V_d 23.78: dispersive) and through
-# the double-Gauss 50 mm (no V_d), each in RGB (--spectral off) and spectrally (--spectral on), at
+# Renders scenes/default.pbrt through the flint landscape lens (V_d 23.78: an uncorrected singlet),
+# the double-Gauss 50 mm and the Cooke triplet 100 mm (both with the V_d of their sources), each in
+# RGB (--spectral off) and spectrally (--spectral on), at
 # SPP (default 16) with seed 1 and at REFERENCE_SPP (default 1024) with seed 7, and prints the
 # RMS error of each test image against the reference of its own mode (linear RGB, all pixels and
 # channels, PFM), and the ratio spectral / RGB. The references' own noise adds 1/64 of a test
@@ -26,7 +27,7 @@ render() {  # name lens mode spp seed
     --spp "$4" --seed "$5" --resolution "$size" --quiet --out "$out/$1.pfm" >/dev/null
 }
 
-for lens in flint-landscape-50mm.dat dgauss-50mm.dat; do
+for lens in flint-landscape-50mm.dat dgauss-50mm.dat cooke-triplet-100mm.dat; do
   for mode in off on; do
     render "ref-$mode" "$lens" "$mode" "$refspp" 7
     render "test-$mode" "$lens" "$mode" "$spp" 1

@@ -15,19 +15,21 @@
 //   from (integral of cmf s = G G^-1 XYZ), so the film sees every RGB of the scene as it is: a lens
 //   that does not disperse renders today's RGB picture in expectation. White's spectrum is smooth
 //   and positive across 380-780 nm. (The scene is RGB and has no dispersive material: the spectrum
-//   is needed only at the camera sample's one wavelength, and never stored.)
-// - One wavelength per camera sample, from the density p(lambda) below, stratified across a
-//   pixel's samples by the renderer (spectralSample01 in sampler.h: jointly with the lens point).
-//   Its linear sRGB is T(lambda) L_rgb with
+//   is needed only at a camera sample's wavelengths, and never stored.)
+// - Wavelengths from the density p(lambda) below: a camera sample's first at a u stratified
+//   across a pixel's samples by the renderer (spectralSample01 in sampler.h: jointly with the
+//   lens point), its others at u + j / K (mod 1), each then distributed as the first (hero
+//   wavelengths: Camera's SampleWavelengths and RealisticCamera::heroWavelengthWeights).
+//   Wavelength lambda's linear sRGB is T(lambda) L_rgb with
 //     T(lambda) = srgbOfLine(lambda) basis(lambda)^T / p(lambda)
 //   (basis: the spectrum's value per unit of each input channel). E[T] = I exactly (see above):
 //   a ray that does not depend on lambda gives its RGB in expectation.
 // - p(lambda) is proportional to |s_white(lambda)| |srgbOfLine(lambda)| (piecewise constant per
 //   nanometre, with a floor of 1% of its peak so that no weight is unbounded): the density that
-//   minimises the summed variance of the three channels for a white scene. For a pixel whose
-//   samples see different radiance, one wavelength per sample still costs colour noise: the
-//   second moment of a channel's weight is about 3 to 4.7 times its square mean (see
-//   bench/README.md, where the render's error against a converged reference is measured).
+//   minimises the summed variance of the three channels for a white scene. One wavelength alone
+//   still costs colour noise: the second moment of a channel's weight is about 3 to 4.7 times
+//   its square mean, which is why a sample carries four (see bench/README.md, where the render's
+//   error against a converged reference is measured).
 //
 // The range is LensSystem::kSpectralMinNm..kSpectralMaxNm (380-780 nm).
 

@@ -265,5 +265,38 @@ TEST(ApertureRender, BokehShowsTheBladesOnAxisAndACatsEyeInTheCorner) {
       << "the narrow direction points at the image centre";
 }
 
+// The bundled bokeh scene (scenes/bokeh.pbrt): it reads without a warning, its lights sit far out
+// of focus behind a subject at 0.45 m, and the light on the axis comes out as pbrt-v4's pentagon:
+// the fifth harmonic of its boundary stands out, as the sixth does for six blades above.
+TEST(ApertureRender, TheBundledBokehSceneShowsAPentagonOnTheAxis) {
+  const auto scene = std::filesystem::path(LENSLAB_SOURCE_DIR) / "scenes" / "bokeh.pbrt";
+  const ParseResult parsed = parsePbrtFile(scene);
+  ASSERT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
+  EXPECT_TRUE(parsed.diagnostics.empty()) << parsed.diagnostics.formatAll();
+  CameraOverrides overrides;
+  overrides.width = 300;
+  overrides.height = 200;
+  overrides.falloff.spectral = SpectralMode::Off;  // the shape, without colour noise
+  RenderJob job = loadJob(scene, 256, overrides);
+  ASSERT_TRUE(job.camera && job.scene);
+  const auto image = renderToCompletion(job);
+  ASSERT_TRUE(image);
+  const Blob centre = measureBlob(*image, 150.0, 100.0, 24, 40);
+  ASSERT_GT(centre.total, 0.0);
+  EXPECT_NEAR(centre.cx, 150.0, 2.0);
+  EXPECT_NEAR(centre.cy, 100.0, 2.0);
+  const double h5 = harmonic(centre.radiusByWedge, 5);
+  std::printf("bundled bokeh scene, light on the axis: harmonics 2..10:");
+  for (int k = 2; k <= 10; ++k) std::printf(" %.4f", harmonic(centre.radiusByWedge, k));
+  std::printf("\n");
+  for (int k : {2, 3, 4, 6, 7, 8, 9})
+    EXPECT_GT(h5, 2.0 * harmonic(centre.radiusByWedge, k)) << "harmonic " << k;
+  EXPECT_GT(h5, 0.02);
+  // Far out of focus: the disc's mean radius is many pixels.
+  double meanRadius = 0.0;
+  for (double r : centre.radiusByWedge) meanRadius += r / centre.radiusByWedge.size();
+  EXPECT_GT(meanRadius, 8.0);
+}
+
 }  // namespace
 }  // namespace lenslab::render

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <mutex>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -172,6 +173,44 @@ TEST(SpectralRender, HeroWavelengthsAreUnbiasedAndCutTheColourNoise) {
               singleError, rgbError);
   EXPECT_LT(heroError, 0.6 * singleError);
   EXPECT_LT(heroError, 1.6 * rgbError);
+}
+
+// The viewer's coarse first look of a spectral render through a lens that disperses: one sample
+// per 4 x 4 block, whose other wavelengths land in the block's other pixels (or beyond). The look
+// sums each block, so it is as bright as the first full pass (within its noise); a look of the
+// centre pixels alone would lose the light those wavelengths carry away (most of three quarters,
+// through the flint singlet).
+TEST(SpectralRender, TheCoarseLookKeepsTheLightOtherWavelengthsCarryToOtherPixels) {
+  const auto scene = std::filesystem::path(LENSLAB_SOURCE_DIR) / "scenes" / "default.pbrt";
+  CameraOverrides overrides;
+  overrides.lensPath = lensPath("flint-landscape-50mm.dat");
+  overrides.width = 240;
+  overrides.height = 160;
+  RenderJob job = loadJob(scene, 1, overrides);
+  ASSERT_TRUE(job.camera && job.scene);
+  ASSERT_TRUE(job.camera->spectral());
+  job.settings.coarseDivisor = 4;
+  ProgressiveRenderer renderer;
+  std::mutex mutex;
+  std::vector<std::shared_ptr<const RenderSnapshot>> seen;
+  renderer.setPublishListener([&] {
+    std::lock_guard lock(mutex);
+    seen.push_back(renderer.snapshot());
+  });
+  const std::uint64_t generation = renderer.start(job);
+  ASSERT_TRUE(renderer.waitForCompletion(generation, 60.0));
+  renderer.setPublishListener({});
+  std::lock_guard lock(mutex);
+  ASSERT_EQ(seen.size(), 2u);
+  ASSERT_TRUE(seen[0]->coarse);
+  auto mean = [](const RenderSnapshot& image) {
+    double sum = 0.0;
+    for (float v : image.rgb) sum += v;
+    return sum / static_cast<double>(image.rgb.size());
+  };
+  const double coarse = mean(*seen[0]), full = mean(*seen[1]);
+  std::printf("coarse look mean %.5f, first pass mean %.5f\n", coarse, full);
+  EXPECT_NEAR(coarse, full, 0.1 * full);
 }
 
 // Where the light of the dot lands on the film at one wavelength: the mean of the real rays from
