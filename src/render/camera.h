@@ -57,6 +57,10 @@ class Camera {
   // worker waits for it inside a wave. Renderers call it on their own thread before the first
   // wave; a viewer need not, and its UI thread should not. Idempotent and thread-safe.
   virtual void prepare() const {}
+  // Lens points the renderer traces per pixel sample, each counted 1/n: more than one when most
+  // of the points the camera aims at are blocked (a stop shape much smaller than the circle its
+  // sampling covers), so that a pixel sample still brings about one ray into the scene.
+  virtual int lensPointsPerSample() const { return 1; }
   // A spectral camera wants a wavelength with each sample (render/spectral_film.h): the renderer
   // then draws them and turns each sample's RGB radiance into its wavelength's colour.
   virtual bool spectral() const { return false; }

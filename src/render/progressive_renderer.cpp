@@ -4,6 +4,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -161,7 +163,39 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       if (camera.maySeeScene(glm::vec2(x, y), glm::vec2(x + 1, y + 1))) visible.push_back({x, y});
     }
   }
-  statistics.cameraSamples += (wavePixels - visible.size()) * samplesPerPixel;
+  const std::size_t points =
+      static_cast<std::size_t>(std::clamp(camera.lensPointsPerSample(), 1, 8));
+  statistics.cameraSamples += (wavePixels - visible.size()) * samplesPerPixel * points;
+  // Copies sample i (0 <= i < n) to rays i * points + t, t < points, in place, its lens point
+  // shifted by t R2 steps (see the batch loop).
+  auto spreadLensPoints = [&](std::size_t n, std::size_t points, std::size_t k, bool colour) {
+    constexpr float kR2X = 0.7548776662f, kR2Y = 0.5698402910f;  // 1/g, 1/g^2; g^3 = g + 1
+    rasterPoints.resize(n * points);
+    lensSamples.resize(n * points);
+    rays.resize(n * points);
+    passed.resize(n * points);
+    if (colour) {
+      spectralSamples.resize(n * points * k);
+      wavelengths.resize(n * points * k);
+      wavelengthWeights.resize(n * points * k);
+      wavelengthPixels.resize(n * points * k);
+    }
+    for (std::size_t i = n; i-- > 0;) {  // from the last, so that no sample is overwritten unread
+      for (std::size_t t = points; t-- > 0;) {
+        const std::size_t r = i * points + t;
+        rasterPoints[r] = rasterPoints[i];
+        glm::vec2 u = lensSamples[i] + static_cast<float>(t) * glm::vec2(kR2X, kR2Y);
+        u -= glm::floor(u);
+        lensSamples[r] = u;
+        if (colour) {
+          for (std::size_t j = 0; j < k; ++j) {
+            spectralSamples[r * k + j] = spectralSamples[i * k + j];
+            wavelengths[r * k + j] = wavelengths[i * k + j];
+          }
+        }
+      }
+    }
+  };
   const int visibleCount = static_cast<int>(visible.size());
   for (int first = 0; first < visibleCount; first += pixelsPerBatch) {
     if (cancelled()) return false;
@@ -223,32 +257,43 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
           }
         }
       }
+    }
+    // A camera that wants several lens points per sample (Camera::lensPointsPerSample): ray
+    // r = i * points + t is sample i's t-th, at its film point and wavelengths, its lens point
+    // shifted by t times the R2 sequence's step (Roberts 2018) modulo 1, so that each of them
+    // is as stratified over the pixel's samples as the first.
+    if (points > 1) spreadLensPoints(n, points, perSample, spectral);
+    const std::size_t m = n * points;
+    const float pointShare = 1.0f / static_cast<float>(points);
+    if (spectral) {
       sampleWavelengths = {static_cast<int>(perSample), wavelengths.data(),
                            wavelengthWeights.data(), wavelengthPixels.data()};
     }
-    camera.generateRays(n, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
+    camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
-    statistics.cameraSamples += n;
+    statistics.cameraSamples += m;
     for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
       const auto ownPixel =
           static_cast<std::int32_t>(visible[first + p].y * width + visible[first + p].x);
-      for (std::size_t i = p * samplesPerPixel; i < (p + 1) * samplesPerPixel; ++i) {
+      for (std::size_t r = p * samplesPerPixel * points; r < (p + 1) * samplesPerPixel * points;
+           ++r) {
         // Look for a newer job every few samples too, not only between batches.
-        if ((i & 63u) == 63u && cancelled()) return false;
-        if (!passed[i]) continue;
+        if ((r & 63u) == 63u && cancelled()) return false;
+        if (!passed[r]) continue;
         ++statistics.lensPassed;
-        const CameraRay& ray = rays[i];
-        const glm::vec3 incoming =
-            incomingRadiance(*job.scene, ray.origin, ray.direction, samplers[i], wave.integrator);
+        const CameraRay& ray = rays[r];
+        const glm::vec3 incoming = incomingRadiance(*job.scene, ray.origin, ray.direction,
+                                                    samplers[r / points], wave.integrator);
         glm::vec3 radiance(0.0f);
         if (spectral) {
           // The scene is RGB: its radiance at each of the sample's wavelengths, with the weight
           // the camera gave that wavelength, in the pixel that wavelength reaches.
           bool finite = true;
-          for (std::size_t j = i * perSample; j < (i + 1) * perSample; ++j) {
+          for (std::size_t j = r * perSample; j < (r + 1) * perSample; ++j) {
             if (wavelengthWeights[j] == 0.0f) continue;
-            const glm::vec3 colour = wavelengthWeights[j] * spectralSamples[j].toRgb(incoming);
+            const glm::vec3 colour =
+                pointShare * wavelengthWeights[j] * spectralSamples[j].toRgb(incoming);
             const std::int32_t target = wavelengthPixels[j];
             if (target == ownPixel) {
               radiance += colour;
@@ -269,7 +314,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
           if (pendingSplats.size() >= kSplatBatch) splats.add(pendingSplats);
           if (!finite) ++statistics.discardedSamples;
         } else {
-          radiance = ray.weight * incoming;
+          radiance = pointShare * ray.weight * incoming;
         }
         if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
             !std::isfinite(radiance.z)) {

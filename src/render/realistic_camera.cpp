@@ -39,6 +39,9 @@ RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
   mmPerRasterX_ = filmWidthMm_ / width;
   mmPerRasterY_ = filmHeightMm_ / height;
+  const double openFraction = lens_->stopShape().areaFactor() / 3.14159265358979323846;
+  if (openFraction > 0.0 && openFraction < 0.5)
+    lensPointsPerSample_ = std::clamp(static_cast<int>(std::lround(1.0 / openFraction)), 1, 4);
 }
 
 float RealisticCamera::pixelSpreadRadians() const {

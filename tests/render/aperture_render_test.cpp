@@ -167,6 +167,57 @@ Blob measureBlob(const RenderSnapshot& image, double fromX, double fromY, double
 }
 
 // Magnitude of the k-th angular harmonic of the boundary radius, over its mean.
+// A shape that lets through under half of the circle the exit-pupil table covers gets several
+// lens points per pixel sample (RealisticCamera::lensPointsPerSample), each counted 1/n: three
+// blades (41% of the circle) 2, pbrt's gaussian (26%) 4. A sample then still brings about one
+// ray into the scene (measured below: rays that left the lens per pixel sample), and the picture
+// keeps the shape's brightness (the triangle's area against the circle's, as the square's
+// above; the gaussian's in the test above goes through the same path).
+TEST(ApertureRender, AShapeMuchSmallerThanItsCircleTakesSeveralLensPointsPerSample) {
+  const auto directory = lenslab::testing::makeTestDirectory("aperture-points");
+  auto furnace = [&](const std::string& lensText, const std::string& aperture) {
+    writeFile(directory / "dgauss.dat", lensText);
+    const auto path =
+        writeFile(directory / "furnace.pbrt",
+                  realisticCamera(6.0, 3.0, aperture) +
+                      "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
+                      "\"float diagonal\" [10]\nIntegrator \"path\"\n" +
+                      furnaceWorld(1.0));
+    RenderJob job = loadJob(path, 256);
+    EXPECT_TRUE(job.camera && job.scene);
+    const int points = job.camera ? job.camera->lensPointsPerSample() : 0;
+    auto image = job.camera ? renderToCompletion(job) : nullptr;
+    return std::make_pair(points, image);
+  };
+  const auto [circlePoints, circle] = furnace(render::testing::kDoubleGauss50, "");
+  const auto [trianglePoints, triangle] = furnace(
+      std::string("# lenslab aperture: blades 3 rotation 0\n") + render::testing::kDoubleGauss50,
+      "");
+  const auto [gaussianPoints, gaussian] = furnace(render::testing::kDoubleGauss50, "gaussian");
+  ASSERT_TRUE(circle && triangle && gaussian);
+  EXPECT_EQ(circlePoints, 1);
+  EXPECT_EQ(trianglePoints, 2);
+  EXPECT_EQ(gaussianPoints, 4);
+  auto raysPerSample = [](const RenderSnapshot& image) {
+    return static_cast<double>(image.statistics.lensPassed) /
+           (static_cast<double>(image.width) * image.height * image.samplesPerPixel);
+  };
+  auto centralMean = [](const RenderSnapshot& image) {
+    double sum = 0.0;
+    for (int y = 5; y < 11; ++y)
+      for (int x = 5; x < 11; ++x) sum += image.rgb[3 * static_cast<std::size_t>(y * 16 + x)];
+    return sum / 36.0;
+  };
+  std::printf("rays into the scene per pixel sample: circle %.3f, triangle %.3f, gaussian %.3f\n",
+              raysPerSample(*circle), raysPerSample(*triangle), raysPerSample(*gaussian));
+  EXPECT_GT(raysPerSample(*triangle), 0.75);
+  EXPECT_GT(raysPerSample(*gaussian), 0.9);
+  const double ratio = centralMean(*triangle) / centralMean(*circle);
+  std::printf("uniform sky, centre: triangle / circle %.4f (3 sqrt 3 / (4 pi) %.4f)\n", ratio,
+              3.0 * std::sqrt(3.0) / (4.0 * kPi));
+  EXPECT_NEAR(ratio, 3.0 * std::sqrt(3.0) / (4.0 * kPi), 0.015);
+}
+
 double harmonic(const std::vector<double>& r, int k) {
   std::complex<double> sum = 0.0;
   double mean = 0.0;
