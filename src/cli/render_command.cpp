@@ -196,7 +196,10 @@ int runRenderCommand(const RenderArguments& arguments) {
     stats["spp"] = snapshot->samplesPerPixel;
     stats["width"] = snapshot->width;
     stats["height"] = snapshot->height;
+    // Rays asked of the camera: spp x pixels x lens points per sample (more than one for a stop
+    // shape much smaller than its circle, Camera::lensPointsPerSample).
     stats["camera_samples"] = statistics.cameraSamples;
+    stats["lens_points_per_sample"] = camera->lensPointsPerSample();
     stats["lens_pass_fraction"] =
         statistics.cameraSamples > 0
             ? static_cast<double>(statistics.lensPassed) / statistics.cameraSamples

@@ -25,8 +25,9 @@ struct SurfaceF {
   bool refracts, flat;
   // The stop's shape when it is not a circle (the hit is then also tested against it), else null.
   const StopShapeTest* shape = nullptr;
-  // Per-ray indices (the spectral trace): n = a + b / lambda^2 on each side (glass.h), the ray
-  // going from the rear medium into the front one. `disperses` when either side has b != 0.
+  // Per-ray indices (the spectral trace): n = a + b / lambda^2 on each side (glass.h). "Rear"
+  // is the medium the ray comes from and "front" the one it enters (so for a trace from the
+  // scene, the surface's front and rear media swapped). `disperses` when either has b != 0.
   float aRear = 1.0f, bRear = 0.0f, aFront = 1.0f, bFront = 0.0f;
   bool disperses = false;
 };

@@ -501,7 +501,9 @@ void ExitPupilTable::pdfInPassRegion(const float* filmRadiusMm, float* pdfPerMm2
   for (std::size_t i = 0; i < n; ++i) {
     const float r = filmRadiusMm[i];
     const float x = r * invRMax;
-    const float t = 0.5f * (x + x * x) * scale;
+    // (Clamped before the conversion: a radius beyond the table, answered below, must not
+    // overflow it.)
+    const float t = std::clamp(0.5f * (x + x * x) * scale, 0.0f, scale);
     const int j = std::clamp(static_cast<int>(t), 0, lastPair);
     const float f = std::clamp(t - static_cast<float>(j), 0.0f, 1.0f);
     const float inside =

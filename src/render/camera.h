@@ -24,8 +24,9 @@ struct CameraRay {
 // counted at every wavelength of the sample, each with the exposure weight the camera writes to
 // weights[i * perSample + j], in the raster pixel pixels[i * perSample + j] (y * width + x):
 // through a lens that disperses, the same scene ray meets the film elsewhere at another
-// wavelength. A weight of 0 (pixel -1) where that wavelength's ray does not reach the film. The
-// weights replace CameraRay::weight for a spectral sample.
+// wavelength. A weight of 0 where that wavelength's ray does not reach the film (or the sample
+// is blocked; the pixel is then -1, or the sample's own). The weights replace CameraRay::weight
+// for a spectral sample.
 struct SampleWavelengths {
   int perSample = 1;
   const float* nm = nullptr;

@@ -285,21 +285,31 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         const CameraRay& ray = rays[r];
         const glm::vec3 incoming = incomingRadiance(*job.scene, ray.origin, ray.direction,
                                                     samplers[r / points], wave.integrator);
+        if (!std::isfinite(incoming.x) || !std::isfinite(incoming.y) ||
+            !std::isfinite(incoming.z)) {
+          ++statistics.discardedSamples;
+          continue;
+        }
         glm::vec3 radiance(0.0f);
         if (spectral) {
           // The scene is RGB: its radiance at each of the sample's wavelengths, with the weight
-          // the camera gave that wavelength, in the pixel that wavelength reaches.
-          bool finite = true;
+          // the camera gave that wavelength, in the pixel that wavelength reaches. (The camera
+          // finds the hero's pixel from the raster point in single precision, which can round
+          // into the next pixel: what lands with the hero is this pixel's.)
+          const std::int32_t heroPixel = wavelengthPixels[r * perSample];
+          bool dropped = false;
           for (std::size_t j = r * perSample; j < (r + 1) * perSample; ++j) {
             if (wavelengthWeights[j] == 0.0f) continue;
             const glm::vec3 colour =
                 pointShare * wavelengthWeights[j] * spectralSamples[j].toRgb(incoming);
-            const std::int32_t target = wavelengthPixels[j];
+            if (!std::isfinite(colour.x) || !std::isfinite(colour.y) || !std::isfinite(colour.z)) {
+              dropped = true;  // (a weight the camera could not give: not expected)
+              continue;
+            }
+            const std::int32_t target =
+                wavelengthPixels[j] == heroPixel ? ownPixel : wavelengthPixels[j];
             if (target == ownPixel) {
               radiance += colour;
-            } else if (!std::isfinite(colour.x) || !std::isfinite(colour.y) ||
-                       !std::isfinite(colour.z)) {
-              finite = false;
             } else if (const int tx = target % width, ty = target / width;
                        tx >= tile.x0 && tx < tile.x1 && ty >= tile.y0 && ty < tile.y1) {
               // In this tile: its pixels are this thread's alone during the wave.
@@ -312,14 +322,14 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
             }
           }
           if (pendingSplats.size() >= kSplatBatch) splats.add(pendingSplats);
-          if (!finite) ++statistics.discardedSamples;
+          if (dropped) ++statistics.discardedSamples;
         } else {
           radiance = pointShare * ray.weight * incoming;
-        }
-        if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
-            !std::isfinite(radiance.z)) {
-          ++statistics.discardedSamples;
-          continue;
+          if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
+              !std::isfinite(radiance.z)) {
+            ++statistics.discardedSamples;
+            continue;
+          }
         }
         sum += radiance;
       }

@@ -31,7 +31,8 @@ struct RenderSettings {
   // centre) and publishes those as a coarse snapshot of 1/coarseDivisor of the resolution per
   // axis, so that an interactive view has a picture after a small fraction of a full pass. The
   // rest of the wave then renders the other pixels: the look costs no samples of its own, and
-  // the image is the same as without it.
+  // the image is the same as without it (up to rounding for a spectral render through a lens
+  // that disperses, whose splats are added in another order).
   int coarseDivisor = 1;
   // A spectral camera's wavelengths per sample (hero wavelength sampling, Camera's
   // SampleWavelengths): the first chosen by the pixel's stratified sample, the others spaced

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <limits>
 #include <vector>
 
 #include "optics/exit_pupil.h"
@@ -39,7 +40,10 @@ RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
   mmPerRasterX_ = filmWidthMm_ / width;
   mmPerRasterY_ = filmHeightMm_ / height;
-  const double openFraction = lens_->stopShape().areaFactor() / 3.14159265358979323846;
+  // The share of the circle the exit-pupil table covers (the shape's bound) that the shape opens.
+  const optics::ApertureShape& shape = lens_->stopShape();
+  const double bound = shape.boundRadiusFactor();
+  const double openFraction = shape.areaFactor() / (3.14159265358979323846 * bound * bound);
   if (openFraction > 0.0 && openFraction < 0.5)
     lensPointsPerSample_ = std::clamp(static_cast<int>(std::lround(1.0 / openFraction)), 1, 4);
 }
@@ -219,11 +223,6 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
     shareWeightEvenly(count, rasterPoints, rays, passed, *wavelengths);
 }
 
-glm::dvec2 RealisticCamera::rasterPoint(glm::dvec2 filmMm) const {
-  return {(0.5 * filmWidthMm_ - filmMm.x) / mmPerRasterX_,
-          (filmMm.y + 0.5 * filmHeightMm_) / mmPerRasterY_};
-}
-
 // Hero wavelengths through a lens that disperses (after Wilkie, Nawaz, Droske, Weidlich and
 // Hanika, "Hero wavelength spectral sampling", EGSR 2014, with the lens as the one dispersive
 // part of the path).
@@ -293,7 +292,7 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   const auto diskRadiusSq =
       static_cast<float>(lens_->rearApertureRadiusMm() * lens_->rearApertureRadiusMm());
   const auto diskPdf = static_cast<float>(exitPupil ? 0.0 : rearDiskPdfPerMm2());
-  // rasterPoint(), in single precision with the divisions taken out.
+  // filmPointMm's inverse, in single precision with the divisions taken out.
   const auto halfWidthMm = static_cast<float>(0.5 * filmWidthMm_);
   const auto halfHeightMm = static_cast<float>(0.5 * filmHeightMm_);
   const auto rasterPerMmX = static_cast<float>(1.0 / mmPerRasterX_);
@@ -325,7 +324,9 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
     backCos4[b] = cos2 * cos2;
     backDensity[b] = onFilm ? planeZSquared / (cos2 * cos2) : 0.0f;
     if (exitPupil) {
-      planePdf[b] = std::sqrt(filmX * filmX + filmY * filmY);  // the film radius, for now
+      // The film radius, for now; 0 off the film, where a blocked ray's coordinates may be
+      // infinite or NaN (the kernels keep computing on blocked rays).
+      planePdf[b] = onFilm ? std::sqrt(filmX * filmX + filmY * filmY) : 0.0f;
     } else {
       const float toPlane = (planeZ - back.oz[b]) / safeDz;
       const float qx = back.ox[b] + toPlane * back.dx[b];
@@ -336,8 +337,12 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   if (exitPupil)
     lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), planePdf.data(), backCount);
   for (std::size_t b = 0; b < backCount; ++b) {
-    backDensity[b] *= planePdf[b];
-    if (!(backDensity[b] > 0.0f)) backPixel[b] = -1;
+    // A select, not a product: 0 times a blocked ray's infinite density would be NaN.
+    const float density = backDensity[b] * planePdf[b];
+    const bool counts = backPixel[b] >= 0 && planePdf[b] > 0.0f && density > 0.0f &&
+                        density < std::numeric_limits<float>::infinity();
+    backDensity[b] = counts ? density : 0.0f;
+    backPixel[b] = counts ? backPixel[b] : -1;
   }
 
   // The balance heuristic per sample. c_j: 1 with Kolb's cos^4; the teaching toggle measures

@@ -71,8 +71,6 @@ class RealisticCamera final : public Camera {
   void heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
                              const optics::LensRayBatch& exit, const float* heroDensity,
                              const float* heroCos4, const SampleWavelengths& wavelengths) const;
-  // Raster point of a film point (the inverse of filmPointMm).
-  glm::dvec2 rasterPoint(glm::dvec2 filmMm) const;
 
   std::shared_ptr<const optics::LensSystem> lens_;
   glm::mat4 worldFromLensMm_;

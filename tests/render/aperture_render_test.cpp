@@ -166,7 +166,6 @@ Blob measureBlob(const RenderSnapshot& image, double fromX, double fromY, double
   return b;
 }
 
-// Magnitude of the k-th angular harmonic of the boundary radius, over its mean.
 // A shape that lets through under half of the circle the exit-pupil table covers gets several
 // lens points per pixel sample (RealisticCamera::lensPointsPerSample), each counted 1/n: three
 // blades (41% of the circle) 2, pbrt's gaussian (26%) 4. A sample then still brings about one
@@ -218,6 +217,7 @@ TEST(ApertureRender, AShapeMuchSmallerThanItsCircleTakesSeveralLensPointsPerSamp
   EXPECT_NEAR(ratio, 3.0 * std::sqrt(3.0) / (4.0 * kPi), 0.015);
 }
 
+// Magnitude of the k-th angular harmonic of the boundary radius, over its mean.
 double harmonic(const std::vector<double>& r, int k) {
   std::complex<double> sum = 0.0;
   double mean = 0.0;
