@@ -168,7 +168,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   statistics.cameraSamples += (wavePixels - visible.size()) * samplesPerPixel * points;
   // Copies sample i (0 <= i < n) to rays i * points + t, t < points, in place, its lens point
   // shifted by t R2 steps (see the batch loop).
-  auto spreadLensPoints = [&](std::size_t n, std::size_t points, std::size_t k, bool colour) {
+  auto spreadLensPoints = [&](std::size_t n, std::size_t k, bool colour) {
     constexpr float kR2X = 0.7548776662f, kR2Y = 0.5698402910f;  // 1/g, 1/g^2; g^3 = g + 1
     rasterPoints.resize(n * points);
     lensSamples.resize(n * points);
@@ -262,7 +262,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     // r = i * points + t is sample i's t-th, at its film point and wavelengths, its lens point
     // shifted by t times the R2 sequence's step (Roberts 2018) modulo 1, so that each of them
     // is as stratified over the pixel's samples as the first.
-    if (points > 1) spreadLensPoints(n, points, perSample, spectral);
+    if (points > 1) spreadLensPoints(n, perSample, spectral);
     const std::size_t m = n * points;
     const float pointShare = 1.0f / static_cast<float>(points);
     if (spectral) {
