@@ -3,7 +3,6 @@
 // world-space ray and an exposure weight. Framing follows pbrt: camera space looks down +z with
 // +y up, and raster (0, 0) is the top-left corner of the image.
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -22,12 +21,15 @@ struct CameraRay {
 // carries `perSample` of them, nm[i * perSample + j]. Its ray is traced through the lens at the
 // first (the hero wavelength, Wilkie et al. 2014); the scene radiance along that ray is then
 // counted at every wavelength of the sample, each with the exposure weight the camera writes to
-// weights[i * perSample + j], in the raster pixel pixels[i * perSample + j] (y * width + x):
-// through a lens that disperses, the same scene ray meets the film elsewhere at another
-// wavelength. A weight of 0 where that wavelength's ray does not reach the film (or the sample
-// is blocked; the pixel is then -1, or the sample's own). The weights replace CameraRay::weight
-// for a spectral sample.
+// weights[i * perSample + j], in the raster pixel pixels[i * perSample + j] (y * width + x, or
+// kSamplePixel): through a lens that disperses, the same scene ray meets the film elsewhere at
+// another wavelength. A weight of 0 where that wavelength's ray does not reach the film (or the
+// sample is blocked). The weights replace CameraRay::weight for a spectral sample.
 struct SampleWavelengths {
+  // The pixel the renderer took the sample for (the hero's, and every wavelength's when the
+  // lens does not disperse): the renderer knows it exactly, where a float raster point at
+  // x >= 512 can round into the next pixel.
+  static constexpr std::int32_t kSamplePixel = -2;
   int perSample = 1;
   const float* nm = nullptr;
   float* weights = nullptr;
@@ -49,7 +51,7 @@ class Camera {
     for (std::size_t i = 0; i < count; ++i) {
       passed[i] = generateRay(rasterPoints[i], lensSamples[i], rays[i]) && rays[i].weight > 0.0f;
     }
-    if (wavelengths) shareWeightEvenly(count, rasterPoints, rays, passed, *wavelengths);
+    if (wavelengths) shareWeightEvenly(count, rays, passed, *wavelengths);
   }
   // False only when no ray from any film point of the raster rectangle [min, max] can leave the
   // lens (outside its image circle): the renderer then leaves those pixels black unsampled.
@@ -72,23 +74,16 @@ class Camera {
 
  protected:
   Camera(int width, int height) : width_(width), height_(height) {}
-  // The sample's own pixel (y * width + x) of a raster point.
-  std::int32_t pixelIndex(glm::vec2 rasterPoint) const {
-    const int x = std::clamp(static_cast<int>(rasterPoint.x), 0, width_ - 1);
-    const int y = std::clamp(static_cast<int>(rasterPoint.y), 0, height_ - 1);
-    return static_cast<std::int32_t>(y * width_ + x);
-  }
   // Weights of sample i's wavelengths = rays[i].weight / perSample (0 for a blocked sample), all
   // in the sample's own pixel: the ray is the same at every wavelength.
-  void shareWeightEvenly(std::size_t count, const glm::vec2* rasterPoints, const CameraRay* rays,
-                         const std::uint8_t* passed, const SampleWavelengths& wavelengths) const {
+  static void shareWeightEvenly(std::size_t count, const CameraRay* rays,
+                                const std::uint8_t* passed, const SampleWavelengths& wavelengths) {
     const std::size_t k = static_cast<std::size_t>(wavelengths.perSample);
     const float share = 1.0f / static_cast<float>(wavelengths.perSample);
     for (std::size_t i = 0; i < count; ++i) {
-      const std::int32_t pixel = pixelIndex(rasterPoints[i]);
       for (std::size_t j = 0; j < k; ++j) {
         wavelengths.weights[i * k + j] = passed[i] ? rays[i].weight * share : 0.0f;
-        wavelengths.pixels[i * k + j] = pixel;
+        wavelengths.pixels[i * k + j] = SampleWavelengths::kSamplePixel;
       }
     }
   }

@@ -293,10 +293,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
         glm::vec3 radiance(0.0f);
         if (spectral) {
           // The scene is RGB: its radiance at each of the sample's wavelengths, with the weight
-          // the camera gave that wavelength, in the pixel that wavelength reaches. (The camera
-          // finds the hero's pixel from the raster point in single precision, which can round
-          // into the next pixel: what lands with the hero is this pixel's.)
-          const std::int32_t heroPixel = wavelengthPixels[r * perSample];
+          // the camera gave that wavelength, in the pixel that wavelength reaches.
           bool dropped = false;
           for (std::size_t j = r * perSample; j < (r + 1) * perSample; ++j) {
             if (wavelengthWeights[j] == 0.0f) continue;
@@ -306,8 +303,9 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
               dropped = true;  // (a weight the camera could not give: not expected)
               continue;
             }
-            const std::int32_t target =
-                wavelengthPixels[j] == heroPixel ? ownPixel : wavelengthPixels[j];
+            const std::int32_t target = wavelengthPixels[j] == SampleWavelengths::kSamplePixel
+                                            ? ownPixel
+                                            : wavelengthPixels[j];
             if (target == ownPixel) {
               radiance += colour;
             } else if (const int tx = target % width, ty = target / width;

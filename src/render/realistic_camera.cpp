@@ -217,10 +217,9 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
               rays[i]);
   }
   if (weighWavelengths)
-    heroWavelengthWeights(count, rasterPoints, batch, heroDensity.data(), heroCos4.data(),
-                          *wavelengths);
+    heroWavelengthWeights(count, batch, heroDensity.data(), heroCos4.data(), *wavelengths);
   else if (spectral)
-    shareWeightEvenly(count, rasterPoints, rays, passed, *wavelengths);
+    shareWeightEvenly(count, rays, passed, *wavelengths);
 }
 
 // Hero wavelengths through a lens that disperses (after Wilkie, Nawaz, Droske, Weidlich and
@@ -248,8 +247,7 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
 // flint landscape lens's F-C focus shift of 2 mm blurs them by several pixels), so the renderer
 // adds them to other pixels than the sample's. The cost is K - 1 traces back through the lens
 // per sample, vectorised as the forward trace.
-void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
-                                            const optics::LensRayBatch& exit,
+void RealisticCamera::heroWavelengthWeights(std::size_t count, const optics::LensRayBatch& exit,
                                             const float* heroDensity, const float* heroCos4,
                                             const SampleWavelengths& wavelengths) const {
   const std::size_t k = static_cast<std::size_t>(wavelengths.perSample);
@@ -361,7 +359,7 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
     for (std::size_t j = 0; j < others; ++j) total += backDensity[first + j];
     const double invTotal = 1.0 / total;
     out[0] = static_cast<float>(cos4Weighting_ ? invTotal : invTotal / heroCos4[i]);
-    pixelOut[0] = pixelIndex(rasterPoints[i]);
+    pixelOut[0] = SampleWavelengths::kSamplePixel;
     for (std::size_t j = 0; j < others; ++j) {
       const std::size_t b = first + j;
       const double c = cos4Weighting_ ? 1.0 : 1.0 / backCos4[b];
