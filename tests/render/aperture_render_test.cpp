@@ -35,25 +35,31 @@ std::string realisticCamera(double stopMm, double focusDistance, const std::stri
          "]" + (aperture.empty() ? "" : " \"string aperture\" \"" + aperture + "\"") + "\n";
 }
 
-// Mean of the central block of a furnace render through the double-Gauss at f/8 (no rim cuts
-// the beam near the axis).
+// A 16 x 16 furnace scene through directory/dgauss.dat at f/8 (no rim cuts the beam near the
+// axis), with pbrt-v4's "string aperture" when not empty.
+std::filesystem::path writeFurnaceScene(const std::filesystem::path& directory,
+                                        const std::string& aperture) {
+  return writeFile(directory / "furnace.pbrt",
+                   realisticCamera(6.0, 3.0, aperture) +
+                       "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
+                       "\"float diagonal\" [10]\nIntegrator \"path\"\n" +
+                       furnaceWorld(1.0));
+}
+
+// Mean red of the central 6 x 6 pixels of such a 16 x 16 render.
+double centralBlockMean(const RenderSnapshot& image) {
+  double sum = 0.0;
+  for (int y = 5; y < 11; ++y)
+    for (int x = 5; x < 11; ++x) sum += image.rgb[3 * static_cast<std::size_t>(y * 16 + x)];
+  return sum / 36.0;
+}
+
+// The central block's mean of that furnace render.
 double centralFurnaceMean(const std::filesystem::path& directory, const std::string& aperture) {
-  const auto path =
-      writeFile(directory / "furnace.pbrt",
-                realisticCamera(6.0, 3.0, aperture) +
-                    "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
-                    "\"float diagonal\" [10]\nIntegrator \"path\"\n" +
-                    furnaceWorld(1.0));
-  RenderJob job = loadJob(path, 1024);
+  RenderJob job = loadJob(writeFurnaceScene(directory, aperture), 1024);
   if (!job.camera || !job.scene) return 0.0;
   const auto image = renderToCompletion(job);
-  if (!image) return 0.0;
-  double sum = 0.0;
-  int count = 0;
-  for (int y = 5; y < 11; ++y)
-    for (int x = 5; x < 11; ++x, ++count)
-      sum += image->rgb[3 * static_cast<std::size_t>(y * 16 + x)];
-  return sum / count;
+  return image ? centralBlockMean(*image) : 0.0;
 }
 
 TEST(ApertureRender, UniformSkyBrightnessFollowsTheStopArea) {
@@ -176,13 +182,7 @@ TEST(ApertureRender, AShapeMuchSmallerThanItsCircleTakesSeveralLensPointsPerSamp
   const auto directory = lenslab::testing::makeTestDirectory("aperture-points");
   auto furnace = [&](const std::string& lensText, const std::string& aperture) {
     writeFile(directory / "dgauss.dat", lensText);
-    const auto path =
-        writeFile(directory / "furnace.pbrt",
-                  realisticCamera(6.0, 3.0, aperture) +
-                      "Film \"image\" \"integer xresolution\" [16] \"integer yresolution\" [16] "
-                      "\"float diagonal\" [10]\nIntegrator \"path\"\n" +
-                      furnaceWorld(1.0));
-    RenderJob job = loadJob(path, 256);
+    RenderJob job = loadJob(writeFurnaceScene(directory, aperture), 256);
     EXPECT_TRUE(job.camera && job.scene);
     const int points = job.camera ? job.camera->lensPointsPerSample() : 0;
     auto image = job.camera ? renderToCompletion(job) : nullptr;
@@ -201,17 +201,11 @@ TEST(ApertureRender, AShapeMuchSmallerThanItsCircleTakesSeveralLensPointsPerSamp
     return static_cast<double>(image.statistics.lensPassed) /
            (static_cast<double>(image.width) * image.height * image.samplesPerPixel);
   };
-  auto centralMean = [](const RenderSnapshot& image) {
-    double sum = 0.0;
-    for (int y = 5; y < 11; ++y)
-      for (int x = 5; x < 11; ++x) sum += image.rgb[3 * static_cast<std::size_t>(y * 16 + x)];
-    return sum / 36.0;
-  };
   std::printf("rays into the scene per pixel sample: circle %.3f, triangle %.3f, gaussian %.3f\n",
               raysPerSample(*circle), raysPerSample(*triangle), raysPerSample(*gaussian));
   EXPECT_GT(raysPerSample(*triangle), 0.75);
   EXPECT_GT(raysPerSample(*gaussian), 0.9);
-  const double ratio = centralMean(*triangle) / centralMean(*circle);
+  const double ratio = centralBlockMean(*triangle) / centralBlockMean(*circle);
   std::printf("uniform sky, centre: triangle / circle %.4f (3 sqrt 3 / (4 pi) %.4f)\n", ratio,
               3.0 * std::sqrt(3.0) / (4.0 * kPi));
   EXPECT_NEAR(ratio, 3.0 * std::sqrt(3.0) / (4.0 * kPi), 0.015);

@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "render/camera_factory.h"
 #include "render/pbrt_parser.h"
@@ -30,6 +34,25 @@ inline RenderJob loadJob(const std::filesystem::path& path, int samplesPerPixel,
   job.settings.integrator.kind = parsed.scene->integrator.kind;
   job.settings.integrator.maxDepth = parsed.scene->integrator.maxDepth;
   return job;
+}
+
+// Every snapshot a ProgressiveRenderer publishes for `job`, in order, once it has completed;
+// nullopt when it did not complete within the timeout.
+inline std::optional<std::vector<std::shared_ptr<const RenderSnapshot>>> publishedSnapshots(
+    const RenderJob& job, double timeoutSeconds) {
+  ProgressiveRenderer renderer;
+  std::mutex mutex;
+  std::vector<std::shared_ptr<const RenderSnapshot>> seen;
+  renderer.setPublishListener([&] {
+    std::lock_guard lock(mutex);
+    seen.push_back(renderer.snapshot());
+  });
+  const std::uint64_t generation = renderer.start(job);
+  const bool completed = renderer.waitForCompletion(generation, timeoutSeconds);
+  renderer.setPublishListener({});
+  std::lock_guard lock(mutex);
+  if (!completed) return std::nullopt;
+  return seen;
 }
 
 // The double-Gauss 50 mm prescription (US patent 2,673,491, Tronnier; Smith, Modern Lens Design,

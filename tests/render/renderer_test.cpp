@@ -19,6 +19,7 @@ namespace {
 
 using render::testing::furnaceWorld;
 using render::testing::loadJob;
+using render::testing::publishedSnapshots;
 using render::testing::relativeIllumination;
 using render::testing::writeFile;
 using Clock = std::chrono::steady_clock;
@@ -202,17 +203,9 @@ TEST(Renderer, ACoarseFirstLookComesBeforeTheFullWavesAndEachPublicationIsAnnoun
   RenderJob job = loadJob(writeSmallScene(directory), 4);
   ASSERT_TRUE(job.camera && job.scene);
   job.settings.coarseDivisor = 4;
-  ProgressiveRenderer renderer;
-  std::mutex mutex;
-  std::vector<std::shared_ptr<const RenderSnapshot>> seen;
-  renderer.setPublishListener([&] {
-    std::lock_guard lock(mutex);
-    seen.push_back(renderer.snapshot());
-  });
-  const std::uint64_t generation = renderer.start(job);
-  ASSERT_TRUE(renderer.waitForCompletion(generation, 20.0));
-  renderer.setPublishListener({});
-  std::lock_guard lock(mutex);
+  const auto published = publishedSnapshots(job, 20.0);
+  ASSERT_TRUE(published);
+  const auto& seen = *published;
   // Coarse, then 1, 2 and 4 samples per pixel.
   ASSERT_EQ(seen.size(), 4u);
   const RenderSnapshot& coarse = *seen[0];
