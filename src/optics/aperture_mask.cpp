@@ -44,7 +44,7 @@ std::shared_ptr<const ApertureMask> loadApertureMask(const std::filesystem::path
     anyOpen = anyOpen || open;
   }
   if (!anyOpen) return fail("the aperture image is all black: no light would pass");
-  mask->measureOpenRadius();
+  mask->finish();
   return mask;
 }
 

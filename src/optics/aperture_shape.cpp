@@ -63,6 +63,13 @@ double ApertureMask::openFraction() const {
   return static_cast<double>(count) / static_cast<double>(open.size());
 }
 
+void ApertureMask::finish() {
+  measureOpenRadius();
+  openBits.assign((open.size() + 31) / 32, 0u);
+  for (std::size_t i = 0; i < open.size(); ++i)
+    if (open[i]) openBits[i / 32] |= 1u << (i % 32);
+}
+
 void ApertureMask::measureOpenRadius() {
   double farthestSq = 0.0;
   const double half = 0.5 * sizePx;
@@ -187,7 +194,7 @@ std::shared_ptr<const ApertureMask> mirroredMask(const ApertureMask& mask) {
     auto first = seen->open.begin() + static_cast<std::ptrdiff_t>(row) * n;
     std::reverse(first, first + n);
   }
-  // The farthest open corner's distance is the same in the mirror image.
+  seen->finish();  // (the farthest open corner's distance is the same in the mirror image)
   return seen;
 }
 
@@ -333,7 +340,7 @@ std::shared_ptr<const ApertureMask> rasterizeApertureMask(const std::vector<glm:
       mask->open[static_cast<std::size_t>(row) * sizePx + col] = winding != 0 ? 1 : 0;
     }
   }
-  mask->measureOpenRadius();
+  mask->finish();
   return mask;
 }
 
@@ -410,7 +417,7 @@ std::shared_ptr<const ApertureMask> gaussianHalftoneMask(int sizePx) {
           gaussianApertureTransmission(x, y) > threshold ? 1 : 0;
     }
   }
-  mask->measureOpenRadius();
+  mask->finish();
   return mask;
 }
 

@@ -43,8 +43,16 @@ struct ApertureMask {
   double openFraction() const;     // share of open pixels
   // Largest distance of an open pixel's corner from the centre, over half the side (at most
   // sqrt(2)): the radius that bounds the open part, for the exit-pupil table. Set by
-  // measureOpenRadius() when the mask is made (loaded or rasterized).
+  // finish() when the mask is made (loaded, rasterized or mirrored).
   double openRadiusFactor = 1.4142135623730951;
+  // `open` packed 32 pixels to a word, pixel i = row * sizePx + col at bit i % 32 of word i / 32:
+  // what the batch trace gathers (a 1024 px mask is 128 kB, not 1 MB, and a word is what a
+  // vector gather loads). Set by finish().
+  std::vector<std::uint32_t> openBits;
+  // Sets openRadiusFactor and openBits from `open`: call after making or changing the pixels.
+  void finish();
+
+ private:
   void measureOpenRadius();
 };
 
@@ -168,8 +176,9 @@ class StopShapeTest {
   const std::vector<Edge>& edges() const { return edges_; }
   bool maskContains(double xMm, double yMm) const;
   // The mask's pixels and mapping, for the batch trace's branch-free lookup: column
-  // (x + R) * pixelsPerMm, row (R - y) * pixelsPerMm.
-  const std::uint8_t* maskPixels() const { return mask_ ? mask_->open.data() : nullptr; }
+  // (x + R) * pixelsPerMm, row (R - y) * pixelsPerMm; pixel i = row * size + col is bit i % 32
+  // of maskBits()[i / 32].
+  const std::uint32_t* maskBits() const { return mask_ ? mask_->openBits.data() : nullptr; }
   int maskSizePx() const { return mask_ ? mask_->sizePx : 0; }
   double pixelsPerMm() const { return pixelsPerMm_; }
   double radiusMm() const { return radiusMm_; }

@@ -7,6 +7,7 @@
 // The geometry is the same as the scalar trace (surface_geometry.h): vertex-relative sphere
 // intersection without cancellation, Heckbert's refraction.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -40,17 +41,22 @@ __attribute__((always_inline)) inline void applyStopShape(const StopShapeTest& s
                                                           std::uint8_t* __restrict alive,
                                                           std::size_t n) {
   if (shape.kind() == ApertureShape::Kind::Image) {
-    // Without branches: a hit outside the image looks up pixel 0 and is masked out.
-    const std::uint8_t* __restrict pixels = shape.maskPixels();
+    // Without branches, so that the loop vectorizes into gathers: a hit outside the image (or
+    // NaN) looks up a clamped pixel and is masked out. One bit a pixel, read as 32-bit words.
+    const std::uint32_t* __restrict words = shape.maskBits();
     const int size = shape.maskSizePx();
-    const float sizeF = static_cast<float>(size);
+    const float sizeF = static_cast<float>(size), lastF = sizeF - 1.0f;
     const float scale = static_cast<float>(shape.pixelsPerMm());
     const float radius = static_cast<float>(shape.radiusMm());
     for (std::size_t i = 0; i < n; ++i) {
       const float col = (ox[i] + radius) * scale, row = (radius - oy[i]) * scale;
       const int inside = (col >= 0.0f) & (row >= 0.0f) & (col < sizeF) & (row < sizeF);
-      const int index = inside ? static_cast<int>(row) * size + static_cast<int>(col) : 0;
-      alive[i] = alive[i] & static_cast<std::uint8_t>(inside & pixels[index]);
+      // (std::max(0, x) is 0 for a NaN x.)
+      const int c = static_cast<int>(std::min(lastF, std::max(0.0f, col)));
+      const int r = static_cast<int>(std::min(lastF, std::max(0.0f, row)));
+      const int index = r * size + c;
+      const int open = static_cast<int>(words[index >> 5] >> (index & 31)) & 1;
+      alive[i] = alive[i] & static_cast<std::uint8_t>(inside & open);
     }
     return;
   }

@@ -243,7 +243,15 @@ TEST(ShapedStop, ScalarAndBatchTracesAgreeRayByRay) {
   ASSERT_TRUE(base);
   std::string ignored;
   ApertureShape star = *builtinPbrtAperture("star", &ignored);
-  for (const ApertureShape& shape : {blades(6, 0.0, 10.0), blades(5, 0.6, 0.0), star}) {
+  // Masks as the batch trace reads them, one bit a pixel: the gaussian's 1024 px halftone,
+  // mirrored, and a triangle at 101 px, whose rows do not start on a 32-bit word.
+  const ApertureShape gaussian = builtinPbrtAperture("gaussian", &ignored)->mirroredLeftToRight();
+  ApertureShape triangle;
+  triangle.kind = ApertureShape::Kind::Image;
+  triangle.imageName = "triangle";
+  triangle.mask = rasterizeApertureMask({{-0.9, -0.6}, {0.9, -0.3}, {-0.2, 0.95}}, 101, "triangle");
+  for (const ApertureShape& shape :
+       {blades(6, 0.0, 10.0), blades(5, 0.6, 0.0), star, gaussian, triangle}) {
     const auto lens = base->withStopShape(shape);
     ASSERT_TRUE(lens);
     std::mt19937 rng(3);
