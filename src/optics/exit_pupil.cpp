@@ -5,6 +5,8 @@
 #include <numbers>
 #include <thread>
 
+#include <glm/geometric.hpp>
+
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
@@ -18,11 +20,16 @@ constexpr int kGrid = 16;  // coarse search grid over the plane (x), half of it 
 // precision with twice the rays: the table is on the critical path of every viewer edit.)
 constexpr double kBracketGrowth = 2.0;
 constexpr int kBisections = 12;
-constexpr double kRelativeMargin = 0.01;
+// Margins on every bound: 0.25% (ten times the bisection's precision; the convexity
+// construction in measure() bounds the region between measured directions), and 1% for the
+// spectral table, whose bounds at four probe wavelengths must also contain the region at every
+// wavelength between them.
+constexpr double kRelativeMargin = 0.0025;
+constexpr double kSpectralRelativeMargin = 0.01;
 
 // Traces rays from the film point (filmR, 0, 0) through points of the plane z = planeZ. Many at
 // once through the vectorized batch trace: the table build is thousands of such rays per bin.
-// (Single precision; the 1% margin is far larger than its rounding.)
+// (Single precision; the margins are far larger than its rounding.)
 struct Probe {
   const LensSystem& lens;
   double planeZ;
@@ -206,21 +213,18 @@ RawBin measure(Probe& probe, double filmR, double domainR,
     out.vertexRadius[k] = std::max(out.vertexRadius[k], a * scale);
     out.vertexRadius[k + 1] = std::max(out.vertexRadius[k + 1], b * scale);
   }
-  // Grid points found passing also bound the region (in case a direction's bracket skipped a
-  // bulge): grow the two vertices of their sector until the edge contains them.
+  // Grow the two vertices of a point's sector until their edge contains the point (the
+  // crossing distance along the ray through it scales with them).
   const double sectorAngle = 2.0 * std::numbers::pi / ExitPupilTable::kSectors;
-  for (const auto& p : passing) {
-    const double dx = p.x - centre, dy = p.y;
+  auto contain = [&](double dx, double dy) {
+    const double r = std::hypot(dx, dy);
+    if (r == 0.0) return;
     const double angle = std::atan2(std::abs(dy), dx);
     const int k = std::clamp(static_cast<int>(angle / sectorAngle), 0, kHalfVertices - 2);
     const double a = out.vertexRadius[k], b = out.vertexRadius[k + 1];
-    // Where the edge AB crosses the ray from the centre through the point: if nearer than the
-    // point, scale both vertices (the crossing distance scales with them).
     const double t0 = k * sectorAngle, t1 = t0 + sectorAngle;
     const double ax = a * std::cos(t0), ay = a * std::sin(t0);
     const double bx = b * std::cos(t1), by = b * std::sin(t1);
-    const double r = std::hypot(dx, dy);
-    if (r == 0.0) continue;
     const double ux = dx / r, uy = std::abs(dy) / r;
     const double crossing = (ax * by - ay * bx) / (ux * (by - ay) - uy * (bx - ax));
     if (crossing > 0.0 && crossing < r) {
@@ -228,7 +232,41 @@ RawBin measure(Probe& probe, double filmR, double domainR,
       out.vertexRadius[k] = a * scale;
       out.vertexRadius[k + 1] = b * scale;
     }
+  };
+  // The region is convex, so between two neighbouring boundary points P_m, P_m+1 it lies inside
+  // the lines through P_m-1 P_m and P_m+2 P_m+1, extended: within the triangle P_m X P_m+1, X
+  // where they meet. Each edge must therefore contain those X too, not only the boundary points.
+  // Where the boundary turns sharply between two measured directions (the tips of a cat's eye at
+  // the rim of the image circle) the region otherwise reached past the chords: points there lay
+  // in one of the two bins the sampler blends only, and the density it reported was up to twice
+  // the true one (exit_pupil_test.cpp). X is taken only where the lines meet outside the chord
+  // and within the wedge, and not beyond 1.5 times the farther point (nearly parallel lines).
+  {
+    std::vector<glm::dvec2> boundary(kHalfDirections + 2);  // m = -1 .. 33, mirrored at the ends
+    for (int m = -1; m <= kHalfDirections; ++m) {
+      const int mirrored = m < 0 ? -m : m >= kHalfDirections ? 2 * (kHalfDirections - 1) - m : m;
+      const double t = m * std::numbers::pi / (kHalfDirections - 1);
+      boundary[m + 1] = {rho[mirrored] * std::cos(t), rho[mirrored] * std::sin(t)};
+    }
+    auto cross = [](glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; };
+    for (int m = 0; m + 1 < kHalfDirections; ++m) {
+      const glm::dvec2 before = boundary[m], p = boundary[m + 1], q = boundary[m + 2],
+                       after = boundary[m + 3];
+      const glm::dvec2 d1 = p - before, d2 = q - after;  // outward along each line
+      const double denominator = cross(d1, d2);
+      if (std::abs(denominator) < 1e-12 * glm::dot(d1, d1)) continue;  // parallel
+      const double s1 = cross(q - p, d2) / denominator, s2 = cross(q - p, d1) / denominator;
+      if (!(s1 > 0.0 && s2 > 0.0)) continue;  // they do not meet beyond both points
+      const glm::dvec2 x = p + s1 * d1;
+      const bool outsideChord = cross(q - p, x - p) < 0.0;  // right of p -> q (counter-clockwise)
+      const bool inWedge = cross(p, x) >= 0.0 && cross(x, q) >= 0.0;
+      const double limit = 1.5 * std::max(glm::length(p), glm::length(q));
+      if (outsideChord && inWedge && glm::length(x) <= limit) contain(x.x, x.y);
+    }
   }
+  // Grid points found passing also bound the region (in case a direction's bracket skipped a
+  // bulge).
+  for (const auto& p : passing) contain(p.x - centre, p.y);
   return out;
 }
 
@@ -352,6 +390,8 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   // Union with the neighbours, margin, triangle areas and their CDF.
   bins_.resize(radialBins);
   const double absoluteMargin = 1e-4 * fallbackRadiusMm_;
+  const double relativeMargin =
+      probeWavelengthsNm.empty() ? kRelativeMargin : kSpectralRelativeMargin;
   const double halfSin = 0.5 * std::sin(sectorAngle);
   for (int j = 0; j < radialBins; ++j) {
     if (raw[j].empty) continue;
@@ -362,7 +402,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
       double r = raw[j].vertexRadius[k];
       for (int n : {j - 1, j + 1})
         if (n >= 0 && n < radialBins && !raw[n].empty) r = std::max(r, raw[n].vertexRadius[k]);
-      const double v = r * (1.0 + kRelativeMargin) + absoluteMargin;
+      const double v = r * (1.0 + relativeMargin) + absoluteMargin;
       b.vertexRadiusMm[k] = v;
       if (k > 0 && k < kSectors / 2) b.vertexRadiusMm[kSectors - k] = v;  // mirror below x
     }

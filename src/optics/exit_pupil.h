@@ -7,8 +7,9 @@
 // off axis. It is symmetric about the x axis and convex in practice. Each table bin stores a
 // centre (cx, 0) inside that region and a star-shaped polygon around it with kSectors vertices at
 // equal angles: each vertex lies on the region's boundary (found by bisection), each edge is pushed
-// out to contain the boundary point half-way between its vertices, and the result is enlarged by
-// a margin and by the same vertex at the neighbouring film radii. A sample picks one of the
+// out to contain the boundary point half-way between its vertices and the corners that convexity
+// allows between the measured points, and the result is enlarged by a margin and by the same
+// vertex at the neighbouring film radii. A sample picks one of the
 // kSectors triangles (centre, vertex k, vertex k+1) with probability proportional to its area and
 // a uniform point in it, so the density is uniform, 1 / (polygon area), and needs no
 // trigonometry. Other film points rotate the bin's frame by their azimuth.
@@ -45,7 +46,7 @@ class ExitPupilTable {
   // Wavelengths whose pass regions the spectral table's bounds contain (LensSystem::
   // spectralExitPupilTable): the ends of the spectral render's range and two between. The pass
   // region moves smoothly (in practice monotonically) with the indices, which follow 1/lambda^2;
-  // the union at these four plus the 1% margin contains it at every wavelength between, which a
+  // the union at these four plus a 1% margin contains it at every wavelength between, which a
   // brute-force test checks ray by ray for the bundled dispersive lenses (exit_pupil_test.cpp).
   static constexpr double kSpectralProbeWavelengthsNm[] = {380.0, 450.0, 587.56, 780.0};
 
