@@ -20,12 +20,13 @@ constexpr int kGrid = 16;  // coarse search grid over the plane (x), half of it 
 // precision with twice the rays: the table is on the critical path of every viewer edit.)
 constexpr double kBracketGrowth = 2.0;
 constexpr int kBisections = 12;
-// Margins on every bound: 0.25% (ten times the bisection's precision; the convexity
-// construction in measure() bounds the region between measured directions), and 1% for the
-// spectral table, whose bounds at four probe wavelengths must also contain the region at every
-// wavelength between them.
+// The margin on every bound: ten times the bisection's precision. (It was 1% before the
+// convexity construction in measure() bounded the region between measured directions. The
+// spectral table needs no more: its bounds at four probe wavelengths contain the region at every
+// wavelength between them with this margin and also with none, in a brute-force check of 465k
+// passing rays of the bundled dispersive lenses at random wavelengths; a margin of -1% misses
+// 127 of them.)
 constexpr double kRelativeMargin = 0.0025;
-constexpr double kSpectralRelativeMargin = 0.01;
 
 // Traces rays from the film point (filmR, 0, 0) through points of the plane z = planeZ. Many at
 // once through the vectorized batch trace: the table build is thousands of such rays per bin.
@@ -390,8 +391,6 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   // Union with the neighbours, margin, triangle areas and their CDF.
   bins_.resize(radialBins);
   const double absoluteMargin = 1e-4 * fallbackRadiusMm_;
-  const double relativeMargin =
-      probeWavelengthsNm.empty() ? kRelativeMargin : kSpectralRelativeMargin;
   const double halfSin = 0.5 * std::sin(sectorAngle);
   for (int j = 0; j < radialBins; ++j) {
     if (raw[j].empty) continue;
@@ -402,7 +401,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
       double r = raw[j].vertexRadius[k];
       for (int n : {j - 1, j + 1})
         if (n >= 0 && n < radialBins && !raw[n].empty) r = std::max(r, raw[n].vertexRadius[k]);
-      const double v = r * (1.0 + relativeMargin) + absoluteMargin;
+      const double v = r * (1.0 + kRelativeMargin) + absoluteMargin;
       b.vertexRadiusMm[k] = v;
       if (k > 0 && k < kSectors / 2) b.vertexRadiusMm[kSectors - k] = v;  // mirror below x
     }

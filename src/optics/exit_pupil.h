@@ -46,8 +46,9 @@ class ExitPupilTable {
   // Wavelengths whose pass regions the spectral table's bounds contain (LensSystem::
   // spectralExitPupilTable): the ends of the spectral render's range and two between. The pass
   // region moves smoothly (in practice monotonically) with the indices, which follow 1/lambda^2;
-  // the union at these four plus a 1% margin contains it at every wavelength between, which a
-  // brute-force test checks ray by ray for the bundled dispersive lenses (exit_pupil_test.cpp).
+  // the union at these four (with the bounds' margin) contains it at every wavelength between,
+  // which a brute-force test checks ray by ray for the bundled dispersive lenses
+  // (spectral_trace_test.cpp).
   static constexpr double kSpectralProbeWavelengthsNm[] = {380.0, 450.0, 587.56, 780.0};
 
   // `probeWavelengthsNm`: empty for the lens at its own wavelength; else a point of the plane is

@@ -246,8 +246,9 @@ TEST(SpectralTrace, WithoutDispersionTheSpectralBatchIsTheRgbBatch) {
 
 // Brute force: film points over the whole image circle, plane points over the table's search
 // square, a wavelength drawn anew for every ray from the whole spectral range, traced in double
-// precision by the lens rebuilt at that wavelength. Every passing ray must lie in the table's
-// sampled region.
+// precision by the lens rebuilt at that wavelength. Every passing ray must lie in both bins the
+// sampler blends at its film radius (else it would be missed, or its density overstated). With
+// the table's 0.25% margin taken as -1%, 127 of 465k such rays failed.
 TEST(SpectralTrace, SpectralExitPupilContainsEveryPassingRayAtEveryWavelength) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -257,12 +258,12 @@ TEST(SpectralTrace, SpectralExitPupilContainsEveryPassingRayAtEveryWavelength) {
     // Wavelengths quantised to 0.5 nm so that the lenses rebuilt for them can be reused.
     std::vector<std::shared_ptr<const LensSystem>> atWavelength(801);
     const double domain = table.fallbackRadiusMm();
-    int passing = 0, outside = 0, passingAtExtremes = 0;
+    int passing = 0, outside = 0, inOneBinOnly = 0, passingAtExtremes = 0;
     for (int f = 0; f < 60; ++f) {
       const double r = table.filmRadiusMaxMm() * (f + uniform(rng)) / 60.0;
       const double phi = 2.0 * std::numbers::pi * uniform(rng);
       const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
-      for (int i = 0; i < 600; ++i) {
+      for (int i = 0; i < 2500; ++i) {
         const int k = static_cast<int>(uniform(rng) * 801.0);
         auto& atK = atWavelength[static_cast<std::size_t>(std::min(k, 800))];
         if (!atK) atK = lens->withWavelength(380.0 + 0.5 * std::min(k, 800));
@@ -272,13 +273,17 @@ TEST(SpectralTrace, SpectralExitPupilContainsEveryPassingRayAtEveryWavelength) {
         if (!atK->traceFromFilm({origin, glm::normalize(point - origin)})) continue;
         ++passing;
         if (k < 40 || k > 760) ++passingAtExtremes;
-        if (table.pdf(film, p) <= 0.0) ++outside;
+        const double pdf = table.pdf(film, p);
+        if (pdf <= 0.0)
+          ++outside;
+        else if (pdf < table.pdfInPassRegion(r) * (1.0 - 1e-9))
+          ++inOneBinOnly;
       }
     }
-    EXPECT_GT(passing, 200);
-    EXPECT_GT(passingAtExtremes, 10);
-    EXPECT_LE(outside, passing / 2000)
-        << "stop " << lens->stopDiameterMm() << ": " << outside << " of " << passing;
+    EXPECT_GT(passing, 1000);
+    EXPECT_GT(passingAtExtremes, 50);
+    EXPECT_EQ(outside, 0) << "stop " << lens->stopDiameterMm() << ": of " << passing;
+    EXPECT_EQ(inOneBinOnly, 0) << "stop " << lens->stopDiameterMm() << ": of " << passing;
   }
 }
 
