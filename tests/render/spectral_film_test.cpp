@@ -94,7 +94,8 @@ TEST(SpectralFilm, DensityIsNormalisedAndPositiveAndWhiteIsAPositiveSpectrum) {
     EXPECT_GT(b.x + b.y + b.z, 0.0) << nm;
   }
   EXPECT_NEAR(total, 1.0, 1e-6);
-  // Every 1 nm bin is likelier than a cell of the sampler's guide table (see kGuide).
+  // Every 1 nm bin is likelier than a cell of the sampler's guide table (see kGuide): the
+  // search after the guide then takes one step at most.
   double least = 1.0;
   for (double nm = 380.5; nm < 780.0; nm += 1.0) least = std::min(least, film.pdfPerNm(nm));
   std::printf("least likely 1 nm bin: %.3g\n", least);
@@ -104,6 +105,27 @@ TEST(SpectralFilm, DensityIsNormalisedAndPositiveAndWhiteIsAPositiveSpectrum) {
   const SpectralSample s = film.sample(0.5f);
   EXPECT_GT(s.wavelengthNm, 500.0f);
   EXPECT_LT(s.wavelengthNm, 620.0f);
+}
+
+// sample(u) inverts the distribution: the CDF at the wavelength it returns, summed here from
+// pdfPerNm bin by bin, is u, for u on a grid finer than any guide cell or bin, and the end points.
+TEST(SpectralFilm, SamplingInvertsTheDistributionEverywhere) {
+  const SpectralFilm& film = SpectralFilm::instance();
+  std::vector<double> cdfAtBinStart(401, 0.0);
+  for (int k = 0; k < 400; ++k) cdfAtBinStart[k + 1] = cdfAtBinStart[k] + film.pdfPerNm(380.5 + k);
+  double worst = 0.0;
+  constexpr int kSteps = 1 << 20;
+  for (int i = 0; i <= kSteps; ++i) {
+    const float u = std::min(static_cast<float>(i) / kSteps, 0x1.fffffep-1f);
+    const double nm = film.sample(u).wavelengthNm;
+    ASSERT_GE(nm, 380.0);
+    ASSERT_LT(nm, 780.0);
+    const int k = std::min(static_cast<int>(nm - 380.0), 399);
+    const double cdf = cdfAtBinStart[k] + (nm - 380.0 - k) * film.pdfPerNm(380.5 + k);
+    worst = std::max(worst, std::abs(cdf - u));
+  }
+  std::printf("largest |CDF(sample(u)) - u|: %.3g\n", worst);
+  EXPECT_LT(worst, 2e-6);
 }
 
 // Every power-of-two prefix of a pixel's wavelength samples has one value in each stratum.
