@@ -44,8 +44,7 @@ ApertureShape shapeNumber(std::int64_t which) {
     shape.rotationDeg = 10.0;
   }
   if (which == 3 || which == 5) {
-    std::string note;
-    shape = *lenslab::optics::builtinPbrtAperture(which == 3 ? "star" : "gaussian", &note);
+    shape = *lenslab::optics::builtinPbrtAperture(which == 3 ? "star" : "gaussian");
   }
   return shape;
 }

@@ -344,7 +344,7 @@ std::shared_ptr<const ApertureMask> rasterizeApertureMask(const std::vector<glm:
   return mask;
 }
 
-std::optional<ApertureShape> builtinPbrtAperture(std::string_view name, std::string* note) {
+std::optional<ApertureShape> builtinPbrtAperture(std::string_view name) {
   ApertureShape shape;
   if (name == "square") {
     shape.kind = ApertureShape::Kind::Blades;
@@ -378,8 +378,7 @@ std::optional<ApertureShape> builtinPbrtAperture(std::string_view name, std::str
     shape.mask = gaussianHalftoneMask(kGaussianMaskSizePx);
     return shape;
   }
-  (void)note;  // every built-in name is usable; the caller resolves other names as files
-  return std::nullopt;
+  return std::nullopt;  // not built in: the caller resolves the name as an image file
 }
 
 double gaussianApertureTransmission(double xUnit, double yUnit) {
@@ -452,6 +451,11 @@ StopShapeTest::StopShapeTest(const ApertureShape& shape, double stopRadiusMm)
   if (kind_ == ApertureShape::Kind::Image) {
     mask_ = shape.mask;
     pixelsPerMm_ = stopRadiusMm > 0.0 ? 0.5 * mask_->sizePx / stopRadiusMm : 0.0;
+    if (mask_->openBits.size() != (mask_->open.size() + 31) / 32) {
+      ApertureMask packed = *mask_;
+      packed.finish();
+      ownBits_ = std::move(packed.openBits);
+    }
   }
 }
 

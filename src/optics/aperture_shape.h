@@ -121,14 +121,14 @@ std::shared_ptr<const ApertureMask> rasterizeApertureMask(const std::vector<glm:
 
 // pbrt-v4's realistic camera "string aperture": "square", "pentagon", "star" and "gaussian"
 // (built in); other values are image files (resolved by the caller), for which it returns
-// nullopt. `note` is unused (kept for callers that report why a name is not built in).
+// nullopt.
 //   square   -> 4 straight blades, edges along x and y (inscribed in the stop circle)
 //   pentagon -> 5 straight blades, a corner up (pbrt draws it at 0.8 R; lenslab inscribes it)
 //   star     -> pbrt-v4's five-pointed star (outer radius R, inner R cos 72 / cos 36), as a mask
 //   gaussian -> pbrt-v4's graded transmission T(r) = max(0, exp(-r^2) - exp(-1)) (r in units of
 //               R) as a halftone mask (gaussianHalftoneMask): it passes pi (1 - 2/e) R^2 =
 //               0.830 R^2 of light, 26% of the circle's, and its bokeh fades toward the rim
-std::optional<ApertureShape> builtinPbrtAperture(std::string_view name, std::string* note);
+std::optional<ApertureShape> builtinPbrtAperture(std::string_view name);
 
 // pbrt-v4's "gaussian" transmission at (x, y) in units of R.
 double gaussianApertureTransmission(double xUnit, double yUnit);
@@ -178,7 +178,10 @@ class StopShapeTest {
   // The mask's pixels and mapping, for the batch trace's branch-free lookup: column
   // (x + R) * pixelsPerMm, row (R - y) * pixelsPerMm; pixel i = row * size + col is bit i % 32
   // of maskBits()[i / 32].
-  const std::uint32_t* maskBits() const { return mask_ ? mask_->openBits.data() : nullptr; }
+  const std::uint32_t* maskBits() const {
+    if (!ownBits_.empty()) return ownBits_.data();
+    return mask_ ? mask_->openBits.data() : nullptr;
+  }
   int maskSizePx() const { return mask_ ? mask_->sizePx : 0; }
   double pixelsPerMm() const { return pixelsPerMm_; }
   double radiusMm() const { return radiusMm_; }
@@ -192,6 +195,9 @@ class StopShapeTest {
   double radiusSqMm2_ = 0.0;
   std::vector<Edge> edges_;
   std::shared_ptr<const ApertureMask> mask_;
+  // The mask's openBits, or, for a mask made without ApertureMask::finish(), a packing of its
+  // own (so that the batch trace never reads past the bits).
+  std::vector<std::uint32_t> ownBits_;
   double pixelsPerMm_ = 0.0, radiusMm_ = 0.0;
 };
 

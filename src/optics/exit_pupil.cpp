@@ -16,11 +16,12 @@ namespace {
 constexpr int kHalfDirections = ExitPupilTable::kSectors + 1;  // angles m * pi / 32, m = 0..32
 constexpr int kGrid = 16;  // coarse search grid over the plane (x), half of it in y
 // Brackets grow by a factor of 2 from the smallest step; bisection then halves the bracket 12
-// times: 0.025% of the radius. (A finer growth, 1.25 with 10 bisections, reaches the same
-// precision with twice the rays: the table is on the critical path of every viewer edit.)
+// times: 1/4096 of the bracket's lower end, about 0.012% of the radius. (A finer growth, 1.25 with
+// 10 bisections, reaches the same precision with twice the rays: the table is on the critical path
+// of every viewer edit.)
 constexpr double kBracketGrowth = 2.0;
 constexpr int kBisections = 12;
-// The margin on every bound: ten times the bisection's precision. (It was 1% before the
+// The margin on every bound: about twenty times the bisection's precision. (It was 1% before the
 // convexity construction in measure() bounded the region between measured directions. The
 // spectral table needs no more: its bounds at four probe wavelengths contain the region at every
 // wavelength between them with this margin and also with none, in a brute-force check of 465k
@@ -234,14 +235,18 @@ RawBin measure(Probe& probe, double filmR, double domainR,
       out.vertexRadius[k + 1] = b * scale;
     }
   };
-  // The region is convex, so between two neighbouring boundary points P_m, P_m+1 it lies inside
-  // the lines through P_m-1 P_m and P_m+2 P_m+1, extended: within the triangle P_m X P_m+1, X
-  // where they meet. Each edge must therefore contain those X too, not only the boundary points.
-  // Where the boundary turns sharply between two measured directions (the tips of a cat's eye at
-  // the rim of the image circle) the region otherwise reached past the chords: points there lay
-  // in one of the two bins the sampler blends only, and the density it reported was up to twice
-  // the true one (exit_pupil_test.cpp). X is taken only where the lines meet outside the chord
-  // and within the wedge, and not beyond 1.5 times the farther point (nearly parallel lines).
+  // A convex region, between two neighbouring boundary points P_m, P_m+1, lies inside the lines
+  // through P_m-1 P_m and P_m+2 P_m+1, extended: within the triangle P_m X P_m+1, X where they
+  // meet. Each edge must therefore contain those X too, not only the boundary points. Where the
+  // boundary turns sharply between two measured directions (the tips of a cat's eye at the rim
+  // of the image circle) the region otherwise reached past the chords: points there lay in one
+  // of the two bins the sampler blends only, and the density it reported was up to twice the
+  // true one (exit_pupil_test.cpp). X is taken where the lines meet outside the chord and within
+  // the wedge, however far (a sharp tip); only a point beyond 100 times the farther boundary
+  // point, which no real region has, is left out as a numerical accident. The pass region of one
+  // wavelength is an intersection of the clear apertures' images, convex in practice; the
+  // spectral table's union of four wavelengths' regions need not be, and there the bound rests
+  // on the brute-force test in spectral_trace_test.cpp.
   {
     std::vector<glm::dvec2> boundary(kHalfDirections + 2);  // m = -1 .. 33, mirrored at the ends
     for (int m = -1; m <= kHalfDirections; ++m) {
@@ -261,7 +266,7 @@ RawBin measure(Probe& probe, double filmR, double domainR,
       const glm::dvec2 x = p + s1 * d1;
       const bool outsideChord = cross(q - p, x - p) < 0.0;  // right of p -> q (counter-clockwise)
       const bool inWedge = cross(p, x) >= 0.0 && cross(x, q) >= 0.0;
-      const double limit = 1.5 * std::max(glm::length(p), glm::length(q));
+      const double limit = 100.0 * std::max(glm::length(p), glm::length(q));
       if (outsideChord && inWedge && glm::length(x) <= limit) contain(x.x, x.y);
     }
   }

@@ -114,7 +114,7 @@ std::optional<std::pair<int, std::string>> readApertureLine(std::string_view spe
       imagePath = std::filesystem::path(fileName).parent_path() / imagePath;
     std::string error;
     std::error_code ec;
-    const std::optional<ApertureShape> builtin = builtinPbrtAperture(read.imageName, nullptr);
+    const std::optional<ApertureShape> builtin = builtinPbrtAperture(read.imageName);
     if (builtin && builtin->kind == ApertureShape::Kind::Image &&
         !std::filesystem::exists(imagePath, ec)) {
       // pbrt-v4's built-in masks ("star", "gaussian"), as a lens opened from a scene with one

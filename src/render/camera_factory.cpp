@@ -50,7 +50,7 @@ std::shared_ptr<const optics::LensSystem> withSceneAperture(
   std::string problem;
   std::optional<optics::ApertureShape> shape;
   if (camera.aperturePath.empty()) {
-    shape = optics::builtinPbrtAperture(camera.apertureName, &problem);
+    shape = optics::builtinPbrtAperture(camera.apertureName);
   } else {
     auto mask = optics::loadApertureMask(camera.aperturePath, &problem);
     if (mask) {
@@ -65,8 +65,7 @@ std::shared_ptr<const optics::LensSystem> withSceneAperture(
     diagnostics.warning(
         camera.apertureLocation,
         (problem.empty() ? "aperture \"" + camera.apertureName + "\" is not usable" : problem) +
-            (problem.find("circular stop") == std::string::npos ? "; the lens's own stop is kept"
-                                                                : ""));
+            "; the lens's own stop is kept");
     return system;
   }
   return shaped;

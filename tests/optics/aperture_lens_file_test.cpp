@@ -141,7 +141,7 @@ TEST(ApertureLensFile, PbrtsBuiltInMasksReadBackByName) {
     ASSERT_EQ(shape.kind, ApertureShape::Kind::Image);
     ASSERT_TRUE(shape.mask);
     EXPECT_TRUE(shape.mirrored);
-    const auto builtin = builtinPbrtAperture(name, nullptr);
+    const auto builtin = builtinPbrtAperture(name);
     EXPECT_EQ(shape.mask->open, mirroredMask(*builtin->mask)->open);
   }
   std::filesystem::remove_all(dir);

@@ -64,7 +64,7 @@ TEST(AxialBeamArea, PbrtsStarPassesThePentagramsArea) {
   // Ten triangles (centre, outer corner, inner corner), outer radius 1, inner
   // r = cos 72 / cos 36, 36 degrees apart: 10 * r sin 36 / 2.
   const double inner = std::cos(72.0 * kPi / 180.0) / std::cos(36.0 * kPi / 180.0);
-  const auto star = builtinPbrtAperture("star", nullptr);
+  const auto star = builtinPbrtAperture("star");
   ASSERT_TRUE(star);
   // The star is a 256-pixel mask, whose open pixels cover 0.4% more than the pentagram: allowed
   // for here, on top of the grid's 0.3%.
