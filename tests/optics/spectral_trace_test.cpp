@@ -31,7 +31,10 @@ std::vector<std::shared_ptr<const LensSystem>> dispersiveLenses() {
   for (const char* name :
        {"flint-landscape-50mm.dat", "cooke-triplet-100mm.dat", "dgauss-100mm.dat"}) {
     auto lens = bundled(name);
-    if (!lens) continue;
+    if (!lens) {
+      ADD_FAILURE() << "cannot load the bundled lens " << name;  // (not a silent skip)
+      continue;
+    }
     EXPECT_TRUE(lens->disperses()) << name;
     out.push_back(lens);
     out.push_back(lens->withStopDiameter(lens->firstOrder().eflMm / 8.0));
