@@ -143,7 +143,15 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   const std::size_t perSample =
       spectral ? static_cast<std::size_t>(std::clamp(job.settings.wavelengthsPerSample, 1, 16)) : 1;
   thread_local std::vector<SpectralSample> spectralSamples;
-  thread_local std::vector<float> wavelengths, wavelengthWeights;
+  thread_local std::vector<float> heroUs, wavelengths, wavelengthWeights;
+  // Sample wavelength j's u: the hero's, and the others at u + j / perSample (mod 1) of the
+  // film's wavelength distribution, each then distributed as the hero.
+  const float spacing = 1.0f / static_cast<float>(perSample);
+  auto wavelengthU = [spacing](float heroU, std::size_t j) {
+    float v = heroU + static_cast<float>(j) * spacing;
+    if (v >= 1.0f) v -= 1.0f;
+    return v;
+  };
   thread_local std::vector<std::int32_t> wavelengthPixels;
   thread_local std::vector<Splat> pendingSplats;
   constexpr std::size_t kSplatBatch = 4096;
@@ -244,15 +252,17 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       wavelengths.resize(n * perSample);
       wavelengthWeights.resize(n * perSample);
       wavelengthPixels.resize(n * perSample);
-      const float spacing = 1.0f / static_cast<float>(perSample);
+      // Where the camera reads only the hero (a lens without dispersion), the others are drawn
+      // after the rays, for the samples that left the lens: through the course's scenes most
+      // samples are blocked in the lens, and each draw is 16 table reads.
+      const std::size_t drawnNow = camera.readsEveryWavelength() ? perSample : 1;
+      heroUs.resize(n);
       for (int p = 0; p < pixels; ++p) {
         for (int s = 0; s < count; ++s) {
           const std::size_t i = static_cast<std::size_t>(p) * samplesPerPixel + s;
-          const float u = spectralSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s));
-          for (std::size_t j = 0; j < perSample; ++j) {
-            float v = u + static_cast<float>(j) * spacing;
-            if (v >= 1.0f) v -= 1.0f;
-            spectralSamples[i * perSample + j] = film.sample(v);
+          heroUs[i] = spectralSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s));
+          for (std::size_t j = 0; j < drawnNow; ++j) {
+            spectralSamples[i * perSample + j] = film.sample(wavelengthU(heroUs[i], j));
             wavelengths[i * perSample + j] = spectralSamples[i * perSample + j].wavelengthNm;
           }
         }
@@ -272,6 +282,16 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
     statistics.cameraSamples += m;
+    if (spectral && !camera.readsEveryWavelength()) {
+      const SpectralFilm& film = SpectralFilm::instance();
+      for (std::size_t r = 0; r < m; ++r) {
+        if (!passed[r]) continue;
+        for (std::size_t j = 1; j < perSample; ++j) {
+          spectralSamples[r * perSample + j] = film.sample(wavelengthU(heroUs[r / points], j));
+          wavelengths[r * perSample + j] = spectralSamples[r * perSample + j].wavelengthNm;
+        }
+      }
+    }
     for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
       const auto ownPixel =

@@ -114,6 +114,11 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
   return true;
 }
 
+bool RealisticCamera::readsEveryWavelength() const {
+  // (As generateRays' weighWavelengths, for any number of wavelengths.)
+  return spectral_ && lens_->disperses();
+}
+
 void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoints,
                                    const glm::vec2* lensSamples, CameraRay* rays,
                                    std::uint8_t* passed,

@@ -136,6 +136,60 @@ double rmsDifference(const RenderSnapshot& a, const RenderSnapshot& b) {
 //   under 0.6 of one wavelength per path's (measured 0.42), and at most 1.6 times the RGB
 //   render's against its own converged picture (measured 1.46; issue 23 asks for 1.5 on its
 //   benchmark, bench/spectral-error.sh).
+// A camera as another, but reading every wavelength of a sample before its ray is traced: the
+// renderer then draws them all up front, as it does for a lens that disperses.
+class EveryWavelengthFirst final : public Camera {
+ public:
+  explicit EveryWavelengthFirst(std::shared_ptr<const Camera> inner)
+      : Camera(inner->width(), inner->height()), inner_(std::move(inner)) {}
+  bool generateRay(glm::vec2 raster, glm::vec2 lens, CameraRay& ray) const override {
+    return inner_->generateRay(raster, lens, ray);
+  }
+  void generateRays(std::size_t count, const glm::vec2* raster, const glm::vec2* lens,
+                    CameraRay* rays, std::uint8_t* passed,
+                    const SampleWavelengths* wavelengths) const override {
+    inner_->generateRays(count, raster, lens, rays, passed, wavelengths);
+  }
+  bool maySeeScene(glm::vec2 a, glm::vec2 b) const override { return inner_->maySeeScene(a, b); }
+  void prepare() const override { inner_->prepare(); }
+  int lensPointsPerSample() const override { return inner_->lensPointsPerSample(); }
+  bool spectral() const override { return inner_->spectral(); }
+  bool readsEveryWavelength() const override { return true; }
+  float pixelSpreadRadians() const override { return inner_->pixelSpreadRadians(); }
+
+ private:
+  std::shared_ptr<const Camera> inner_;
+};
+
+// Through a lens that does not disperse the camera reads only the hero wavelength, and the
+// renderer draws a sample's others after its ray, only if it left the lens (most samples of the
+// course's scenes do not). The picture is the one with every wavelength drawn first, bit for
+// bit; a lens that disperses reads them all.
+TEST(SpectralRender, DrawingTheOtherWavelengthsAfterTheRayChangesNothing) {
+  CameraOverrides overrides;
+  overrides.lensPath =
+      std::filesystem::path(LENSLAB_SOURCE_DIR) / "../shared/reference/lenses/dgauss.50mm.dat";
+  overrides.width = 90;
+  overrides.height = 60;
+  overrides.falloff.spectral = SpectralMode::On;
+  RenderJob job = loadJob(defaultScene(), 8, overrides);
+  ASSERT_TRUE(job.camera && job.camera->spectral());
+  EXPECT_FALSE(job.camera->readsEveryWavelength());
+  RenderJob eager = job;
+  eager.camera = std::make_shared<EveryWavelengthFirst>(job.camera);
+  const auto after = renderToCompletion(job);
+  const auto first = renderToCompletion(eager);
+  ASSERT_TRUE(after && first);
+  double sum = 0.0;
+  for (float v : after->rgb) sum += v;
+  EXPECT_GT(sum, 0.0);
+  EXPECT_EQ(after->rgb, first->rgb);
+
+  RenderJob dispersive = loadJob(defaultScene(), 1, throughBundledLens("dgauss-50mm.dat", 30, 20));
+  ASSERT_TRUE(dispersive.camera && dispersive.camera->spectral());
+  EXPECT_TRUE(dispersive.camera->readsEveryWavelength());
+}
+
 TEST(SpectralRender, HeroWavelengthsAreUnbiasedAndCutTheColourNoise) {
   const auto scene = defaultScene();
   CameraOverrides overrides = throughBundledLens("dgauss-50mm.dat", 120, 80);
