@@ -142,6 +142,10 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   const bool spectral = camera.spectral();
   const std::size_t perSample =
       spectral ? static_cast<std::size_t>(std::clamp(job.settings.wavelengthsPerSample, 1, 16)) : 1;
+  // Where the camera reads only the hero (a lens without dispersion), a sample's other
+  // wavelengths are drawn after the rays, for the samples that left the lens: through the
+  // course's scenes most samples are blocked in the lens, and each draw is 16 table reads.
+  const bool drawOthersAfterRays = spectral && !camera.readsEveryWavelength();
   thread_local std::vector<SpectralSample> spectralSamples;
   thread_local std::vector<float> heroUs, wavelengths, wavelengthWeights;
   // Sample wavelength j's u: the hero's, and the others at u + j / perSample (mod 1) of the
@@ -252,10 +256,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       wavelengths.resize(n * perSample);
       wavelengthWeights.resize(n * perSample);
       wavelengthPixels.resize(n * perSample);
-      // Where the camera reads only the hero (a lens without dispersion), the others are drawn
-      // after the rays, for the samples that left the lens: through the course's scenes most
-      // samples are blocked in the lens, and each draw is 16 table reads.
-      const std::size_t drawnNow = camera.readsEveryWavelength() ? perSample : 1;
+      const std::size_t drawnNow = drawOthersAfterRays ? 1 : perSample;
       heroUs.resize(n);
       for (int p = 0; p < pixels; ++p) {
         for (int s = 0; s < count; ++s) {
@@ -282,7 +283,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
     statistics.cameraSamples += m;
-    if (spectral && !camera.readsEveryWavelength()) {
+    if (drawOthersAfterRays) {
       const SpectralFilm& film = SpectralFilm::instance();
       for (std::size_t r = 0; r < m; ++r) {
         if (!passed[r]) continue;

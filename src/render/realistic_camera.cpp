@@ -115,7 +115,7 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
 }
 
 bool RealisticCamera::readsEveryWavelength() const {
-  // (As generateRays' weighWavelengths, for any number of wavelengths.)
+  // (generateRays weighs the wavelengths, tracing them back, when this holds.)
   return spectral_ && lens_->disperses();
 }
 
@@ -199,7 +199,7 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
   }
   // The hero rays' density in the film-side ray space (see heroWavelengthWeights): the sampling
   // density on the plane over Kolb's geometric factor cos^4(theta) / Z^2.
-  const bool weighWavelengths = spectral && wavelengths->perSample > 1 && lens_->disperses();
+  const bool weighWavelengths = spectral && wavelengths->perSample > 1 && readsEveryWavelength();
   thread_local std::vector<float> heroDensity, heroCos4;
   if (weighWavelengths) {
     heroDensity.resize(count);
