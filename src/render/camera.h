@@ -30,6 +30,7 @@ struct SampleWavelengths {
   // lens does not disperse): the renderer knows it exactly, where a float raster point at
   // x >= 512 can round into the next pixel.
   static constexpr std::int32_t kSamplePixel = -2;
+  static constexpr int kMaxPerSample = 16;  // the renderer draws at most this many
   int perSample = 1;
   const float* nm = nullptr;
   float* weights = nullptr;

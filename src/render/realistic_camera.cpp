@@ -1,6 +1,7 @@
 #include "render/realistic_camera.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -222,7 +223,8 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
               rays[i]);
   }
   if (weighWavelengths)
-    heroWavelengthWeights(count, batch, heroDensity.data(), heroCos4.data(), *wavelengths);
+    heroWavelengthWeights(count, rasterPoints, batch, heroDensity.data(), heroCos4.data(),
+                          *wavelengths);
   else if (spectral)
     shareWeightEvenly(count, rays, passed, *wavelengths);
 }
@@ -241,18 +243,28 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
 // at the ray R, where (x_k, q_k, theta_k) is R traced back at lambda_k; 0 when that ray is
 // blocked or misses the film. (Every pixel is sampled alike, so the film point's own density is
 // the same constant for all k.) The sample traced R at its hero wavelength; each wavelength j of
-// the sample then gets the balance heuristic's weight over the sample's K strategies (which of
-// its wavelengths was the hero), in the pixel its own ray lands in:
-//   weight_j = [R reaches the film at lambda_j] c_j / sum_k p_k(R),
-// with c_j = 1 (c_j = 1 / cos^4(theta_j) for the teaching toggle without cos^4). Where the lens
-// does not disperse every p_k is the hero's and weight_j = Kolb's weight / K. The estimate is
-// unbiased for every pixel and wavelength and carries K wavelengths of colour per scene path:
-// the colour noise of one wavelength per path (the weight's variance across the spectrum) mostly
-// cancels. A lens with strong longitudinal colour sends the other wavelengths pixels away (the
-// flint landscape lens's F-C focus shift of 2 mm blurs them by several pixels), so the renderer
-// adds them to other pixels than the sample's. The cost is K - 1 traces back through the lens
-// per sample, vectorised as the forward trace.
-void RealisticCamera::heroWavelengthWeights(std::size_t count, const optics::LensRayBatch& exit,
+// the sample then gets a multiple importance sampling weight over the sample's K strategies
+// (which of its wavelengths was the hero), in the pixel P_j its own ray lands in:
+//   weight_j = [R reaches the film at lambda_j] c_j g_0j / sum_k p_k(R) g_kj,
+//   g_kj = 1 where strategy k's film point x_k lies in P_j, else s (kOtherPixelShare, 1/2),
+// with c_j = 1 (c_j = 1 / cos^4(theta_j) for the teaching toggle without cos^4). For any s the
+// weights of the K strategies sum to 1 at every (R, lambda_j), so the estimate is unbiased for
+// every pixel and wavelength; s = 1 is the balance heuristic. Where the lens does not disperse
+// every p_k is the hero's, every x_k is the hero's film point, and weight_j = Kolb's weight / K.
+// It carries K wavelengths of colour per scene path: the colour noise of one wavelength per path
+// (the weight's variance across the spectrum) mostly cancels. A lens that disperses sends the
+// other wavelengths to other pixels than the sample's (the flint landscape lens's F-C focus
+// shift of 2 mm blurs them by several pixels; even the corrected double-Gauss sends 6% of them
+// across a pixel edge at 300 x 200), so the renderer adds them there. How many such wavelengths
+// land in a pixel is random, where the RGB render's stratified film points give each pixel its
+// own samples exactly; s < 1 moves weight toward the strategies whose film point lies in the
+// pixel the light lands in, so less of a pixel's value rides on that count. s = 0 would drop
+// those wavelengths instead, concentrating the weight on fewer wavelengths: more colour noise.
+// Measured (bench/README.md), s = 1/2 gave the least error of 0, 0.15, 0.3, 0.5, 0.7 and 1 on
+// all three dispersive bundled lenses. The cost is K - 1 traces back through the lens per
+// sample, vectorised as the forward trace.
+void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
+                                            const optics::LensRayBatch& exit,
                                             const float* heroDensity, const float* heroCos4,
                                             const SampleWavelengths& wavelengths) const {
   const std::size_t k = static_cast<std::size_t>(wavelengths.perSample);
@@ -348,8 +360,12 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const optics::Len
     backPixel[b] = counts ? backPixel[b] : -1;
   }
 
-  // The balance heuristic per sample. c_j: 1 with Kolb's cos^4; the teaching toggle measures
-  // the radiance without it, c_j = 1 / cos^4 of the wavelength's own film ray.
+  // The weights: the balance heuristic over the sample's K strategies, each strategy's density
+  // taken at kOtherPixelShare where that strategy's own film point lies in another pixel than the
+  // one the wavelength lands in (see the comment above this function). c_j: 1 with Kolb's cos^4;
+  // the teaching toggle measures the radiance without it, c_j = 1 / cos^4 of the wavelength's
+  // own film ray.
+  constexpr float kOtherPixelShare = 0.5f;
   float* weights = wavelengths.weights;
   for (std::size_t i = 0; i < count; ++i) {
     float* out = weights + i * k;
@@ -359,17 +375,44 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const optics::Len
       std::fill(pixelOut, pixelOut + k, -1);
       continue;
     }
+    // Strategy m's density and film pixel: the hero's (m = 0) from its own film point, the
+    // others' from their back traces (-1, density 0: that strategy cannot make this ray).
     const std::size_t first = backOf[i];
-    double total = heroDensity[i];
-    for (std::size_t j = 0; j < others; ++j) total += backDensity[first + j];
-    const double invTotal = 1.0 / total;
-    out[0] = static_cast<float>(cos4Weighting_ ? invTotal : invTotal / heroCos4[i]);
-    pixelOut[0] = SampleWavelengths::kSamplePixel;
+    std::array<float, SampleWavelengths::kMaxPerSample> density;
+    std::array<std::int32_t, SampleWavelengths::kMaxPerSample> pixel;
+    density[0] = heroDensity[i];
+    pixel[0] = static_cast<std::int32_t>(rasterPoints[i].y) * width_ +
+               static_cast<std::int32_t>(rasterPoints[i].x);
+    float densitySum = density[0];
+    bool onePixel = true;  // every wavelength that reaches the film lands in the hero's pixel
     for (std::size_t j = 0; j < others; ++j) {
-      const std::size_t b = first + j;
-      const double c = cos4Weighting_ ? 1.0 : 1.0 / backCos4[b];
-      out[1 + j] = backPixel[b] >= 0 ? static_cast<float>(c * invTotal) : 0.0f;
-      pixelOut[1 + j] = backPixel[b];
+      density[1 + j] = backDensity[first + j];
+      pixel[1 + j] = backPixel[first + j];
+      densitySum += density[1 + j];
+      onePixel &= pixel[1 + j] == pixel[0] || pixel[1 + j] < 0;
+    }
+    if (onePixel && cos4Weighting_) {  // the common case: the plain balance heuristic
+      for (std::size_t j = 0; j < k; ++j) {
+        out[j] = pixel[j] < 0 ? 0.0f : 1.0f / densitySum;
+        pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
+      }
+      continue;
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (pixel[j] < 0) {
+        out[j] = 0.0f;
+        pixelOut[j] = -1;
+        continue;
+      }
+      // sum over m of density_m (1 where m's pixel is j's, else kOtherPixelShare)
+      float samePixel = 0.0f;
+      for (std::size_t m = 0; m < k; ++m) samePixel += pixel[m] == pixel[j] ? density[m] : 0.0f;
+      const float total = kOtherPixelShare * densitySum + (1.0f - kOtherPixelShare) * samePixel;
+      const float heroShare = pixel[0] == pixel[j] ? 1.0f : kOtherPixelShare;
+      const float c =
+          cos4Weighting_ ? 1.0f : 1.0f / (j == 0 ? heroCos4[i] : backCos4[first + j - 1]);
+      out[j] = c * heroShare / total;
+      pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
     }
   }
 }

@@ -69,9 +69,9 @@ class RealisticCamera final : public Camera {
   // The exposure weight of each wavelength of each sample, for a lens that disperses: `exit` is
   // the batch of rays leaving the lens at the hero wavelengths, heroDensity[i] the density of
   // ray i in the film-side ray space (see the .cpp), heroCos4[i] its cos^4(theta).
-  void heroWavelengthWeights(std::size_t count, const optics::LensRayBatch& exit,
-                             const float* heroDensity, const float* heroCos4,
-                             const SampleWavelengths& wavelengths) const;
+  void heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
+                             const optics::LensRayBatch& exit, const float* heroDensity,
+                             const float* heroCos4, const SampleWavelengths& wavelengths) const;
 
   std::shared_ptr<const optics::LensSystem> lens_;
   glm::mat4 worldFromLensMm_;
