@@ -141,7 +141,9 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   // Camera's SampleWavelengths).
   const bool spectral = camera.spectral();
   const std::size_t perSample =
-      spectral ? static_cast<std::size_t>(std::clamp(job.settings.wavelengthsPerSample, 1, 16)) : 1;
+      spectral ? static_cast<std::size_t>(std::clamp(job.settings.wavelengthsPerSample, 1,
+                                                     SampleWavelengths::kMaxPerSample))
+               : 1;
   // Where the camera reads only the hero (a lens without dispersion), a sample's other
   // wavelengths are drawn after the rays, for the samples that left the lens: through the
   // course's scenes most samples are blocked in the lens, and each draw is 16 table reads.
@@ -248,9 +250,10 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     }
     SampleWavelengths sampleWavelengths;
     if (spectral) {
-      // The hero at the stratified u, the others at u + j / perSample (mod 1) of the film's
+      // The hero at a uniform u, the others at u + j / perSample (mod 1) of the film's
       // wavelength distribution: each is distributed as the hero, and together they spread
-      // over the spectrum.
+      // over the spectrum, all of the pixel's samples' wavelengths stratified together
+      // (heroWavelengthSample01 in sampler.h).
       const SpectralFilm& film = SpectralFilm::instance();
       spectralSamples.resize(n * perSample);
       wavelengths.resize(n * perSample);
@@ -261,7 +264,8 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       for (int p = 0; p < pixels; ++p) {
         for (int s = 0; s < count; ++s) {
           const std::size_t i = static_cast<std::size_t>(p) * samplesPerPixel + s;
-          heroUs[i] = spectralSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s));
+          heroUs[i] = heroWavelengthSample01(seeds[p], static_cast<std::uint32_t>(firstSample + s),
+                                             static_cast<std::uint32_t>(perSample));
           for (std::size_t j = 0; j < drawnNow; ++j) {
             spectralSamples[i * perSample + j] = film.sample(wavelengthU(heroUs[i], j));
             wavelengths[i * perSample + j] = spectralSamples[i * perSample + j].wavelengthNm;

@@ -7,6 +7,7 @@
 // After B. Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4), 2020. Power-of-two prefixes
 // of the index range stay stratified, which suits progressive waves of 1, 1, 2, 4, ... samples.
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cstdint>
@@ -295,6 +296,25 @@ inline float spectralSample01(const PixelSeeds& pixel, std::uint32_t sampleIndex
   // Owen scrambling of a value v is reverseBits(laineKarras(reverseBits(v))); the table already
   // gives the reversed value.
   return toUnitFloat(reverseBits(laineKarras(kSobolThirdReversed(shuffled), seed)));
+}
+
+// The hero wavelength's u of a camera sample that carries `perSample` wavelengths at u + j /
+// perSample (mod 1): u = (v + b) / perSample, with v = spectralSample01 and b the hero's band,
+// the sample index Owen-shuffled with a seed of its own, modulo perSample. u is uniform, and the
+// pixel's samples' wavelengths, (v + l) / perSample for every l, keep v's stratification: over
+// any power-of-two prefix of n samples, one in each of the n x perSample strata. (The hero at a
+// stratified u instead leaves them in n strata, perSample to a stratum.) The shuffle is a nested
+// permutation, so every aligned run of perSample samples (a power of two) has one hero in each
+// band; its seed is not the lens pair's, so a sample's band does not follow its v.
+inline float heroWavelengthSample01(const PixelSeeds& pixel, std::uint32_t sampleIndex,
+                                    std::uint32_t perSample) {
+  using namespace sampler_detail;
+  const std::uint32_t seed = hashCombine(pixel.leadingPairs[1].shuffle, 0x68e31da4u);
+  const std::uint32_t band = reverseBits(laineKarras(reverseBits(sampleIndex), seed)) % perSample;
+  // (v + band) / perSample is below 1, but can round to 1 in float.
+  const float u = (spectralSample01(pixel, sampleIndex) + static_cast<float>(band)) /
+                  static_cast<float>(perSample);
+  return std::min(u, 0x1.fffffep-1f);
 }
 
 }  // namespace lenslab::render

@@ -16,10 +16,11 @@
 //   that does not disperse renders today's RGB picture in expectation. White's spectrum is smooth
 //   and positive across 380-780 nm. (The scene is RGB and has no dispersive material: the spectrum
 //   is needed only at a camera sample's wavelengths, and never stored.)
-// - Wavelengths from the density p(lambda) below: a camera sample's first at a u stratified
-//   across a pixel's samples by the renderer (spectralSample01 in sampler.h: jointly with the
-//   lens point), its others at u + j / K (mod 1), each then distributed as the first (hero
-//   wavelengths: Camera's SampleWavelengths and RealisticCamera::heroWavelengthWeights).
+// - Wavelengths from the density p(lambda) below: a camera sample's first at a uniform u whose
+//   position within its 1 / K of [0, 1) is stratified across a pixel's samples by the renderer
+//   (heroWavelengthSample01 in sampler.h: jointly with the lens point), its others at
+//   u + j / K (mod 1), each then distributed as the first (hero wavelengths: Camera's
+//   SampleWavelengths and RealisticCamera::heroWavelengthWeights).
 //   Wavelength lambda's linear sRGB is T(lambda) L_rgb with
 //     T(lambda) = srgbOfLine(lambda) basis(lambda)^T / p(lambda)
 //   (basis: the spectrum's value per unit of each input channel). E[T] = I exactly (see above):
