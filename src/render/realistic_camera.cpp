@@ -24,6 +24,63 @@ float exposureWeight(glm::dvec3 toPupil, const optics::PupilSample& pupil, bool 
   return static_cast<float>((cos4 ? cos2 * cos2 : 1.0) / (pupil.pdfPerMm2 * z * z));
 }
 
+// What landBackRays needs of the camera.
+struct BackRayLanding {
+  bool exitPupil = true;
+  float planeZ = 0, diskRadiusSq = 0, diskPdf = 0;
+  float halfWidthMm = 0, halfHeightMm = 0, rasterPerMmX = 0, rasterPerMmY = 0;
+  float width = 0, height = 0;
+};
+
+// For RealisticCamera::heroWavelengthWeights, each ray traced back toward the film: its raster
+// column (-1 off the film) and row, cos^4(theta), the density factor Z^2 / cos^4 (0 off the
+// film), and for the exit-pupil table its film radius (for the table's density, 0 off the film)
+// or for the rear disk that disk's density where the ray crosses its plane. Without branches,
+// and a function of its own with restrict parameters, so that GCC vectorizes the loop (it does
+// not trust restrict on local pointers). Blocked rays' coordinates may be infinite or NaN (the
+// kernels keep computing on them): only in-range values are converted to integers.
+void landBackRays(const BackRayLanding& l, std::size_t n, const float* __restrict ox,
+                  const float* __restrict oy, const float* __restrict oz,
+                  const float* __restrict dxs, const float* __restrict dys,
+                  const float* __restrict dzs, const std::uint8_t* __restrict alive,
+                  float* __restrict densityOut, float* __restrict cos4Out,
+                  float* __restrict planeOut, std::int32_t* __restrict columnOut,
+                  std::int32_t* __restrict rowOut) {
+  const bool exitPupil = l.exitPupil;
+  const float planeZ = l.planeZ, planeZSquared = l.planeZ * l.planeZ;
+  const float diskRadiusSq = l.diskRadiusSq, diskPdf = l.diskPdf;
+  const float halfWidthMm = l.halfWidthMm, halfHeightMm = l.halfHeightMm;
+  const float rasterPerMmX = l.rasterPerMmX, rasterPerMmY = l.rasterPerMmY;
+  const float width = l.width, height = l.height;
+  for (std::size_t b = 0; b < n; ++b) {
+    const float dz = dzs[b];
+    const bool towardFilm = (alive[b] != 0) & (dz < 0.0f);
+    const float safeDz = towardFilm ? dz : -1.0f;
+    const float toFilm = -oz[b] / safeDz;
+    const float filmX = ox[b] + toFilm * dxs[b];
+    const float filmY = oy[b] + toFilm * dys[b];
+    const float rasterX = (halfWidthMm - filmX) * rasterPerMmX;
+    const float rasterY = (filmY + halfHeightMm) * rasterPerMmY;
+    const bool onFilm =
+        towardFilm & (rasterX >= 0.0f) & (rasterX < width) & (rasterY >= 0.0f) & (rasterY < height);
+    // (The caller makes the pixel index: SSE2 has no 32-bit multiply to vectorize it with.)
+    const auto column = static_cast<std::int32_t>(onFilm ? rasterX : 0.0f);
+    columnOut[b] = onFilm ? column : -1;
+    rowOut[b] = static_cast<std::int32_t>(onFilm ? rasterY : 0.0f);
+    // Directions stay unit length through the trace: -dz is the cosine to the axis.
+    const float cos2 = dz * dz;
+    cos4Out[b] = cos2 * cos2;
+    densityOut[b] = onFilm ? planeZSquared / (cos2 * cos2) : 0.0f;
+    // Both plane answers, and a select: a branch would keep the loop from vectorizing.
+    const float filmRadius = onFilm ? std::sqrt(filmX * filmX + filmY * filmY) : 0.0f;
+    const float toPlane = (planeZ - oz[b]) / safeDz;
+    const float qx = ox[b] + toPlane * dxs[b];
+    const float qy = oy[b] + toPlane * dys[b];
+    const float diskDensity = qx * qx + qy * qy <= diskRadiusSq ? diskPdf : 0.0f;
+    planeOut[b] = exitPupil ? filmRadius : diskDensity;
+  }
+}
+
 }  // namespace
 
 RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
@@ -284,70 +341,60 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   back.resize(backCount);
   backNm.resize(backCount);
   constexpr float kBackOffMm = 1.0f;
+  // (Plain pointers: thread_local vectors are re-checked for initialisation at every access.)
+  float *ox = back.ox.data(), *oy = back.oy.data(), *oz = back.oz.data();
+  float *dxs = back.dx.data(), *dys = back.dy.data(), *dzs = back.dz.data();
+  std::uint8_t* backAlive = back.alive.data();
+  float* nm = backNm.data();
+  const std::uint32_t* firstBack = backOf.data();
   for (std::size_t i = 0; i < count; ++i) {
     if (!exit.alive[i]) continue;
-    for (std::size_t j = 0; j < others; ++j) {
-      const std::size_t b = backOf[i] + j;
-      const float dx = exit.dx[i], dy = exit.dy[i], dz = exit.dz[i];
-      back.ox[b] = exit.ox[i] + kBackOffMm * dx;
-      back.oy[b] = exit.oy[i] + kBackOffMm * dy;
-      back.oz[b] = exit.oz[i] + kBackOffMm * dz;
-      back.dx[b] = -dx;
-      back.dy[b] = -dy;
-      back.dz[b] = -dz;
-      back.alive[b] = 1;
-      backNm[b] = wavelengths.nm[i * k + 1 + j];
+    const float x = exit.ox[i], y = exit.oy[i], z = exit.oz[i];
+    const float dx = exit.dx[i], dy = exit.dy[i], dz = exit.dz[i];
+    const float* otherNm = wavelengths.nm + i * k + 1;
+    for (std::size_t j = 0, b = firstBack[i]; j < others; ++j, ++b) {
+      ox[b] = x + kBackOffMm * dx;
+      oy[b] = y + kBackOffMm * dy;
+      oz[b] = z + kBackOffMm * dz;
+      dxs[b] = -dx;
+      dys[b] = -dy;
+      dzs[b] = -dz;
+      backAlive[b] = 1;
+      nm[b] = otherNm[j];
     }
   }
   lens_->traceFromSceneBatch(back, backNm.data());
 
   const bool exitPupil = sampling_ == LensSampling::ExitPupil;
-  const auto planeZ = static_cast<float>(lens_->rearVertexZ());
-  const float planeZSquared = planeZ * planeZ;
-  const auto diskRadiusSq =
+  BackRayLanding landing;
+  landing.exitPupil = exitPupil;
+  landing.planeZ = static_cast<float>(lens_->rearVertexZ());
+  landing.diskRadiusSq =
       static_cast<float>(lens_->rearApertureRadiusMm() * lens_->rearApertureRadiusMm());
-  const auto diskPdf = static_cast<float>(exitPupil ? 0.0 : rearDiskPdfPerMm2());
+  landing.diskPdf = static_cast<float>(exitPupil ? 0.0 : rearDiskPdfPerMm2());
   // filmPointMm's inverse, in single precision with the divisions taken out.
-  const auto halfWidthMm = static_cast<float>(0.5 * filmWidthMm_);
-  const auto halfHeightMm = static_cast<float>(0.5 * filmHeightMm_);
-  const auto rasterPerMmX = static_cast<float>(1.0 / mmPerRasterX_);
-  const auto rasterPerMmY = static_cast<float>(1.0 / mmPerRasterY_);
-  const auto widthF = static_cast<float>(width_), heightF = static_cast<float>(height_);
+  landing.halfWidthMm = static_cast<float>(0.5 * filmWidthMm_);
+  landing.halfHeightMm = static_cast<float>(0.5 * filmHeightMm_);
+  landing.rasterPerMmX = static_cast<float>(1.0 / mmPerRasterX_);
+  landing.rasterPerMmY = static_cast<float>(1.0 / mmPerRasterY_);
+  landing.width = static_cast<float>(width_);
+  landing.height = static_cast<float>(height_);
 
-  // Each back ray, without branches: where it meets the film (pixel -1 off it), its cos^4, and
-  // its density p_k (0 when it does not reach the film).
+  // Each back ray: where it meets the film (pixel -1 off it), its cos^4, and its density p_k (0
+  // when it does not reach the film).
   thread_local std::vector<float> backDensity, backCos4, planePdf;
-  thread_local std::vector<std::int32_t> backPixel;
+  thread_local std::vector<std::int32_t> backPixel, backRow;
   backDensity.resize(backCount);
   backCos4.resize(backCount);
   planePdf.resize(backCount);
   backPixel.resize(backCount);
+  backRow.resize(backCount);
+  landBackRays(landing, backCount, back.ox.data(), back.oy.data(), back.oz.data(), back.dx.data(),
+               back.dy.data(), back.dz.data(), back.alive.data(), backDensity.data(),
+               backCos4.data(), planePdf.data(), backPixel.data(), backRow.data());
   for (std::size_t b = 0; b < backCount; ++b) {
-    const float dz = back.dz[b];
-    const bool towardFilm = back.alive[b] && dz < 0.0f;
-    const float safeDz = towardFilm ? dz : -1.0f;
-    const float toFilm = -back.oz[b] / safeDz;
-    const float filmX = back.ox[b] + toFilm * back.dx[b];
-    const float filmY = back.oy[b] + toFilm * back.dy[b];
-    const float rasterX = (halfWidthMm - filmX) * rasterPerMmX;
-    const float rasterY = (filmY + halfHeightMm) * rasterPerMmY;
-    const bool onFilm =
-        towardFilm && rasterX >= 0.0f && rasterX < widthF && rasterY >= 0.0f && rasterY < heightF;
-    backPixel[b] = onFilm ? static_cast<int>(rasterY) * width_ + static_cast<int>(rasterX) : -1;
-    // Directions stay unit length through the trace: -dz is the cosine to the axis.
-    const float cos2 = dz * dz;
-    backCos4[b] = cos2 * cos2;
-    backDensity[b] = onFilm ? planeZSquared / (cos2 * cos2) : 0.0f;
-    if (exitPupil) {
-      // The film radius, for now; 0 off the film, where a blocked ray's coordinates may be
-      // infinite or NaN (the kernels keep computing on blocked rays).
-      planePdf[b] = onFilm ? std::sqrt(filmX * filmX + filmY * filmY) : 0.0f;
-    } else {
-      const float toPlane = (planeZ - back.oz[b]) / safeDz;
-      const float qx = back.ox[b] + toPlane * back.dx[b];
-      const float qy = back.oy[b] + toPlane * back.dy[b];
-      planePdf[b] = qx * qx + qy * qy <= diskRadiusSq ? diskPdf : 0.0f;
-    }
+    const std::int32_t column = backPixel[b];
+    backPixel[b] = column < 0 ? -1 : backRow[b] * width_ + column;
   }
   if (exitPupil)
     lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), planePdf.data(), backCount);
