@@ -35,6 +35,8 @@ struct SampleWavelengths {
   const float* nm = nullptr;
   float* weights = nullptr;
   std::int32_t* pixels = nullptr;
+  // Per ray (not per wavelength): the pixel the renderer took it for, y * width + x.
+  const std::int32_t* samplePixels = nullptr;
 };
 
 class Camera {

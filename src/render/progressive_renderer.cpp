@@ -152,13 +152,11 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   thread_local std::vector<float> heroUs, wavelengths, wavelengthWeights;
   // Sample wavelength j's u: the hero's, and the others at u + j / perSample (mod 1) of the
   // film's wavelength distribution, each then distributed as the hero.
-  const float spacing = 1.0f / static_cast<float>(perSample);
-  auto wavelengthU = [spacing](float heroU, std::size_t j) {
-    float v = heroU + static_cast<float>(j) * spacing;
-    if (v >= 1.0f) v -= 1.0f;
-    return v;
+  auto wavelengthU = [perSample](float heroU, std::size_t j) {
+    return wavelengthSample01(heroU, static_cast<std::uint32_t>(j),
+                              static_cast<std::uint32_t>(perSample));
   };
-  thread_local std::vector<std::int32_t> wavelengthPixels;
+  thread_local std::vector<std::int32_t> wavelengthPixels, rayPixels;
   thread_local std::vector<Splat> pendingSplats;
   constexpr std::size_t kSplatBatch = 4096;
   struct FlushAtExit {  // also when cancelled
@@ -281,8 +279,14 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     const std::size_t m = n * points;
     const float pointShare = 1.0f / static_cast<float>(points);
     if (spectral) {
+      rayPixels.resize(m);
+      const std::size_t raysPerPixel = static_cast<std::size_t>(samplesPerPixel) * points;
+      for (std::size_t r = 0; r < m; ++r) {
+        const auto& pixel = visible[first + static_cast<int>(r / raysPerPixel)];
+        rayPixels[r] = static_cast<std::int32_t>(pixel.y * width + pixel.x);
+      }
       sampleWavelengths = {static_cast<int>(perSample), wavelengths.data(),
-                           wavelengthWeights.data(), wavelengthPixels.data()};
+                           wavelengthWeights.data(), wavelengthPixels.data(), rayPixels.data()};
     }
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);

@@ -35,8 +35,9 @@ struct RenderSettings {
   // that disperses, whose splats are added in another order).
   int coarseDivisor = 1;
   // A spectral camera's wavelengths per sample (hero wavelength sampling, Camera's
-  // SampleWavelengths): the first chosen by the pixel's stratified sample, the others spaced
-  // evenly after it in the film's wavelength distribution. 1 is one wavelength per path.
+  // SampleWavelengths): spaced evenly in the film's wavelength distribution, the set stratified
+  // over the pixel's samples and the first of them (the hero) drawn uniformly among them
+  // (heroWavelengthSample01 in sampler.h). 1 is one wavelength per path.
   int wavelengthsPerSample = 4;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -317,13 +318,16 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
 // own samples exactly; s < 1 moves weight toward the strategies whose film point lies in the
 // pixel the light lands in, so less of a pixel's value rides on that count. s = 0 would drop
 // those wavelengths instead, concentrating the weight on fewer wavelengths: more colour noise.
-// Measured (bench/README.md), s = 1/2 gave the least error of 0, 0.15, 0.3, 0.5, 0.7 and 1 on
-// all three dispersive bundled lenses. The cost is K - 1 traces back through the lens per
-// sample, vectorised as the forward trace.
+// Measured (bench/README.md, stop 33): of the shares tried on each dispersive bundled lens (0,
+// 0.15, 0.3, 0.5, 0.7, 1 on the dgauss at 300 x 200; 0.3, 0.5, 0.7, 1 on the Cooke triplet and
+// the flint singlet), 1/2 gave the least error, 3.5-6% below 1; 0.3 was within the seeds'
+// spread of it. The cost is K - 1 traces back through the lens per sample, vectorised as the
+// forward trace.
 void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
                                             const optics::LensRayBatch& exit,
                                             const float* heroDensity, const float* heroCos4,
                                             const SampleWavelengths& wavelengths) const {
+  assert(wavelengths.perSample >= 1 && wavelengths.perSample <= SampleWavelengths::kMaxPerSample);
   const std::size_t k = static_cast<std::size_t>(wavelengths.perSample);
   const std::size_t others = k - 1;
   thread_local optics::LensRayBatch back;
@@ -407,8 +411,8 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
     backPixel[b] = counts ? backPixel[b] : -1;
   }
 
-  // The weights: the balance heuristic over the sample's K strategies, each strategy's density
-  // taken at kOtherPixelShare where that strategy's own film point lies in another pixel than the
+  // The weights: over the sample's K strategies, each strategy's density taken at
+  // kOtherPixelShare where that strategy's own film point lies in another pixel than the
   // one the wavelength lands in (see the comment above this function). c_j: 1 with Kolb's cos^4;
   // the teaching toggle measures the radiance without it, c_j = 1 / cos^4 of the wavelength's
   // own film ray.
@@ -428,8 +432,10 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
     std::array<float, SampleWavelengths::kMaxPerSample> density;
     std::array<std::int32_t, SampleWavelengths::kMaxPerSample> pixel;
     density[0] = heroDensity[i];
-    pixel[0] = static_cast<std::int32_t>(rasterPoints[i].y) * width_ +
-               static_cast<std::int32_t>(rasterPoints[i].x);
+    // (The renderer's pixel where it gives one: a float raster point can round into the next.)
+    pixel[0] = wavelengths.samplePixels ? wavelengths.samplePixels[i]
+                                        : static_cast<std::int32_t>(rasterPoints[i].y) * width_ +
+                                              static_cast<std::int32_t>(rasterPoints[i].x);
     float densitySum = density[0];
     bool onePixel = true;  // every wavelength that reaches the film lands in the hero's pixel
     for (std::size_t j = 0; j < others; ++j) {

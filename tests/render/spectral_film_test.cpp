@@ -147,28 +147,39 @@ TEST(SpectralFilm, APixelsWavelengthSamplesAreStratified) {
   EXPECT_NE(spectralSample01(PixelSeeds(1u, 0u), 0u), spectralSample01(PixelSeeds(2u, 0u), 0u));
 }
 
-// A sample's four wavelengths at u, u + 1/4, u + 1/2, u + 3/4 (mod 1) from the hero's u: over
-// every power-of-two prefix of n samples of a pixel, the 4 n values lie one in each of 4 n
-// strata; every aligned run of 4 samples has one hero in each quarter; and over many pixels the
-// hero's quarter does not depend on where in its quarter it lies (u is uniform).
+// A sample's K wavelengths at u, u + 1/K, ... (mod 1) from the hero's u, as the renderer makes
+// them (heroWavelengthSample01, wavelengthSample01):
+// - over every power-of-two prefix of n samples of a pixel, the n K values lie one in each of
+//   n K strata (K = 4, and K = 3, which does not divide the prefixes);
+// - every aligned run of 4 samples has one hero in each quarter (K = 4);
+// - over many pixels the hero's u is uniform (what the estimator's unbiasedness needs).
 TEST(SpectralFilm, APixelsWavelengthSetsAreStratifiedAndTheirHeroesUniform) {
-  constexpr std::uint32_t kPerSample = 4;
-  for (std::uint32_t pixel : {0u, 17u, 123456u}) {
-    const PixelSeeds seeds(pixel, 3u);
-    for (std::uint32_t n : {1u, 2u, 4u, 16u, 64u}) {
-      std::vector<int> hits(n * kPerSample, 0);
-      for (std::uint32_t s = 0; s < n; ++s) {
-        const float hero = heroWavelengthSample01(seeds, s, kPerSample);
-        ASSERT_GE(hero, 0.0f);
-        ASSERT_LT(hero, 1.0f);
-        for (std::uint32_t j = 0; j < kPerSample; ++j) {
-          const double u = std::fmod(static_cast<double>(hero) + j / double(kPerSample), 1.0);
-          ++hits[static_cast<std::size_t>(u * n * kPerSample)];
+  for (std::uint32_t perSample : {4u, 3u}) {
+    for (std::uint32_t pixel : {0u, 17u, 123456u}) {
+      const PixelSeeds seeds(pixel, 3u);
+      for (std::uint32_t n : {1u, 2u, 4u, 16u, 64u}) {
+        std::vector<int> hits(n * perSample, 0);
+        for (std::uint32_t s = 0; s < n; ++s) {
+          const float hero = heroWavelengthSample01(seeds, s, perSample);
+          ASSERT_GE(hero, 0.0f);
+          ASSERT_LT(hero, 1.0f);
+          for (std::uint32_t j = 0; j < perSample; ++j) {
+            const float u = wavelengthSample01(hero, j, perSample);
+            ASSERT_GE(u, 0.0f);
+            ASSERT_LT(u, 1.0f);
+            ++hits[std::min<std::size_t>(static_cast<std::size_t>(u * n * perSample),
+                                         hits.size() - 1)];
+          }
         }
+        for (std::size_t k = 0; k < hits.size(); ++k)
+          EXPECT_EQ(hits[k], 1) << "K " << perSample << " pixel " << pixel << " n " << n
+                                << " stratum " << k;
       }
-      for (std::size_t k = 0; k < hits.size(); ++k)
-        EXPECT_EQ(hits[k], 1) << pixel << " " << n << " " << k;
     }
+  }
+  constexpr std::uint32_t kPerSample = 4;
+  for (std::uint32_t pixel : {0u, 17u, 123456u, 99u}) {
+    const PixelSeeds seeds(pixel, 3u);
     for (std::uint32_t run = 0; run < 16; ++run) {
       std::vector<int> quarters(kPerSample, 0);
       for (std::uint32_t s = run * kPerSample; s < (run + 1) * kPerSample; ++s)
@@ -176,23 +187,20 @@ TEST(SpectralFilm, APixelsWavelengthSetsAreStratifiedAndTheirHeroesUniform) {
       for (int q : quarters) EXPECT_EQ(q, 1) << pixel << " run " << run;
     }
   }
-  // Over 16384 pixels, sample 0 and sample 5: the hero's quarter against where in the quarter
-  // it lies (also in quarters), 16 cells of 1024 expected each. Chi-square with 15 degrees of
-  // freedom: 37.7 is its 0.1% tail.
+  // Over 16384 pixels, samples 0 and 5: the hero's u in 32 equal bins, 512 expected in each.
+  // Chi-square with 31 degrees of freedom: 61.1 is its 0.1% tail.
   for (std::uint32_t sample : {0u, 5u}) {
-    std::vector<int> cells(16, 0);
+    std::vector<int> bins(32, 0);
     const int pixels = 16384;
     for (int p = 0; p < pixels; ++p) {
       const float hero = heroWavelengthSample01(PixelSeeds(static_cast<std::uint32_t>(p), 11u),
                                                 sample, kPerSample);
-      const int quarter = static_cast<int>(hero * 4.0f);
-      const int within = static_cast<int>((hero * 4.0f - static_cast<float>(quarter)) * 4.0f);
-      ++cells[static_cast<std::size_t>(4 * quarter + within)];
+      ++bins[static_cast<std::size_t>(hero * 32.0f)];
     }
     double chiSquare = 0.0;
-    for (int c : cells) chiSquare += (c - pixels / 16.0) * (c - pixels / 16.0) / (pixels / 16.0);
-    std::printf("sample %u: chi-square of quarter x position %.1f\n", sample, chiSquare);
-    EXPECT_LT(chiSquare, 37.7) << "sample " << sample;
+    for (int c : bins) chiSquare += (c - pixels / 32.0) * (c - pixels / 32.0) / (pixels / 32.0);
+    std::printf("sample %u: chi-square of the hero's u in 32 bins %.1f\n", sample, chiSquare);
+    EXPECT_LT(chiSquare, 61.1) << "sample " << sample;
   }
 }
 
