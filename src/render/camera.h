@@ -70,10 +70,11 @@ class Camera {
   // A spectral camera wants a wavelength with each sample (render/spectral_film.h): the renderer
   // then draws them and turns each sample's RGB radiance into its wavelength's colour.
   virtual bool spectral() const { return false; }
-  // Whether generateRays reads a spectral sample's wavelengths beyond the first (the hero's):
-  // only where the lens disperses (the other wavelengths' rays are traced back through it). When
-  // it does not, the renderer draws them after the rays, for the samples that left the lens.
-  virtual bool readsEveryWavelength() const { return false; }
+  // Whether generateRays reads a spectral sample's wavelengths at all: only where the lens
+  // disperses (the hero's ray is traced at its wavelength, the others' traced back). Where it
+  // does not, the rays and weights do not depend on them, and the renderer draws them after the
+  // rays, for the samples that left the lens.
+  virtual bool readsWavelengths() const { return false; }
   // The angle one pixel subtends from the lens (for texture filtering footprints).
   virtual float pixelSpreadRadians() const = 0;
   int width() const { return width_; }

@@ -144,10 +144,10 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       spectral ? static_cast<std::size_t>(std::clamp(job.settings.wavelengthsPerSample, 1,
                                                      SampleWavelengths::kMaxPerSample))
                : 1;
-  // Where the camera reads only the hero (a lens without dispersion), a sample's other
-  // wavelengths are drawn after the rays, for the samples that left the lens: through the
-  // course's scenes most samples are blocked in the lens, and each draw is 16 table reads.
-  const bool drawOthersAfterRays = spectral && !camera.readsEveryWavelength();
+  // Where the camera does not read them (a lens without dispersion), a sample's wavelengths are
+  // drawn after the rays, for the samples that left the lens: through the course's scenes most
+  // samples are blocked in the lens, and each draw is 16 table reads.
+  const bool drawAfterRays = spectral && !camera.readsWavelengths();
   thread_local std::vector<SpectralSample> spectralSamples;
   thread_local std::vector<float> heroUs, wavelengths, wavelengthWeights;
   // Sample wavelength j's u: the hero's, and the others at u + j / perSample (mod 1) of the
@@ -257,7 +257,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       wavelengths.resize(n * perSample);
       wavelengthWeights.resize(n * perSample);
       wavelengthPixels.resize(n * perSample);
-      const std::size_t drawnNow = drawOthersAfterRays ? 1 : perSample;
+      const std::size_t drawnNow = drawAfterRays ? 0 : perSample;
       heroUs.resize(n);
       for (int p = 0; p < pixels; ++p) {
         for (int s = 0; s < count; ++s) {
@@ -291,11 +291,11 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
     statistics.cameraSamples += m;
-    if (drawOthersAfterRays) {
+    if (drawAfterRays) {
       const SpectralFilm& film = SpectralFilm::instance();
       for (std::size_t r = 0; r < m; ++r) {
         if (!passed[r]) continue;
-        for (std::size_t j = 1; j < perSample; ++j) {
+        for (std::size_t j = 0; j < perSample; ++j) {
           spectralSamples[r * perSample + j] = film.sample(wavelengthU(heroUs[r / points], j));
           wavelengths[r * perSample + j] = spectralSamples[r * perSample + j].wavelengthNm;
         }

@@ -173,7 +173,7 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
   return true;
 }
 
-bool RealisticCamera::readsEveryWavelength() const {
+bool RealisticCamera::readsWavelengths() const {
   // (generateRays weighs the wavelengths, tracing them back, when this holds.)
   return spectral_ && lens_->disperses();
 }
@@ -184,9 +184,11 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
                                    const SampleWavelengths* wavelengths) const {
   // The RGB path below is as it was when there are no wavelengths to trace.
   const bool spectral = spectral_ && wavelengths != nullptr;
-  // The hero wavelengths, one per ray, for the spectral trace.
+  // The hero wavelengths, one per ray, for the spectral trace (a lens without dispersion traces
+  // every wavelength alike, and the renderer has not drawn them yet: readsWavelengths()).
+  const bool spectralTrace = spectral && readsWavelengths();
   thread_local std::vector<float> heroNm;
-  if (spectral) {
+  if (spectralTrace) {
     heroNm.resize(count);
     for (std::size_t i = 0; i < count; ++i)
       heroNm[i] = wavelengths->nm[i * static_cast<std::size_t>(wavelengths->perSample)];
@@ -258,7 +260,7 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
   }
   // The hero rays' density in the film-side ray space (see heroWavelengthWeights): the sampling
   // density on the plane over Kolb's geometric factor cos^4(theta) / Z^2.
-  const bool weighWavelengths = spectral && wavelengths->perSample > 1 && readsEveryWavelength();
+  const bool weighWavelengths = spectral && wavelengths->perSample > 1 && readsWavelengths();
   thread_local std::vector<float> heroDensity, heroCos4;
   if (weighWavelengths) {
     heroDensity.resize(count);
@@ -269,7 +271,7 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
       heroDensity[i] = pdfs[i] / (cos2 * cos2 * invPlaneZSquared);
     }
   }
-  if (spectral)
+  if (spectralTrace)
     lens_->traceFromFilmBatch(batch, heroNm.data());
   else
     lens_->traceFromFilmBatch(batch);

@@ -48,7 +48,7 @@ class RealisticCamera final : public Camera {
                     const SampleWavelengths* wavelengths = nullptr) const override;
   // Traces each sample at its wavelength: the lens's dispersion is in the picture.
   bool spectral() const override { return spectral_; }
-  bool readsEveryWavelength() const override;
+  bool readsWavelengths() const override;
   // The exit-pupil table is built for the circle around a shaped stop, so a shape that lets
   // through under half of it (three blades 41%, pbrt's star 36%, its gaussian 26%) would block
   // most samples: it gets round(circle / shape area) lens points per sample, at most 4.
