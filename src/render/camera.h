@@ -18,8 +18,10 @@ struct CameraRay {
 };
 
 // The wavelengths of a batch of spectral camera samples (render/spectral_film.h): sample i
-// carries `perSample` of them, nm[i * perSample + j]. Its ray is traced through the lens at the
-// first (the hero wavelength, Wilkie et al. 2014); the scene radiance along that ray is then
+// carries `perSample` of them, nm[i * perSample + j]. Through a lens that disperses its ray is
+// traced at the first (the hero wavelength, Wilkie et al. 2014); through one that does not, at
+// every wavelength alike, and nm is not drawn yet (Camera::readsWavelengths). The radiance along
+// that ray is then
 // counted at every wavelength of the sample, each with the exposure weight the camera writes to
 // weights[i * perSample + j], in the raster pixel pixels[i * perSample + j] (y * width + x, or
 // kSamplePixel): through a lens that disperses, the same scene ray meets the film elsewhere at
@@ -45,9 +47,9 @@ class Camera {
   // Returns false when no ray leaves the lens for this sample (vignetted or blocked).
   virtual bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const = 0;
   // Many rays at once (cameras with a lens trace them as a batch); passed[i] says whether
-  // rays[i] left the lens. `wavelengths`: the samples' wavelengths when the camera is spectral()
-  // (the renderer draws them), else null. A camera that does not disperse shares each ray's
-  // weight evenly among its sample's wavelengths.
+  // rays[i] left the lens. `wavelengths`: when the camera is spectral(), the samples' wavelengths
+  // (nm drawn only if readsWavelengths()) and where their weights go, else null. A camera that
+  // does not disperse shares each ray's weight evenly among its sample's wavelengths.
   virtual void generateRays(std::size_t count, const glm::vec2* rasterPoints,
                             const glm::vec2* lensSamples, CameraRay* rays, std::uint8_t* passed,
                             const SampleWavelengths* wavelengths = nullptr) const {
@@ -74,7 +76,9 @@ class Camera {
   // disperses (the hero's ray is traced at its wavelength, the others' traced back). Where it
   // does not, the rays and weights do not depend on them, and the renderer draws them after the
   // rays, for the samples that left the lens.
-  virtual bool readsWavelengths() const { return false; }
+  // (By default a spectral camera does: a camera that wraps another and forgets to say so then
+  // costs time, not a picture traced at wavelengths never drawn.)
+  virtual bool readsWavelengths() const { return spectral(); }
   // The angle one pixel subtends from the lens (for texture filtering footprints).
   virtual float pixelSpreadRadians() const = 0;
   int width() const { return width_; }

@@ -278,15 +278,18 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     if (points > 1) spreadLensPoints(n, perSample, spectral);
     const std::size_t m = n * points;
     const float pointShare = 1.0f / static_cast<float>(points);
-    if (spectral) {
+    if (spectral && !drawAfterRays) {  // (the pixels: only the dispersive weights need them)
       rayPixels.resize(m);
       const std::size_t raysPerPixel = static_cast<std::size_t>(samplesPerPixel) * points;
       for (std::size_t r = 0; r < m; ++r) {
         const auto& pixel = visible[first + static_cast<int>(r / raysPerPixel)];
         rayPixels[r] = static_cast<std::int32_t>(pixel.y * width + pixel.x);
       }
+    }
+    if (spectral) {
       sampleWavelengths = {static_cast<int>(perSample), wavelengths.data(),
-                           wavelengthWeights.data(), wavelengthPixels.data(), rayPixels.data()};
+                           wavelengthWeights.data(), wavelengthPixels.data(),
+                           drawAfterRays ? nullptr : rayPixels.data()};
     }
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <random>
+#include <vector>
 
 #include "test_lenses.h"
 
@@ -55,6 +57,55 @@ TEST_P(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
     }
     // Rays grazing an aperture edge may differ in float; nearly all must agree.
     EXPECT_GE(agree, static_cast<int>(n - n / 17) - 3) << course.file;
+    EXPECT_GT(alive, 20) << course.file;
+  }
+}
+
+// Through a lens without V_d the spectral trace (a wavelength per ray) is the plain one bit for
+// bit: no surface disperses, so the renderer need not draw a sample's wavelengths before its ray
+// (Camera::readsWavelengths).
+TEST_P(BatchTrace, WithoutDispersionTheWavelengthsChangeNothing) {
+  if (!LensSystem::batchKernelAvailable(GetParam())) GTEST_SKIP() << "CPU lacks this kernel";
+  for (const auto& course : testing::kCourseLenses) {
+    const auto lens =
+        testing::loadLens(testing::referenceLensDir() / course.file, course.filmDistanceMm);
+    ASSERT_TRUE(lens);
+    ASSERT_FALSE(lens->disperses()) << course.file;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    const std::size_t n = 777;
+    LensRayBatch plain;
+    plain.resize(n);
+    std::vector<float> nm(n);
+    const double rear = lens->rearApertureRadiusMm();
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec3 film{15.0 * uniform(rng), 15.0 * uniform(rng), 0.0};
+      const glm::dvec3 aim{rear * uniform(rng), rear * uniform(rng), lens->rearVertexZ()};
+      const glm::dvec3 d = glm::normalize(aim - film);
+      plain.ox[i] = static_cast<float>(film.x);
+      plain.oy[i] = static_cast<float>(film.y);
+      plain.oz[i] = 0.0f;
+      plain.dx[i] = static_cast<float>(d.x);
+      plain.dy[i] = static_cast<float>(d.y);
+      plain.dz[i] = static_cast<float>(d.z);
+      plain.alive[i] = 1;
+      nm[i] = static_cast<float>(580.0 + 200.0 * uniform(rng));
+    }
+    LensRayBatch spectral = plain;
+    lens->traceFromFilmBatch(plain, GetParam());
+    lens->traceFromFilmBatch(spectral, nm.data(), GetParam());
+    int alive = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      ASSERT_EQ(plain.alive[i], spectral.alive[i]) << course.file << " ray " << i;
+      if (!plain.alive[i]) continue;
+      ++alive;
+      EXPECT_EQ(plain.ox[i], spectral.ox[i]) << course.file;
+      EXPECT_EQ(plain.oy[i], spectral.oy[i]) << course.file;
+      EXPECT_EQ(plain.oz[i], spectral.oz[i]) << course.file;
+      EXPECT_EQ(plain.dx[i], spectral.dx[i]) << course.file;
+      EXPECT_EQ(plain.dy[i], spectral.dy[i]) << course.file;
+      EXPECT_EQ(plain.dz[i], spectral.dz[i]) << course.file;
+    }
     EXPECT_GT(alive, 20) << course.file;
   }
 }
