@@ -21,12 +21,11 @@ struct CameraRay {
 // carries `perSample` of them, nm[i * perSample + j]. Through a lens that disperses its ray is
 // traced at the first (the hero wavelength, Wilkie et al. 2014); through one that does not, at
 // every wavelength alike, and nm is not drawn yet (Camera::readsWavelengths). The radiance along
-// that ray is then
-// counted at every wavelength of the sample, each with the exposure weight the camera writes to
-// weights[i * perSample + j], in the raster pixel pixels[i * perSample + j] (y * width + x, or
-// kSamplePixel): through a lens that disperses, the same scene ray meets the film elsewhere at
-// another wavelength. A weight of 0 where that wavelength's ray does not reach the film (or the
-// sample is blocked). The weights replace CameraRay::weight for a spectral sample.
+// that ray is then counted at every wavelength of the sample, each with the exposure weight the
+// camera writes to weights[i * perSample + j], in the raster pixel pixels[i * perSample + j]
+// (y * width + x, or kSamplePixel): through a lens that disperses, the same scene ray meets the
+// film elsewhere at another wavelength. A weight of 0 where that wavelength's ray does not reach
+// the film (or the sample is blocked). The weights replace CameraRay::weight for a spectral sample.
 struct SampleWavelengths {
   // The pixel the renderer took the sample for (the hero's, and every wavelength's when the
   // lens does not disperse): the renderer knows it exactly, where a float raster point at
