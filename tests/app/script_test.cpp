@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 namespace lenslab::app {
 namespace {
@@ -203,6 +206,36 @@ TEST(ScriptParse, KeepFilmDistanceTakesOnlyItsOwnWords) {
                 "t.script:2:5: error: expected: set keep-film-distance on|off", 0),
             0u)
       << script.diagnostics.all()[1].format();
+}
+
+// Every setting that takes one of a few words accepts each of them and nothing else; another
+// word, or two, is reported at the setting's name with the words it takes.
+TEST(ScriptParse, ChoiceSettingsTakeOnlyTheirWords) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> choices = {
+      {"camera", {"lens", "pinhole"}},
+      {"blocked-rays", {"show", "hide"}},
+      {"keep-film-distance", {"on", "off"}},
+      {"auto-exposure", {"on", "off"}},
+      {"colour-fans", {"on", "off"}},
+      {"cos4", {"on", "off"}},
+      {"rims", {"on", "off"}},
+      {"vignetting-overlay", {"on", "off"}}};
+  for (const auto& [name, words] : choices) {
+    for (const std::string& word : words) {
+      const ParsedScript good = parseScript("set " + name + " " + word + "\n", "t.script");
+      EXPECT_TRUE(good.diagnostics.empty())
+          << name << " " << word << ": " << good.diagnostics.formatAll();
+    }
+    const std::string expected =
+        "t.script:1:5: error: expected: set " + name + " " + words[0] + "|" + words[1];
+    for (const std::string& bad :
+         std::vector<std::string>{" maybe", " " + words[0] + " " + words[1]}) {
+      const ParsedScript script = parseScript("set " + name + bad + "\n", "t.script");
+      ASSERT_EQ(script.diagnostics.all().size(), 1u) << name << bad;
+      EXPECT_EQ(script.diagnostics.all()[0].format().rfind(expected, 0), 0u)
+          << script.diagnostics.all()[0].format();
+    }
+  }
 }
 
 // Surfaces count from 1: make-stop 0 is refused where it is written, not passed on to the viewer

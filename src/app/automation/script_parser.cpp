@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "app/analysis/analysis_plot_ids.h"
 #include "app/analysis/field_fractions.h"
@@ -116,6 +118,21 @@ Diagnostic problemAt(const ScriptCommand& command, std::size_t argument, std::st
   return {Severity::Error, command.at(argument), std::move(message)};
 }
 
+// "set NAME WORD" with WORD one of `words`: nothing, or "expected: set NAME w1|w2|...".
+std::optional<Diagnostic> expectOneOf(const ScriptCommand& command,
+                                      std::initializer_list<std::string_view> words) {
+  const auto& a = command.arguments;
+  if (a.size() == 2 && std::find(words.begin(), words.end(), a[1]) != words.end()) {
+    return std::nullopt;
+  }
+  std::string choices;
+  for (const std::string_view word : words) {
+    if (!choices.empty()) choices += '|';
+    choices += word;
+  }
+  return problemAt(command, 0, "expected: set " + a[0] + " " + choices);
+}
+
 // Checks a "set" command's shape; returns an error naming the offending argument.
 std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
   const auto& a = command.arguments;
@@ -167,49 +184,26 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
                          "; expected: set aperture circle | blades N [curvature C] [rotation D] "
                          "| image FILE");
   }
-  if (a[0] == "camera") {
-    if (a.size() != 2 || (a[1] != "lens" && a[1] != "pinhole")) {
-      return problemAt(command, 0, "expected: set camera lens|pinhole");
-    }
-    return std::nullopt;
-  }
-  if (a[0] == "blocked-rays") {
-    if (a.size() != 2 || (a[1] != "show" && a[1] != "hide")) {
-      return problemAt(command, 0, "expected: set blocked-rays show|hide");
-    }
-    return std::nullopt;
-  }
+  if (a[0] == "camera") return expectOneOf(command, {"lens", "pinhole"});
+  if (a[0] == "blocked-rays") return expectOneOf(command, {"show", "hide"});
   if (a[0] == "film-point") {
     if (a.size() != 2 || (a[1] != "off" && !(parseNumber(a[1]) && *parseNumber(a[1]) >= 0))) {
       return problemAt(command, 0, "expected: set film-point MM|off (MM from the axis, >= 0)");
     }
     return std::nullopt;
   }
-  if (a[0] == "keep-film-distance") {
-    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
-      return problemAt(command, 0, "expected: set keep-film-distance on|off");
-    }
-    return std::nullopt;
-  }
+  if (a[0] == "keep-film-distance") return expectOneOf(command, {"on", "off"});
   if (a[0] == "fields") {
     if (a.size() != 2) return problemAt(command, 0, "expected: set fields F,F,... (e.g. 0,0.7,1)");
     std::string why;
     if (!parseFieldFractions(a[1], &why)) return problemAt(command, 1, why);
     return std::nullopt;
   }
-  if (a[0] == "auto-exposure" || a[0] == "colour-fans") {
-    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
-      return problemAt(command, 0, "expected: set " + a[0] + " on|off");
-    }
-    return std::nullopt;
-  }
+  if (a[0] == "auto-exposure" || a[0] == "colour-fans") return expectOneOf(command, {"on", "off"});
   // The vignetting teaching's switches (issue 21): the render's cos^4 weighting and rims
   // (render/falloff_toggles.h), and the heat map over the preview.
   if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
-    if (a.size() != 2 || (a[1] != "on" && a[1] != "off")) {
-      return problemAt(command, 0, "expected: set " + a[0] + " on|off");
-    }
-    return std::nullopt;
+    return expectOneOf(command, {"on", "off"});
   }
   if (a[0] == "spectral") {
     if (a.size() != 2 || !render::parseSpectralMode(a[1])) {
@@ -231,8 +225,7 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
       command, 0,
       "unknown setting '" + a[0] +
           "' (expected surface, film-distance, stop-diameter, aperture, exposure, camera, "
-          "blocked-rays, "
-          "layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
+          "blocked-rays, layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
           "vignetting-overlay, colour-fans, spectral or fields)");
 }
 
