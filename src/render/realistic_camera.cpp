@@ -398,19 +398,16 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   landBackRays(landing, backCount, back.ox.data(), back.oy.data(), back.oz.data(), back.dx.data(),
                back.dy.data(), back.dz.data(), back.alive.data(), backDensity.data(),
                backCos4.data(), planePdf.data(), backPixel.data(), backRow.data());
-  for (std::size_t b = 0; b < backCount; ++b) {
-    const std::int32_t column = backPixel[b];
-    backPixel[b] = column < 0 ? -1 : backRow[b] * width_ + column;
-  }
   if (exitPupil)
     lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), planePdf.data(), backCount);
   for (std::size_t b = 0; b < backCount; ++b) {
     // A select, not a product: 0 times a blocked ray's infinite density would be NaN.
     const float density = backDensity[b] * planePdf[b];
-    const bool counts = backPixel[b] >= 0 && planePdf[b] > 0.0f && density > 0.0f &&
+    const std::int32_t column = backPixel[b];  // -1 off the film
+    const bool counts = column >= 0 && planePdf[b] > 0.0f && density > 0.0f &&
                         density < std::numeric_limits<float>::infinity();
     backDensity[b] = counts ? density : 0.0f;
-    backPixel[b] = counts ? backPixel[b] : -1;
+    backPixel[b] = counts ? backRow[b] * width_ + column : -1;
   }
 
   // The weights: over the sample's K strategies, each strategy's density taken at
