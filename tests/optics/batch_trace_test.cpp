@@ -13,6 +13,33 @@ namespace {
 
 class BatchTrace : public ::testing::TestWithParam<LensSystem::BatchKernel> {};
 
+// n rays from film points within 15 mm of the axis toward points of the rear element's square,
+// and the same rays as a batch in single precision, all alive.
+struct FilmRays {
+  std::vector<LensRay> rays;
+  LensRayBatch batch;
+};
+FilmRays randomFilmRays(const LensSystem& lens, std::mt19937& rng, std::size_t n) {
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  FilmRays out;
+  out.rays.resize(n);
+  out.batch.resize(n);
+  const double rear = lens.rearApertureRadiusMm();
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 film{15.0 * uniform(rng), 15.0 * uniform(rng), 0.0};
+    const glm::dvec3 aim{rear * uniform(rng), rear * uniform(rng), lens.rearVertexZ()};
+    out.rays[i] = {film, glm::normalize(aim - film)};
+    out.batch.ox[i] = static_cast<float>(film.x);
+    out.batch.oy[i] = static_cast<float>(film.y);
+    out.batch.oz[i] = 0.0f;
+    out.batch.dx[i] = static_cast<float>(out.rays[i].direction.x);
+    out.batch.dy[i] = static_cast<float>(out.rays[i].direction.y);
+    out.batch.dz[i] = static_cast<float>(out.rays[i].direction.z);
+    out.batch.alive[i] = 1;
+  }
+  return out;
+}
+
 TEST_P(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
   if (!LensSystem::batchKernelAvailable(GetParam())) GTEST_SKIP() << "CPU lacks this kernel";
   for (const auto& course : testing::kCourseLenses) {
@@ -20,24 +47,9 @@ TEST_P(BatchTrace, AgreesWithTheScalarTraceOnTheCourseLenses) {
         testing::loadLens(testing::referenceLensDir() / course.file, course.filmDistanceMm);
     ASSERT_TRUE(lens);
     std::mt19937 rng(11);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     const std::size_t n = 1000;  // not a multiple of the block or vector size on purpose
-    LensRayBatch batch;
-    batch.resize(n);
-    std::vector<LensRay> rays(n);
-    const double rear = lens->rearApertureRadiusMm();
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::dvec3 film{15.0 * uniform(rng), 15.0 * uniform(rng), 0.0};
-      const glm::dvec3 aim{rear * uniform(rng), rear * uniform(rng), lens->rearVertexZ()};
-      rays[i] = {film, glm::normalize(aim - film)};
-      batch.ox[i] = static_cast<float>(film.x);
-      batch.oy[i] = static_cast<float>(film.y);
-      batch.oz[i] = 0.0f;
-      batch.dx[i] = static_cast<float>(rays[i].direction.x);
-      batch.dy[i] = static_cast<float>(rays[i].direction.y);
-      batch.dz[i] = static_cast<float>(rays[i].direction.z);
-      batch.alive[i] = i % 17 == 0 ? 0 : 1;  // some rays arrive dead and must stay dead
-    }
+    auto [rays, batch] = randomFilmRays(*lens, rng, n);
+    for (std::size_t i = 0; i < n; i += 17) batch.alive[i] = 0;  // arrive dead, must stay dead
     lens->traceFromFilmBatch(batch, GetParam());
     int agree = 0, alive = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -72,25 +84,11 @@ TEST_P(BatchTrace, WithoutDispersionTheWavelengthsChangeNothing) {
     ASSERT_TRUE(lens);
     ASSERT_FALSE(lens->disperses()) << course.file;
     std::mt19937 rng(5);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     const std::size_t n = 777;
-    LensRayBatch plain;
-    plain.resize(n);
+    LensRayBatch plain = randomFilmRays(*lens, rng, n).batch;
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     std::vector<float> nm(n);
-    const double rear = lens->rearApertureRadiusMm();
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::dvec3 film{15.0 * uniform(rng), 15.0 * uniform(rng), 0.0};
-      const glm::dvec3 aim{rear * uniform(rng), rear * uniform(rng), lens->rearVertexZ()};
-      const glm::dvec3 d = glm::normalize(aim - film);
-      plain.ox[i] = static_cast<float>(film.x);
-      plain.oy[i] = static_cast<float>(film.y);
-      plain.oz[i] = 0.0f;
-      plain.dx[i] = static_cast<float>(d.x);
-      plain.dy[i] = static_cast<float>(d.y);
-      plain.dz[i] = static_cast<float>(d.z);
-      plain.alive[i] = 1;
-      nm[i] = static_cast<float>(580.0 + 200.0 * uniform(rng));
-    }
+    for (float& wavelength : nm) wavelength = static_cast<float>(580.0 + 200.0 * uniform(rng));
     LensRayBatch spectral = plain;
     lens->traceFromFilmBatch(plain, GetParam());
     lens->traceFromFilmBatch(spectral, nm.data(), GetParam());
