@@ -197,7 +197,8 @@ int runRenderCommand(const RenderArguments& arguments) {
     stats["width"] = snapshot->width;
     stats["height"] = snapshot->height;
     // Rays asked of the camera: spp x pixels x lens points per sample (more than one for a stop
-    // shape much smaller than its circle, Camera::lensPointsPerSample).
+    // shape that opens under half of the region its sampler covers, as pbrt's gaussian
+    // halftone: Camera::lensPointsPerSample).
     stats["camera_samples"] = statistics.cameraSamples;
     stats["lens_points_per_sample"] = camera->lensPointsPerSample();
     stats["lens_pass_fraction"] =

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "optics/stop_cells.h"
+
 namespace lenslab::optics {
 
 namespace {
@@ -63,8 +65,12 @@ double ApertureMask::openFraction() const {
   return static_cast<double>(count) / static_cast<double>(open.size());
 }
 
-void ApertureMask::finish() {
+void ApertureMask::finish(bool withStarHull) {
   measureOpenRadius();
+  if (withStarHull)
+    starHull = maskStarHullUnit(*this);
+  else
+    starHull.clear();
   openBits.assign((open.size() + 31) / 32, 0u);
   for (std::size_t i = 0; i < open.size(); ++i)
     if (open[i]) openBits[i / 32] |= 1u << (i % 32);
@@ -107,6 +113,34 @@ double ApertureShape::areaFactor() const {
       return mask ? 4.0 * mask->openFraction() : 0.0;
   }
   return 0.0;
+}
+
+double ApertureShape::edgeDistanceUnit(double angleRad) const {
+  if (kind == Kind::Circle) return 1.0;
+  if (kind == Kind::Image) return boundRadiusFactor();
+  const BladeGeometry g = bladeGeometry(*this);
+  const double ux = std::cos(angleRad), uy = std::sin(angleRad);
+  double nearest = INFINITY;
+  for (int k = 0; k < bladeCount; ++k) {
+    const double at = g.firstNormalAt + 2.0 * g.halfAngle * k;
+    const double along = std::cos(at) * ux + std::sin(at) * uy;  // n . u
+    if (curvature > 0.0) {
+      // |t u - c n|^2 = rho^2: the outer root of t^2 - 2 b t - q = 0, b = c (n.u),
+      // q = rho^2 - c^2 = (rho - c)(rho + c) > 0. With c + rho written without the cancellation
+      // of a nearly straight blade (c -> -infinity), as StopShapeTest does, and the root taken in
+      // the form that does not subtract when b < 0.
+      const double rho = g.arcRadius, h = g.halfChord;
+      const double root = std::sqrt(std::max(0.0, rho * rho - h * h));
+      const double c = g.apothem - root;
+      const double cPlusRho = g.apothem + h * h / (rho + root);
+      const double q = (rho - c) * cPlusRho, b = c * along;
+      const double s = std::sqrt(b * b + q);
+      nearest = std::min(nearest, b > 0.0 ? b + s : q / (s - b));
+    } else if (along > 0.0) {
+      nearest = std::min(nearest, g.apothem / along);
+    }
+  }
+  return nearest;
 }
 
 bool ApertureShape::containsUnit(glm::dvec2 p) const {

@@ -2,8 +2,9 @@
 // The shape of the aperture stop: the default circle, N straight or curved blades with a
 // rotation, or an image mask (white = open). It belongs to the stop of a Prescription; the traces
 // test a ray's hit on the stop plane against it (StopShapeTest, below) and the exit-pupil table
-// is built for the circle that circumscribes it (boundRadiusFactor), so sampling stays unbiased
-// for any shape: rays through the bound but outside the shape are simply blocked.
+// bounds the pass region of a stop that contains it (the circle that circumscribes it,
+// boundRadiusFactor, or per azimuth cell the shape's sweep: stop_cells.h), so sampling stays
+// unbiased for any shape: rays through the bound but outside the shape are simply blocked.
 //
 // Geometry, in units of the stop's semi-diameter R (the stop row's aperture diameter / 2), lens
 // frame x and y (y up in the cross-section):
@@ -49,8 +50,13 @@ struct ApertureMask {
   // what the batch trace gathers (a 1024 px mask is 128 kB, not 1 MB, and a word is what a
   // vector gather loads). Set by finish().
   std::vector<std::uint32_t> openBits;
-  // Sets openRadiusFactor and openBits from `open`: call after making or changing the pixels.
-  void finish();
+  // The open pixels' star hull about the centre (stop_cells.h's maskStarHullUnit, per
+  // kStarHullSectors sector), which the exit-pupil table of a shaped stop sweeps. Set by
+  // finish(), once per mask, as a large mask takes milliseconds.
+  std::vector<float> starHull;
+  // Sets openRadiusFactor, openBits and (unless told not to) starHull from `open`: call after
+  // making or changing the pixels.
+  void finish(bool withStarHull = true);
 
  private:
   void measureOpenRadius();
@@ -78,6 +84,9 @@ struct ApertureShape {
   double areaFactor() const;
   // Inside test in units of R (the reference form; traces use StopShapeTest).
   bool containsUnit(glm::dvec2 p) const;
+  // Circle and blades (convex, around the centre): the distance in units of R from the centre
+  // to the edge in the direction at angleRad from +x. (An image shape answers its bound.)
+  double edgeDistanceUnit(double angleRad) const;
   // The boundary for drawing, in units of R, counter-clockwise and closed (first point repeated);
   // an image gives its bounding square. `pointsPerEdge` subdivides curved edges.
   std::vector<glm::dvec2> outlineUnit(int pointsPerEdge = 8) const;

@@ -115,21 +115,22 @@ std::vector<double> boundaries(Probe& probe, double filmR, double centre,
 }
 
 // Raw bound of the pass region for the film point (filmR, 0): centre and the bound radius per
-// half-plane sector (before the margin and the neighbour union). Returns false when no ray passes.
+// sector (before the margin and the neighbour union); empty when no ray passes. A region
+// symmetric about the x axis (a round stop) is measured on the half-plane y >= 0 and mirrored;
+// otherwise (a cell of a shaped stop) over the full circle.
 struct RawBin {
   bool empty = true;
   double centreX = 0.0;
-  std::array<double, ExitPupilTable::kSectors / 2 + 1>
-      vertexRadius{};  // angles k * 2 pi / kSectors
+  std::array<double, ExitPupilTable::kSectors> vertexRadius{};  // angles k * 2 pi / kSectors
 };
 
-std::vector<glm::dvec2> gridPoints(double domainR) {
+std::vector<glm::dvec2> gridPoints(double domainR, bool mirrored) {
   const double spacing = 2.0 * domainR / kGrid;
   std::vector<glm::dvec2> points;
-  for (int iy = 0; iy < kGrid / 2; ++iy) {
+  for (int iy = mirrored ? kGrid / 2 : 0; iy < kGrid; ++iy) {
     for (int ix = 0; ix < kGrid; ++ix) {
       const double x = -domainR + (ix + 0.5) * spacing;
-      const double y = (iy + 0.5) * spacing;
+      const double y = -domainR + (iy + 0.5) * spacing;
       if (x * x + y * y <= domainR * domainR * 1.1) points.push_back({x, y});
     }
   }
@@ -144,12 +145,14 @@ double chiefAimX(const Probe& probe, double filmR) {
   return filmR * (1.0 - probe.planeZ / exitPupil.zMm);
 }
 
-RawBin measure(Probe& probe, double filmR, double domainR,
+// `mirrored`: measure the half-plane y >= 0 and mirror it; `fineSearch`: also search a fine grid
+// (a region that need not be convex).
+RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored, bool fineSearch,
                const std::vector<glm::dvec2>& extraSeeds = {}) {
   RawBin out;
   std::vector<glm::dvec2> passing;
   std::vector<std::uint8_t> pass;
-  const std::vector<glm::dvec2> grid = gridPoints(domainR);
+  const std::vector<glm::dvec2> grid = gridPoints(domainR, mirrored);
   probe.passesAll(filmR, grid.data(), grid.size(), pass);
   for (std::size_t i = 0; i < grid.size(); ++i)
     if (pass[i]) passing.push_back(grid[i]);
@@ -157,7 +160,7 @@ RawBin measure(Probe& probe, double filmR, double domainR,
   // seeds from the neighbouring bin.
   if (passing.empty() && !extraSeeds.empty()) {
     std::vector<glm::dvec2> seeds;
-    for (const auto& p : extraSeeds) seeds.push_back({p.x, std::abs(p.y)});
+    for (const auto& p : extraSeeds) seeds.push_back({p.x, mirrored ? std::abs(p.y) : p.y});
     probe.passesAll(filmR, seeds.data(), seeds.size(), pass);
     for (std::size_t i = 0; i < seeds.size(); ++i)
       if (pass[i]) passing.push_back(seeds[i]);
@@ -173,8 +176,9 @@ RawBin measure(Probe& probe, double filmR, double domainR,
     found = probe.passes(filmR, centre, 0.0);
     if (!found) {
       // Not convex around the centroid: fall back to the passing point nearest the axis line.
-      const auto nearest = std::min_element(passing.begin(), passing.end(),
-                                            [](auto a, auto b) { return a.y < b.y; });
+      const auto nearest = std::min_element(passing.begin(), passing.end(), [](auto a, auto b) {
+        return std::abs(a.y) < std::abs(b.y);
+      });
       centre = nearest->x;
       found = probe.passes(filmR, centre, 0.0);
     }
@@ -188,7 +192,10 @@ RawBin measure(Probe& probe, double filmR, double domainR,
 
   // Boundary distance along a direction from the centre: expand until a ray fails, then bisect;
   // keep the failing end of the bracket (conservative).
-  const double minStep = 1e-3 * domainR, maxR = 4.0 * domainR;
+  // (Round the full circle, a shaped stop's cell, the brackets start at 1/64 of the domain: four
+  // steps fewer per direction on a table several times the circle's size; a boundary nearer
+  // than that is still bisected to 1/4096 of it.)
+  const double minStep = (mirrored ? 1e-3 : 1.0 / 64.0) * domainR, maxR = 4.0 * domainR;
   // Re-centre on the middle of the region's extent along the x axis, so that centres vary smoothly
   // from bin to bin (the grid centroid jitters with the grid).
   {
@@ -198,41 +205,52 @@ RawBin measure(Probe& probe, double filmR, double domainR,
   }
   out.centreX = centre;
 
+  // Directions m pi / 32: m = 0..32 on the half-plane, 0..63 round the circle (m and m + 64
+  // alike). Vertex k of the polygon lies on direction 2k.
+  constexpr int kSectors = ExitPupilTable::kSectors;
+  const int directions = mirrored ? kHalfDirections : 2 * (kHalfDirections - 1);
+  const int vertices = mirrored ? kSectors / 2 + 1 : kSectors;  // measured, not mirrored
+  const int edges = mirrored ? kSectors / 2 : kSectors;         // vertex k to k + 1
+  auto vertexAfter = [&](int k) { return (k + 1) % kSectors; };
+
   // Polygon vertices on the sector edges, at the boundary; each edge is then pushed out until it
   // also contains the boundary point measured half-way between its vertices. For chord ends at
   // radii a, b and half-angle h, the chord crosses the bisector at 2 a b cos(h) / (a + b).
-  std::vector<double> angles(kHalfDirections);
-  for (int m = 0; m < kHalfDirections; ++m)
-    angles[m] = m * std::numbers::pi / (kHalfDirections - 1);
+  std::vector<double> angles(directions);
+  for (int m = 0; m < directions; ++m) angles[m] = m * std::numbers::pi / (kHalfDirections - 1);
   const std::vector<double> rho = boundaries(probe, filmR, centre, angles, minStep, maxR);
-  constexpr int kHalfVertices = ExitPupilTable::kSectors / 2 + 1;
-  const double cosHalf = std::cos(std::numbers::pi / ExitPupilTable::kSectors);
-  for (int k = 0; k < kHalfVertices; ++k) out.vertexRadius[k] = rho[2 * k];
-  for (int k = 0; k + 1 < kHalfVertices; ++k) {
-    const double a = rho[2 * k], b = rho[2 * k + 2];
+  auto rhoAt = [&](int m) { return rho[m % directions]; };  // full circle: 64 is 0
+  const double cosHalf = std::cos(std::numbers::pi / kSectors);
+  for (int k = 0; k < vertices; ++k) out.vertexRadius[k] = rho[2 * k];
+  for (int k = 0; k < edges; ++k) {
+    const double a = rhoAt(2 * k), b = rhoAt(2 * k + 2);
     const double crossing = 2.0 * a * b * cosHalf / (a + b);
     const double scale = std::max(1.0, rho[2 * k + 1] / crossing);
     out.vertexRadius[k] = std::max(out.vertexRadius[k], a * scale);
-    out.vertexRadius[k + 1] = std::max(out.vertexRadius[k + 1], b * scale);
+    out.vertexRadius[vertexAfter(k)] = std::max(out.vertexRadius[vertexAfter(k)], b * scale);
   }
   // Grow the two vertices of a point's sector until their edge contains the point (the
-  // crossing distance along the ray through it scales with them).
-  const double sectorAngle = 2.0 * std::numbers::pi / ExitPupilTable::kSectors;
+  // crossing distance along the ray through it scales with them). On the half-plane a point
+  // below the axis stands for its mirror image.
+  const double sectorAngle = 2.0 * std::numbers::pi / kSectors;
   auto contain = [&](double dx, double dy) {
     const double r = std::hypot(dx, dy);
     if (r == 0.0) return;
-    const double angle = std::atan2(std::abs(dy), dx);
-    const int k = std::clamp(static_cast<int>(angle / sectorAngle), 0, kHalfVertices - 2);
-    const double a = out.vertexRadius[k], b = out.vertexRadius[k + 1];
+    if (mirrored) dy = std::abs(dy);
+    double angle = std::atan2(dy, dx);
+    if (angle < 0.0) angle += 2.0 * std::numbers::pi;
+    const int k = std::clamp(static_cast<int>(angle / sectorAngle), 0, edges - 1);
+    const int next = vertexAfter(k);
+    const double a = out.vertexRadius[k], b = out.vertexRadius[next];
     const double t0 = k * sectorAngle, t1 = t0 + sectorAngle;
     const double ax = a * std::cos(t0), ay = a * std::sin(t0);
     const double bx = b * std::cos(t1), by = b * std::sin(t1);
-    const double ux = dx / r, uy = std::abs(dy) / r;
+    const double ux = dx / r, uy = dy / r;
     const double crossing = (ax * by - ay * bx) / (ux * (by - ay) - uy * (bx - ax));
     if (crossing > 0.0 && crossing < r) {
       const double scale = r / crossing;
       out.vertexRadius[k] = a * scale;
-      out.vertexRadius[k + 1] = b * scale;
+      out.vertexRadius[next] = b * scale;
     }
   };
   // A convex region, between two neighbouring boundary points P_m, P_m+1, lies inside the lines
@@ -246,16 +264,24 @@ RawBin measure(Probe& probe, double filmR, double domainR,
   // point, which no real region has, is left out as a numerical accident. The pass region of one
   // wavelength is an intersection of the clear apertures' images, convex in practice; the
   // spectral table's union of four wavelengths' regions need not be, and there the bound rests
-  // on the brute-force test in spectral_trace_test.cpp.
+  // on the brute-force test in spectral_trace_test.cpp. A shaped stop's cells need not be
+  // convex either (a star): there the dense grid below and the same kind of test
+  // (aperture_shape_test.cpp) stand behind the bound.
   {
-    std::vector<glm::dvec2> boundary(kHalfDirections + 2);  // m = -1 .. 33, mirrored at the ends
-    for (int m = -1; m <= kHalfDirections; ++m) {
-      const int mirrored = m < 0 ? -m : m >= kHalfDirections ? 2 * (kHalfDirections - 1) - m : m;
+    // m = -1 .. directions + 1: mirrored at the ends of the half-plane, cyclic round the circle.
+    std::vector<glm::dvec2> boundary(directions + 3);
+    for (int m = -1; m <= directions + 1; ++m) {
+      int at = m;
+      if (mirrored)
+        at = m < 0 ? -m : m >= directions ? 2 * (directions - 1) - m : m;
+      else
+        at = (m + directions) % directions;
       const double t = m * std::numbers::pi / (kHalfDirections - 1);
-      boundary[m + 1] = {rho[mirrored] * std::cos(t), rho[mirrored] * std::sin(t)};
+      boundary[m + 1] = {rho[at] * std::cos(t), rho[at] * std::sin(t)};
     }
     auto cross = [](glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; };
-    for (int m = 0; m + 1 < kHalfDirections; ++m) {
+    const int gaps = mirrored ? directions - 1 : directions;
+    for (int m = 0; m < gaps; ++m) {
       const glm::dvec2 before = boundary[m], p = boundary[m + 1], q = boundary[m + 2],
                        after = boundary[m + 3];
       const glm::dvec2 d1 = p - before, d2 = q - after;  // outward along each line
@@ -273,12 +299,29 @@ RawBin measure(Probe& probe, double filmR, double domainR,
   // Grid points found passing also bound the region (in case a direction's bracket skipped a
   // bulge).
   for (const auto& p : passing) contain(p.x - centre, p.y);
+  if (fineSearch) {
+    // A region that need not be convex (a cell of a mask stop) is also checked on a grid about
+    // four times finer over the polygon's extent, and every passing point contained: a ray from
+    // the centre that leaves the region and enters it again (between the arms of a star) is then
+    // caught unless the part beyond is thinner than the grid.
+    double extent = 0.0;
+    for (const double v : out.vertexRadius) extent = std::max(extent, v);
+    constexpr int kFine = 32;
+    std::vector<glm::dvec2> fine;
+    for (int iy = 0; iy < kFine; ++iy)
+      for (int ix = 0; ix < kFine; ++ix)
+        fine.push_back({centre + extent * (2.0 * (ix + 0.5) / kFine - 1.0),
+                        extent * (2.0 * (iy + 0.5) / kFine - 1.0)});
+    probe.passesAll(filmR, fine.data(), fine.size(), pass);
+    for (std::size_t i = 0; i < fine.size(); ++i)
+      if (pass[i]) contain(fine[i].x - centre, fine[i].y);
+  }
   return out;
 }
 
 bool anyPasses(Probe& probe, double filmR, double domainR) {
   if (probe.passes(filmR, chiefAimX(probe, filmR), 0.0)) return true;
-  const std::vector<glm::dvec2> grid = gridPoints(domainR);
+  const std::vector<glm::dvec2> grid = gridPoints(domainR, /*mirrored=*/true);
   std::vector<std::uint8_t> pass;
   probe.passesAll(filmR, grid.data(), grid.size(), pass);
   return std::any_of(pass.begin(), pass.end(), [](std::uint8_t p) { return p != 0; });
@@ -338,7 +381,9 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   }
   // A shaped stop: the table bounds the pass region of the circle around the shape, which
   // contains the shaped one's, so the estimator stays unbiased (rays outside the shape are
-  // blocked by the trace and count as black).
+  // blocked by the trace and count as black); unless the shape is far from its circle, when
+  // each azimuth cell has its own bounds, measured with the cell's sweep of the shape as the
+  // stop (stop_cells.h).
   std::shared_ptr<const LensSystem> circumscribed;
   if (!lens.stopShape().isCircle()) circumscribed = lens.withCircumscribedStop();
   const LensSystem& bounded = circumscribed ? *circumscribed : lens;
@@ -355,14 +400,57 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   invFilmRadiusMaxMm_ = filmRadiusMaxMm_ > 0.0 ? 1.0 / filmRadiusMaxMm_ : 0.0;
   // Rays pass at the last searched radius: the image circle may reach beyond the search.
   if (lastPassing < kCoarse) imageCircleBoundMm_ = filmRadiusMaxMm_;
+
+  // One probe lens per cell to measure: the circumscribed circle, or each cell's sweep.
+  std::vector<std::shared_ptr<const LensSystem>> cellLenses;
+  bool mirroredCells = false, convex = true;
+  if (circumscribed) {
+    const StopCells& plan = *stopCellsFor(lens.stopShape());
+    for (const auto& mask : plan.sweptMasks) {
+      ApertureShape sweep;
+      sweep.kind = ApertureShape::Kind::Image;
+      sweep.mask = mask;
+      if (auto cellLens = circumscribed->withStopShape(sweep)) cellLenses.push_back(cellLens);
+    }
+    if (cellLenses.size() == plan.sweptMasks.size() && plan.count > 1) {
+      cells_ = plan.count;
+      cellPeriodRad_ = plan.periodRad;
+      cellOffsetRadF_ = static_cast<float>(plan.offsetRad);
+      cellPeriodRadF_ = static_cast<float>(plan.periodRad);
+      cellsPerRadF_ = static_cast<float>(plan.count / plan.periodRad);
+      shapeShareOfSweep_ = plan.shapeShareOfSweep;
+      mirroredCells = plan.mirrored;
+      convex = plan.convex;
+      radialBins = std::min(radialBins, kShapedStopRadialBins);
+    } else {
+      cellLenses.clear();
+      const double bound = lens.stopShape().boundRadiusFactor();
+      shapeShareOfSweep_ = lens.stopShape().areaFactor() / (std::numbers::pi * bound * bound);
+    }
+  }
+  // The circle's regions are symmetric about the x axis: measured on the half-plane.
+  const bool halfPlane = cells_ == 1;
+  const int measuredCells = cellLenses.empty() ? 1 : static_cast<int>(cellLenses.size());
+  auto probeLens = [&](int cell) -> const LensSystem& {
+    return cellLenses.empty() ? bounded : *cellLenses[cell];
+  };
+
   radialBins = std::max(radialBins, 2);
+  radialBins_ = radialBins;
   binScale_ = radialBins - 1;
 
-  std::vector<RawBin> raw(radialBins);
+  // Raw bins, cell by cell; the work is split over the threads bin by bin.
+  const int binCount = cells_ * radialBins;
+  std::vector<RawBin> raw(binCount);
   auto work = [&](int first, int stride) {
-    Probe own{bounded, planeZMm_, probeWavelengthsNm};  // each thread its own ray batch
-    for (int j = first; j < radialBins; j += stride)
-      raw[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_);
+    for (int cell = 0; cell < measuredCells; ++cell) {
+      Probe own{probeLens(cell), planeZMm_, probeWavelengthsNm};  // each thread its own batch
+      for (int j = 0; j < radialBins; ++j) {
+        const int at = cell * radialBins + j;
+        if (at % stride == first)
+          raw[at] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane, !convex);
+      }
+    }
   };
   threads = std::max(1, threads);
   std::vector<std::thread> pool;
@@ -378,37 +466,59 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     const double cx = near.centreX + shift;
     const double left = near.vertexRadius[kSectors / 2], right = near.vertexRadius[0];
     const double up = near.vertexRadius[kSectors / 4];
+    const double down = halfPlane ? 0.0 : near.vertexRadius[3 * kSectors / 4];
     constexpr int kSeeds = 9;
     for (int i = 0; i < kSeeds; ++i)
       for (int k = 0; k < kSeeds; ++k)
-        seeds.push_back({cx - left + (left + right) * (i + 0.5) / kSeeds, up * (k + 0.5) / kSeeds});
+        seeds.push_back({cx - left + (left + right) * (i + 0.5) / kSeeds,
+                         -down + (up + down) * (k + 0.5) / kSeeds});
     return seeds;
   };
-  for (int j = 1; j < radialBins; ++j)
-    if (raw[j].empty && !raw[j - 1].empty)
-      raw[j] = measure(probe, binRadiusMm(j), fallbackRadiusMm_,
-                       seedsFrom(raw[j - 1], j >= 2 ? &raw[j - 2] : nullptr));
-  for (int j = radialBins - 2; j >= 0; --j)
-    if (raw[j].empty && !raw[j + 1].empty)
-      raw[j] = measure(probe, binRadiusMm(j), fallbackRadiusMm_,
-                       seedsFrom(raw[j + 1], j + 2 < radialBins ? &raw[j + 2] : nullptr));
+  for (int cell = 0; cell < measuredCells; ++cell) {
+    Probe own{probeLens(cell), planeZMm_, probeWavelengthsNm};
+    RawBin* row = raw.data() + cell * radialBins;
+    for (int j = 1; j < radialBins; ++j)
+      if (row[j].empty && !row[j - 1].empty)
+        row[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane, !convex,
+                         seedsFrom(row[j - 1], j >= 2 ? &row[j - 2] : nullptr));
+    for (int j = radialBins - 2; j >= 0; --j)
+      if (row[j].empty && !row[j + 1].empty)
+        row[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane, !convex,
+                         seedsFrom(row[j + 1], j + 2 < radialBins ? &row[j + 2] : nullptr));
+  }
+  // Mirrored cells: cell cells_ - 1 - a is cell a with y -> -y (vertex k -> vertex -k).
+  if (mirroredCells) {
+    for (int cell = measuredCells; cell < cells_; ++cell) {
+      for (int j = 0; j < radialBins; ++j) {
+        const RawBin& source = raw[(cells_ - 1 - cell) * radialBins + j];
+        RawBin& image = raw[cell * radialBins + j];
+        image = source;
+        for (int k = 0; k < kSectors; ++k)
+          image.vertexRadius[k] = source.vertexRadius[(kSectors - k) % kSectors];
+      }
+    }
+  }
 
-  // Union with the neighbours, margin, triangle areas and their CDF.
-  bins_.resize(radialBins);
+  // Union with the neighbours (along the radius, within the cell), margin, triangle areas and
+  // their CDF.
+  bins_.resize(binCount);
   const double absoluteMargin = 1e-4 * fallbackRadiusMm_;
   const double halfSin = 0.5 * std::sin(sectorAngle);
-  for (int j = 0; j < radialBins; ++j) {
-    if (raw[j].empty) continue;
-    Bin& b = bins_[j];
+  const int measured = halfPlane ? kSectors / 2 + 1 : kSectors;
+  for (int at = 0; at < binCount; ++at) {
+    if (raw[at].empty) continue;
+    const int j = at % radialBins;
+    Bin& b = bins_[at];
     b.empty = false;
-    b.centreXMm = raw[j].centreX;
-    for (int k = 0; k <= kSectors / 2; ++k) {
-      double r = raw[j].vertexRadius[k];
+    b.centreXMm = raw[at].centreX;
+    for (int k = 0; k < measured; ++k) {
+      double r = raw[at].vertexRadius[k];
       for (int n : {j - 1, j + 1})
-        if (n >= 0 && n < radialBins && !raw[n].empty) r = std::max(r, raw[n].vertexRadius[k]);
+        if (n >= 0 && n < radialBins && !raw[at - j + n].empty)
+          r = std::max(r, raw[at - j + n].vertexRadius[k]);
       const double v = r * (1.0 + kRelativeMargin) + absoluteMargin;
       b.vertexRadiusMm[k] = v;
-      if (k > 0 && k < kSectors / 2) b.vertexRadiusMm[kSectors - k] = v;  // mirror below x
+      if (halfPlane && k > 0 && k < kSectors / 2) b.vertexRadiusMm[kSectors - k] = v;  // below x
     }
     double total = 0.0;
     for (int k = 0; k < kSectors; ++k) {
@@ -426,15 +536,19 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     b.areaMm2 = total;
     b.invAreaPerMm2 = 1.0 / total;
   }
-  // Empty bins take the centre of the nearest non-empty bin (used by the centre interpolation).
-  for (int pass = 0; pass < 2; ++pass) {
-    int last = -1;
-    for (int step = 0; step < radialBins; ++step) {
-      const int j = pass == 0 ? step : radialBins - 1 - step;
-      if (!bins_[j].empty) {
-        last = j;
-      } else if (last >= 0 && (pass == 0 || bins_[j].centreXMm == 0.0)) {
-        bins_[j].centreXMm = bins_[last].centreXMm;
+  // Empty bins take the centre of the nearest non-empty bin of their cell (used by the centre
+  // interpolation).
+  for (int cell = 0; cell < cells_; ++cell) {
+    Bin* row = bins_.data() + cell * radialBins;
+    for (int pass = 0; pass < 2; ++pass) {
+      int last = -1;
+      for (int step = 0; step < radialBins; ++step) {
+        const int j = pass == 0 ? step : radialBins - 1 - step;
+        if (!row[j].empty) {
+          last = j;
+        } else if (last >= 0 && (pass == 0 || row[j].centreXMm == 0.0)) {
+          row[j].centreXMm = row[last].centreXMm;
+        }
       }
     }
   }
@@ -467,13 +581,15 @@ double ExitPupilTable::binRadiusMm(int j) const {
   return filmRadiusMaxMm_ * 0.5 * (std::sqrt(1.0 + 8.0 * s) - 1.0);
 }
 
-ExitPupilTable::Lookup ExitPupilTable::lookup(double r) const {
+ExitPupilTable::Lookup ExitPupilTable::lookup(glm::dvec2 film) const {
   Lookup out;
-  const int last = static_cast<int>(bins_.size()) - 1;
+  const double r = std::sqrt(film.x * film.x + film.y * film.y);
+  const int last = radialBins_ - 1;
   const double x = r / filmRadiusMaxMm_;
   const double t = 0.5 * (x + x * x) * binScale_;
-  out.j = std::min(static_cast<int>(t), last - 1);
-  out.f = std::clamp(t - out.j, 0.0, 1.0);
+  const int j = std::min(static_cast<int>(t), last - 1);
+  out.f = std::clamp(t - j, 0.0, 1.0);
+  out.j = cellFirstBin(film.x, film.y) + j;
   const Bin& b0 = bins_[out.j];
   const Bin& b1 = bins_[out.j + 1];
   out.centreX = (1.0 - out.f) * b0.centreXMm + out.f * b1.centreXMm;  // as in sample()
@@ -481,9 +597,10 @@ ExitPupilTable::Lookup ExitPupilTable::lookup(double r) const {
 }
 
 double ExitPupilTable::imageCircleRadiusMm() const {
-  for (int j = static_cast<int>(bins_.size()) - 1; j >= 0; --j)
-    if (!bins_[j].empty) return binRadiusMm(j);
-  return 0.0;
+  int widest = -1;
+  for (std::size_t at = 0; at < bins_.size(); ++at)
+    if (!bins_[at].empty) widest = std::max(widest, static_cast<int>(at) % radialBins_);
+  return widest >= 0 ? binRadiusMm(widest) : 0.0;
 }
 
 bool ExitPupilTable::inside(const Bin& b, double centreX, double x, double y) const {
@@ -512,28 +629,30 @@ double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
     sn = film.y / r;
   }
   const double lx = c * point.x + sn * point.y, ly = -sn * point.x + c * point.y;
-  const auto [j, f, centreX] = lookup(r);
+  const auto [j, f, centreX] = lookup(film);
   double density = 0.0;
   if (inside(bins_[j], centreX, lx, ly)) density += (1.0 - f) / bins_[j].areaMm2;
   if (inside(bins_[j + 1], centreX, lx, ly)) density += f / bins_[j + 1].areaMm2;
   return density;
 }
 
-double ExitPupilTable::pdfInPassRegion(double r) const {
+double ExitPupilTable::pdfInPassRegion(glm::dvec2 film) const {
+  const double r = std::sqrt(film.x * film.x + film.y * film.y);
   if (bins_.empty() || r > filmRadiusMaxMm_) {
     if (bins_.empty() && filmRadiusMaxMm_ == 0.0 && planeZMm_ <= 0.0) return 0.0;  // no sample
     return 1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_);
   }
   // As sampleInline: bin j with probability 1 - f, bin j + 1 with f, each uniform over its area
   // (an empty bin's inverse area is 0: its share of the samples is dropped).
-  const Lookup l = lookup(r);
+  const Lookup l = lookup(film);
   return (1.0 - l.f) * bins_[l.j].invAreaPerMm2 + l.f * bins_[l.j + 1].invAreaPerMm2;
 }
 
-void ExitPupilTable::pdfInPassRegion(const float* filmRadiusMm, float* pdfPerMm2,
+void ExitPupilTable::pdfInPassRegion(const float* filmXMm, const float* filmYMm, float* pdfPerMm2,
                                      std::size_t n) const {
   if (bins_.empty()) {
-    for (std::size_t i = 0; i < n; ++i) pdfPerMm2[i] = static_cast<float>(pdfInPassRegion(0.0));
+    const auto none = static_cast<float>(pdfInPassRegion(glm::dvec2{0.0}));
+    for (std::size_t i = 0; i < n; ++i) pdfPerMm2[i] = none;
     return;
   }
   // As lookup() and the scalar form, without branches.
@@ -541,17 +660,19 @@ void ExitPupilTable::pdfInPassRegion(const float* filmRadiusMm, float* pdfPerMm2
   const auto rMax = static_cast<float>(filmRadiusMaxMm_);
   const auto invRMax = static_cast<float>(invFilmRadiusMaxMm_);
   const auto scale = static_cast<float>(binScale_);
-  const int lastPair = static_cast<int>(samplingBins_.size()) - 2;
+  const int lastPair = radialBins_ - 2;
   for (std::size_t i = 0; i < n; ++i) {
-    const float r = filmRadiusMm[i];
+    const float fx = filmXMm[i], fy = filmYMm[i];
+    const float r = std::sqrt(fx * fx + fy * fy);
+    const int first = cellFirstBin(fx, fy);
     const float x = r * invRMax;
     // (Clamped before the conversion: a radius beyond the table, answered below, must not
     // overflow it.)
     const float t = std::clamp(0.5f * (x + x * x) * scale, 0.0f, scale);
     const int j = std::clamp(static_cast<int>(t), 0, lastPair);
     const float f = std::clamp(t - static_cast<float>(j), 0.0f, 1.0f);
-    const float inside =
-        (1.0f - f) * samplingBins_[j].invAreaPerMm2 + f * samplingBins_[j + 1].invAreaPerMm2;
+    const float inside = (1.0f - f) * samplingBins_[first + j].invAreaPerMm2 +
+                         f * samplingBins_[first + j + 1].invAreaPerMm2;
     pdfPerMm2[i] = r > rMax ? fallback : inside;
   }
 }
@@ -573,8 +694,9 @@ inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, 
   // Written without unpredictable branches: the renderer calls this for every camera ray.
   const double x = r * invFilmRadiusMaxMm_;
   const double t = 0.5 * (x + x * x) * binScale_;
-  const int j = std::min(static_cast<int>(t), static_cast<int>(bins_.size()) - 2);
-  const double f = std::clamp(t - j, 0.0, 1.0);
+  const int radial = std::min(static_cast<int>(t), radialBins_ - 2);
+  const double f = std::clamp(t - radial, 0.0, 1.0);
+  const int j = cellFirstBin(filmX, filmY) + radial;
   const Bin& b0 = bins_[j];
   const Bin& b1 = bins_[j + 1];
   // Empty bins carry their non-empty neighbour's centre (see the constructor), so the lerp is

@@ -17,6 +17,12 @@
 // Bins are equally spaced in (x + x^2) / 2, x = r / rMax: three times denser at the rim of the
 // image circle, where the cat's eye changes fastest, than on the axis.
 //
+// A shaped stop (aperture_shape.h) is not rotationally symmetric: the table then has a row of
+// bins per azimuth cell (stop_cells.h), each measured over the full circle with a stop that
+// holds the shape turned by every azimuth of its cell, and a film point samples from its cell's
+// row. A shape close to its circle (or the circle) has one cell: the bounds of its circumscribed
+// circle, measured on the half-plane and mirrored.
+//
 // No banding: between two table radii the bin is chosen stochastically with the linear
 // interpolation weights, and the centre is interpolated, so the density
 // (1 - f) / A_j + f / A_{j+1} varies continuously with the film radius. It is exact (and the
@@ -31,6 +37,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "optics/stop_cells.h"
+
 namespace lenslab::optics {
 
 class LensSystem;
@@ -41,6 +49,9 @@ class ExitPupilTable {
  public:
   static constexpr int kSectors = 32;  // over the full circle
   static constexpr int kDefaultRadialBins = 128;
+  // Radial bins per azimuth cell when a shaped stop splits the table into cells (each cell
+  // costs a table's worth of rays to build).
+  static constexpr int kShapedStopRadialBins = 48;
   static constexpr double kMaxFilmRadiusMm = 60.0;  // search range for the image circle
 
   // Wavelengths whose pass regions the spectral table's bounds contain (LensSystem::
@@ -67,13 +78,13 @@ class ExitPupilTable {
   // The density sample() has at a point of the plane (0 outside the sampled region), for tests
   // and for multiple importance sampling.
   double pdf(glm::dvec2 filmPointMm, glm::dvec2 planePointMm) const;
-  // The same at a plane point whose ray passes the lens, from a film point at this distance from
-  // the axis: the sampled region contains every such point, so no point-in-polygon test is
-  // needed (multiple importance sampling between the spectral render's wavelengths; 0 where no
-  // sample is drawn).
-  double pdfInPassRegion(double filmRadiusMm) const;
-  // The same for n film radii at once, in single precision (pdfPerMm2 may be filmRadiusMm).
-  void pdfInPassRegion(const float* filmRadiusMm, float* pdfPerMm2, std::size_t n) const;
+  // The same at a plane point whose ray passes the lens, from this film point: the sampled
+  // region contains every such point, so no point-in-polygon test is needed (multiple
+  // importance sampling between the spectral render's wavelengths; 0 where no sample is drawn).
+  double pdfInPassRegion(glm::dvec2 filmPointMm) const;
+  // The same for n film points at once, in single precision (pdfPerMm2 may be filmXMm).
+  void pdfInPassRegion(const float* filmXMm, const float* filmYMm, float* pdfPerMm2,
+                       std::size_t n) const;
 
   // Film radius covered by the table (the image circle, slightly enlarged); beyond it sample()
   // falls back to the square of half-side fallbackRadiusMm() (1.5 x the rear semi-aperture;
@@ -89,8 +100,15 @@ class ExitPupilTable {
   // Largest tabulated film radius with a non-empty bin (the image circle at the table's
   // resolution).
   double imageCircleRadiusMm() const;
-  int radialBins() const { return static_cast<int>(bins_.size()); }
+  int radialBins() const { return radialBins_; }
   double binRadiusMm(int j) const;
+  // Azimuth cells (1 for the circle) and the film azimuths they divide (2 pi / N for a shape
+  // that repeats N-fold).
+  int azimuthCells() const { return cells_; }
+  double cellPeriodRad() const { return cellPeriodRad_; }
+  // The stop shape's area over its cells' sweeps (stop_cells.h): roughly the share of samples
+  // its stop lets through near the axis, where the circle's lets through all. 1 for the circle.
+  double shapeShareOfSweep() const { return shapeShareOfSweep_; }
 
   struct Bin {
     bool empty = true;
@@ -103,7 +121,8 @@ class ExitPupilTable {
     double areaMm2 = 0.0;
     double invAreaPerMm2 = 0.0;  // 0 for an empty bin
   };
-  const Bin& bin(int j) const { return bins_[j]; }
+  const Bin& bin(int j) const { return bins_[j]; }  // of cell 0
+  const Bin& bin(int cell, int j) const { return bins_[cell * radialBins_ + j]; }
 
  private:
   bool sampleInline(double filmX, double filmY, double u0, double u1, double& pointX,
@@ -112,11 +131,17 @@ class ExitPupilTable {
   void sampleRaysOneByOne(const float* filmX, const float* filmY, const float* u0, const float* u1,
                           std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
   bool inside(const Bin& b, double centreX, double x, double y) const;
+  // Index in bins_ of the film point's cell's first bin.
+  int cellFirstBin(double filmX, double filmY) const {
+    if (cells_ == 1) return 0;
+    return radialBins_ * stopCellOf(static_cast<float>(filmX), static_cast<float>(filmY),
+                                    cellOffsetRadF_, cellPeriodRadF_, cellsPerRadF_, cells_);
+  }
   struct Lookup {
-    int j = 0;
+    int j = 0;  // index in bins_: the film point's cell's bin below its radius
     double f = 0.0, centreX = 0.0;
   };
-  Lookup lookup(double filmRadius) const;
+  Lookup lookup(glm::dvec2 filmPointMm) const;
 
   // What sampleRays reads, per bin, in single precision and laid out for gathers: 16 bytes per
   // alias slot and per sector, so that the AVX-512 kernel addresses it as one float array.
@@ -136,9 +161,14 @@ class ExitPupilTable {
   };
   void buildSamplingBins();
 
-  std::vector<Bin> bins_;
+  std::vector<Bin> bins_;                  // cell by cell, radialBins_ each
   std::vector<SamplingBin> samplingBins_;  // bins_ in float
-  double binScale_ = 0.0;                  // bins - 1
+  int radialBins_ = 0;
+  int cells_ = 1;
+  double cellPeriodRad_ = 0.0;
+  float cellOffsetRadF_ = 0.0f, cellPeriodRadF_ = 0.0f, cellsPerRadF_ = 0.0f;  // for stopCellOf
+  double shapeShareOfSweep_ = 1.0;
+  double binScale_ = 0.0;  // bins - 1
   double filmRadiusMaxMm_ = 0.0;
   double invFilmRadiusMaxMm_ = 0.0;  // sampling multiplies: one division fewer per ray
   double imageCircleBoundMm_ = std::numeric_limits<double>::infinity();

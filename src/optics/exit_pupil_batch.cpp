@@ -40,7 +40,15 @@ struct BatchSamplingConstants {
   float planeZ = 0.0f, half = 0.0f, fallbackPdf = 0.0f, radiusMax = 0.0f;
   double invRadiusMax = 0.0, binScale = 0.0;
   int lastPair = 0;
+  // A shaped stop's azimuth cells (stop_cells.h's stopCellOf): cells > 1 splits the table.
+  int cells = 1, radialBins = 0;
+  float cellOffsetRad = 0.0f, cellPeriodRad = 1.0f, cellsPerRad = 0.0f;
 };
+
+// stopCellOf's arctangent polynomial (Abramowitz and Stegun 4.4.49) and constants.
+constexpr float kAtan1 = 0.9998660f, kAtan3 = -0.3302995f, kAtan5 = 0.1801410f,
+                kAtan7 = -0.0851330f, kAtan9 = 0.0208351f;
+constexpr float kHalfPi = 1.57079633f, kPi = 3.14159265f, kTwoPi = 6.28318531f;
 
 // The vector kernels address the table as one float array: a bin's fields as offsets in floats.
 template <class SamplingBin>
@@ -110,7 +118,34 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma"))) void sampleBat
       uxHalf[h] = _mm512_cvtpd_ps(_mm512_div_pd(numerator, denominator));
       secondHalf[h] = second;
     }
-    const __m512i j = _mm512_inserti64x4(_mm512_castsi256_si512(jHalf[0]), jHalf[1], 1);
+    __m512i cellFirst = _mm512_setzero_si512();
+    if (k.cells > 1) {  // stopCellOf, lane by lane
+      const __m512 ax = _mm512_abs_ps(fx), ay = _mm512_abs_ps(fy);
+      const __m512 big = _mm512_max_ps(ax, ay), small = _mm512_min_ps(ax, ay);
+      const __m512 t = _mm512_maskz_div_ps(_mm512_cmp_ps_mask(big, zero, _CMP_GT_OQ), small, big);
+      const __m512 s = _mm512_mul_ps(t, t);
+      __m512 p = _mm512_fmadd_ps(_mm512_set1_ps(kAtan9), s, _mm512_set1_ps(kAtan7));
+      p = _mm512_fmadd_ps(p, s, _mm512_set1_ps(kAtan5));
+      p = _mm512_fmadd_ps(p, s, _mm512_set1_ps(kAtan3));
+      p = _mm512_fmadd_ps(p, s, _mm512_set1_ps(kAtan1));
+      __m512 a = _mm512_mul_ps(t, p);
+      a = _mm512_mask_sub_ps(a, _mm512_cmp_ps_mask(ay, ax, _CMP_GT_OQ), _mm512_set1_ps(kHalfPi), a);
+      a = _mm512_mask_sub_ps(a, _mm512_cmp_ps_mask(fx, zero, _CMP_LT_OQ), _mm512_set1_ps(kPi), a);
+      a = _mm512_mask_sub_ps(a, _mm512_cmp_ps_mask(fy, zero, _CMP_LT_OQ), _mm512_set1_ps(kTwoPi),
+                             a);
+      a = _mm512_add_ps(_mm512_sub_ps(a, _mm512_set1_ps(k.cellOffsetRad)), _mm512_set1_ps(kTwoPi));
+      const __m512 period = _mm512_set1_ps(k.cellPeriodRad);
+      const __m512 turns = _mm512_cvtepi32_ps(_mm512_cvttps_epi32(_mm512_div_ps(a, period)));
+      const __m512 folded = _mm512_fnmadd_ps(period, turns, a);
+      const __m512i cell = _mm512_min_epi32(
+          _mm512_max_epi32(
+              _mm512_cvttps_epi32(_mm512_mul_ps(folded, _mm512_set1_ps(k.cellsPerRad))),
+              _mm512_setzero_si512()),
+          _mm512_set1_epi32(k.cells - 1));
+      cellFirst = _mm512_mullo_epi32(cell, _mm512_set1_epi32(k.radialBins));
+    }
+    const __m512i j = _mm512_add_epi32(
+        _mm512_inserti64x4(_mm512_castsi256_si512(jHalf[0]), jHalf[1], 1), cellFirst);
     const __m512 f = _mm512_insertf32x8(_mm512_castps256_ps512(fHalf[0]), fHalf[1], 1);
     const __m512 ux = _mm512_insertf32x8(_mm512_castps256_ps512(uxHalf[0]), uxHalf[1], 1);
     const __mmask16 second = static_cast<__mmask16>(secondHalf[0] | (secondHalf[1] << 8));
@@ -253,7 +288,37 @@ __attribute__((target("avx2,fma"))) void sampleBatchAvx2(const BatchSamplingCons
       uxHalf[h] = _mm256_cvtpd_ps(_mm256_div_pd(numerator, denominator));
       secondHalf[h] = _mm256_cvtpd_epi32(_mm256_and_pd(second, oneD));  // 1 or 0
     }
-    const __m256i j = _mm256_set_m128i(jHalf[1], jHalf[0]);
+    __m256i cellFirst = _mm256_setzero_si256();
+    if (k.cells > 1) {  // stopCellOf, lane by lane
+      const __m256 signBit = _mm256_set1_ps(-0.0f);
+      const __m256 ax = _mm256_andnot_ps(signBit, fx), ay = _mm256_andnot_ps(signBit, fy);
+      const __m256 big = _mm256_max_ps(ax, ay), small = _mm256_min_ps(ax, ay);
+      const __m256 t =
+          _mm256_and_ps(_mm256_div_ps(small, big), _mm256_cmp_ps(big, zero, _CMP_GT_OQ));
+      const __m256 s = _mm256_mul_ps(t, t);
+      __m256 p = _mm256_fmadd_ps(_mm256_set1_ps(kAtan9), s, _mm256_set1_ps(kAtan7));
+      p = _mm256_fmadd_ps(p, s, _mm256_set1_ps(kAtan5));
+      p = _mm256_fmadd_ps(p, s, _mm256_set1_ps(kAtan3));
+      p = _mm256_fmadd_ps(p, s, _mm256_set1_ps(kAtan1));
+      __m256 a = _mm256_mul_ps(t, p);
+      a = _mm256_blendv_ps(a, _mm256_sub_ps(_mm256_set1_ps(kHalfPi), a),
+                           _mm256_cmp_ps(ay, ax, _CMP_GT_OQ));
+      a = _mm256_blendv_ps(a, _mm256_sub_ps(_mm256_set1_ps(kPi), a),
+                           _mm256_cmp_ps(fx, zero, _CMP_LT_OQ));
+      a = _mm256_blendv_ps(a, _mm256_sub_ps(_mm256_set1_ps(kTwoPi), a),
+                           _mm256_cmp_ps(fy, zero, _CMP_LT_OQ));
+      a = _mm256_add_ps(_mm256_sub_ps(a, _mm256_set1_ps(k.cellOffsetRad)), _mm256_set1_ps(kTwoPi));
+      const __m256 period = _mm256_set1_ps(k.cellPeriodRad);
+      const __m256 turns = _mm256_cvtepi32_ps(_mm256_cvttps_epi32(_mm256_div_ps(a, period)));
+      const __m256 folded = _mm256_fnmadd_ps(period, turns, a);
+      const __m256i cell = _mm256_min_epi32(
+          _mm256_max_epi32(
+              _mm256_cvttps_epi32(_mm256_mul_ps(folded, _mm256_set1_ps(k.cellsPerRad))),
+              _mm256_setzero_si256()),
+          _mm256_set1_epi32(k.cells - 1));
+      cellFirst = _mm256_mullo_epi32(cell, _mm256_set1_epi32(k.radialBins));
+    }
+    const __m256i j = _mm256_add_epi32(_mm256_set_m128i(jHalf[1], jHalf[0]), cellFirst);
     const __m256 f = _mm256_set_m128(fHalf[1], fHalf[0]);
     const __m256 ux = _mm256_set_m128(uxHalf[1], uxHalf[0]);
     const __m256i second = _mm256_set_m128i(secondHalf[1], secondHalf[0]);
@@ -338,6 +403,19 @@ void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const fl
     sampleRaysOneByOne(filmX, filmY, u0, u1, n, rays, pdfPerMm2);
     return;
   }
+  BatchSamplingConstants k;
+  k.planeZ = static_cast<float>(planeZMm_);
+  k.half = static_cast<float>(fallbackRadiusMm_);
+  k.fallbackPdf = static_cast<float>(1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_));
+  k.radiusMax = static_cast<float>(filmRadiusMaxMm_);
+  k.invRadiusMax = invFilmRadiusMaxMm_;
+  k.binScale = binScale_;
+  k.lastPair = radialBins_ - 2;
+  k.cells = cells_;
+  k.radialBins = radialBins_;
+  k.cellOffsetRad = cellOffsetRadF_;
+  k.cellPeriodRad = cellPeriodRadF_;
+  k.cellsPerRad = cellsPerRadF_;
   const BatchSampling io{filmX,
                          filmY,
                          u0,
@@ -350,14 +428,6 @@ void ExitPupilTable::sampleRays(const float* filmX, const float* filmY, const fl
                          rays.dz.data(),
                          rays.alive.data(),
                          pdfPerMm2};
-  BatchSamplingConstants k;
-  k.planeZ = static_cast<float>(planeZMm_);
-  k.half = static_cast<float>(fallbackRadiusMm_);
-  k.fallbackPdf = static_cast<float>(1.0 / (4.0 * fallbackRadiusMm_ * fallbackRadiusMm_));
-  k.radiusMax = static_cast<float>(filmRadiusMaxMm_);
-  k.invRadiusMax = invFilmRadiusMaxMm_;
-  k.binScale = binScale_;
-  k.lastPair = static_cast<int>(samplingBins_.size()) - 2;
   switch (kernel) {
     case SampleKernel::Avx512:
       sampleBatchAvx512(k, samplingBins_.data(), io, n);

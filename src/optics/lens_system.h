@@ -137,8 +137,9 @@ class LensSystem {
            stopTest_.contains(pointMm.x, pointMm.y);
   }
   // The lens with the stop's shape replaced by the circle that circumscribes it (itself when the
-  // stop is a circle): the exit-pupil table bounds the pass region of this lens, which contains
-  // the shaped one's.
+  // stop is a circle), whose pass region contains the shaped one's: the exit-pupil table finds
+  // the image circle with it, and bounds with it the pass region of a shape close to its circle
+  // (others get azimuth cells, stop_cells.h).
   std::shared_ptr<const LensSystem> withCircumscribedStop() const;
 
   const Prescription& prescription() const { return prescription_; }

@@ -35,7 +35,7 @@ struct BackRayLanding {
 
 // For RealisticCamera::heroWavelengthWeights, each ray traced back toward the film: its raster
 // column (-1 off the film) and row, cos^4(theta), the density factor Z^2 / cos^4 (0 off the
-// film), and for the exit-pupil table its film radius (for the table's density, 0 off the film)
+// film), and for the exit-pupil table its film point (for the table's density; 0 off the film)
 // or for the rear disk that disk's density where the ray crosses its plane. Without branches,
 // and a function of its own with restrict parameters, so that GCC vectorizes the loop (it does
 // not trust restrict on local pointers). Blocked rays' coordinates may be infinite or NaN (the
@@ -45,8 +45,8 @@ void landBackRays(const BackRayLanding& l, std::size_t n, const float* __restric
                   const float* __restrict dxs, const float* __restrict dys,
                   const float* __restrict dzs, const std::uint8_t* __restrict alive,
                   float* __restrict densityOut, float* __restrict cos4Out,
-                  float* __restrict planeOut, std::int32_t* __restrict columnOut,
-                  std::int32_t* __restrict rowOut) {
+                  float* __restrict planeOut, float* __restrict filmYOut,
+                  std::int32_t* __restrict columnOut, std::int32_t* __restrict rowOut) {
   const bool exitPupil = l.exitPupil;
   const float planeZ = l.planeZ, planeZSquared = l.planeZ * l.planeZ;
   const float diskRadiusSq = l.diskRadiusSq, diskPdf = l.diskPdf;
@@ -73,12 +73,15 @@ void landBackRays(const BackRayLanding& l, std::size_t n, const float* __restric
     cos4Out[b] = cos2 * cos2;
     densityOut[b] = onFilm ? planeZSquared / (cos2 * cos2) : 0.0f;
     // Both plane answers, and a select: a branch would keep the loop from vectorizing.
-    const float filmRadius = onFilm ? std::sqrt(filmX * filmX + filmY * filmY) : 0.0f;
+    // (The exit-pupil table's density depends on the film point: its x in planeOut, y in
+    // filmYOut.)
+    const float landedX = onFilm ? filmX : 0.0f, landedY = onFilm ? filmY : 0.0f;
     const float toPlane = (planeZ - oz[b]) / safeDz;
     const float qx = ox[b] + toPlane * dxs[b];
     const float qy = oy[b] + toPlane * dys[b];
     const float diskDensity = qx * qx + qy * qy <= diskRadiusSq ? diskPdf : 0.0f;
-    planeOut[b] = exitPupil ? filmRadius : diskDensity;
+    planeOut[b] = exitPupil ? landedX : diskDensity;
+    filmYOut[b] = landedY;
   }
 }
 
@@ -99,12 +102,21 @@ RealisticCamera::RealisticCamera(std::shared_ptr<const optics::LensSystem> lens,
   filmHeightMm_ = filmDiagonalMm * height / diagonalPixels;
   mmPerRasterX_ = filmWidthMm_ / width;
   mmPerRasterY_ = filmHeightMm_ / height;
-  // The share of the circle the exit-pupil table covers (the shape's bound) that the shape opens.
+  // Sampling the rear element's disk, a shaped stop opens its share of the circle around it.
   const optics::ApertureShape& shape = lens_->stopShape();
   const double bound = shape.boundRadiusFactor();
-  const double openFraction = shape.areaFactor() / (3.14159265358979323846 * bound * bound);
-  if (openFraction > 0.0 && openFraction < 0.5)
-    lensPointsPerSample_ = std::clamp(static_cast<int>(std::lround(1.0 / openFraction)), 1, 4);
+  rearDiskShapeShare_ = shape.areaFactor() / (3.14159265358979323846 * bound * bound);
+}
+
+int RealisticCamera::lensPointsPerSample() const {
+  // The share of the region the sampler covers that the stop's shape opens: the exit-pupil
+  // table's own estimate (its cells follow the shape), or the shape's share of its circle.
+  const double share = sampling_ == LensSampling::ExitPupil
+                           ? (spectral_ ? lens_->spectralExitPupilTable() : lens_->exitPupilTable())
+                                 .shapeShareOfSweep()
+                           : rearDiskShapeShare_;
+  if (!(share > 0.0 && share < 0.5)) return 1;
+  return std::clamp(static_cast<int>(std::lround(1.0 / share)), 1, 4);
 }
 
 float RealisticCamera::pixelSpreadRadians() const {
@@ -388,18 +400,21 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
 
   // Each back ray: where it meets the film (pixel -1 off it), its cos^4, and its density p_k (0
   // when it does not reach the film).
-  thread_local std::vector<float> backDensity, backCos4, planePdf;
+  thread_local std::vector<float> backDensity, backCos4, planePdf, backFilmY;
   thread_local std::vector<std::int32_t> backPixel, backRow;
   backDensity.resize(backCount);
   backCos4.resize(backCount);
   planePdf.resize(backCount);
+  backFilmY.resize(backCount);
   backPixel.resize(backCount);
   backRow.resize(backCount);
   landBackRays(landing, backCount, back.ox.data(), back.oy.data(), back.oz.data(), back.dx.data(),
                back.dy.data(), back.dz.data(), back.alive.data(), backDensity.data(),
-               backCos4.data(), planePdf.data(), backPixel.data(), backRow.data());
+               backCos4.data(), planePdf.data(), backFilmY.data(), backPixel.data(),
+               backRow.data());
   if (exitPupil)
-    lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), planePdf.data(), backCount);
+    lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), backFilmY.data(),
+                                                    planePdf.data(), backCount);
   for (std::size_t b = 0; b < backCount; ++b) {
     // A select, not a product: 0 times a blocked ray's infinite density would be NaN.
     const float density = backDensity[b] * planePdf[b];

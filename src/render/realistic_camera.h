@@ -49,10 +49,11 @@ class RealisticCamera final : public Camera {
   // Traces each sample at its wavelength: the lens's dispersion is in the picture.
   bool spectral() const override { return spectral_; }
   bool readsWavelengths() const override;
-  // The exit-pupil table is built for the circle around a shaped stop, so a shape that lets
-  // through under half of it (three blades 41%, pbrt's star 36%, its gaussian 26%) would block
-  // most samples: it gets round(circle / shape area) lens points per sample, at most 4.
-  int lensPointsPerSample() const override { return lensPointsPerSample_; }
+  // A shaped stop whose shape opens under half of the region the sampler covers would block most
+  // samples: it gets round(region / shape area) lens points per sample, at most 4. The
+  // exit-pupil table follows most shapes (optics/stop_cells.h: three blades, pbrt's star), so
+  // they get one; pbrt's gaussian, a halftone filling its circle at 26%, gets 4. (After prepare().)
+  int lensPointsPerSample() const override;
 
   float pixelSpreadRadians() const override;
   // Builds the lens's exit-pupil table: every sampling mode needs its image-circle bound.
@@ -81,7 +82,7 @@ class RealisticCamera final : public Camera {
   LensSampling sampling_;
   bool cos4Weighting_;
   bool spectral_;
-  int lensPointsPerSample_ = 1;
+  double rearDiskShapeShare_ = 1.0;  // LensSampling::RearElementDisk: shape area / circle
 };
 
 }  // namespace lenslab::render

@@ -282,54 +282,68 @@ TEST(ExitPupil, DensityIsContinuousAcrossTableRadii) {
 namespace lenslab::optics {
 namespace {
 
+// Also through shaped stops, whose tables the kernels address by azimuth cell (stop_cells.h):
+// three blades (16 cells, mirrored) and pbrt's star (a mask: 10 cells).
 TEST(ExitPupil, BatchCameraRaysMatchTheScalarSamples) {
-  const auto lens = testing::loadLens(testing::referenceLensDir() / "wide.22mm.dat", 14.54);
-  ASSERT_TRUE(lens);
-  std::mt19937 rng(21);
-  std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-  const std::size_t n = 777;
-  std::vector<float> fx(n), fy(n), u0(n), u1(n), pdf(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    fx[i] = 60.0f * (uniform(rng) - 0.5f);
-    fy[i] = 60.0f * (uniform(rng) - 0.5f);
-    u0[i] = uniform(rng);
-    u1[i] = uniform(rng);
-  }
-  // Every kernel the CPU has, whole and in batches of 5 (a ray's result does not depend on its
-  // place in a batch).
-  using Kernel = LensSystem::BatchKernel;
-  for (const auto& [kernel, batchSize] :
-       {std::pair{Kernel::Portable, n}, std::pair{Kernel::Portable, std::size_t{5}},
-        std::pair{Kernel::Avx2, n}, std::pair{Kernel::Avx2, std::size_t{5}},
-        std::pair{Kernel::Avx512, n}, std::pair{Kernel::Avx512, std::size_t{5}}}) {
-    SCOPED_TRACE(::testing::Message()
-                 << "kernel " << static_cast<int>(kernel) << ", batches of " << batchSize);
-    if (!LensSystem::batchKernelAvailable(kernel)) continue;
-    LensRayBatch rays;
-    for (std::size_t start = 0; start < n; start += batchSize) {
-      const std::size_t m = std::min(batchSize, n - start);
-      LensRayBatch part;
-      lens->sampleCameraRays(fx.data() + start, fy.data() + start, u0.data() + start,
-                             u1.data() + start, m, part, pdf.data() + start, kernel);
-      ASSERT_EQ(part.size(), m);
-      for (auto [all, some] : {std::pair{&rays.ox, &part.ox}, std::pair{&rays.oy, &part.oy},
-                               std::pair{&rays.oz, &part.oz}, std::pair{&rays.dx, &part.dx},
-                               std::pair{&rays.dy, &part.dy}, std::pair{&rays.dz, &part.dz}})
-        all->insert(all->end(), some->begin(), some->end());
-      rays.alive.insert(rays.alive.end(), part.alive.begin(), part.alive.end());
+  const auto round = testing::loadLens(testing::referenceLensDir() / "wide.22mm.dat", 14.54);
+  ASSERT_TRUE(round);
+  ApertureShape triangle;
+  triangle.kind = ApertureShape::Kind::Blades;
+  triangle.bladeCount = 3;
+  triangle.rotationDeg = 10.0;
+  for (const auto& lens : {round, round->withStopShape(triangle),
+                           round->withStopShape(*builtinPbrtAperture("star"))}) {
+    ASSERT_TRUE(lens);
+    SCOPED_TRACE(lens->stopShape().spec());
+    if (!lens->stopShape().isCircle()) {
+      EXPECT_GT(lens->exitPupilTable().azimuthCells(), 1);
     }
-    ASSERT_EQ(rays.size(), n);
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    const std::size_t n = 777;
+    std::vector<float> fx(n), fy(n), u0(n), u1(n), pdf(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const auto s = lens->sampleExitPupil({fx[i], fy[i]}, {u0[i], u1[i]});
-      ASSERT_EQ(static_cast<bool>(rays.alive[i]), s.has_value()) << i;
-      if (!s) continue;
-      EXPECT_NEAR(pdf[i], s->pdfPerMm2, 1e-5 * s->pdfPerMm2);
-      const glm::dvec3 d = glm::normalize(s->pointMm - glm::dvec3{fx[i], fy[i], 0.0});
-      EXPECT_NEAR(rays.dx[i], d.x, 1e-5);
-      EXPECT_NEAR(rays.dy[i], d.y, 1e-5);
-      EXPECT_NEAR(rays.dz[i], d.z, 1e-5);
-      EXPECT_EQ(rays.ox[i], fx[i]);
-      EXPECT_EQ(rays.oz[i], 0.0f);
+      fx[i] = 60.0f * (uniform(rng) - 0.5f);
+      fy[i] = 60.0f * (uniform(rng) - 0.5f);
+      u0[i] = uniform(rng);
+      u1[i] = uniform(rng);
+    }
+    // Every kernel the CPU has, whole and in batches of 5 (a ray's result does not depend on its
+    // place in a batch).
+    using Kernel = LensSystem::BatchKernel;
+    for (const auto& [kernel, batchSize] :
+         {std::pair{Kernel::Portable, n}, std::pair{Kernel::Portable, std::size_t{5}},
+          std::pair{Kernel::Avx2, n}, std::pair{Kernel::Avx2, std::size_t{5}},
+          std::pair{Kernel::Avx512, n}, std::pair{Kernel::Avx512, std::size_t{5}}}) {
+      SCOPED_TRACE(::testing::Message()
+                   << "kernel " << static_cast<int>(kernel) << ", batches of " << batchSize);
+      if (!LensSystem::batchKernelAvailable(kernel)) continue;
+      LensRayBatch rays;
+      for (std::size_t start = 0; start < n; start += batchSize) {
+        const std::size_t m = std::min(batchSize, n - start);
+        LensRayBatch part;
+        lens->sampleCameraRays(fx.data() + start, fy.data() + start, u0.data() + start,
+                               u1.data() + start, m, part, pdf.data() + start, kernel);
+        ASSERT_EQ(part.size(), m);
+        for (auto [all, some] : {std::pair{&rays.ox, &part.ox}, std::pair{&rays.oy, &part.oy},
+                                 std::pair{&rays.oz, &part.oz}, std::pair{&rays.dx, &part.dx},
+                                 std::pair{&rays.dy, &part.dy}, std::pair{&rays.dz, &part.dz}})
+          all->insert(all->end(), some->begin(), some->end());
+        rays.alive.insert(rays.alive.end(), part.alive.begin(), part.alive.end());
+      }
+      ASSERT_EQ(rays.size(), n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto s = lens->sampleExitPupil({fx[i], fy[i]}, {u0[i], u1[i]});
+        ASSERT_EQ(static_cast<bool>(rays.alive[i]), s.has_value()) << i;
+        if (!s) continue;
+        EXPECT_NEAR(pdf[i], s->pdfPerMm2, 1e-5 * s->pdfPerMm2);
+        const glm::dvec3 d = glm::normalize(s->pointMm - glm::dvec3{fx[i], fy[i], 0.0});
+        EXPECT_NEAR(rays.dx[i], d.x, 1e-5);
+        EXPECT_NEAR(rays.dy[i], d.y, 1e-5);
+        EXPECT_NEAR(rays.dz[i], d.z, 1e-5);
+        EXPECT_EQ(rays.ox[i], fx[i]);
+        EXPECT_EQ(rays.oz[i], 0.0f);
+      }
     }
   }
 }
@@ -382,17 +396,20 @@ TEST(ExitPupil, DensityInThePassRegionIsThePdfAtEveryPassingPoint) {
       if (!s || !passes(*lens, film, s->pointMm)) continue;
       ++checked;
       const double pdf = table.pdf(film, {s->pointMm.x, s->pointMm.y});
-      ASSERT_NEAR(table.pdfInPassRegion(r), pdf, 1e-9 * pdf) << "film radius " << r;
+      ASSERT_NEAR(table.pdfInPassRegion(film), pdf, 1e-9 * pdf) << "film radius " << r;
     }
     EXPECT_GT(checked, 1000);
     // The batch form in single precision, at radii across the table and beyond it.
-    std::vector<float> radii(500), batch(500);
-    for (std::size_t i = 0; i < radii.size(); ++i)
-      radii[i] = static_cast<float>(1.2 * table.filmRadiusMaxMm() * i / radii.size());
-    table.pdfInPassRegion(radii.data(), batch.data(), radii.size());
-    for (std::size_t i = 0; i < radii.size(); ++i) {
-      const double expected = table.pdfInPassRegion(radii[i]);
-      EXPECT_NEAR(batch[i], expected, 1e-4 * expected + 1e-12) << "film radius " << radii[i];
+    std::vector<float> xs(500), ys(500), batch(500);
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const double r = 1.2 * table.filmRadiusMaxMm() * i / xs.size(), phi = 0.37 * i;
+      xs[i] = static_cast<float>(r * std::cos(phi));
+      ys[i] = static_cast<float>(r * std::sin(phi));
+    }
+    table.pdfInPassRegion(xs.data(), ys.data(), batch.data(), xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const double expected = table.pdfInPassRegion(glm::dvec2{xs[i], ys[i]});
+      EXPECT_NEAR(batch[i], expected, 1e-4 * expected + 1e-12) << "film point " << i;
     }
   }
 }
@@ -418,7 +435,7 @@ TEST(ExitPupil, EveryPassingPointNearTheRimLiesInBothBlendedBins) {
         const glm::dvec2 p{domain * (2 * uniform(rng) - 1), domain * (2 * uniform(rng) - 1)};
         if (!passes(*lens, {r, 0.0}, {p, table.planeZMm()})) continue;
         ++passing;
-        const double blended = table.pdfInPassRegion(r);
+        const double blended = table.pdfInPassRegion({r, 0.0});
         if (table.pdf({r, 0.0}, p) < blended * (1.0 - 1e-9)) ++inOneOnly;
       }
     }
@@ -431,7 +448,7 @@ TEST(ExitPupil, EveryPassingPointNearTheRimLiesInBothBlendedBins) {
       if (!s || !passes(*lens, {r, 0.0}, s->pointMm)) continue;
       ++sampledPassing;
       const glm::dvec2 p{s->pointMm.x, s->pointMm.y};
-      if (table.pdf({r, 0.0}, p) < table.pdfInPassRegion(r) * (1.0 - 1e-9)) ++inOneOnly;
+      if (table.pdf({r, 0.0}, p) < table.pdfInPassRegion({r, 0.0}) * (1.0 - 1e-9)) ++inOneOnly;
     }
     EXPECT_GT(passing, 2000);
     EXPECT_GT(sampledPassing, 500);

@@ -280,7 +280,7 @@ TEST(SpectralTrace, SpectralExitPupilContainsEveryPassingRayAtEveryWavelength) {
         const double pdf = table.pdf(film, p);
         if (pdf <= 0.0)
           ++outside;
-        else if (pdf < table.pdfInPassRegion(r) * (1.0 - 1e-9))
+        else if (pdf < table.pdfInPassRegion(film) * (1.0 - 1e-9))
           ++inOneBinOnly;
       }
     }
