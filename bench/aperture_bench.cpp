@@ -11,6 +11,8 @@
 // threads), wall time: the render cost as the viewer sees it.
 // BM_ApertureFirstPass/<shape>: edit to first pass (a new film distance, so a new LensSystem and
 // exit-pupil table, coarse look, pass), as BM_PreviewFirstPass; issue 5's 100 ms budget.
+// BM_ApertureTable/<shape>: the exit-pupil table alone, after the same edit (a shape far from its
+// circle splits it into azimuth cells, optics/stop_cells.h).
 //
 // Compare shapes alternately in one run, medians:
 //   lenslab_bench --benchmark_filter=BM_Aperture --benchmark_repetitions=9
@@ -24,6 +26,7 @@
 
 #include "bench_scene.h"
 #include "optics/aperture_shape.h"
+#include "optics/exit_pupil.h"
 #include "optics/lens_system.h"
 #include "render/camera_factory.h"
 #include "render/progressive_renderer.h"
@@ -124,7 +127,26 @@ void BM_ApertureFirstPass(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ApertureFirstPass)
-    ->DenseRange(0, 3)
+    ->DenseRange(0, 6)
+    ->ArgName("shape")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The exit-pupil table alone (a new film distance each time): a shaped stop far from its circle
+// builds a row of bins per azimuth cell (optics/stop_cells.h).
+void BM_ApertureTable(benchmark::State& state) {
+  const DefaultScene& loaded = defaultScene();
+  if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");
+  const auto shaped = loaded.lens->withStopShape(shapeNumber(state.range(0)));
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    const double filmMm = shaped->filmDistanceMm() + (iteration++ % 2 ? -0.2 : 0.2);
+    const auto lens = shaped->withFilmDistance(filmMm);
+    benchmark::DoNotOptimize(lens->exitPupilTable().azimuthCells());
+  }
+}
+BENCHMARK(BM_ApertureTable)
+    ->DenseRange(0, 6)
     ->ArgName("shape")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
