@@ -6,8 +6,6 @@
 #include <numbers>
 #include <sstream>
 
-#include "optics/stop_cells.h"
-
 namespace lenslab::optics {
 
 namespace {
@@ -65,12 +63,8 @@ double ApertureMask::openFraction() const {
   return static_cast<double>(count) / static_cast<double>(open.size());
 }
 
-void ApertureMask::finish(bool withStarHull) {
+void ApertureMask::finish() {
   measureOpenRadius();
-  if (withStarHull)
-    starHull = maskStarHullUnit(*this);
-  else
-    starHull.clear();
   openBits.assign((open.size() + 31) / 32, 0u);
   for (std::size_t i = 0; i < open.size(); ++i)
     if (open[i]) openBits[i / 32] |= 1u << (i % 32);

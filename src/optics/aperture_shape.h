@@ -50,13 +50,8 @@ struct ApertureMask {
   // what the batch trace gathers (a 1024 px mask is 128 kB, not 1 MB, and a word is what a
   // vector gather loads). Set by finish().
   std::vector<std::uint32_t> openBits;
-  // The open pixels' star hull about the centre (stop_cells.h's maskStarHullUnit, per
-  // kStarHullSectors sector), which the exit-pupil table of a shaped stop sweeps. Set by
-  // finish(), once per mask, as a large mask takes milliseconds.
-  std::vector<float> starHull;
-  // Sets openRadiusFactor, openBits and (unless told not to) starHull from `open`: call after
-  // making or changing the pixels.
-  void finish(bool withStarHull = true);
+  // Sets openRadiusFactor and openBits from `open`: call after making or changing the pixels.
+  void finish();
 
  private:
   void measureOpenRadius();

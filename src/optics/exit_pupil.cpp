@@ -14,7 +14,7 @@ namespace lenslab::optics {
 namespace {
 
 constexpr int kHalfDirections = ExitPupilTable::kSectors + 1;  // angles m * pi / 32, m = 0..32
-constexpr int kGrid = 16;  // coarse search grid over the plane (x), half of it in y
+constexpr int kGrid = 16;  // coarse search grid over the plane (half of it in y on the half-plane)
 // Brackets grow by a factor of 2 from the smallest step; bisection then halves the bracket 12
 // times: 1/4096 of the bracket's lower end, about 0.012% of the radius. (A finer growth, 1.25 with
 // 10 bisections, reaches the same precision with twice the rays: the table is on the critical path
@@ -75,11 +75,11 @@ struct Probe {
   }
 };
 
-// Distance from (centre, 0) to the region's boundary along each angle, all directions in
+// Distance from the centre to the region's boundary along each angle, all directions in
 // lock-step: first radii growing by kBracketGrowth from minStep until a ray fails (the first
 // failure brackets the boundary, as the region is an interval along each ray), then bisection.
 // Returns the failing end of each bracket (conservative).
-std::vector<double> boundaries(Probe& probe, double filmR, double centre,
+std::vector<double> boundaries(Probe& probe, double filmR, glm::dvec2 centre,
                                const std::vector<double>& angles, double minStep, double maxR) {
   const std::size_t m = angles.size();
   std::vector<double> radii;
@@ -88,8 +88,7 @@ std::vector<double> boundaries(Probe& probe, double filmR, double centre,
   std::vector<glm::dvec2> points(m * steps), dirs(m);
   for (std::size_t a = 0; a < m; ++a) dirs[a] = {std::cos(angles[a]), std::sin(angles[a])};
   for (std::size_t a = 0; a < m; ++a)
-    for (std::size_t j = 0; j < steps; ++j)
-      points[a * steps + j] = {centre + radii[j] * dirs[a].x, radii[j] * dirs[a].y};
+    for (std::size_t j = 0; j < steps; ++j) points[a * steps + j] = centre + radii[j] * dirs[a];
   std::vector<std::uint8_t> pass;
   probe.passesAll(filmR, points.data(), points.size(), pass);
   std::vector<double> lo(m, 0.0), hi(m, radii.back());
@@ -106,7 +105,7 @@ std::vector<double> boundaries(Probe& probe, double filmR, double centre,
   for (int i = 0; i < kBisections; ++i) {
     for (std::size_t a = 0; a < m; ++a) {
       const double mid = 0.5 * (lo[a] + hi[a]);
-      points[a] = {centre + mid * dirs[a].x, mid * dirs[a].y};
+      points[a] = centre + mid * dirs[a];
     }
     probe.passesAll(filmR, points.data(), m, pass);
     for (std::size_t a = 0; a < m; ++a) (pass[a] ? lo[a] : hi[a]) = 0.5 * (lo[a] + hi[a]);
@@ -120,7 +119,7 @@ std::vector<double> boundaries(Probe& probe, double filmR, double centre,
 // otherwise (a cell of a shaped stop) over the full circle.
 struct RawBin {
   bool empty = true;
-  double centreX = 0.0;
+  double centreX = 0.0, centreY = 0.0;                          // centreY: 0 on the half-plane
   std::array<double, ExitPupilTable::kSectors> vertexRadius{};  // angles k * 2 pi / kSectors
 };
 
@@ -130,7 +129,7 @@ std::vector<glm::dvec2> gridPoints(double domainR, bool mirrored) {
   for (int iy = mirrored ? kGrid / 2 : 0; iy < kGrid; ++iy) {
     for (int ix = 0; ix < kGrid; ++ix) {
       const double x = -domainR + (ix + 0.5) * spacing;
-      const double y = -domainR + (iy + 0.5) * spacing;
+      const double y = (iy - kGrid / 2 + 0.5) * spacing;
       if (x * x + y * y <= domainR * domainR * 1.1) points.push_back({x, y});
     }
   }
@@ -145,9 +144,8 @@ double chiefAimX(const Probe& probe, double filmR) {
   return filmR * (1.0 - probe.planeZ / exitPupil.zMm);
 }
 
-// `mirrored`: measure the half-plane y >= 0 and mirror it; `fineSearch`: also search a fine grid
-// (a region that need not be convex).
-RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored, bool fineSearch,
+// `mirrored`: measure the half-plane y >= 0 and mirror it.
+RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored,
                const std::vector<glm::dvec2>& extraSeeds = {}) {
   RawBin out;
   std::vector<glm::dvec2> passing;
@@ -167,25 +165,32 @@ RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored, bool f
   }
   // The region may be too small for the grid (tiny stop): try the aim at the paraxial exit
   // pupil centre as well.
-  double centre = 0.0;
+  glm::dvec2 centre{0.0};
   bool found = false;
   if (!passing.empty()) {
-    double sum = 0.0;
-    for (const auto& p : passing) sum += p.x;
-    centre = sum / passing.size();
-    found = probe.passes(filmR, centre, 0.0);
+    glm::dvec2 sum{0.0};
+    for (const auto& p : passing) sum += p;
+    centre = sum / static_cast<double>(passing.size());
+    if (mirrored) centre.y = 0.0;
+    found = probe.passes(filmR, centre.x, centre.y);
     if (!found) {
-      // Not convex around the centroid: fall back to the passing point nearest the axis line.
-      const auto nearest = std::min_element(passing.begin(), passing.end(), [](auto a, auto b) {
-        return std::abs(a.y) < std::abs(b.y);
-      });
-      centre = nearest->x;
-      found = probe.passes(filmR, centre, 0.0);
+      // Not convex around the centroid: on the half-plane, fall back to the passing point nearest
+      // the axis line; round the circle (a shaped stop's cell, whose region need not cross the
+      // film point's radial line near the rim) to the passing point nearest the centroid.
+      const glm::dvec2 centroid = centre;
+      const auto nearest =
+          std::min_element(passing.begin(), passing.end(), [&](glm::dvec2 a, glm::dvec2 b) {
+            return mirrored ? std::abs(a.y) < std::abs(b.y)
+                            : glm::dot(a - centroid, a - centroid) <
+                                  glm::dot(b - centroid, b - centroid);
+          });
+      centre = {nearest->x, mirrored ? 0.0 : nearest->y};
+      found = probe.passes(filmR, centre.x, centre.y);
     }
   }
   if (!found) {
-    centre = chiefAimX(probe, filmR);
-    found = probe.passes(filmR, centre, 0.0);
+    centre = {chiefAimX(probe, filmR), 0.0};
+    found = probe.passes(filmR, centre.x, centre.y);
   }
   if (!found) return out;
   out.empty = false;
@@ -196,14 +201,21 @@ RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored, bool f
   // steps fewer per direction on a table several times the circle's size; a boundary nearer
   // than that is still bisected to 1/4096 of it.)
   const double minStep = (mirrored ? 1e-3 : 1.0 / 64.0) * domainR, maxR = 4.0 * domainR;
-  // Re-centre on the middle of the region's extent along the x axis, so that centres vary smoothly
-  // from bin to bin (the grid centroid jitters with the grid).
+  // Re-centre on the middle of the region's extent along x (and round the circle along y), so
+  // that centres vary smoothly from bin to bin (the grid centroid jitters with the grid).
   {
     const auto ends = boundaries(probe, filmR, centre, {0.0, std::numbers::pi}, minStep, maxR);
-    const double shifted = centre + 0.5 * (ends[0] - ends[1]);
-    if (probe.passes(filmR, shifted, 0.0)) centre = shifted;
+    const glm::dvec2 shifted{centre.x + 0.5 * (ends[0] - ends[1]), centre.y};
+    if (probe.passes(filmR, shifted.x, shifted.y)) centre = shifted;
   }
-  out.centreX = centre;
+  if (!mirrored) {
+    const auto ends = boundaries(probe, filmR, centre,
+                                 {0.5 * std::numbers::pi, 1.5 * std::numbers::pi}, minStep, maxR);
+    const glm::dvec2 shifted{centre.x, centre.y + 0.5 * (ends[0] - ends[1])};
+    if (probe.passes(filmR, shifted.x, shifted.y)) centre = shifted;
+  }
+  out.centreX = centre.x;
+  out.centreY = centre.y;
 
   // Directions m pi / 32: m = 0..32 on the half-plane, 0..63 round the circle (m and m + 64
   // alike). Vertex k of the polygon lies on direction 2k.
@@ -264,9 +276,10 @@ RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored, bool f
   // point, which no real region has, is left out as a numerical accident. The pass region of one
   // wavelength is an intersection of the clear apertures' images, convex in practice; the
   // spectral table's union of four wavelengths' regions need not be, and there the bound rests
-  // on the brute-force test in spectral_trace_test.cpp. A shaped stop's cells need not be
-  // convex either (a star): there the dense grid below and the same kind of test
-  // (aperture_shape_test.cpp) stand behind the bound.
+  // on the brute-force test in spectral_trace_test.cpp. The sweep of blades over a cell
+  // (stop_cells.h) is convex but for shallow notches where two turned edges meet (7.5 degrees
+  // at most): the bound rests there on the brute-force tests in stop_cells_test.cpp, over every
+  // course lens up to the rim of its image circle.
   {
     // m = -1 .. directions + 1: mirrored at the ends of the half-plane, cyclic round the circle.
     std::vector<glm::dvec2> boundary(directions + 3);
@@ -298,24 +311,7 @@ RawBin measure(Probe& probe, double filmR, double domainR, bool mirrored, bool f
   }
   // Grid points found passing also bound the region (in case a direction's bracket skipped a
   // bulge).
-  for (const auto& p : passing) contain(p.x - centre, p.y);
-  if (fineSearch) {
-    // A region that need not be convex (a cell of a mask stop) is also checked on a grid about
-    // four times finer over the polygon's extent, and every passing point contained: a ray from
-    // the centre that leaves the region and enters it again (between the arms of a star) is then
-    // caught unless the part beyond is thinner than the grid.
-    double extent = 0.0;
-    for (const double v : out.vertexRadius) extent = std::max(extent, v);
-    constexpr int kFine = 32;
-    std::vector<glm::dvec2> fine;
-    for (int iy = 0; iy < kFine; ++iy)
-      for (int ix = 0; ix < kFine; ++ix)
-        fine.push_back({centre + extent * (2.0 * (ix + 0.5) / kFine - 1.0),
-                        extent * (2.0 * (iy + 0.5) / kFine - 1.0)});
-    probe.passesAll(filmR, fine.data(), fine.size(), pass);
-    for (std::size_t i = 0; i < fine.size(); ++i)
-      if (pass[i]) contain(fine[i].x - centre, fine[i].y);
-  }
+  for (const auto& p : passing) contain(p.x - centre.x, p.y - centre.y);
   return out;
 }
 
@@ -403,7 +399,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
 
   // One probe lens per cell to measure: the circumscribed circle, or each cell's sweep.
   std::vector<std::shared_ptr<const LensSystem>> cellLenses;
-  bool mirroredCells = false, convex = true;
+  bool mirroredCells = false;
   if (circumscribed) {
     const StopCells& plan = *stopCellsFor(lens.stopShape());
     for (const auto& mask : plan.sweptMasks) {
@@ -420,8 +416,9 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
       cellsPerRadF_ = static_cast<float>(plan.count / plan.periodRad);
       shapeShareOfSweep_ = plan.shapeShareOfSweep;
       mirroredCells = plan.mirrored;
-      convex = plan.convex;
-      radialBins = std::min(radialBins, kShapedStopRadialBins);
+      // (Each cell keeps the circle's radial bins: with half as many, a few passing rays near the
+      // rim of the fisheye's image circle, where the cat's eye changes fastest, fell outside both
+      // of the bins blended there.)
     } else {
       cellLenses.clear();
       const double bound = lens.stopShape().boundRadiusFactor();
@@ -448,7 +445,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
       for (int j = 0; j < radialBins; ++j) {
         const int at = cell * radialBins + j;
         if (at % stride == first)
-          raw[at] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane, !convex);
+          raw[at] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane);
       }
     }
   };
@@ -463,7 +460,8 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   auto seedsFrom = [&](const RawBin& near, const RawBin* nearer) {
     std::vector<glm::dvec2> seeds;
     const double shift = nearer && !nearer->empty ? near.centreX - nearer->centreX : 0.0;
-    const double cx = near.centreX + shift;
+    const double shiftY = nearer && !nearer->empty ? near.centreY - nearer->centreY : 0.0;
+    const double cx = near.centreX + shift, cy = near.centreY + shiftY;
     const double left = near.vertexRadius[kSectors / 2], right = near.vertexRadius[0];
     const double up = near.vertexRadius[kSectors / 4];
     const double down = halfPlane ? 0.0 : near.vertexRadius[3 * kSectors / 4];
@@ -471,7 +469,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     for (int i = 0; i < kSeeds; ++i)
       for (int k = 0; k < kSeeds; ++k)
         seeds.push_back({cx - left + (left + right) * (i + 0.5) / kSeeds,
-                         -down + (up + down) * (k + 0.5) / kSeeds});
+                         cy - down + (up + down) * (k + 0.5) / kSeeds});
     return seeds;
   };
   for (int cell = 0; cell < measuredCells; ++cell) {
@@ -479,11 +477,11 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     RawBin* row = raw.data() + cell * radialBins;
     for (int j = 1; j < radialBins; ++j)
       if (row[j].empty && !row[j - 1].empty)
-        row[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane, !convex,
+        row[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane,
                          seedsFrom(row[j - 1], j >= 2 ? &row[j - 2] : nullptr));
     for (int j = radialBins - 2; j >= 0; --j)
       if (row[j].empty && !row[j + 1].empty)
-        row[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane, !convex,
+        row[j] = measure(own, binRadiusMm(j), fallbackRadiusMm_, halfPlane,
                          seedsFrom(row[j + 1], j + 2 < radialBins ? &row[j + 2] : nullptr));
   }
   // Mirrored cells: cell cells_ - 1 - a is cell a with y -> -y (vertex k -> vertex -k).
@@ -493,6 +491,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
         const RawBin& source = raw[(cells_ - 1 - cell) * radialBins + j];
         RawBin& image = raw[cell * radialBins + j];
         image = source;
+        image.centreY = -source.centreY;
         for (int k = 0; k < kSectors; ++k)
           image.vertexRadius[k] = source.vertexRadius[(kSectors - k) % kSectors];
       }
@@ -511,6 +510,7 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     Bin& b = bins_[at];
     b.empty = false;
     b.centreXMm = raw[at].centreX;
+    b.centreYMm = raw[at].centreY;
     for (int k = 0; k < measured; ++k) {
       double r = raw[at].vertexRadius[k];
       for (int n : {j - 1, j + 1})
@@ -537,17 +537,20 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     b.invAreaPerMm2 = 1.0 / total;
   }
   // Empty bins take the centre of the nearest non-empty bin of their cell (used by the centre
-  // interpolation).
+  // interpolation): outward first, then inward for those still without one.
   for (int cell = 0; cell < cells_; ++cell) {
     Bin* row = bins_.data() + cell * radialBins;
+    std::vector<bool> given(radialBins, false);
     for (int pass = 0; pass < 2; ++pass) {
       int last = -1;
       for (int step = 0; step < radialBins; ++step) {
         const int j = pass == 0 ? step : radialBins - 1 - step;
         if (!row[j].empty) {
           last = j;
-        } else if (last >= 0 && (pass == 0 || row[j].centreXMm == 0.0)) {
+        } else if (last >= 0 && !given[j]) {
           row[j].centreXMm = row[last].centreXMm;
+          row[j].centreYMm = row[last].centreYMm;
+          given[j] = true;
         }
       }
     }
@@ -562,6 +565,7 @@ void ExitPupilTable::buildSamplingBins() {
     SamplingBin& out = samplingBins_[j];
     out.empty = b.empty;
     out.centreXMm = static_cast<float>(b.centreXMm);
+    out.centreYMm = static_cast<float>(b.centreYMm);
     out.invAreaPerMm2 = static_cast<float>(b.invAreaPerMm2);
     for (int k = 0; k < kSectors; ++k) {
       out.slots[k] = {static_cast<float>(b.aliasProbability[k]),
@@ -593,6 +597,7 @@ ExitPupilTable::Lookup ExitPupilTable::lookup(glm::dvec2 film) const {
   const Bin& b0 = bins_[out.j];
   const Bin& b1 = bins_[out.j + 1];
   out.centreX = (1.0 - out.f) * b0.centreXMm + out.f * b1.centreXMm;  // as in sample()
+  out.centreY = (1.0 - out.f) * b0.centreYMm + out.f * b1.centreYMm;
   return out;
 }
 
@@ -603,9 +608,10 @@ double ExitPupilTable::imageCircleRadiusMm() const {
   return widest >= 0 ? binRadiusMm(widest) : 0.0;
 }
 
-bool ExitPupilTable::inside(const Bin& b, double centreX, double x, double y) const {
+bool ExitPupilTable::inside(const Bin& b, double centreX, double centreY, double x,
+                            double y) const {
   if (b.empty) return false;
-  const double dx = x - centreX, dy = y;
+  const double dx = x - centreX, dy = y - centreY;
   const double sectorAngle = 2.0 * std::numbers::pi / kSectors;
   double angle = std::atan2(dy, dx);
   if (angle < 0.0) angle += 2.0 * std::numbers::pi;
@@ -629,10 +635,10 @@ double ExitPupilTable::pdf(glm::dvec2 film, glm::dvec2 point) const {
     sn = film.y / r;
   }
   const double lx = c * point.x + sn * point.y, ly = -sn * point.x + c * point.y;
-  const auto [j, f, centreX] = lookup(film);
+  const auto [j, f, centreX, centreY] = lookup(film);
   double density = 0.0;
-  if (inside(bins_[j], centreX, lx, ly)) density += (1.0 - f) / bins_[j].areaMm2;
-  if (inside(bins_[j + 1], centreX, lx, ly)) density += f / bins_[j + 1].areaMm2;
+  if (inside(bins_[j], centreX, centreY, lx, ly)) density += (1.0 - f) / bins_[j].areaMm2;
+  if (inside(bins_[j + 1], centreX, centreY, lx, ly)) density += f / bins_[j + 1].areaMm2;
   return density;
 }
 
@@ -702,6 +708,7 @@ inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, 
   // Empty bins carry their non-empty neighbour's centre (see the constructor), so the lerp is
   // always meaningful.
   const double centreX = (1.0 - f) * b0.centreXMm + f * b1.centreXMm;
+  const double centreY = (1.0 - f) * b0.centreYMm + f * b1.centreYMm;  // 0 on the half-plane
   const bool second = u0 >= 1.0 - f;
   const Bin& chosen = second ? b1 : b0;
   if (chosen.empty) return false;
@@ -722,7 +729,7 @@ inline bool ExitPupilTable::sampleInline(double filmX, double filmY, double u0, 
   const double a = (1.0 - u1) * chosen.vertexRadiusMm[k];
   const double bb = u1 * chosen.vertexRadiusMm[(k + 1) & (kSectors - 1)];
   const double lx = centreX + s * (a * cosAt_[k] + bb * cosAt_[k + 1]);
-  const double ly = s * (a * sinAt_[k] + bb * sinAt_[k + 1]);
+  const double ly = centreY + s * (a * sinAt_[k] + bb * sinAt_[k + 1]);
   // Rotate from the bin frame (film point on +x) to the film point's azimuth.
   const double invR = r > 0.0 ? 1.0 / r : 0.0;
   const double c = r > 0.0 ? filmX * invR : 1.0;

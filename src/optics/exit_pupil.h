@@ -4,8 +4,9 @@
 //
 // For a film point on the +x axis at radius r, the set of plane points whose rays pass is (up to
 // aberrations) an intersection of the images of the clear apertures: a disk on axis, a cat's eye
-// off axis. It is symmetric about the x axis and convex in practice. Each table bin stores a
-// centre (cx, 0) inside that region and a star-shaped polygon around it with kSectors vertices at
+// off axis. It is symmetric about the x axis and convex in practice (for a round stop; a shaped
+// stop's cells, below, are neither). Each table bin stores a centre inside that region ((cx, 0)
+// for a round stop) and a star-shaped polygon around it with kSectors vertices at
 // equal angles: each vertex lies on the region's boundary (found by bisection), each edge is pushed
 // out to contain the boundary point half-way between its vertices and the corners that convexity
 // allows between the measured points, and the result is enlarged by a margin and by the same
@@ -49,9 +50,6 @@ class ExitPupilTable {
  public:
   static constexpr int kSectors = 32;  // over the full circle
   static constexpr int kDefaultRadialBins = 128;
-  // Radial bins per azimuth cell when a shaped stop splits the table into cells (each cell
-  // costs a table's worth of rays to build).
-  static constexpr int kShapedStopRadialBins = 48;
   static constexpr double kMaxFilmRadiusMm = 60.0;  // search range for the image circle
 
   // Wavelengths whose pass regions the spectral table's bounds contain (LensSystem::
@@ -113,6 +111,7 @@ class ExitPupilTable {
   struct Bin {
     bool empty = true;
     double centreXMm = 0.0;
+    double centreYMm = 0.0;  // 0 for the circle's table (its regions are symmetric about x)
     std::array<double, kSectors> vertexRadiusMm{};    // polygon vertex k at angle k 2 pi / kSectors
     std::array<double, kSectors> cdf{};               // cumulative area fraction of the triangles
     std::array<double, kSectors> aliasProbability{};  // alias table over the triangles
@@ -130,7 +129,7 @@ class ExitPupilTable {
   // sampleRays' portable path and the one without a table; `rays` has n entries.
   void sampleRaysOneByOne(const float* filmX, const float* filmY, const float* u0, const float* u1,
                           std::size_t n, LensRayBatch& rays, float* pdfPerMm2) const;
-  bool inside(const Bin& b, double centreX, double x, double y) const;
+  bool inside(const Bin& b, double centreX, double centreY, double x, double y) const;
   // Index in bins_ of the film point's cell's first bin.
   int cellFirstBin(double filmX, double filmY) const {
     if (cells_ == 1) return 0;
@@ -139,7 +138,7 @@ class ExitPupilTable {
   }
   struct Lookup {
     int j = 0;  // index in bins_: the film point's cell's bin below its radius
-    double f = 0.0, centreX = 0.0;
+    double f = 0.0, centreX = 0.0, centreY = 0.0;
   };
   Lookup lookup(glm::dvec2 filmPointMm) const;
 
@@ -156,6 +155,7 @@ class ExitPupilTable {
     std::array<SamplingSlot, kSectors> slots{};
     std::array<SamplingSector, kSectors> sectors{};
     float centreXMm = 0.0f;
+    float centreYMm = 0.0f;
     float invAreaPerMm2 = 0.0f;
     std::int32_t empty = 1;  // an int, not a bool: vector code gathers it as a 32-bit lane
   };

@@ -58,6 +58,7 @@ struct TableLayout {
   static constexpr int kSlots = offsetof(SamplingBin, slots) / sizeof(float);
   static constexpr int kSectors = offsetof(SamplingBin, sectors) / sizeof(float);
   static constexpr int kCentre = offsetof(SamplingBin, centreXMm) / sizeof(float);
+  static constexpr int kCentreY = offsetof(SamplingBin, centreYMm) / sizeof(float);
   static constexpr int kInvArea = offsetof(SamplingBin, invAreaPerMm2) / sizeof(float);
   static constexpr int kEmpty = offsetof(SamplingBin, empty) / sizeof(float);
 };
@@ -76,6 +77,7 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma"))) void sampleBat
   using Layout = TableLayout<SamplingBin>;
   constexpr int kBinStride = Layout::kBinStride, kSlots = Layout::kSlots;
   constexpr int kSectorsAt = Layout::kSectors, kCentre = Layout::kCentre;
+  constexpr int kCentreY = Layout::kCentreY;
   constexpr int kInvArea = Layout::kInvArea, kEmpty = Layout::kEmpty;
   const __m512 one = _mm512_set1_ps(1.0f), zero = _mm512_setzero_ps();
   const __m512d oneD = _mm512_set1_pd(1.0), zeroD = _mm512_setzero_pd();
@@ -196,7 +198,17 @@ __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma"))) void sampleBat
     const __m512 lx =
         _mm512_fmadd_ps(s, _mm512_fmadd_ps(oneMinusV, ax, _mm512_mul_ps(v, bx)),
                         _mm512_fmadd_ps(oneMinusF, centre0, _mm512_mul_ps(f, centre1)));
-    const __m512 ly = _mm512_mul_ps(s, _mm512_fmadd_ps(oneMinusV, ay, _mm512_mul_ps(v, by)));
+    // A shaped stop's cells centre their bins off the x axis too (the circle's are on it).
+    __m512 centreY = zero;
+    if (k.cells > 1) {
+      const __m512 centreY0 =
+          _mm512_i32gather_ps(_mm512_add_epi32(bin0, _mm512_set1_epi32(kCentreY)), table, 4);
+      const __m512 centreY1 =
+          _mm512_i32gather_ps(_mm512_add_epi32(bin1, _mm512_set1_epi32(kCentreY)), table, 4);
+      centreY = _mm512_fmadd_ps(oneMinusF, centreY0, _mm512_mul_ps(f, centreY1));
+    }
+    const __m512 ly =
+        _mm512_fmadd_ps(s, _mm512_fmadd_ps(oneMinusV, ay, _mm512_mul_ps(v, by)), centreY);
     const __mmask16 positive = _mm512_cmp_ps_mask(r, zero, _CMP_GT_OQ);
     const __m512 invR = _mm512_maskz_div_ps(positive, one, r);
     const __m512 c = _mm512_mask_mul_ps(one, positive, fx, invR);
@@ -250,6 +262,7 @@ __attribute__((target("avx2,fma"))) void sampleBatchAvx2(const BatchSamplingCons
   using Layout = TableLayout<SamplingBin>;
   constexpr int kBinStride = Layout::kBinStride, kSlots = Layout::kSlots;
   constexpr int kSectorsAt = Layout::kSectors, kCentre = Layout::kCentre;
+  constexpr int kCentreY = Layout::kCentreY;
   constexpr int kInvArea = Layout::kInvArea, kEmpty = Layout::kEmpty;
   const __m256 one = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
   const __m256d oneD = _mm256_set1_pd(1.0), zeroD = _mm256_setzero_pd();
@@ -356,7 +369,14 @@ __attribute__((target("avx2,fma"))) void sampleBatchAvx2(const BatchSamplingCons
     const __m256 lx =
         _mm256_fmadd_ps(s, _mm256_fmadd_ps(oneMinusV, ax, _mm256_mul_ps(v, bx)),
                         _mm256_fmadd_ps(oneMinusF, centre0, _mm256_mul_ps(f, centre1)));
-    const __m256 ly = _mm256_mul_ps(s, _mm256_fmadd_ps(oneMinusV, ay, _mm256_mul_ps(v, by)));
+    // A shaped stop's cells centre their bins off the x axis too (the circle's are on it).
+    __m256 centreY = zero;
+    if (k.cells > 1) {
+      centreY = _mm256_fmadd_ps(oneMinusF, gatherAt(table, bin0, kCentreY),
+                                _mm256_mul_ps(f, gatherAt(table, bin1, kCentreY)));
+    }
+    const __m256 ly =
+        _mm256_fmadd_ps(s, _mm256_fmadd_ps(oneMinusV, ay, _mm256_mul_ps(v, by)), centreY);
     const __m256 positive = _mm256_cmp_ps(r, zero, _CMP_GT_OQ);
     const __m256 invR = _mm256_and_ps(_mm256_div_ps(one, r), positive);  // 1/0 masked to 0
     const __m256 c = _mm256_blendv_ps(one, _mm256_mul_ps(fx, invR), positive);

@@ -107,8 +107,8 @@ void LensSystem::place() {
     clipRadiusSqMm2_[k] = clips ? surfaces_[k].semiApertureMm * surfaces_[k].semiApertureMm
                                 : std::numeric_limits<double>::infinity();
   }
-  // A shaped stop clips at its bounding circle first (cheap, and what the exit-pupil table is
-  // built for), then by its shape.
+  // A shaped stop clips at its bounding circle first (cheap, and what the exit-pupil table of a
+  // mask is built for), then by its shape.
   const double stopRadiusMm = surfaces_[stopIndex_].semiApertureMm;
   const double boundMm = stopRadiusMm * prescription_.stopShape.boundRadiusFactor();
   clipRadiusSqMm2_[stopIndex_] = boundMm * boundMm;

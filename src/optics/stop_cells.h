@@ -1,6 +1,6 @@
 #pragma once
-// The exit-pupil table of a shaped stop: its split of the film azimuths into cells, and the stop
-// each cell's bounds are measured with.
+// The exit-pupil table of a stop with blades: its split of the film azimuths into cells, and the
+// stop each cell's bounds are measured with.
 //
 // The table (exit_pupil.h) measures the pass region of a film point on the +x axis and turns it
 // to the film point's azimuth phi, which relies on the lens being rotationally symmetric. A
@@ -8,20 +8,20 @@
 // the region of the same lens with its stop turned by -phi. So the table splits the azimuths
 // into cells and measures each cell's bounds with a stop that contains the shape turned by every
 // angle of the cell, its sweep. Every film point of a cell then has its pass region inside the
-// cell's bounds, whatever the shape, with nothing assumed about how the region changes between
-// azimuths. (Measuring at a few azimuths and taking the union would not do: a corner turning
-// between two of them reaches past both, by 18% of the radius for three blades 15 degrees apart.)
+// cell's bounds, with nothing assumed about how the region changes between azimuths. (Measuring at
+// a few azimuths and taking the union would not do: a corner turning between two of them reaches
+// past both, by 18% of the radius for three blades 15 degrees apart.)
 //
 // The sweep is taken of the shape's star hull about the stop centre,
 //   H = {p : |p| <= rho(angle of p)},  rho(a) = the farthest point of the shape in direction a,
 // tabulated over kStarHullSectors equal sectors, each the farthest over its sector (so H contains
-// the shape). For a shape that repeats after a turn of 2 pi / N (N blades; a mask when folding
-// its hull N-fold grows it by under 3%), the hull is folded to repeat exactly, and the cells
-// divide one period. A hull mirror-symmetric about some axis (blades about a corner; a mask when
-// making it so grows it by under 3%) is made exactly so, the period's cells start at the axis,
-// and the cells of its second half are the mirror images of the first's: measured once. A shape
-// whose hull is nearly its circumscribed circle (a gaussian halftone, many rounded blades) gets
-// one cell: the circle's table, as before.
+// the shape). N blades repeat after a turn of 2 pi / N: the hull is folded to repeat exactly, and
+// the cells divide one period. They are mirror-symmetric about each corner's direction: the
+// period's cells start at one, and the cells of its second half are the mirror images of the
+// first's, measured once. Blades whose hull is nearly their circumscribed circle (nine, or six
+// rounded ones) get one cell, the circle's table, as does every image mask: a mask's regions
+// need not be convex nor star-shaped about any point, and the search of its sweep missed a few
+// passing rays near the rim of a telephoto's image circle.
 
 #include <memory>
 #include <vector>
@@ -34,10 +34,8 @@ inline constexpr int kStarHullSectors = 2880;  // 0.125 degree each
 
 // rho per sector k, the sector [2 pi k, 2 pi (k + 1)) / kStarHullSectors, in units of the stop
 // radius R: an upper bound of the distance from the centre of every point of the shape whose
-// direction lies in the sector. All 1 for the circle.
+// direction lies in the sector. All 1 for the circle; an image's bound circle for a mask.
 std::vector<float> starHullUnit(const ApertureShape& shape);
-// The same from a mask's open pixels (what ApertureMask::finish stores in the mask).
-std::vector<float> maskStarHullUnit(const ApertureMask& mask);
 
 struct StopCells {
   int count = 1;  // 1: no split (the table of the circumscribed circle)
@@ -45,7 +43,6 @@ struct StopCells {
   double offsetRad = 0.0;  // film azimuth where cell 0 starts (the mirror axis, if any)
   // Cell count - 1 - a is the mirror image of cell a (y -> -y where the film point is on +x).
   bool mirrored = false;
-  bool convex = false;  // the hull is convex (blades): its pass regions need no extra search
   // One per cell to measure (all, or the first half rounded up when mirrored): the swept hull of
   // the shape for the film azimuths of cell a (see stopCellOf), in the frame where the film
   // point lies on +x, as a mask over the square of the circumscribed stop (the circle of radius
