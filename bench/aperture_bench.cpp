@@ -11,8 +11,8 @@
 // threads), wall time: the render cost as the viewer sees it.
 // BM_ApertureFirstPass/<shape>: edit to first pass (a new film distance, so a new LensSystem and
 // exit-pupil table, coarse look, pass), as BM_PreviewFirstPass; issue 5's 100 ms budget.
-// BM_ApertureTable/<shape>: the exit-pupil table alone, after the same edit (a shape far from its
-// circle splits it into azimuth cells, optics/stop_cells.h).
+// BM_ApertureTable/<shape>: the one-wavelength exit-pupil table alone, after the same edit
+// (blades far from their circle split it into azimuth cells, optics/stop_cells.h).
 //
 // Compare shapes alternately in one run, medians:
 //   lenslab_bench --benchmark_filter=BM_Aperture --benchmark_repetitions=9
@@ -132,8 +132,8 @@ BENCHMARK(BM_ApertureFirstPass)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The exit-pupil table alone (a new film distance each time): a shaped stop far from its circle
-// builds a row of bins per azimuth cell (optics/stop_cells.h).
+// The exit-pupil table alone (a new film distance each time): blades far from their circle build
+// a row of bins per azimuth cell (optics/stop_cells.h).
 void BM_ApertureTable(benchmark::State& state) {
   const DefaultScene& loaded = defaultScene();
   if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");

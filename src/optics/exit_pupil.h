@@ -18,11 +18,12 @@
 // Bins are equally spaced in (x + x^2) / 2, x = r / rMax: three times denser at the rim of the
 // image circle, where the cat's eye changes fastest, than on the axis.
 //
-// A shaped stop (aperture_shape.h) is not rotationally symmetric: the table then has a row of
-// bins per azimuth cell (stop_cells.h), each measured over the full circle with a stop that
-// holds the shape turned by every azimuth of its cell, and a film point samples from its cell's
-// row. A shape close to its circle (or the circle) has one cell: the bounds of its circumscribed
-// circle, measured on the half-plane and mirrored.
+// A stop with blades (aperture_shape.h) is not rotationally symmetric: the one-wavelength table
+// then has a row of bins per azimuth cell (stop_cells.h), each measured over the full circle with
+// a stop that holds the blades turned by every azimuth of its cell, and a film point samples from
+// its cell's row. The circle, blades close to it, image masks, and every stop in the spectral
+// table (probed at four wavelengths, too dear for cells) have one cell: the bounds of the
+// circumscribed circle, measured on the half-plane and mirrored.
 //
 // No banding: between two table radii the bin is chosen stochastically with the linear
 // interpolation weights, and the centre is interpolated, so the density
@@ -104,8 +105,9 @@ class ExitPupilTable {
   // that repeats N-fold).
   int azimuthCells() const { return cells_; }
   double cellPeriodRad() const { return cellPeriodRad_; }
-  // The stop shape's area over its cells' sweeps (stop_cells.h): roughly the share of samples
-  // its stop lets through near the axis, where the circle's lets through all. 1 for the circle.
+  // The stop shape's area over the region the table bounds (its cells' sweeps, stop_cells.h, or
+  // with one cell the circumscribed circle): roughly the share of samples the stop lets through
+  // near the axis, where the circle lets through all. 1 for the circle.
   double shapeShareOfSweep() const { return shapeShareOfSweep_; }
 
   struct Bin {

@@ -138,8 +138,8 @@ class LensSystem {
   }
   // The lens with the stop's shape replaced by the circle that circumscribes it (itself when the
   // stop is a circle), whose pass region contains the shaped one's: the exit-pupil table finds
-  // the image circle with it, and bounds with it the pass region of a shape close to its circle
-  // (others get azimuth cells, stop_cells.h).
+  // the image circle with it, and bounds with it the pass region of every shape but blades far
+  // from their circle in the one-wavelength table (those get azimuth cells, stop_cells.h).
   std::shared_ptr<const LensSystem> withCircumscribedStop() const;
 
   const Prescription& prescription() const { return prescription_; }

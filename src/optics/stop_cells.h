@@ -21,7 +21,8 @@
 // first's, measured once. Blades whose hull is nearly their circumscribed circle (nine, or six
 // rounded ones) get one cell, the circle's table, as does every image mask: a mask's regions
 // need not be convex nor star-shaped about any point, and the search of its sweep missed a few
-// passing rays near the rim of a telephoto's image circle.
+// passing rays near the rim of a telephoto's image circle. (The spectral table uses no cells at
+// all: exit_pupil.h.)
 
 #include <memory>
 #include <vector>
@@ -65,7 +66,9 @@ std::shared_ptr<const StopCells> stopCellsFor(const ApertureShape& shape);
 
 // The film point's azimuth in [0, 2 pi), from a polynomial arctangent (Abramowitz and Stegun
 // 4.4.49, Hastings: |error| <= 1e-5 rad, far inside kCellSweepMarginRad): the exit-pupil table
-// picks the cell of every camera ray with it, in scalar and vector code alike.
+// picks the cell of every camera ray with it, and its vector kernels with the same polynomial
+// (fused multiply-adds there: within about 1e-6 rad of a cell's edge the two may pick the
+// neighbouring cell, whose sweep holds the ray's region too).
 inline float filmAzimuthRad(float x, float y) {
   const float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y;
   const float big = ax > ay ? ax : ay, small = ax > ay ? ay : ax;

@@ -51,8 +51,9 @@ class RealisticCamera final : public Camera {
   bool readsWavelengths() const override;
   // A shaped stop whose shape opens under half of the region the sampler covers would block most
   // samples: it gets round(region / shape area) lens points per sample, at most 4. The
-  // exit-pupil table follows most shapes (optics/stop_cells.h: three blades, pbrt's star), so
-  // they get one; pbrt's gaussian, a halftone filling its circle at 26%, gets 4. (After prepare().)
+  // one-wavelength exit-pupil table follows blades (optics/stop_cells.h), so three blades get one
+  // there; through the spectral table (the circle's bounds) they get 2, pbrt's star 3 and its
+  // gaussian, a halftone filling its circle at 26%, 4 in either. (After prepare().)
   int lensPointsPerSample() const override;
 
   float pixelSpreadRadians() const override;

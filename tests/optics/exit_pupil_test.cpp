@@ -283,7 +283,7 @@ namespace lenslab::optics {
 namespace {
 
 // Also through shaped stops: three blades, whose table the kernels address by azimuth cell
-// (stop_cells.h: 16 cells, mirrored), and pbrt's star (a mask: the circle's table).
+// (stop_cells.h: 8 cells, mirrored), and pbrt's star (a mask: the circle's table).
 TEST(ExitPupil, BatchCameraRaysMatchTheScalarSamples) {
   const auto round = testing::loadLens(testing::referenceLensDir() / "wide.22mm.dat", 14.54);
   ASSERT_TRUE(round);
