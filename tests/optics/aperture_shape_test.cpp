@@ -15,20 +15,14 @@
 #include "optics/exit_pupil.h"
 #include "optics/lens_outline.h"
 #include "test_lenses.h"
+#include "test_shapes.h"
 
 namespace lenslab::optics {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-ApertureShape blades(int n, double curvature, double rotationDeg) {
-  ApertureShape s;
-  s.kind = ApertureShape::Kind::Blades;
-  s.bladeCount = n;
-  s.curvature = curvature;
-  s.rotationDeg = rotationDeg;
-  return s;
-}
+using testing::blades;
 
 // The area of N blades inscribed in the unit circle, worked out here from elementary geometry:
 // N isosceles triangles with apex angle 2 pi / N, plus (curved) N circular segments of an arc of

@@ -14,6 +14,7 @@
 
 #include "optics/exit_pupil.h"
 #include "test_lenses.h"
+#include "test_shapes.h"
 
 namespace lenslab::optics {
 namespace {
@@ -287,11 +288,7 @@ namespace {
 TEST(ExitPupil, BatchCameraRaysMatchTheScalarSamples) {
   const auto round = testing::loadLens(testing::referenceLensDir() / "wide.22mm.dat", 14.54);
   ASSERT_TRUE(round);
-  ApertureShape triangle;
-  triangle.kind = ApertureShape::Kind::Blades;
-  triangle.bladeCount = 3;
-  triangle.rotationDeg = 10.0;
-  for (const auto& lens : {round, round->withStopShape(triangle),
+  for (const auto& lens : {round, round->withStopShape(testing::blades(3, 0.0, 10.0)),
                            round->withStopShape(*builtinPbrtAperture("star"))}) {
     ASSERT_TRUE(lens);
     SCOPED_TRACE(lens->stopShape().spec());

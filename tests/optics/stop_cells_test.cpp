@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numbers>
 #include <random>
@@ -17,20 +18,14 @@
 #include "optics/exit_pupil.h"
 #include "optics/stop_cells.h"
 #include "test_lenses.h"
+#include "test_shapes.h"
 
 namespace lenslab::optics {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-ApertureShape blades(int n, double curvature, double rotationDeg) {
-  ApertureShape s;
-  s.kind = ApertureShape::Kind::Blades;
-  s.bladeCount = n;
-  s.curvature = curvature;
-  s.rotationDeg = rotationDeg;
-  return s;
-}
+using testing::blades;
 
 // A mask with no symmetry at all: a non-convex pentagon, off centre.
 ApertureShape lopsidedMask() {
@@ -189,6 +184,39 @@ bool passes(const LensSystem& lens, glm::dvec2 film, glm::dvec2 plane, double pl
   return lens.traceFromFilm({o, glm::normalize(glm::dvec3{plane, planeZ} - o)}).has_value();
 }
 
+// Rays from `filmPoints` film points (radius from drawRadius(u) for a uniform u, azimuth uniform)
+// through `planePoints` uniform points each of the square the table searches, that pass the lens;
+// and of those, the ones outside the table's sampled region (density 0) and the ones inside only
+// one of the two bins the sampler blends (density below the blended one pdfInPassRegion gives).
+struct PassingRays {
+  int passing = 0, outside = 0, inOneBinOnly = 0;
+};
+template <class DrawRadius>
+PassingRays classifyPassingRays(const LensSystem& lens, std::uint32_t seed, int filmPoints,
+                                int planePoints, DrawRadius drawRadius) {
+  const ExitPupilTable& table = lens.exitPupilTable();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double domain = table.fallbackRadiusMm();
+  PassingRays out;
+  for (int f = 0; f < filmPoints; ++f) {
+    const double r = drawRadius(u(rng));
+    const double phi = 2.0 * kPi * u(rng);
+    const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
+    for (int i = 0; i < planePoints; ++i) {
+      const glm::dvec2 p{domain * (2 * u(rng) - 1), domain * (2 * u(rng) - 1)};
+      if (!passes(lens, film, p, table.planeZMm())) continue;
+      ++out.passing;
+      const double pdf = table.pdf(film, p);
+      if (pdf <= 0.0)
+        ++out.outside;
+      else if (pdf < table.pdfInPassRegion(film) * (1.0 - 1e-9))
+        ++out.inOneBinOnly;
+    }
+  }
+  return out;
+}
+
 // The spectral table (four probe wavelengths) keeps the circle's bounds: with cells the viewer's
 // first pass after an edit of the dispersive double-Gauss took 185 ms for three blades.
 TEST(StopCells, OnlyTheOneWavelengthTableHasCells) {
@@ -214,32 +242,11 @@ TEST(StopCells, TheTableContainsEveryPassingRayOfEveryCell) {
       ASSERT_TRUE(lens);
       const ExitPupilTable& table = lens->exitPupilTable();
       EXPECT_EQ(table.azimuthCells() > 1, shape.kind == ApertureShape::Kind::Blades);
-      std::mt19937 rng(9);
-      std::uniform_real_distribution<double> u(0.0, 1.0);
-      const double domain = table.fallbackRadiusMm();
-      int passing = 0, outside = 0, inOneBinOnly = 0;
-      for (int f = 0; f < 300; ++f) {
-        const double r = table.imageCircleRadiusMm() * std::sqrt(u(rng));
-        const double phi = 2.0 * kPi * u(rng);
-        const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
-        for (int i = 0; i < 400; ++i) {
-          const glm::dvec2 p{domain * (2 * u(rng) - 1), domain * (2 * u(rng) - 1)};
-          if (!passes(*lens, film, p, table.planeZMm())) continue;
-          ++passing;
-          const double pdf = table.pdf(film, p);
-          if (pdf <= 0.0)
-            ++outside;
-          else if (pdf < table.pdfInPassRegion(film) * (1.0 - 1e-9))
-            ++inOneBinOnly;
-        }
-      }
-      EXPECT_GT(passing, 1000);
-      EXPECT_EQ(outside, 0) << "of " << passing;
-      // (The circle's own table has one such point in these draws, near the fisheye's rim at
-      // 0.94 of its image circle, shared by every shape here: a limit of the radial blend that
-      // ExitPupil.EveryPassingPointNearTheRimLiesInBothBlendedBins, on the +x axis only, does not
-      // meet. Cells must not add to it.)
-      EXPECT_LE(inOneBinOnly, 1) << "of " << passing;
+      const PassingRays rays = classifyPassingRays(
+          *lens, 9, 300, 400, [&](double u) { return table.imageCircleRadiusMm() * std::sqrt(u); });
+      EXPECT_GT(rays.passing, 1000);
+      EXPECT_EQ(rays.outside, 0) << "of " << rays.passing;
+      EXPECT_EQ(rays.inOneBinOnly, 0) << "of " << rays.passing;
     }
   }
 }
@@ -260,33 +267,16 @@ TEST(StopCells, TheTableContainsEveryPassingRayNearTheRim) {
                    << shape.spec() << ", lens of " << base->firstOrder().eflMm << " mm");
       const auto lens = base->withStopShape(shape);
       const ExitPupilTable& table = lens->exitPupilTable();
-      std::mt19937 rng(17);
-      std::uniform_real_distribution<double> u(0.0, 1.0);
-      const double domain = table.fallbackRadiusMm();
-      int passing = 0, outside = 0, inOneBinOnly = 0;
-      for (int f = 0; f < 600; ++f) {
-        const double r =
-            std::min(table.filmRadiusMaxMm(), table.imageCircleRadiusMm() * (0.85 + 0.2 * u(rng)));
-        const double phi = 2.0 * kPi * u(rng);
-        const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
-        for (int i = 0; i < 1500; ++i) {
-          const glm::dvec2 p{domain * (2 * u(rng) - 1), domain * (2 * u(rng) - 1)};
-          if (!passes(*lens, film, p, table.planeZMm())) continue;
-          ++passing;
-          const double pdf = table.pdf(film, p);
-          if (pdf <= 0.0)
-            ++outside;
-          else if (pdf < table.pdfInPassRegion(film) * (1.0 - 1e-9))
-            ++inOneBinOnly;
-        }
-      }
-      EXPECT_GT(passing, 300);
-      EXPECT_EQ(outside, 0) << "of " << passing;
+      const PassingRays rays = classifyPassingRays(*lens, 17, 600, 1500, [&](double u) {
+        return std::min(table.filmRadiusMaxMm(), table.imageCircleRadiusMm() * (0.85 + 0.2 * u));
+      });
+      EXPECT_GT(rays.passing, 300);
+      EXPECT_EQ(rays.outside, 0) << "of " << rays.passing;
       // (The circle's own table has one such point in these draws, near the fisheye's rim at
       // 0.94 of its image circle, shared by every shape here: a limit of the radial blend that
       // ExitPupil.EveryPassingPointNearTheRimLiesInBothBlendedBins, on the +x axis only, does not
       // meet. Cells must not add to it.)
-      EXPECT_LE(inOneBinOnly, 1) << "of " << passing;
+      EXPECT_LE(rays.inOneBinOnly, 1) << "of " << rays.passing;
     }
   }
 }
