@@ -436,7 +436,6 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
     }
     if (cellLenses.size() == plan.sweptMasks.size() && plan.count > 1) {
       cells_ = plan.count;
-      cellPeriodRad_ = plan.periodRad;
       cellOffsetRadF_ = static_cast<float>(plan.offsetRad);
       cellPeriodRadF_ = static_cast<float>(plan.periodRad);
       cellsPerRadF_ = static_cast<float>(plan.count / plan.periodRad);

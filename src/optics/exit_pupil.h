@@ -101,10 +101,8 @@ class ExitPupilTable {
   double imageCircleRadiusMm() const;
   int radialBins() const { return radialBins_; }
   double binRadiusMm(int j) const;
-  // Azimuth cells (1 for the circle) and the film azimuths they divide (2 pi / N for a shape
-  // that repeats N-fold).
+  // Azimuth cells (1 for the circle): they divide the film azimuths of one period of the blades.
   int azimuthCells() const { return cells_; }
-  double cellPeriodRad() const { return cellPeriodRad_; }
   // The stop shape's area over the region the table bounds (its cells' sweeps, stop_cells.h, or
   // with one cell the circumscribed circle): roughly the share of samples the stop lets through
   // near the axis, where the circle lets through all. 1 for the circle.
@@ -167,7 +165,6 @@ class ExitPupilTable {
   std::vector<SamplingBin> samplingBins_;  // bins_ in float
   int radialBins_ = 0;
   int cells_ = 1;
-  double cellPeriodRad_ = 0.0;
   float cellOffsetRadF_ = 0.0f, cellPeriodRadF_ = 0.0f, cellsPerRadF_ = 0.0f;  // for stopCellOf
   double shapeShareOfSweep_ = 1.0;
   double binScale_ = 0.0;  // bins - 1

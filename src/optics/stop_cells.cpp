@@ -16,9 +16,8 @@ constexpr double kSectorRad = kTwoPi / kStarHullSectors;
 // than the triangle, of six 7%. Each measured cell costs about twice the circle's whole table to
 // build (a full circle of directions, not a half-plane): with 7.5 degrees three blades kept 83%
 // of the samples instead of 76%, but their table took 32 ms instead of 16-20 (the circle's: 3).
-// At most kMaxCells of them.
+// (So three blades, the widest period, get 8 cells.)
 constexpr double kCellWidthRad = 15.0 * std::numbers::pi / 180.0;
-constexpr int kMaxCells = 16;
 // Blades' hull counts as mirror-symmetric about a corner's direction when making it so grows
 // it by at most this (it is, but for the sectors' rounding).
 constexpr double kMirrorGrowth = 1.001;
@@ -75,9 +74,9 @@ double hullArea(const std::vector<float>& rho) {
 
 // The hull folded to repeat after `periodRad`: sector k takes the largest rho over the sector
 // and its turns by the multiples of the period.
-std::vector<float> folded(const RangeMax& rho, double periodRad, int repeats, int step = 1) {
+std::vector<float> folded(const RangeMax& rho, double periodRad, int repeats) {
   std::vector<float> out(kStarHullSectors, 0.0f);
-  for (int k = 0; k < kStarHullSectors; k += step) {
+  for (int k = 0; k < kStarHullSectors; ++k) {
     float best = 0.0f;
     for (int m = 0; m < repeats; ++m)
       best = std::max(best, rho.overAngles(k * kSectorRad + m * periodRad,
@@ -148,8 +147,7 @@ StopCells planStopCells(const ApertureShape& shape) {
   const double bound = shape.boundRadiusFactor();
   if (hullArea(hull) >= kCircleLikeShare * std::numbers::pi * bound * bound) return plan;
 
-  plan.count =
-      std::clamp(static_cast<int>(std::ceil(plan.periodRad / kCellWidthRad - 1e-9)), 1, kMaxCells);
+  plan.count = std::max(1, static_cast<int>(std::ceil(plan.periodRad / kCellWidthRad - 1e-9)));
   const double width = plan.periodRad / plan.count;
   // Blades are symmetric about each corner's direction.
   const double corner = std::fmod(shape.rotationDeg * std::numbers::pi / 180.0, plan.periodRad);
