@@ -68,10 +68,13 @@ void directTerms(const Scene& scene, const SurfaceHit& hit, const Bsdf& bsdf, gl
     const float lightPdf = ls.pdf * selectionProbability;
     if (!isBlack(f) && lightPdf > 0.0f) {
       const float weight = light.isDelta() ? 1.0f : powerHeuristic(lightPdf, bsdfPdf);
-      const float distance = std::isinf(ls.distance) ? kInfinity : ls.distance * (1.0f - 1e-4f);
-      shadowed.push_back(
-          {{offsetOrigin(hit, ls.wi), ls.wi, distance},
-           f * ls.radiance * (std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf)});
+      const glm::vec3 origin = offsetOrigin(hit, ls.wi);
+      const float distance = shadowRayLength(light, ls, origin);
+      if (distance > 0.0f) {
+        shadowed.push_back(
+            {{origin, ls.wi, distance},
+             f * ls.radiance * (std::abs(glm::dot(ls.wi, hit.shadingNormal)) * weight / lightPdf)});
+      }
     }
   }
   if (!uBsdf || light.isDelta()) return;

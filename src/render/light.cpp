@@ -106,11 +106,63 @@ bool Emitter::intersectQuadric(glm::vec3 origin, glm::vec3 direction, float& t,
   return true;
 }
 
+namespace {
+
+// The cone of directions a sphere emitter subtends from `point`: its unit axis toward the centre
+// and 1 - cos of its half angle, written sin^2 / (1 + cos) so that a small, far sphere keeps its
+// precision. False when the point lies inside the sphere or on it (within rounding).
+struct SphereCone {
+  glm::dvec3 axis{0.0};
+  double oneMinusCosMax = 0.0;
+};
+bool sphereCone(const Emitter& emitter, glm::vec3 point, SphereCone& cone) {
+  const glm::dvec3 toCenter = emitter.sphereCenter - glm::dvec3(point);
+  const double distance2 = glm::dot(toCenter, toCenter);
+  const double radius2 = emitter.sphereRadius * emitter.sphereRadius;
+  if (!(distance2 > radius2 * (1.0 + 1e-6))) return false;
+  const double sin2Max = radius2 / distance2;
+  cone.oneMinusCosMax = sin2Max / (1.0 + std::sqrt(1.0 - sin2Max));
+  cone.axis = toCenter / std::sqrt(distance2);
+  return true;
+}
+
+float conePdf(const SphereCone& cone) {
+  return static_cast<float>(1.0 / (2.0 * static_cast<double>(kPi) * cone.oneMinusCosMax));
+}
+
+// A direction uniform in the cone (1 - cos theta uniform in [0, oneMinusCosMax]), the point
+// where it meets the sphere and the sample's density (pbrt-v3's Sphere::Sample(ref, u), with the
+// point found by intersecting the sphere, the code the scene's queries use).
+bool sampleSphereCone(const Light& light, const SphereCone& cone, glm::vec3 point, glm::vec2 u,
+                      LightSample& out) {
+  const double oneMinusCos = static_cast<double>(u.x) * cone.oneMinusCosMax;
+  const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
+  const CosSin phi = cosSin(2.0f * kPi * u.y);
+  const Frame frame{glm::vec3(cone.axis)};
+  const glm::vec3 local(static_cast<float>(sinTheta) * phi.cos,
+                        static_cast<float>(sinTheta) * phi.sin,
+                        static_cast<float>(1.0 - oneMinusCos));
+  out.wi = glm::normalize(frame.toWorld(local));
+  glm::vec3 normal;
+  float t = 0.0f;
+  // Directions at the cone's very rim can miss by rounding: a set of measure zero.
+  if (!light.emitter->intersectQuadric(point, out.wi, t, normal)) return false;
+  out.distance = t;
+  out.radiance = areaRadiance(light, normal, -out.wi);
+  out.pdf = conePdf(cone);
+  return out.pdf > 0.0f && (out.radiance.x > 0 || out.radiance.y > 0 || out.radiance.z > 0);
+}
+
+}  // namespace
+
 glm::vec3 areaRadiance(const Light& light, glm::vec3 normal, glm::vec3 wo) {
   return (light.twoSided || glm::dot(normal, wo) > 0.0f) ? light.intensity : glm::vec3(0.0f);
 }
 
 float areaPdf(const Light& light, glm::vec3 point, glm::vec3 lightPoint, glm::vec3 lightNormal) {
+  if (SphereCone cone; light.emitter->isSphere && sphereCone(*light.emitter, point, cone)) {
+    return conePdf(cone);
+  }
   const glm::vec3 toLight = lightPoint - point;
   const float distance2 = glm::dot(toLight, toLight);
   // distance^2 / (cos * area) with cos = |n . toLight| / distance, as one division.
@@ -172,6 +224,9 @@ bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float /*scene
       out.radiance = infiniteRadiance(light, out.wi);
       return true;
     case LightKind::Area: {
+      if (SphereCone cone; light.emitter->isSphere && sphereCone(*light.emitter, point, cone)) {
+        return sampleSphereCone(light, cone, point, u, out);
+      }
       glm::vec3 normal;
       const glm::vec3 lightPoint = light.emitter->sample(u, normal);
       const glm::vec3 toLight = lightPoint - point;
@@ -185,6 +240,17 @@ bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float /*scene
     }
   }
   return false;
+}
+
+float shadowRayLength(const Light& light, const LightSample& sample, glm::vec3 origin) {
+  if (std::isinf(sample.distance)) return std::numeric_limits<float>::infinity();
+  if (light.kind == LightKind::Area && light.emitter->isSphere) {
+    glm::vec3 normal;
+    float t = 0.0f;
+    if (!light.emitter->intersectQuadric(origin, sample.wi, t, normal)) return 0.0f;
+    return t * (1.0f - 1e-4f);
+  }
+  return sample.distance * (1.0f - 1e-4f);
 }
 
 }  // namespace lenslab::render

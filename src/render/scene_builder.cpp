@@ -75,6 +75,30 @@ void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
 glm::vec3 toFloat(glm::dvec3 v) { return glm::vec3(v); }
 
 // GeometryRecord::triangleFrames of a mesh record whose positions, uvs and indices are set.
+// Whether `placed` is a whole sphere (no z or phi cut) placed by a similarity, which sampleLight
+// may sample by the cone it subtends; if so, its world centre and radius.
+bool isWholeSphere(const PlacedQuadric& placed, glm::dvec3& center, double& radius) {
+  const Quadric& q = placed.quadric;
+  constexpr double kTolerance = 1e-9;
+  if (q.kind != QuadricKind::Sphere || q.zMin > -q.radius * (1.0 - kTolerance) ||
+      q.zMax < q.radius * (1.0 - kTolerance) ||
+      q.phiMax < 2.0 * 3.14159265358979323846 * (1.0 - kTolerance)) {
+    return false;
+  }
+  // A similarity's linear part M has M^T M = s^2 I.
+  const glm::dmat3 m(placed.parentFromObject);
+  const glm::dmat3 gram = glm::transpose(m) * m;
+  const double scale2 = (gram[0][0] + gram[1][1] + gram[2][2]) / 3.0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (std::abs(gram[i][j] - (i == j ? scale2 : 0.0)) > kTolerance * scale2) return false;
+    }
+  }
+  center = glm::dvec3(placed.parentFromObject * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  radius = q.radius * std::sqrt(scale2);
+  return true;
+}
+
 std::vector<glm::vec4> triangleFrames(const GeometryRecord& record) {
   std::vector<glm::vec4> frames;
   frames.reserve(record.indices.size() / 3);
@@ -500,6 +524,8 @@ class SceneBuilder {
         emitter->disk = PlanarDisk::fromPlaced(record.quadric, emitter->flipNormal);
         emitter->area = emitter->disk.area;
       }
+      emitter->isSphere =
+          isWholeSphere(record.quadric, emitter->sphereCenter, emitter->sphereRadius);
     }
     Light light;
     light.kind = LightKind::Area;
