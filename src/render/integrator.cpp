@@ -200,7 +200,7 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
   float previousPdf = 0.0f;
   glm::vec3 previousPoint(0.0f);
   const auto& lights = scene.lights();
-  const float lightCount = static_cast<float>(lights.size());
+  const LightSelection& selection = scene.lightSelection();
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
     if (!scene.intersect(origin, direction, kInfinity, hit)) {
@@ -208,7 +208,10 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
         const Light& light = lights[static_cast<std::size_t>(index)];
         const glm::vec3 le = infiniteRadiance(light, direction);
         const float weight =
-            specularBounce ? 1.0f : powerHeuristic(previousPdf, infinitePdf(light) / lightCount);
+            specularBounce
+                ? 1.0f
+                : powerHeuristic(previousPdf,
+                                 infinitePdf(light) * selection.probability(previousPoint, index));
         radiance += throughput * le * weight;
       }
       break;
@@ -219,8 +222,8 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
       const glm::vec3 le = areaRadiance(light, hit.geometricNormal, wo);
       float weight = 1.0f;
       if (!specularBounce) {
-        const float lightPdf =
-            areaPdf(light, previousPoint, hit.point, hit.geometricNormal) / lightCount;
+        const float lightPdf = areaPdf(light, previousPoint, hit.point, hit.geometricNormal) *
+                               selection.probability(previousPoint, hit.light);
         weight = powerHeuristic(previousPdf, lightPdf);
       }
       radiance += throughput * le * weight;
@@ -232,11 +235,10 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
     glm::vec2 uChoose, uLight, uBsdf;
     sampler.next2DTriple(uChoose, uLight, uBsdf);
     if (!bsdf.isSpecular() && !lights.empty()) {
-      // Next-event estimation toward one light chosen uniformly.
-      const int index =
-          std::min(static_cast<int>(uChoose.x * lightCount), static_cast<int>(lights.size()) - 1);
-      radiance +=
-          throughput * sampleLightTerm(scene, hit, bsdf, wo, index, uLight, 1.0f / lightCount);
+      // Next-event estimation toward one light (LightSelection says how it is chosen).
+      float probability = 0.0f;
+      const int index = selection.choose(hit.point, uChoose.x, probability);
+      radiance += throughput * sampleLightTerm(scene, hit, bsdf, wo, index, uLight, probability);
     }
     BsdfSample bs;
     if (!bsdf.sample(wo, uChoose.y, uBsdf, bs)) break;

@@ -16,6 +16,7 @@
 #include "render/analytic_shape.h"
 #include "render/flat_primitives.h"
 #include "render/light.h"
+#include "render/light_selection.h"
 #include "render/material.h"
 #include "render/texture.h"
 
@@ -82,6 +83,8 @@ class Scene {
 
   const std::vector<Light>& lights() const { return lights_; }
   const std::vector<int>& infiniteLights() const { return infiniteLights_; }
+  // How the path tracer picks the light it samples at a bounce.
+  const LightSelection& lightSelection() const { return lightSelection_; }
   const Material& material(int index) const { return materials_[static_cast<std::size_t>(index)]; }
   const TextureSet& textures() const { return textures_; }
   float radius() const { return radius_; }
@@ -107,6 +110,7 @@ class Scene {
   TextureSet textures_;
   std::vector<Light> lights_;
   std::vector<int> infiniteLights_;
+  LightSelection lightSelection_;
   glm::vec3 center_{0.0f};
   float radius_ = 1.0f;
   std::size_t flattenedInstances_ = 0, embreeInstances_ = 0;

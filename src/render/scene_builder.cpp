@@ -201,6 +201,7 @@ class SceneBuilder {
       scene_->radius_ = std::max(1e-3f, 0.5f * glm::length(upper - lower));
     }
     buildLights();
+    scene_->lightSelection_ = LightSelection(scene_->lights_);
     // Everything that reads parameters has run (the camera's were read by the parser).
     reportUnusedParameters(description_, diagnostics_);
     if (diagnostics_.hasErrors()) return nullptr;

@@ -146,6 +146,19 @@ TEST_P(IntegratorAnalytic, ThreeSmallSpheresAWeakSunAndSky) {
                   {-1, 2, 2}},
                  GetParam());
 }
+// The path tracer's choice of light then varies from point to point (LightSelection).
+TEST_P(IntegratorAnalytic, NineTinyLampsBesideASunAndSky) {
+  LampScene scene{{}, 0.3, 1.0, {-1, 2, 2}};
+  for (int i = 0; i < 9; ++i) {
+    scene.lamps.push_back({LampShape::Sphere, 0.005, -0.4 + 0.1 * i, 0.5 + 0.05 * (i % 3), 2000.0});
+  }
+  expectAnalytic(scene, GetParam());
+}
+// A lamp large and near enough that light and BSDF sampling find it about equally often: the
+// combination's weights then depend on the probability of the light's choice.
+TEST_P(IntegratorAnalytic, BigNearLampASunAndSky) {
+  expectAnalytic({{{LampShape::Sphere, 0.4, 0.2, 0.7, 5.0}}, 0.3, 1.0}, GetParam());
+}
 TEST_P(IntegratorAnalytic, DiskLampAndSky) {
   expectAnalytic({{{LampShape::DiskFacingDown, 0.3, 0.0, 1.0, 20.0}}, 0.5}, GetParam());
 }
