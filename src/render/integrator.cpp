@@ -201,6 +201,9 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
   glm::vec3 previousPoint(0.0f);
   const auto& lights = scene.lights();
   const LightSelection& selection = scene.lightSelection();
+  // The choice of light at the last vertex that sampled one; read for the weight of a light that
+  // the BSDF sample from there meets.
+  thread_local LightSelection::AtPoint choice;
   for (int depth = 0;; ++depth) {
     SurfaceHit hit;
     if (!scene.intersect(origin, direction, kInfinity, hit)) {
@@ -223,7 +226,7 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
       float weight = 1.0f;
       if (!specularBounce) {
         const float lightPdf = areaPdf(light, previousPoint, hit.point, hit.geometricNormal) *
-                               selection.probability(previousPoint, hit.light);
+                               choice.probability(hit.light);
         weight = powerHeuristic(previousPdf, lightPdf);
       }
       radiance += throughput * le * weight;
@@ -236,8 +239,9 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
     sampler.next2DTriple(uChoose, uLight, uBsdf);
     if (!bsdf.isSpecular() && !lights.empty()) {
       // Next-event estimation toward one light (LightSelection says how it is chosen).
+      selection.evaluate(hit.point, choice);
       float probability = 0.0f;
-      const int index = selection.choose(hit.point, uChoose.x, probability);
+      const int index = choice.choose(uChoose.x, probability);
       radiance += throughput * sampleLightTerm(scene, hit, bsdf, wo, index, uLight, probability);
     }
     BsdfSample bs;

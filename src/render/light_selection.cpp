@@ -67,88 +67,99 @@ void emitterSphere(const Emitter& emitter, glm::vec3& center, float& radius) {
 }  // namespace
 
 LightSelection::LightSelection(const std::vector<Light>& lights) {
-  bounds_.reserve(lights.size());
   for (const Light& light : lights) {
-    Bound bound;
+    bool positional = false;
+    glm::vec3 center(0.0f);
+    float scale = 0.0f, minDistance2 = 1.0f, maxBound = std::numeric_limits<float>::max();
     switch (light.kind) {
       case LightKind::Distant:
-        bound.scale = luminance(light.intensity);
+        scale = luminance(light.intensity);
         break;
       case LightKind::Infinite:
-        bound.scale = kPi * meanLuminance(light);
+        scale = kPi * meanLuminance(light);
         break;
       case LightKind::Point:
       case LightKind::Spot:
-        bound.positional = true;
-        bound.center = light.position;
-        bound.scale = luminance(light.intensity);
-        bound.maxIrradiance = std::numeric_limits<float>::infinity();
+        positional = true;
+        center = light.position;
+        scale = luminance(light.intensity);
+        // At the light itself the bound is large, not infinite: the sum stays finite.
+        minDistance2 = 1e-20f;
+        maxBound = 1e30f;
         break;
       case LightKind::Area: {
-        bound.positional = true;
+        positional = true;
         float radius = 0.0f;
-        emitterSphere(*light.emitter, bound.center, radius);
-        bound.minDistance2 = radius * radius;
+        emitterSphere(*light.emitter, center, radius);
+        minDistance2 = std::max(radius * radius, 1e-20f);
         // A sphere shows pi r^2 = area / 4 from anywhere; a flat emitter at most its area.
         const float projectedArea =
             light.emitter->isSphere ? 0.25f * light.emitter->area : light.emitter->area;
-        bound.scale = luminance(light.intensity) * projectedArea;
-        bound.maxIrradiance = kPi * luminance(light.intensity);
+        scale = luminance(light.intensity) * projectedArea;
+        maxBound = kPi * luminance(light.intensity);
         break;
       }
     }
-    if (!std::isfinite(bound.scale)) bound.scale = 0.0f;
-    bounds_.push_back(bound);
-  }
-}
-
-float LightSelection::weigh(glm::vec3 point, std::vector<float>& weights) const {
-  weights.resize(bounds_.size());
-  float total = 0.0f;
-  for (std::size_t i = 0; i < bounds_.size(); ++i) {
-    const Bound& bound = bounds_[i];
-    float weight = bound.scale;
-    if (bound.positional) {
-      const glm::vec3 offset = bound.center - point;
-      const float distance2 = std::max(glm::dot(offset, offset), bound.minDistance2);
-      weight = distance2 > 0.0f ? std::min(bound.scale / distance2, bound.maxIrradiance)
-                                : bound.maxIrradiance;
-      if (!std::isfinite(weight)) weight = 0.0f;  // a point light at the point itself
+    if (!std::isfinite(scale) || !std::isfinite(maxBound) || !std::isfinite(center.x) ||
+        !std::isfinite(center.y) || !std::isfinite(center.z)) {
+      scale = 0.0f;
+      center = glm::vec3(0.0f);
     }
-    weights[i] = weight;
-    total += weight;
+    scale_.push_back(scale);
+    minDistance2_.push_back(minDistance2);
+    maxBound_.push_back(maxBound);
+    centerX_.push_back(center.x);
+    centerY_.push_back(center.y);
+    centerZ_.push_back(center.z);
+    positional_.push_back(positional ? 1 : 0);
   }
-  return total;
 }
 
-int LightSelection::choose(glm::vec3 point, float u, float& probability) const {
-  thread_local std::vector<float> weights;
-  const float total = weigh(point, weights);
-  const float count = static_cast<float>(bounds_.size());
-  const float uniform = total > 0.0f ? kUniformShare / count : 1.0f / count;
-  const float byWeight = total > 0.0f ? (1.0f - kUniformShare) / total : 0.0f;
-  // Walk the cumulative probabilities; the last light takes what rounding leaves over.
+void LightSelection::evaluate(glm::vec3 point, AtPoint& out) const {
+  const std::size_t count = scale_.size();
+  out.bounds_.resize(count);
+  float total = 0.0f;
+  for (std::size_t i = 0; i < count; ++i) {
+    const float dx = centerX_[i] - point.x, dy = centerY_[i] - point.y, dz = centerZ_[i] - point.z;
+    const float distance2 =
+        positional_[i] ? std::max(dx * dx + dy * dy + dz * dz, minDistance2_[i]) : 1.0f;
+    const float bound = std::min(scale_[i] / distance2, maxBound_[i]);
+    out.bounds_[i] = bound;
+    total += bound;
+  }
+  const float n = static_cast<float>(count);
+  out.uniform_ = total > 0.0f ? kUniformShare / n : 1.0f / n;
+  out.byBound_ = total > 0.0f ? (1.0f - kUniformShare) / total : 0.0f;
+}
+
+int LightSelection::AtPoint::choose(float u, float& probability) const {
+  // Walk the cumulative probabilities; the last light takes what rounding leaves over. (Counting
+  // the cumulative probabilities below u without a branch, from a prefix sum kept by evaluate,
+  // measured no faster: 8% of a preview pass against 6.5%.)
   float cumulative = 0.0f;
   const int last = static_cast<int>(bounds_.size()) - 1;
   for (int i = 0; i < last; ++i) {
-    const float p = uniform + byWeight * weights[static_cast<std::size_t>(i)];
+    const float p = this->probability(i);
     cumulative += p;
     if (u < cumulative) {
       probability = p;
       return i;
     }
   }
-  probability = uniform + byWeight * weights[static_cast<std::size_t>(last)];
+  probability = this->probability(last);
   return last;
 }
 
+int LightSelection::choose(glm::vec3 point, float u, float& probability) const {
+  thread_local AtPoint choice;
+  evaluate(point, choice);
+  return choice.choose(u, probability);
+}
+
 float LightSelection::probability(glm::vec3 point, int index) const {
-  thread_local std::vector<float> weights;
-  const float total = weigh(point, weights);
-  const float count = static_cast<float>(bounds_.size());
-  if (!(total > 0.0f)) return 1.0f / count;
-  return kUniformShare / count +
-         (1.0f - kUniformShare) * weights[static_cast<std::size_t>(index)] / total;
+  thread_local AtPoint choice;
+  evaluate(point, choice);
+  return choice.probability(index);
 }
 
 }  // namespace lenslab::render

@@ -152,11 +152,22 @@ TEST(LightSelection, TinyLampsTakeLittleOfASunlitScenesChoice) {
 
 TEST(LightSelection, WithoutAnyBoundEveryLightIsEquallyLikely) {
   const std::vector<Light> lights = {distant(glm::vec3(0.0f)), sky(glm::vec3(0.0f)),
-                                     pointLight({0.0f, 0.0f, 0.0f}, glm::vec3(1.0f))};
+                                     pointLight({1.0f, 0.0f, 0.0f}, glm::vec3(0.0f))};
   const LightSelection selection(lights);
-  // (The point light sits on the point: its bound is left out, not infinite.)
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
     EXPECT_FLOAT_EQ(selection.probability(glm::vec3(0.0f), i), 1.0f / 3.0f);
+  }
+}
+
+TEST(LightSelection, APointLightAtThePointItselfKeepsTheProbabilitiesFinite) {
+  const std::vector<Light> lights = {distant(glm::vec3(1.0f)),
+                                     pointLight({0.0f, 0.0f, 0.0f}, glm::vec3(1e6f))};
+  const LightSelection selection(lights);
+  const float sun = selection.probability(glm::vec3(0.0f), 0);
+  const float point = selection.probability(glm::vec3(0.0f), 1);
+  EXPECT_TRUE(std::isfinite(sun) && std::isfinite(point));
+  EXPECT_NEAR(sun + point, 1.0f, 1e-6f);
+  EXPECT_NEAR(sun, 0.05f, 1e-6f);  // the uniform share alone
 }
 
 }  // namespace

@@ -45,6 +45,22 @@ CameraOverrides throughBundledLens(const char* name, int width, int height) {
   return overrides;
 }
 
+// The picture below the default scene's lamps (the top 30% of its rows hold them). A lamp's disc
+// is seen by few of its pixels' samples, so its noise would swamp what the tests below compare:
+// the whole picture's mean through 1%. Nothing in these tests is special to the top rows.
+std::shared_ptr<const RenderSnapshot> belowTheLamps(std::shared_ptr<const RenderSnapshot> image) {
+  if (!image) return image;
+  auto cropped = std::make_shared<RenderSnapshot>();
+  const int firstRow = (image->height * 3 + 9) / 10;
+  cropped->width = image->width;
+  cropped->height = image->height - firstRow;
+  cropped->rgb.assign(image->rgb.begin() + 3 * static_cast<std::ptrdiff_t>(firstRow) * image->width,
+                      image->rgb.end());
+  cropped->samplesPerPixel = image->samplesPerPixel;
+  cropped->complete = image->complete;
+  return cropped;
+}
+
 // Mean over blocks x blocks pixel squares of channel c.
 std::vector<double> blockMeans(const RenderSnapshot& image, int block, int c) {
   std::vector<double> out;
@@ -80,11 +96,11 @@ TEST(SpectralRender, WithoutDispersionItIsTheRgbRenderWithinNoise) {
   EXPECT_TRUE(spectralJob.camera->spectral());
   EXPECT_FALSE(autoJob.camera->spectral()) << "the course's double-Gauss 50 mm file has no V_d";
   rgbJob.settings.seed = 1;
-  const auto rgb = renderToCompletion(rgbJob);
+  const auto rgb = belowTheLamps(renderToCompletion(rgbJob));
   rgbJob.settings.seed = 2;
-  const auto rgbAgain = renderToCompletion(rgbJob);
+  const auto rgbAgain = belowTheLamps(renderToCompletion(rgbJob));
   spectralJob.settings.seed = 2;
-  const auto spectral = renderToCompletion(spectralJob);
+  const auto spectral = belowTheLamps(renderToCompletion(spectralJob));
   ASSERT_TRUE(rgb && rgbAgain && spectral);
   for (int c = 0; c < 3; ++c) {
     const auto a = blockMeans(*rgb, 8, c), b = blockMeans(*rgbAgain, 8, c),
@@ -199,7 +215,7 @@ TEST(SpectralRender, HeroWavelengthsAreUnbiasedAndCutTheColourNoise) {
     EXPECT_TRUE(job.camera && job.scene);
     job.settings.wavelengthsPerSample = wavelengths;
     job.settings.seed = seed;
-    return renderToCompletion(job);
+    return belowTheLamps(renderToCompletion(job));
   };
   const auto heroReference = render(SpectralMode::On, 256, 4, 7);
   const auto singleReference = render(SpectralMode::On, 256, 1, 8);
