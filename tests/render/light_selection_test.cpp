@@ -95,8 +95,7 @@ TEST(LightSelection, ChooseFollowsProbabilityAtEveryPoint) {
   std::vector<Light> lights = {distant(glm::vec3(4.0f, 3.8f, 3.4f)),
                                sky(glm::vec3(0.75f, 0.8f, 0.9f))};
   for (int i = 0; i < 9; ++i) {
-    lights.push_back(
-        sphereLamp({-0.2f + 0.05f * i, 0.65f, 3.05f}, 0.002f, {150.0f, 120.0f, 75.0f}));
+    lights.push_back(sphereLamp({-0.16f + 0.04f * i, 0.65f, 3.05f}, 0.002f, {30.0f, 24.0f, 15.0f}));
   }
   const LightSelection selection(lights);
   for (const glm::vec3 point :
@@ -125,18 +124,17 @@ TEST(LightSelection, TinyLampsTakeLittleOfASunlitScenesChoice) {
   std::vector<Light> lights = {distant(glm::vec3(4.0f, 3.8f, 3.4f)),
                                sky(glm::vec3(0.75f, 0.8f, 0.9f))};
   for (int i = 0; i < 9; ++i) {
-    lights.push_back(
-        sphereLamp({-0.2f + 0.05f * i, 0.65f, 3.05f}, 0.002f, {150.0f, 120.0f, 75.0f}));
+    lights.push_back(sphereLamp({-0.16f + 0.04f * i, 0.65f, 3.05f}, 0.002f, {30.0f, 24.0f, 15.0f}));
   }
   const LightSelection selection(lights);
   const glm::vec3 ground(0.0f, 0.0f, 0.0f);
-  // By hand: luminances 3.8137 (sun), 0.79659 (sky, times pi), 123.1 (lamps); a lamp's bound is
-  // 123.1 pi (0.002)^2 / d^2 with d^2 = x^2 + 0.65^2 + 3.05^2.
+  // By hand: luminances 3.8137 (sun), 0.79659 (sky, times pi), 24.627 (lamps); a lamp's bound is
+  // 24.627 pi (0.002)^2 / d^2 with d^2 = x^2 + 0.65^2 + 3.05^2.
   auto y = [](double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; };
   std::vector<double> bounds = {y(4.0, 3.8, 3.4), M_PI * y(0.75, 0.8, 0.9)};
   for (int i = 0; i < 9; ++i) {
-    const double x = -0.2 + 0.05 * i;
-    bounds.push_back(y(150, 120, 75) * M_PI * 0.002 * 0.002 / (x * x + 0.65 * 0.65 + 3.05 * 3.05));
+    const double x = -0.16 + 0.04 * i;
+    bounds.push_back(y(30, 24, 15) * M_PI * 0.002 * 0.002 / (x * x + 0.65 * 0.65 + 3.05 * 3.05));
   }
   const std::vector<double> expected = expectedProbabilities(bounds);
   double lamps = 0.0, expectedLamps = 0.0;
@@ -144,10 +142,10 @@ TEST(LightSelection, TinyLampsTakeLittleOfASunlitScenesChoice) {
     lamps += selection.probability(ground, i);
     expectedLamps += expected[static_cast<std::size_t>(i)];
   }
-  // 0.0820: the uniform tenth and 2e-4; a uniform choice gave the lamps 9 / 11.
+  // 0.0819: the uniform tenth and 4e-5; a uniform choice gave the lamps 9 / 11.
   EXPECT_NEAR(lamps, expectedLamps, 1e-5);
   EXPECT_LT(lamps, 0.083);
-  EXPECT_NEAR(selection.probability(ground, 0), expected[0], 1e-5);  // the sun: 0.553
+  EXPECT_NEAR(selection.probability(ground, 0), expected[0], 1e-5);  // the sun: 0.552
 }
 
 TEST(LightSelection, WithoutAnyBoundEveryLightIsEquallyLikely) {
