@@ -213,8 +213,7 @@ glm::vec3 pathTrace(const Scene& scene, glm::vec3 origin, glm::vec3 direction,
         const float weight =
             specularBounce
                 ? 1.0f
-                : powerHeuristic(previousPdf,
-                                 infinitePdf(light) * selection.probability(previousPoint, index));
+                : powerHeuristic(previousPdf, infinitePdf(light) * choice.probability(index));
         radiance += throughput * le * weight;
       }
       break;

@@ -145,8 +145,21 @@ bool sampleSphereCone(const Light& light, const SphereCone& cone, glm::vec3 poin
   out.wi = glm::normalize(frame.toWorld(local));
   glm::vec3 normal;
   float t = 0.0f;
-  // Directions at the cone's very rim can miss by rounding: a set of measure zero.
-  if (!light.emitter->intersectQuadric(point, out.wi, t, normal)) return false;
+  if (!light.emitter->intersectQuadric(point, out.wi, t, normal)) {
+    // A direction at the cone's rim can pass beside the sphere after rounding (the float
+    // direction is good to about 1e-7 rad, a share 2e-7 / theta_max of the samples: 0.03% for
+    // the default scene's lamps seen from 3 m). It is the outline: take the point of the sphere
+    // nearest to the ray.
+    const glm::dvec3 wi(out.wi);
+    const glm::dvec3 closest =
+        glm::dvec3(point) + glm::dot(light.emitter->sphereCenter - glm::dvec3(point), wi) * wi;
+    const glm::dvec3 outward = closest - light.emitter->sphereCenter;
+    const double outwardLength = glm::length(outward);
+    if (!(outwardLength > 0.0)) return false;
+    normal = glm::vec3(outward / outwardLength);
+    if (light.emitter->flipNormal) normal = -normal;
+    t = static_cast<float>(glm::dot(closest - glm::dvec3(point), wi));
+  }
   out.distance = t;
   out.radiance = areaRadiance(light, normal, -out.wi);
   out.pdf = conePdf(cone);
@@ -247,7 +260,13 @@ float shadowRayLength(const Light& light, const LightSample& sample, glm::vec3 o
   if (light.kind == LightKind::Area && light.emitter->isSphere) {
     glm::vec3 normal;
     float t = 0.0f;
-    if (!light.emitter->intersectQuadric(origin, sample.wi, t, normal)) return 0.0f;
+    // The direction was sampled in the cone seen from the shading point; from the offset origin
+    // it can pass just beside the sphere (a band at the cone's rim as wide as the offset seen
+    // from the light). Counting that as blocked lost 0.05% of nine small lamps' light; it is
+    // light that arrives, and nothing of the sphere lies in the way of the sampled distance.
+    if (!light.emitter->intersectQuadric(origin, sample.wi, t, normal)) {
+      return sample.distance * (1.0f - 1e-4f);
+    }
     return t * (1.0f - 1e-4f);
   }
   return sample.distance * (1.0f - 1e-4f);

@@ -1,6 +1,7 @@
 #include "render/light_selection.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -116,6 +117,7 @@ LightSelection::LightSelection(const std::vector<Light>& lights) {
 }
 
 void LightSelection::evaluate(glm::vec3 point, AtPoint& out) const {
+  assert(!scale_.empty());
   const std::size_t count = scale_.size();
   out.bounds_.resize(count);
   float total = 0.0f;

@@ -87,9 +87,15 @@ inline glm::vec2 uniformTriangle(glm::vec2 u) {
 
 // Veach's power heuristic with beta = 2.
 inline float powerHeuristic(float pdfA, float pdfB) {
-  const float a = pdfA * pdfA;
-  const float b = pdfB * pdfB;
-  return a + b > 0.0f ? a / (a + b) : 0.0f;
+  // a^2 / (a^2 + b^2) through the ratio of the smaller density to the larger: a density above
+  // 1.8e19 (a sphere lamp's cone seen under 1e-10 rad) squares to infinity, and inf / inf is NaN.
+  if (!(pdfA > 0.0f)) return 0.0f;
+  if (pdfA >= pdfB) {
+    const float r = pdfB / pdfA;
+    return 1.0f / (1.0f + r * r);
+  }
+  const float r = pdfA / pdfB;
+  return r * r / (1.0f + r * r);
 }
 
 // An orthonormal basis around a unit vector (Duff et al. 2017, "Building an Orthonormal Basis,

@@ -74,15 +74,17 @@ void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
 
 glm::vec3 toFloat(glm::dvec3 v) { return glm::vec3(v); }
 
-// GeometryRecord::triangleFrames of a mesh record whose positions, uvs and indices are set.
 // Whether `placed` is a whole sphere (no z or phi cut) placed by a similarity, which sampleLight
 // may sample by the cone it subtends; if so, its world centre and radius.
 bool isWholeSphere(const PlacedQuadric& placed, glm::dvec3& center, double& radius) {
   const Quadric& q = placed.quadric;
-  constexpr double kTolerance = 1e-9;
+  // Relative: rotations written with 7 digits, as exporters write Transform matrices, are
+  // orthogonal to about 1e-6; an ellipsoid that close to a sphere is sampled as one with a bias
+  // of the same order.
+  constexpr double kTolerance = 1e-5;
   if (q.kind != QuadricKind::Sphere || q.zMin > -q.radius * (1.0 - kTolerance) ||
       q.zMax < q.radius * (1.0 - kTolerance) ||
-      q.phiMax < 2.0 * 3.14159265358979323846 * (1.0 - kTolerance)) {
+      q.phiMax < glm::two_pi<double>() * (1.0 - kTolerance)) {
     return false;
   }
   // A similarity's linear part M has M^T M = s^2 I.
@@ -99,6 +101,7 @@ bool isWholeSphere(const PlacedQuadric& placed, glm::dvec3& center, double& radi
   return true;
 }
 
+// GeometryRecord::triangleFrames of a mesh record whose positions, uvs and indices are set.
 std::vector<glm::vec4> triangleFrames(const GeometryRecord& record) {
   std::vector<glm::vec4> frames;
   frames.reserve(record.indices.size() / 3);

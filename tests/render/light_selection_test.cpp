@@ -81,14 +81,25 @@ TEST(LightSelection, ProbabilitiesFollowHandComputedIrradianceBounds) {
   EXPECT_NEAR(sum, 1.0, 1e-6);
 }
 
-TEST(LightSelection, AnAreaLightsBoundStopsAtPiLInsideItsSphere) {
-  const std::vector<Light> lights = {distant(glm::vec3(1.0f)),
-                                     sphereLamp({0.0f, 0.0f, 0.0f}, 1.0f, glm::vec3(2.0f))};
-  const LightSelection selection(lights);
-  // At 0.5 from the centre the distance is taken as the radius: 2 pi 1 / 1 would exceed pi 2,
-  // and is capped there.
+TEST(LightSelection, AnAreaLightsBoundStopsAtPiL) {
+  // A closed box of side 2 around the origin as a mesh emitter: area 24, bounding radius sqrt 3.
+  // From its centre, 2 L 24 / 3 = 16 L would exceed what any emitter can give, pi L (a whole
+  // sphere of directions' worth of projected solid angle is pi), and is capped there. (The
+  // triangles only give the bounds: two spanning the box's diagonal.)
+  auto emitter = std::make_shared<Emitter>();
+  emitter->triangles = {{-1.0f, -1.0f, -1.0f}, {1.0f, 1.0f, 1.0f},   {1.0f, -1.0f, 1.0f},
+                        {-1.0f, -1.0f, -1.0f}, {-1.0f, 1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}};
+  emitter->area = 24.0f;
+  Light box;
+  box.kind = LightKind::Area;
+  box.intensity = glm::vec3(2.0f);
+  box.emitter = std::move(emitter);
+  const LightSelection selection({distant(glm::vec3(1.0f)), box});
   const std::vector<double> expected = expectedProbabilities({1.0, M_PI * 2.0});
-  EXPECT_NEAR(selection.probability({0.5f, 0.0f, 0.0f}, 1), expected[1], 1e-6);
+  EXPECT_NEAR(selection.probability({0.0f, 0.0f, 0.0f}, 1), expected[1], 1e-6);
+  // Far away the bound is 2 * 24 / d^2: at 100, 0.0048.
+  const std::vector<double> far = expectedProbabilities({1.0, 2.0 * 24.0 / (100.0 * 100.0)});
+  EXPECT_NEAR(selection.probability({100.0f, 0.0f, 0.0f}, 1), far[1], 1e-6);
 }
 
 TEST(LightSelection, ChooseFollowsProbabilityAtEveryPoint) {

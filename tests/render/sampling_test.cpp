@@ -58,5 +58,18 @@ TEST(Sampling, ConcentricDiskIsUniformOnTheUnitDisk) {
   EXPECT_NEAR(concentricDisk({0.5f, 1.0f}).y, 1.0f, 1e-6f);
 }
 
+TEST(Sampling, PowerHeuristicIsASquaresShareAndStaysFiniteForHugeDensities) {
+  EXPECT_FLOAT_EQ(powerHeuristic(1.0f, 1.0f), 0.5f);
+  EXPECT_FLOAT_EQ(powerHeuristic(3.0f, 1.0f), 0.9f);  // 9 / (9 + 1)
+  EXPECT_FLOAT_EQ(powerHeuristic(1.0f, 3.0f), 0.1f);
+  EXPECT_EQ(powerHeuristic(0.0f, 5.0f), 0.0f);
+  EXPECT_EQ(powerHeuristic(5.0f, 0.0f), 1.0f);
+  EXPECT_EQ(powerHeuristic(0.0f, 0.0f), 0.0f);
+  // A sphere lamp's cone under 1e-10 rad: a density of 3e19, whose square overflows a float.
+  EXPECT_FLOAT_EQ(powerHeuristic(3e19f, 0.3f), 1.0f);
+  EXPECT_NEAR(powerHeuristic(0.3f, 3e19f), 0.0f, 1e-30f);
+  EXPECT_FLOAT_EQ(powerHeuristic(3e19f, 6e19f), 0.2f);  // 1 / (1 + 4)
+}
+
 }  // namespace
 }  // namespace lenslab::render
