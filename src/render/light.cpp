@@ -269,6 +269,18 @@ float shadowRayLength(const Light& light, const LightSample& sample, glm::vec3 o
     }
     return t * (1.0f - 1e-4f);
   }
+  if (light.kind == LightKind::Area && light.emitter->isQuadric && !light.emitter->isDisk) {
+    // A curved emitter sampled over its area: a point near its outline can lie, after rounding,
+    // a little inside it, and the ray toward it meets the surface a little before it. Where the
+    // first hit is within 1e-3 of the distance it is that point; well before, another part of
+    // the emitter hides it.
+    glm::vec3 normal;
+    float t = 0.0f;
+    if (light.emitter->intersectQuadric(origin, sample.wi, t, normal) &&
+        t < sample.distance * (1.0f - 1e-4f)) {
+      return t > sample.distance * (1.0f - 1e-3f) ? t * (1.0f - 1e-4f) : 0.0f;
+    }
+  }
   return sample.distance * (1.0f - 1e-4f);
 }
 

@@ -57,9 +57,10 @@ struct Emitter {
   // little inside it, so that the shadow ray toward it met the sphere first (direct lighting lost
   // 0.5% of one lamp's light on the ground below it, 0.9% of three small lamps'; the
   // IntegratorAnalytic tests). Other curved emitters (cylinders, cones, cut spheres) keep area
-  // sampling. The cone is that seen from the shading point, while shadow and BSDF rays leave from
-  // an offset origin: the two differ in a band at the outline about offset / radius wide (the
-  // analytic tests, with lamps down to a radius of 5 mm, agree within their noise, about 1e-4).
+  // sampling, with the same care for their shadow rays (shadowRayLength). The cone is that seen
+  // from the shading point, while shadow and BSDF rays leave from an offset origin: the two differ
+  // in a band at the outline about offset / radius wide (the analytic tests, with lamps down to a
+  // radius of 5 mm, agree within their noise, about 1e-4).
   bool isSphere = false;
   glm::dvec3 sphereCenter{0.0};
   double sphereRadius = 0.0;
@@ -101,9 +102,10 @@ struct LightSample {
 bool sampleLight(const Light& light, glm::vec3 point, glm::vec2 u, float sceneRadius,
                  LightSample& out);
 // How far a shadow ray for `sample` (taken at a point near `origin`) may reach from `origin`
-// without meeting the light's own surface. For a sphere it is where the ray meets the sphere,
-// found by the code the scene's queries use: the sampled point and the ray from an offset origin
-// can disagree by far more than a relative 1e-4 where the ray grazes the sphere.
+// without meeting the light's own surface; 0 when another part of the emitter hides the sampled
+// point. For a curved quadric emitter it is where the ray meets it, found by the code the scene's
+// queries use: the sampled point and the ray from an offset origin can disagree by far more than
+// a relative 1e-4 where the ray grazes the surface (a tube lamp lost 0.04% of its light so).
 float shadowRayLength(const Light& light, const LightSample& sample, glm::vec3 origin);
 // Radiance an area light emits from a point with normal `normal` toward `wo`.
 glm::vec3 areaRadiance(const Light& light, glm::vec3 normal, glm::vec3 wo);

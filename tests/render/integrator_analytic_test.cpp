@@ -167,7 +167,13 @@ void expectAnalytic(const LampScene& lamps, IntegratorKind kind) {
   const glm::vec3 origin(0.0f, 3.0f, 3.0f);
   const Estimate e = estimate(*built.scene, origin, glm::normalize(-origin), settings, 64, 1024);
   const double expected = analyticRadiance(lamps);
-  EXPECT_NEAR(e.mean, expected, 4.0 * e.standardError + 1e-3 * expected);
+  std::printf("%s: %.6f of the closed form, standard error %.6f\n",
+              kind == IntegratorKind::Path ? "path" : "direct", e.mean / expected,
+              e.standardError / expected);
+  // 1e-4 for the references' own error (the tube's grid) and float rounding. Each bias fixed so
+  // far exceeded it: 5e-3 (a sphere's area samples near its outline), 5e-4 (nine small lamps'
+  // shadow rays from the offset origin passing beside them), 3.6e-4 (the tube's area samples).
+  EXPECT_NEAR(e.mean, expected, 4.0 * e.standardError + 1e-4 * expected);
 }
 
 // Until spheres were sampled by their cone, both integrators gave 0.9947 of the first.
