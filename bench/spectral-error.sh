@@ -8,9 +8,12 @@
 # the double-Gauss 50 mm and the Cooke triplet 100 mm (both with the V_d of their sources), each in
 # RGB (--spectral off) and spectrally (--spectral on), at
 # SPP (default 16) with seed 1 and at REFERENCE_SPP (default 1024) with seed 7, and prints the
-# RMS error of each test image against the reference of its own mode (linear RGB, all pixels and
-# channels, PFM), and the ratio spectral / RGB. The references' own noise adds 1/64 of a test
-# image's variance at the defaults. Takes several minutes on two cores.
+# RMS error of each test image against the reference of its own mode (linear RGB, all channels,
+# PFM), and the ratio spectral / RGB. The references' own noise adds 1/64 of a test image's
+# variance at the defaults. Takes several minutes on two cores. Since stop 35 the error is taken
+# below the default scene's lamps (rows 30-100% from the top): their discs are noisy in either
+# mode (few of a pixel's lens samples see so small a light), and over the whole picture that
+# noise would bring the ratio toward 1 without any change in colour noise.
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -41,7 +44,9 @@ def pfm(path):
         w, h = map(int, f.readline().split())
         scale = float(f.readline())
         fmt = '<' if scale < 0 else '>'
-        return struct.unpack(fmt + 'f' * (3 * w * h), f.read(12 * w * h))
+        values = struct.unpack(fmt + 'f' * (3 * w * h), f.read(12 * w * h))
+    # PFM rows run bottom to top: the bottom 70% of the picture is the file's first rows.
+    return values[:3 * w * int(0.7 * h)]
 def rmse(a, b):
     return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / len(a))
 e = {m: rmse(pfm(f'{out}/test-{m}.pfm'), pfm(f'{out}/ref-{m}.pfm')) for m in ('off', 'on')}
