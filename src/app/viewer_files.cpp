@@ -200,6 +200,7 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
     sessionLensToFocus_ = SessionLens{opening, loaded.system};
   }
   const CommandTicket ticket = state_.lens.issue(std::move(opening));
+  if (!startsSession && !sceneLoadOutcome_) lensOpenedWhileSceneLoads_ = true;
   state_.log.info("Opened lens " + path);
   // What the lens file could not honour (an aperture image: the stop stays a circle).
   for (const Diagnostic& diagnostic : loaded.diagnostics.all())
@@ -227,6 +228,7 @@ void Viewer::startLoadingScene(const std::string& path, SceneOrigin origin) {
   sceneOrigin_ = origin;
   state_.loadingScenePath = path;
   sceneLoadOutcome_.reset();
+  lensOpenedWhileSceneLoads_ = false;
 }
 
 void Viewer::finishSceneLoad() {
@@ -283,8 +285,12 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
     state_.log.info(message);
   }
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
-  // lens on the command line. The lens is built the way `lenslab render` builds it (lensOfScene).
-  if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
+  // lens on the command line or opened one while the scene loaded. The lens is built the way
+  // `lenslab render` builds it (lensOfScene).
+  if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad &&
+      std::exchange(lensOpenedWhileSceneLoads_, false)) {
+    state_.log.info("Kept the lens opened while the scene loaded, not the scene's");
+  } else if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
     Diagnostics diagnostics;
     if (const auto sceneLens = render::lensOfScene(*loaded.description, diagnostics)) {
       const std::string lensPath = sceneLens->path.string();

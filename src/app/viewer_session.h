@@ -200,6 +200,10 @@ class Viewer final : public ScriptHost {
   std::optional<FileRequest> browserPurpose_;  // what the browser's answer is for (no path)
   SceneOrigin sceneOrigin_ = SceneOrigin::Default;
   std::optional<std::string> sceneLoadOutcome_ = "";  // nullopt while a scene loads
+  // A lens opened while a scene loads is the user's later choice: the scene, once loaded, keeps
+  // it instead of bringing its own (the default scene took 0.1-0.5 s to load while a script's
+  // load-lens had already run, and replaced that lens).
+  bool lensOpenedWhileSceneLoads_ = false;
 
  public:
   // With a lens given on the command line, opening a scene keeps it instead of the scene's.

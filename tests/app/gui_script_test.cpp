@@ -58,6 +58,36 @@ class ScriptedViewer : public ::testing::Test {
   testing::PngImage image(const std::string& name) {
     return testing::PngImage::load(scratch / name);
   }
+  // A terrain of about a million triangles (terrain.ply in the scratch directory): a scene that
+  // uses it takes a second or more to load.
+  void writeTerrainPly() {
+    constexpr int kSide = 708;  // vertices per side: 2 * 707^2 = 999 698 triangles
+    {
+      std::ofstream ply(scratch / "terrain.ply", std::ios::binary);
+      ply << "ply\nformat binary_little_endian 1.0\nelement vertex " << kSide * kSide
+          << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
+          << 2 * (kSide - 1) * (kSide - 1)
+          << "\nproperty list uchar int vertex_indices\nend_header\n";
+      for (int i = 0; i < kSide; ++i) {
+        for (int j = 0; j < kSide; ++j) {
+          const float x = 4.0f * i / (kSide - 1) - 2.0f, z = 4.0f * j / (kSide - 1) - 2.0f;
+          const float point[3] = {x, 0.1f * std::sin(6.0f * x) * std::cos(6.0f * z), z};
+          ply.write(reinterpret_cast<const char*>(point), sizeof point);
+        }
+      }
+      for (int i = 0; i + 1 < kSide; ++i) {
+        for (int j = 0; j + 1 < kSide; ++j) {
+          const int a = i * kSide + j, b = a + 1, c = a + kSide, d = c + 1;
+          const int faces[2][3] = {{a, c, b}, {b, c, d}};
+          for (const auto& face : faces) {
+            const unsigned char three = 3;
+            ply.write(reinterpret_cast<const char*>(&three), 1);
+            ply.write(reinterpret_cast<const char*>(face), sizeof face);
+          }
+        }
+      }
+    }
+  }
   std::filesystem::path scratch = testing::makeTestDirectory("script");
 };
 
@@ -519,32 +549,7 @@ TEST_F(ScriptedViewer, ABrokenSceneOnTheCommandLineEndsTheSessionWithItsError) {
 // A scene of a million triangles takes about a second to parse and build (two on a busy
 // machine): it loads while the window draws, which shows it loading, and then renders it.
 TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
-  constexpr int kSide = 708;  // vertices per side: 2 * 707^2 = 999 698 triangles
-  {
-    std::ofstream ply(scratch / "terrain.ply", std::ios::binary);
-    ply << "ply\nformat binary_little_endian 1.0\nelement vertex " << kSide * kSide
-        << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
-        << 2 * (kSide - 1) * (kSide - 1)
-        << "\nproperty list uchar int vertex_indices\nend_header\n";
-    for (int i = 0; i < kSide; ++i) {
-      for (int j = 0; j < kSide; ++j) {
-        const float x = 4.0f * i / (kSide - 1) - 2.0f, z = 4.0f * j / (kSide - 1) - 2.0f;
-        const float point[3] = {x, 0.1f * std::sin(6.0f * x) * std::cos(6.0f * z), z};
-        ply.write(reinterpret_cast<const char*>(point), sizeof point);
-      }
-    }
-    for (int i = 0; i + 1 < kSide; ++i) {
-      for (int j = 0; j + 1 < kSide; ++j) {
-        const int a = i * kSide + j, b = a + 1, c = a + kSide, d = c + 1;
-        const int faces[2][3] = {{a, c, b}, {b, c, d}};
-        for (const auto& face : faces) {
-          const unsigned char three = 3;
-          ply.write(reinterpret_cast<const char*>(&three), 1);
-          ply.write(reinterpret_cast<const char*>(face), sizeof face);
-        }
-      }
-    }
-  }
+  writeTerrainPly();
   std::ofstream(scratch / "terrain.pbrt")
       << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [45]\n"
          "Film \"image\" \"integer xresolution\" [300] \"integer yresolution\" [200]\n"
@@ -564,6 +569,39 @@ TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
   EXPECT_EQ(loaded["state"]["scene_loading"], "");
   // The scene, seen through the lens: the lit terrain, not a black frame.
   EXPECT_GT(testing::meanBrightness(image("terrain.png")), 20.0);
+}
+
+// A lens opened while a scene loads is the later choice: the scene, once loaded, keeps it rather
+// than bringing its own (a script's load-lens right after start-up used to lose that race to the
+// default scene now and then).
+TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKept) {
+  writeTerrainPly();
+  const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
+  std::ofstream(scratch / "terrain-lens.pbrt")
+      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"realistic\" \"string lensfile\" \"" << lenses
+      << "dgauss-50mm.dat\" \"float aperturediameter\" [10] \"float focusdistance\" [3]\n"
+         "Film \"image\" \"integer xresolution\" [300] \"integer yresolution\" [200]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  const auto result = runScript("load-lens " + lenses +
+                                    "dgauss-100mm.dat\ndump-ui opened.json\n"
+                                    "wait-scene-load\ndump-ui loaded.json\nquit\n",
+                                "", "--scene terrain-lens.pbrt");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto opened = json("opened.json");
+  ASSERT_EQ(opened["state"]["scene_loading"], "terrain-lens.pbrt")
+      << "the scene loaded before the lens opened: the test did not race";
+  const auto loaded = json("loaded.json");
+  EXPECT_EQ(loaded["state"]["scene_path"], "terrain-lens.pbrt");
+  const std::string lensPath = loaded["state"]["lens_path"];
+  EXPECT_NE(lensPath.find("dgauss-100mm.dat"), std::string::npos) << lensPath;
+  bool said = false;
+  for (const auto& entry : loaded["state"]["log"]) {
+    said = said || entry["text"].get<std::string>().find(
+                       "Kept the lens opened while the scene "
+                       "loaded") != std::string::npos;
+  }
+  EXPECT_TRUE(said) << loaded["state"]["log"];
 }
 
 TEST_F(ScriptedViewer, ScriptEditsAreLogged) {
