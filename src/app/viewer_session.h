@@ -201,8 +201,9 @@ class Viewer final : public ScriptHost {
   SceneOrigin sceneOrigin_ = SceneOrigin::Default;
   std::optional<std::string> sceneLoadOutcome_ = "";  // nullopt while a scene loads
   // A lens opened while a scene loads is the user's later choice: the scene, once loaded, keeps
-  // it instead of bringing its own (the default scene took 0.1-0.5 s to load while a script's
-  // load-lens had already run, and replaced that lens).
+  // it instead of bringing its own (a script's load-lens right after start-up lost that race to
+  // the default scene now and then). The kept lens stays as it was opened: it is not focused
+  // again at the new scene's focus distance.
   bool lensOpenedWhileSceneLoads_ = false;
 
  public:
