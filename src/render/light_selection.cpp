@@ -152,16 +152,4 @@ int LightSelection::AtPoint::choose(float u, float& probability) const {
   return last;
 }
 
-int LightSelection::choose(glm::vec3 point, float u, float& probability) const {
-  thread_local AtPoint choice;
-  evaluate(point, choice);
-  return choice.choose(u, probability);
-}
-
-float LightSelection::probability(glm::vec3 point, int index) const {
-  thread_local AtPoint choice;
-  evaluate(point, choice);
-  return choice.probability(index);
-}
-
 }  // namespace lenslab::render

@@ -55,9 +55,6 @@ class LightSelection {
   std::size_t size() const { return scale_.size(); }
   // The choice's probabilities at `point` into `out` (O(N)). The scene must have a light.
   void evaluate(glm::vec3 point, AtPoint& out) const;
-  // One light for u at `point`, and one light's probability there (each O(N)).
-  int choose(glm::vec3 point, float u, float& probability) const;
-  float probability(glm::vec3 point, int index) const;
 
  private:
   // Per light, as arrays that evaluate's loop reads without a branch: the bound is

@@ -48,6 +48,23 @@ Light pointLight(glm::vec3 position, glm::vec3 intensity) {
   return light;
 }
 
+// The default scene's lights: its sun, its sky and its nine lamps (scenes/default.pbrt).
+std::vector<Light> defaultSceneLights() {
+  std::vector<Light> lights = {distant(glm::vec3(4.0f, 3.8f, 3.4f)),
+                               sky(glm::vec3(0.75f, 0.8f, 0.9f))};
+  for (int i = 0; i < 9; ++i) {
+    lights.push_back(sphereLamp({-0.16f + 0.04f * i, 0.65f, 3.05f}, 0.002f, {30.0f, 24.0f, 15.0f}));
+  }
+  return lights;
+}
+
+// The probability of light `index` at `point`.
+float probabilityAt(const LightSelection& selection, glm::vec3 point, int index) {
+  LightSelection::AtPoint choice;
+  selection.evaluate(point, choice);
+  return choice.probability(index);
+}
+
 // What the choice of each light should be: 0.1 / N plus 0.9 of its share of the bounds.
 std::vector<double> expectedProbabilities(const std::vector<double>& bounds) {
   double total = 0.0;
@@ -73,7 +90,7 @@ TEST(LightSelection, ProbabilitiesFollowHandComputedIrradianceBounds) {
   const glm::vec3 point(0.0f);
   double sum = 0.0;
   for (int i = 0; i < 5; ++i) {
-    const float p = selection.probability(point, i);
+    const float p = probabilityAt(selection, point, i);
     EXPECT_NEAR(p, expected[static_cast<std::size_t>(i)], 1e-6) << "light " << i;
     EXPECT_GE(p, 0.1 / 5.0 - 1e-7);
     sum += p;
@@ -96,47 +113,41 @@ TEST(LightSelection, AnAreaLightsBoundStopsAtPiL) {
   box.emitter = std::move(emitter);
   const LightSelection selection({distant(glm::vec3(1.0f)), box});
   const std::vector<double> expected = expectedProbabilities({1.0, M_PI * 2.0});
-  EXPECT_NEAR(selection.probability({0.0f, 0.0f, 0.0f}, 1), expected[1], 1e-6);
+  EXPECT_NEAR(probabilityAt(selection, {0.0f, 0.0f, 0.0f}, 1), expected[1], 1e-6);
   // Far away the bound is 2 * 24 / d^2: at 100, 0.0048.
   const std::vector<double> far = expectedProbabilities({1.0, 2.0 * 24.0 / (100.0 * 100.0)});
-  EXPECT_NEAR(selection.probability({100.0f, 0.0f, 0.0f}, 1), far[1], 1e-6);
+  EXPECT_NEAR(probabilityAt(selection, {100.0f, 0.0f, 0.0f}, 1), far[1], 1e-6);
 }
 
 TEST(LightSelection, ChooseFollowsProbabilityAtEveryPoint) {
-  std::vector<Light> lights = {distant(glm::vec3(4.0f, 3.8f, 3.4f)),
-                               sky(glm::vec3(0.75f, 0.8f, 0.9f))};
-  for (int i = 0; i < 9; ++i) {
-    lights.push_back(sphereLamp({-0.16f + 0.04f * i, 0.65f, 3.05f}, 0.002f, {30.0f, 24.0f, 15.0f}));
-  }
+  const std::vector<Light> lights = defaultSceneLights();
   const LightSelection selection(lights);
   for (const glm::vec3 point :
        {glm::vec3(0.0f), glm::vec3(0.0f, 0.6f, 3.0f), glm::vec3(-0.1f, 0.65f, 3.05f)}) {
+    LightSelection::AtPoint choice;
+    selection.evaluate(point, choice);
     // u on a fine grid: the share of it that picks each light is that light's probability.
     constexpr int kSteps = 200000;
     std::vector<int> picked(lights.size(), 0);
     for (int step = 0; step < kSteps; ++step) {
       float p = 0.0f;
-      const int index = selection.choose(point, (step + 0.5f) / kSteps, p);
+      const int index = choice.choose((step + 0.5f) / kSteps, p);
       ASSERT_GE(index, 0);
       ASSERT_LT(index, static_cast<int>(lights.size()));
-      EXPECT_FLOAT_EQ(p, selection.probability(point, index));
+      EXPECT_FLOAT_EQ(p, choice.probability(index));
       ++picked[static_cast<std::size_t>(index)];
     }
     for (std::size_t i = 0; i < lights.size(); ++i) {
-      EXPECT_NEAR(static_cast<double>(picked[i]) / kSteps,
-                  selection.probability(point, static_cast<int>(i)), 2.0 / kSteps)
+      EXPECT_NEAR(static_cast<double>(picked[i]) / kSteps, choice.probability(static_cast<int>(i)),
+                  2.0 / kSteps)
           << "light " << i;
     }
   }
 }
 
 TEST(LightSelection, TinyLampsTakeLittleOfASunlitScenesChoice) {
-  // The default scene's lights with its nine lamps, seen from the ground 3 m from the lamps.
-  std::vector<Light> lights = {distant(glm::vec3(4.0f, 3.8f, 3.4f)),
-                               sky(glm::vec3(0.75f, 0.8f, 0.9f))};
-  for (int i = 0; i < 9; ++i) {
-    lights.push_back(sphereLamp({-0.16f + 0.04f * i, 0.65f, 3.05f}, 0.002f, {30.0f, 24.0f, 15.0f}));
-  }
+  // The default scene's lights, seen from the ground 3 m from the lamps.
+  const std::vector<Light> lights = defaultSceneLights();
   const LightSelection selection(lights);
   const glm::vec3 ground(0.0f, 0.0f, 0.0f);
   // By hand: luminances 3.8137 (sun), 0.79659 (sky, times pi), 24.627 (lamps); a lamp's bound is
@@ -150,13 +161,13 @@ TEST(LightSelection, TinyLampsTakeLittleOfASunlitScenesChoice) {
   const std::vector<double> expected = expectedProbabilities(bounds);
   double lamps = 0.0, expectedLamps = 0.0;
   for (int i = 2; i < 11; ++i) {
-    lamps += selection.probability(ground, i);
+    lamps += probabilityAt(selection, ground, i);
     expectedLamps += expected[static_cast<std::size_t>(i)];
   }
   // 0.0819: the uniform tenth and 4e-5; a uniform choice gave the lamps 9 / 11.
   EXPECT_NEAR(lamps, expectedLamps, 1e-5);
   EXPECT_LT(lamps, 0.083);
-  EXPECT_NEAR(selection.probability(ground, 0), expected[0], 1e-5);  // the sun: 0.552
+  EXPECT_NEAR(probabilityAt(selection, ground, 0), expected[0], 1e-5);  // the sun: 0.552
 }
 
 TEST(LightSelection, WithoutAnyBoundEveryLightIsEquallyLikely) {
@@ -164,7 +175,7 @@ TEST(LightSelection, WithoutAnyBoundEveryLightIsEquallyLikely) {
                                      pointLight({1.0f, 0.0f, 0.0f}, glm::vec3(0.0f))};
   const LightSelection selection(lights);
   for (int i = 0; i < 3; ++i) {
-    EXPECT_FLOAT_EQ(selection.probability(glm::vec3(0.0f), i), 1.0f / 3.0f);
+    EXPECT_FLOAT_EQ(probabilityAt(selection, glm::vec3(0.0f), i), 1.0f / 3.0f);
   }
 }
 
@@ -172,8 +183,8 @@ TEST(LightSelection, APointLightAtThePointItselfKeepsTheProbabilitiesFinite) {
   const std::vector<Light> lights = {distant(glm::vec3(1.0f)),
                                      pointLight({0.0f, 0.0f, 0.0f}, glm::vec3(1e6f))};
   const LightSelection selection(lights);
-  const float sun = selection.probability(glm::vec3(0.0f), 0);
-  const float point = selection.probability(glm::vec3(0.0f), 1);
+  const float sun = probabilityAt(selection, glm::vec3(0.0f), 0);
+  const float point = probabilityAt(selection, glm::vec3(0.0f), 1);
   EXPECT_TRUE(std::isfinite(sun) && std::isfinite(point));
   EXPECT_NEAR(sun + point, 1.0f, 1e-6f);
   EXPECT_NEAR(sun, 0.05f, 1e-6f);  // the uniform share alone
