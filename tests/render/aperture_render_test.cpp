@@ -440,22 +440,13 @@ TEST(ApertureRender, TheDefaultScenesLampsBarelyMoveItsAutoExposure) {
   std::string dark = text;
   dark.replace(at, lampRadiance.size(), "AreaLightSource \"diffuse\" \"rgb L\" [0 0 0]");
   auto exposure = [&](const std::string& sceneText) {
-    ParseResult parsed = parsePbrtText(sceneText, "default.pbrt", scenes);
-    EXPECT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
-    if (!parsed.scene) return 0.0;
     CameraOverrides overrides;
     overrides.width = 300;
     overrides.height = 200;
     overrides.falloff.spectral = SpectralMode::Off;
-    Diagnostics diagnostics;
-    RenderJob job;
-    job.camera = makeCamera(*parsed.scene, overrides, diagnostics);
-    job.scene = buildScene(*parsed.scene).scene;
-    EXPECT_TRUE(job.camera && job.scene);
+    const RenderJob job = render::testing::jobFromParsed(
+        parsePbrtText(sceneText, "default.pbrt", scenes), 64, overrides);
     if (!job.camera || !job.scene) return 0.0;
-    job.settings.samplesPerPixel = 64;
-    job.settings.integrator.kind = parsed.scene->integrator.kind;
-    job.settings.integrator.maxDepth = parsed.scene->integrator.maxDepth;
     const auto image = renderToCompletion(job);
     EXPECT_TRUE(image);
     return image ? autoExposureStops(FloatImage{image->width, image->height, image->rgb}) : 0.0;

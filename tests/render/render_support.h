@@ -17,11 +17,11 @@
 
 namespace lenslab::render::testing {
 
-// Parses `path`, builds camera and scene; fails the test (and returns an empty job) on errors.
-inline RenderJob loadJob(const std::filesystem::path& path, int samplesPerPixel,
-                         const CameraOverrides& overrides = {}) {
+// Builds camera and scene from a parsed scene; fails the test (and returns an empty job) on
+// errors.
+inline RenderJob jobFromParsed(const ParseResult& parsed, int samplesPerPixel,
+                               const CameraOverrides& overrides = {}) {
   RenderJob job;
-  ParseResult parsed = parsePbrtFile(path);
   EXPECT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
   if (!parsed.scene) return job;
   Diagnostics diagnostics;
@@ -34,6 +34,12 @@ inline RenderJob loadJob(const std::filesystem::path& path, int samplesPerPixel,
   job.settings.integrator.kind = parsed.scene->integrator.kind;
   job.settings.integrator.maxDepth = parsed.scene->integrator.maxDepth;
   return job;
+}
+
+// Parses `path`, builds camera and scene; fails the test (and returns an empty job) on errors.
+inline RenderJob loadJob(const std::filesystem::path& path, int samplesPerPixel,
+                         const CameraOverrides& overrides = {}) {
+  return jobFromParsed(parsePbrtFile(path), samplesPerPixel, overrides);
 }
 
 // Every snapshot a ProgressiveRenderer publishes for `job`, in order, once it has completed;
