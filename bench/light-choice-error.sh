@@ -47,28 +47,13 @@ for entry in $scenes; do
       render "$new" "$scene" "$spp" "$seed" "$out/$name-new-$seed.pfm"
     done
   fi
-  python3 - "$out" "$name" "$spp" "$refspp" "$region" <<'PY'
-import math, struct, sys
-out, name, spp, refspp, region = sys.argv[1:6]
-x0, y0, x1, y1 = map(float, region.split(','))
+  python3 - "$here/bench" "$out" "$name" "$spp" "$refspp" "$region" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from pfm_region import read_region, rmse
+out, name, spp, refspp, region = sys.argv[2:7]
 def pfm(path):
-    # PFM rows run bottom to top; the region counts from the top.
-    with open(path, 'rb') as f:
-        assert f.readline().strip() == b'PF'
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        fmt = '<' if scale < 0 else '>'
-        values = struct.unpack(fmt + 'f' * (3 * w * h), f.read(12 * w * h))
-    picked = []
-    for row in range(h):
-        top = h - 1 - row
-        if not (y0 * h <= top < y1 * h):
-            continue
-        for x in range(int(x0 * w), int(x1 * w)):
-            picked.extend(values[3 * (row * w + x):3 * (row * w + x) + 3])
-    return picked
-def rmse(a, b):
-    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / len(a))
+    return read_region(path, *map(float, region.split(',')))
 ref = pfm(f'{out}/{name}-ref.pfm')
 label = name if region == '0,0,1,1' else f'{name}@{region}'
 e = {b: sorted(rmse(pfm(f'{out}/{name}-{b}-{s}.pfm'), ref) for s in (1, 2, 3))

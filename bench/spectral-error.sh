@@ -35,20 +35,13 @@ for lens in flint-landscape-50mm.dat dgauss-50mm.dat cooke-triplet-100mm.dat; do
     render "ref-$mode" "$lens" "$mode" "$refspp" 7
     render "test-$mode" "$lens" "$mode" "$spp" 1
   done
-  python3 - "$out" "$lens" "$spp" "$refspp" <<'PY'
-import math, struct, sys
-out, lens, spp, refspp = sys.argv[1:5]
-def pfm(path):
-    with open(path, 'rb') as f:
-        assert f.readline().strip() == b'PF'
-        w, h = map(int, f.readline().split())
-        scale = float(f.readline())
-        fmt = '<' if scale < 0 else '>'
-        values = struct.unpack(fmt + 'f' * (3 * w * h), f.read(12 * w * h))
-    # PFM rows run bottom to top: the bottom 70% of the picture is the file's first rows.
-    return values[:3 * w * int(0.7 * h)]
-def rmse(a, b):
-    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / len(a))
+  python3 - "$here/bench" "$out" "$lens" "$spp" "$refspp" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from pfm_region import read_region, rmse
+out, lens, spp, refspp = sys.argv[2:6]
+def pfm(path):  # below the lamps: rows 30-100% from the top
+    return read_region(path, 0.0, 0.3, 1.0, 1.0)
 e = {m: rmse(pfm(f'{out}/test-{m}.pfm'), pfm(f'{out}/ref-{m}.pfm')) for m in ('off', 'on')}
 print(f'{lens:28s} {spp} spp vs {refspp} spp: RMSE rgb {e["off"]:.5f}  spectral {e["on"]:.5f}'
       f'  ratio {e["on"] / e["off"]:.3f}')
