@@ -200,7 +200,9 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
     sessionLensToFocus_ = SessionLens{opening, loaded.system};
   }
   const CommandTicket ticket = state_.lens.issue(std::move(opening));
-  if (!startsSession && !sceneLoadOutcome_) lensOpenedWhileSceneLoads_ = true;
+  if (!startsSession && !sceneLoadOutcome_) {
+    lensOpenedWhileSceneLoads_ = {ticket, loaded.system, keepFilmDistance};
+  }
   state_.log.info("Opened lens " + path);
   // What the lens file could not honour (an aperture image: the stop stays a circle).
   for (const Diagnostic& diagnostic : loaded.diagnostics.all())
@@ -228,7 +230,20 @@ void Viewer::startLoadingScene(const std::string& path, SceneOrigin origin) {
   sceneOrigin_ = origin;
   state_.loadingScenePath = path;
   sceneLoadOutcome_.reset();
-  lensOpenedWhileSceneLoads_ = false;
+  lensOpenedWhileSceneLoads_.reset();
+}
+
+void Viewer::focusLensOpenedWhileSceneLoaded(const LensOpenedWhileSceneLoads& opened) {
+  if (opened.keepFilmDistance || state_.settings.keepLensFilmDistance) return;  // (said at opening)
+  if (state_.lens.lastIssued() != opened.opening) {
+    state_.log.info(
+        "The lens was edited while the scene loaded: it is not focused again at the scene's "
+        "focus distance");
+    return;
+  }
+  const OpeningFocus focus = focusForOpening(*opened.system, state_.sceneFocus, false);
+  if (!focus.message.empty()) state_.log.info(focus.message);
+  if (focus.filmDistanceMm) state_.lens.issue(SetFilmDistance{*focus.filmDistanceMm});
 }
 
 void Viewer::finishSceneLoad() {
@@ -287,9 +302,12 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
   // A scene with a realistic camera brings its lens, stop and focus, unless the user chose a
   // lens on the command line or opened one while the scene loaded. The lens is built the way
   // `lenslab render` builds it (lensOfScene).
-  if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad &&
-      std::exchange(lensOpenedWhileSceneLoads_, false)) {
-    state_.log.info("Kept the lens opened while the scene loaded, not the scene's");
+  const std::optional<LensOpenedWhileSceneLoads> openedWhileLoading =
+      std::exchange(lensOpenedWhileSceneLoads_, std::nullopt);
+  if (openedWhileLoading) {
+    if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad)
+      state_.log.info("Kept the lens opened while the scene loaded, not the scene's");
+    focusLensOpenedWhileSceneLoaded(*openedWhileLoading);
   } else if (loaded.description->camera.type == "realistic" && !keepLensOnSceneLoad) {
     Diagnostics diagnostics;
     if (const auto sceneLens = render::lensOfScene(*loaded.description, diagnostics)) {

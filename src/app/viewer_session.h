@@ -202,9 +202,16 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> sceneLoadOutcome_ = "";  // nullopt while a scene loads
   // A lens opened while a scene loads is the user's later choice: the scene, once loaded, keeps
   // it instead of bringing its own (a script's load-lens right after start-up lost that race to
-  // the default scene now and then). The kept lens stays as it was opened: it is not focused
-  // again at the new scene's focus distance.
-  bool lensOpenedWhileSceneLoads_ = false;
+  // the default scene now and then). It opened focused for the scene before (or at its file's
+  // film distance, with no scene yet), so it is focused again at the new scene's focus distance,
+  // as one more undo step, unless anything was issued to the lens after it opened.
+  struct LensOpenedWhileSceneLoads {
+    CommandTicket opening;                             // the ReplaceLens that opened it
+    std::shared_ptr<const optics::LensSystem> system;  // as built from its file
+    bool keepFilmDistance;                             // opened with keep-film-distance
+  };
+  std::optional<LensOpenedWhileSceneLoads> lensOpenedWhileSceneLoads_;
+  void focusLensOpenedWhileSceneLoaded(const LensOpenedWhileSceneLoads& opened);
 
  public:
   // With a lens given on the command line, opening a scene keeps it instead of the scene's.

@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "optics/focus.h"
+#include "optics/lens_loader.h"
+#include "optics/lens_system.h"
 #include "render/image_io.h"
 
 #include "support/png_image.h"
@@ -573,8 +576,9 @@ TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
 
 // A lens opened while a scene loads is the later choice: the scene, once loaded, keeps it rather
 // than bringing its own (a script's load-lens right after start-up used to lose that race to the
-// default scene now and then).
-TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKept) {
+// default scene now and then), and focuses it at the scene's focus distance, as opening it over
+// the loaded scene would have.
+TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKeptAndFocusedForTheScene) {
   writeTerrainPly();
   const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
   std::ofstream(scratch / "terrain-lens.pbrt")
@@ -585,7 +589,8 @@ TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKept) {
          "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
   const auto result = runScript("load-lens " + lenses +
                                     "dgauss-100mm.dat\ndump-ui opened.json\n"
-                                    "wait-scene-load\ndump-ui loaded.json\nquit\n",
+                                    "wait-scene-load\nwait-frames 1\ndump-ui loaded.json\n"
+                                    "undo\nwait-frames 1\ndump-ui undone.json\nquit\n",
                                 "", "--scene terrain-lens.pbrt");
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const auto opened = json("opened.json");
@@ -602,6 +607,45 @@ TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKept) {
                        "loaded") != std::string::npos;
   }
   EXPECT_TRUE(said) << loaded["state"]["log"];
+  // Focused at the scene's "focusdistance" [3] (metres from the film), by the optics library's
+  // real-ray focus of the lens file at the film distance the viewer reports.
+  const optics::LoadedLens file = optics::loadLens(lenses + "dgauss-100mm.dat");
+  ASSERT_TRUE(file.ok());
+  const double filmMm = loaded["state"]["film_distance_mm"].get<double>();
+  const optics::FocusResult object =
+      optics::objectDistanceForFilmDistance(*file.system->withFilmDistance(filmMm), filmMm);
+  ASSERT_TRUE(object.ok()) << object.whyNot;
+  EXPECT_NEAR(*object.valueMm, 3000.0, 3.0);
+  // Focusing is an undo step of its own: undone, the lens is as it opened, at its file's film
+  // distance (there was no scene to focus for yet).
+  const auto undone = json("undone.json");
+  EXPECT_NE(undone["state"]["lens_path"].get<std::string>().find("dgauss-100mm.dat"),
+            std::string::npos);
+  EXPECT_DOUBLE_EQ(undone["state"]["film_distance_mm"].get<double>(),
+                   file.system->filmDistanceMm());
+}
+
+// ... but an edit made after opening it, while the scene still loads, is the user's: the film
+// distance set then stays.
+TEST_F(ScriptedViewer, ALensEditedWhileTheSceneLoadsKeepsItsEdit) {
+  writeTerrainPly();
+  const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
+  std::ofstream(scratch / "terrain-lens.pbrt")
+      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"realistic\" \"string lensfile\" \"" << lenses
+      << "dgauss-50mm.dat\" \"float focusdistance\" [3]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  const auto result = runScript("load-lens " + lenses +
+                                    "dgauss-100mm.dat\nset film-distance 97.5\n"
+                                    "dump-ui opened.json\nwait-scene-load\nwait-frames 1\n"
+                                    "dump-ui loaded.json\nquit\n",
+                                "", "--scene terrain-lens.pbrt");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  ASSERT_EQ(json("opened.json")["state"]["scene_loading"], "terrain-lens.pbrt")
+      << "the scene loaded before the lens opened: the test did not race";
+  const auto loaded = json("loaded.json");
+  EXPECT_EQ(loaded["state"]["scene_path"], "terrain-lens.pbrt");
+  EXPECT_DOUBLE_EQ(loaded["state"]["film_distance_mm"].get<double>(), 97.5);
 }
 
 TEST_F(ScriptedViewer, ScriptEditsAreLogged) {

@@ -57,6 +57,9 @@ class LensEditor {
   CommandTicket issue(EditCommand command, std::string mergeKey = {},
                       CommandSource source = CommandSource::User);
   bool hasQueued() const { return !queue_.empty(); }
+  // The ticket of the last command issued (0 before any): a caller that holds an earlier ticket
+  // learns that something was issued after it.
+  CommandTicket lastIssued() const { return nextTicket_ - 1; }
   // A drag was released: the next command starts a new undo step, even with the same merge key.
   // Takes effect in order, after the commands already queued.
   void endMerge();
