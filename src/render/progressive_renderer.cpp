@@ -136,6 +136,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   thread_local std::vector<glm::vec2> rasterPoints, lensSamples;
   thread_local std::vector<CameraRay> rays;
   thread_local std::vector<std::uint8_t> passed;
+  thread_local std::vector<std::uint32_t> passing;  // the indices of the rays that left the lens
   thread_local std::vector<PixelSeeds> seeds;
   // A spectral camera's wavelengths, perSample of them per sample (render/spectral_film.h and
   // Camera's SampleWavelengths).
@@ -182,16 +183,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   // shifted by t R2 steps (see the batch loop).
   auto spreadLensPoints = [&](std::size_t n, std::size_t k, bool colour) {
     constexpr float kR2X = 0.7548776662f, kR2Y = 0.5698402910f;  // 1/g, 1/g^2; g^3 = g + 1
-    rasterPoints.resize(n * points);
-    lensSamples.resize(n * points);
-    rays.resize(n * points);
-    passed.resize(n * points);
-    if (colour) {
-      spectralSamples.resize(n * points * k);
-      wavelengths.resize(n * points * k);
-      wavelengthWeights.resize(n * points * k);
-      wavelengthPixels.resize(n * points * k);
-    }
+    // (The arrays already hold n * points samples: see the batch loop.)
     for (std::size_t i = n; i-- > 0;) {  // from the last, so that no sample is overwritten unread
       for (std::size_t t = points; t-- > 0;) {
         const std::size_t r = i * points + t;
@@ -214,10 +206,12 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     const int pixels = std::min(pixelsPerBatch, visibleCount - first);
     const std::size_t n = static_cast<std::size_t>(pixels) * samplesPerPixel;
     samplers.clear();
-    rasterPoints.resize(n);
-    lensSamples.resize(n);
-    rays.resize(n);
-    passed.resize(n);
+    // Room for every lens point at once: sized up and down between batches, the arrays would
+    // fill what they grow by with zeros each time.
+    rasterPoints.resize(n * points);
+    lensSamples.resize(n * points);
+    rays.resize(n * points);
+    passed.resize(n * points);
     seeds.clear();
     for (int p = 0; p < pixels; ++p) {
       const int x = visible[first + p].x, y = visible[first + p].y;
@@ -253,10 +247,10 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       // over the spectrum, all of the pixel's samples' wavelengths stratified together
       // (heroWavelengthSample01 in sampler.h).
       const SpectralFilm& film = SpectralFilm::instance();
-      spectralSamples.resize(n * perSample);
-      wavelengths.resize(n * perSample);
-      wavelengthWeights.resize(n * perSample);
-      wavelengthPixels.resize(n * perSample);
+      spectralSamples.resize(n * points * perSample);
+      wavelengths.resize(n * points * perSample);
+      wavelengthWeights.resize(n * points * perSample);
+      wavelengthPixels.resize(n * points * perSample);
       const std::size_t drawnNow = drawAfterRays ? 0 : perSample;
       heroUs.resize(n);
       for (int p = 0; p < pixels; ++p) {
@@ -281,9 +275,10 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     if (spectral && !drawAfterRays) {  // (the pixels: only the dispersive weights need them)
       rayPixels.resize(m);
       const std::size_t raysPerPixel = static_cast<std::size_t>(samplesPerPixel) * points;
-      for (std::size_t r = 0; r < m; ++r) {
-        const auto& pixel = visible[first + static_cast<int>(r / raysPerPixel)];
-        rayPixels[r] = static_cast<std::int32_t>(pixel.y * width + pixel.x);
+      for (int p = 0; p < pixels; ++p) {
+        const auto& pixel = visible[first + p];
+        std::fill_n(rayPixels.begin() + static_cast<std::ptrdiff_t>(p * raysPerPixel), raysPerPixel,
+                    static_cast<std::int32_t>(pixel.y * width + pixel.x));
       }
     }
     if (spectral) {
@@ -294,26 +289,40 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
     statistics.cameraSamples += m;
+    // The rays that left the lens, in order, listed without a branch: the pixels' loops below run
+    // over them alone (testing each ray instead mispredicts often where few pass: a shaped stop,
+    // the course scenes' rear-disk sampling).
+    passing.resize(m);
+    std::size_t passCount = 0;
+    {
+      std::uint32_t* __restrict list = passing.data();
+      const std::uint8_t* __restrict left = passed.data();
+      for (std::size_t r = 0; r < m; ++r) {
+        list[passCount] = static_cast<std::uint32_t>(r);
+        passCount += left[r] != 0 ? 1 : 0;
+      }
+    }
+    statistics.lensPassed += passCount;
     if (drawAfterRays) {
       const SpectralFilm& film = SpectralFilm::instance();
-      for (std::size_t r = 0; r < m; ++r) {
-        if (!passed[r]) continue;
+      for (std::size_t q = 0; q < passCount; ++q) {
+        const std::size_t r = passing[q];
         for (std::size_t j = 0; j < perSample; ++j) {
           spectralSamples[r * perSample + j] = film.sample(wavelengthU(heroUs[r / points], j));
           wavelengths[r * perSample + j] = spectralSamples[r * perSample + j].wavelengthNm;
         }
       }
     }
+    std::size_t next = 0;  // the next passing ray in `passing`
     for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
       const auto ownPixel =
           static_cast<std::int32_t>(visible[first + p].y * width + visible[first + p].x);
-      for (std::size_t r = p * samplesPerPixel * points; r < (p + 1) * samplesPerPixel * points;
-           ++r) {
+      const std::size_t pixelEnd = (p + 1) * samplesPerPixel * points;
+      for (; next < passCount && passing[next] < pixelEnd; ++next) {
+        const std::size_t r = passing[next];
         // Look for a newer job every few samples too, not only between batches.
-        if ((r & 63u) == 63u && cancelled()) return false;
-        if (!passed[r]) continue;
-        ++statistics.lensPassed;
+        if ((next & 63u) == 63u && cancelled()) return false;
         const CameraRay& ray = rays[r];
         const glm::vec3 incoming = incomingRadiance(*job.scene, ray.origin, ray.direction,
                                                     samplers[r / points], wave.integrator);

@@ -287,16 +287,30 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
     lens_->traceFromFilmBatch(batch, heroNm.data());
   else
     lens_->traceFromFilmBatch(batch);
-  for (std::size_t i = 0; i < count; ++i) {
-    rays[i].weight = weights[i];
-    passed[i] = batch.alive[i];
-    if (!passed[i]) continue;
+  // The rays that left the lens, listed without a branch: the loops after this run over them
+  // alone, rather than test every ray, a branch that a low pass rate (a shaped stop, the course
+  // scenes' rear-disk sampling) mispredicts often.
+  thread_local std::vector<std::uint32_t> passing;
+  passing.resize(count);
+  std::size_t passCount = 0;
+  {
+    std::uint32_t* __restrict list = passing.data();
+    const std::uint8_t* __restrict left = batch.alive.data();  // (after the trace)
+    for (std::size_t i = 0; i < count; ++i) {
+      rays[i].weight = weights[i];
+      passed[i] = left[i];
+      list[passCount] = static_cast<std::uint32_t>(i);
+      passCount += left[i] != 0 ? 1 : 0;
+    }
+  }
+  for (std::size_t p = 0; p < passCount; ++p) {
+    const std::size_t i = passing[p];
     finishRay({batch.ox[i], batch.oy[i], batch.oz[i]}, {batch.dx[i], batch.dy[i], batch.dz[i]},
               rays[i]);
   }
   if (weighWavelengths)
-    heroWavelengthWeights(count, rasterPoints, batch, heroDensity.data(), heroCos4.data(),
-                          *wavelengths);
+    heroWavelengthWeights(count, passing.data(), passCount, rasterPoints, batch, heroDensity.data(),
+                          heroCos4.data(), *wavelengths);
   else if (spectral)
     shareWeightEvenly(count, rays, passed, *wavelengths);
 }
@@ -337,7 +351,8 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
 // the flint singlet), 1/2 gave the least error, 3.5-6% below 1; 0.3 was within the seeds'
 // spread of it. The cost is K - 1 traces back through the lens per sample, vectorised as the
 // forward trace.
-void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
+void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32_t* passingRays,
+                                            std::size_t passCount, const glm::vec2* rasterPoints,
                                             const optics::LensRayBatch& exit,
                                             const float* heroDensity, const float* heroCos4,
                                             const SampleWavelengths& wavelengths) const {
@@ -346,16 +361,10 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   const std::size_t others = k - 1;
   thread_local optics::LensRayBatch back;
   thread_local std::vector<float> backNm;
-  thread_local std::vector<std::uint32_t> backOf;  // back rays of sample i start at backOf[i]
-  // Each passing hero ray (only those: the rear-disk sampling of the course scenes blocks many),
-  // from 1 mm out along it (clear of the front surface it left; the batch trace takes the
-  // nearest hit ahead), back into the lens at each other wavelength.
-  backOf.resize(count);
-  std::size_t backCount = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    backOf[i] = static_cast<std::uint32_t>(backCount);
-    if (exit.alive[i]) backCount += others;
-  }
+  // Each passing hero ray, from 1 mm out along it (clear of the front surface it left; the batch
+  // trace takes the nearest hit ahead), back into the lens at each other wavelength: the p-th
+  // passing ray's back rays are p * others + j.
+  const std::size_t backCount = passCount * others;
   back.resize(backCount);
   backNm.resize(backCount);
   constexpr float kBackOffMm = 1.0f;
@@ -364,13 +373,12 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   float *dxs = back.dx.data(), *dys = back.dy.data(), *dzs = back.dz.data();
   std::uint8_t* backAlive = back.alive.data();
   float* nm = backNm.data();
-  const std::uint32_t* firstBack = backOf.data();
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!exit.alive[i]) continue;
+  for (std::size_t p = 0; p < passCount; ++p) {
+    const std::size_t i = passingRays[p];
     const float x = exit.ox[i], y = exit.oy[i], z = exit.oz[i];
     const float dx = exit.dx[i], dy = exit.dy[i], dz = exit.dz[i];
     const float* otherNm = wavelengths.nm + i * k + 1;
-    for (std::size_t j = 0, b = firstBack[i]; j < others; ++j, ++b) {
+    for (std::size_t j = 0, b = p * others; j < others; ++j, ++b) {
       ox[b] = x + kBackOffMm * dx;
       oy[b] = y + kBackOffMm * dy;
       oz[b] = z + kBackOffMm * dz;
@@ -432,17 +440,16 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const glm::vec2* 
   // own film ray.
   constexpr float kOtherPixelShare = 0.5f;
   float* weights = wavelengths.weights;
-  for (std::size_t i = 0; i < count; ++i) {
+  // A blocked ray's wavelengths weigh nothing and land nowhere.
+  std::fill(weights, weights + count * k, 0.0f);
+  std::fill(wavelengths.pixels, wavelengths.pixels + count * k, -1);
+  for (std::size_t p = 0; p < passCount; ++p) {
+    const std::size_t i = passingRays[p];
     float* out = weights + i * k;
     std::int32_t* pixelOut = wavelengths.pixels + i * k;
-    if (!exit.alive[i]) {
-      std::fill(out, out + k, 0.0f);
-      std::fill(pixelOut, pixelOut + k, -1);
-      continue;
-    }
     // Strategy m's density and film pixel: the hero's (m = 0) from its own film point, the
     // others' from their back traces (-1, density 0: that strategy cannot make this ray).
-    const std::size_t first = backOf[i];
+    const std::size_t first = p * others;
     std::array<float, SampleWavelengths::kMaxPerSample> density;
     std::array<std::int32_t, SampleWavelengths::kMaxPerSample> pixel;
     density[0] = heroDensity[i];

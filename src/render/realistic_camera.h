@@ -69,10 +69,12 @@ class RealisticCamera final : public Camera {
   double rearDiskPdfPerMm2() const;
   void finishRay(glm::vec3 exitOriginMm, glm::vec3 exitDirection, CameraRay& ray) const;
   // The exposure weight of each wavelength of each sample, for a lens that disperses: `exit` is
-  // the batch of rays leaving the lens at the hero wavelengths, heroDensity[i] the density of
-  // ray i in the film-side ray space (see the .cpp), heroCos4[i] its cos^4(theta); ray i's pixel
-  // is wavelengths.samplePixels[i], or where there are none the one rasterPoints[i] lies in.
-  void heroWavelengthWeights(std::size_t count, const glm::vec2* rasterPoints,
+  // the batch of rays leaving the lens at the hero wavelengths (passingRays[0 .. passCount) the
+  // indices of those that left it, in order), heroDensity[i] the density of ray i in the
+  // film-side ray space (see the .cpp), heroCos4[i] its cos^4(theta); ray i's pixel is
+  // wavelengths.samplePixels[i], or where there are none the one rasterPoints[i] lies in.
+  void heroWavelengthWeights(std::size_t count, const std::uint32_t* passingRays,
+                             std::size_t passCount, const glm::vec2* rasterPoints,
                              const optics::LensRayBatch& exit, const float* heroDensity,
                              const float* heroCos4, const SampleWavelengths& wavelengths) const;
 
