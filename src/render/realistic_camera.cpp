@@ -466,8 +466,9 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
       onePixel &= pixel[1 + j] == pixel[0] || pixel[1 + j] < 0;
     }
     if (onePixel && cos4Weighting_) {  // the common case: the plain balance heuristic
+      const float balance = 1.0f / densitySum;
       for (std::size_t j = 0; j < k; ++j) {
-        out[j] = pixel[j] < 0 ? 0.0f : 1.0f / densitySum;
+        out[j] = pixel[j] < 0 ? 0.0f : balance;
         pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
       }
       continue;
