@@ -109,7 +109,12 @@ double cylinderProjectedSolidAngle(const Lamp& lamp) {
 
 std::string sceneText(const LampScene& s) {
   auto number = [](double v) { return std::to_string(v); };
-  auto rgb = [&](double v) { return "[" + number(v) + " " + number(v) + " " + number(v) + "]"; };
+  auto rgb = [&](double v) {
+    // (Appended rather than "[" + ...: GCC 12 warns falsely of an overlapping copy there.)
+    std::string text = "[";
+    for (int channel = 0; channel < 3; ++channel) text += number(v) + (channel < 2 ? " " : "]");
+    return text;
+  };
   std::string text =
       "LookAt 0 3 3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [10]\n"
       "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
