@@ -199,9 +199,11 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
   if (startsSession && keepLensOnSceneLoad && !keepFilmDistance) {
     sessionLensToFocus_ = SessionLens{opening, loaded.system};
   }
+  const double openedFilmDistanceMm = opening.prescription.surfaces.back().thicknessMm;
   const CommandTicket ticket = state_.lens.issue(std::move(opening));
   if (!startsSession && !sceneLoadOutcome_) {
-    lensOpenedWhileSceneLoads_ = {ticket, loaded.system, keepFilmDistance};
+    lensOpenedWhileSceneLoads_ = {ticket, loaded.system, openedFilmDistanceMm,
+                                  keepFilmDistance || state_.settings.keepLensFilmDistance};
   }
   state_.log.info("Opened lens " + path);
   // What the lens file could not honour (an aperture image: the stop stays a circle).
@@ -213,9 +215,12 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
 
 void Viewer::focusSessionLens() {
   std::optional<SessionLens> session = std::exchange(sessionLensToFocus_, std::nullopt);
-  // Edited meanwhile: the user's edits stay. Kept at the file's film distance: the opening
-  // already said so.
-  if (!session || state_.lens.canUndo() || state_.settings.keepLensFilmDistance) return;
+  // Edited meanwhile: the user's edits stay. Another lens opened meanwhile (perhaps still
+  // queued, so not yet undoable): that later choice stays. Kept at the file's film distance:
+  // the opening already said so.
+  if (!session || state_.lens.canUndo() || lensOpenedWhileSceneLoads_ ||
+      state_.settings.keepLensFilmDistance)
+    return;
   const OpeningFocus focus =
       focusForOpening(*session->system, state_.sceneFocus, state_.settings.keepLensFilmDistance);
   if (focus.message.empty()) return;
@@ -234,16 +239,20 @@ void Viewer::startLoadingScene(const std::string& path, SceneOrigin origin) {
 }
 
 void Viewer::focusLensOpenedWhileSceneLoaded(const LensOpenedWhileSceneLoads& opened) {
-  if (opened.keepFilmDistance || state_.settings.keepLensFilmDistance) return;  // (said at opening)
+  if (opened.keepFilmDistance) return;  // at the file's film distance, as the opening said
   if (state_.lens.lastIssued() != opened.opening) {
     state_.log.info(
         "The lens was edited while the scene loaded: it is not focused again at the scene's "
         "focus distance");
     return;
   }
+  // As if it had been opened over the loaded scene: focused at its focus distance, or at the
+  // file's film distance where the scene gives none or the lens cannot focus there (the message
+  // says which).
   const OpeningFocus focus = focusForOpening(*opened.system, state_.sceneFocus, false);
   if (!focus.message.empty()) state_.log.info(focus.message);
-  if (focus.filmDistanceMm) state_.lens.issue(SetFilmDistance{*focus.filmDistanceMm});
+  const double filmMm = focus.filmDistanceMm.value_or(opened.system->filmDistanceMm());
+  if (filmMm != opened.filmDistanceMm) state_.lens.issue(SetFilmDistance{filmMm});
 }
 
 void Viewer::finishSceneLoad() {

@@ -203,12 +203,14 @@ class Viewer final : public ScriptHost {
   // A lens opened while a scene loads is the user's later choice: the scene, once loaded, keeps
   // it instead of bringing its own (a script's load-lens right after start-up lost that race to
   // the default scene now and then). It opened focused for the scene before (or at its file's
-  // film distance, with no scene yet), so it is focused again at the new scene's focus distance,
-  // as one more undo step, unless anything was issued to the lens after it opened.
+  // film distance, with no scene yet), so once the new scene is there its film goes where
+  // opening it over that scene would have put it, as one more undo step, unless anything was
+  // issued to the lens after it opened.
   struct LensOpenedWhileSceneLoads {
     CommandTicket opening;                             // the ReplaceLens that opened it
     std::shared_ptr<const optics::LensSystem> system;  // as built from its file
-    bool keepFilmDistance;                             // opened with keep-film-distance
+    double filmDistanceMm;                             // the film distance it opened with
+    bool keepFilmDistance;  // opened at the file's film distance (the option or the setting)
   };
   std::optional<LensOpenedWhileSceneLoads> lensOpenedWhileSceneLoads_;
   void focusLensOpenedWhileSceneLoaded(const LensOpenedWhileSceneLoads& opened);

@@ -206,8 +206,8 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     const int pixels = std::min(pixelsPerBatch, visibleCount - first);
     const std::size_t n = static_cast<std::size_t>(pixels) * samplesPerPixel;
     samplers.clear();
-    // Room for every lens point at once: sized up and down between batches, the arrays would
-    // fill what they grow by with zeros each time.
+    // Room for every lens point at once: sized to the samples first and then to their lens
+    // points, the arrays would fill what they grew by with zeros in every batch.
     rasterPoints.resize(n * points);
     lensSamples.resize(n * points);
     rays.resize(n * points);

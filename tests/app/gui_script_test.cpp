@@ -625,6 +625,48 @@ TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKeptAndFocusedForTheScene)
                    file.system->filmDistanceMm());
 }
 
+// A scene that sets a film distance rather than a focus distance (the course's camera): a lens
+// opened over it keeps its file's film distance, so one opened while it loads goes there too,
+// not where it was focused for the scene before.
+TEST_F(ScriptedViewer, ALensOpenedWhileACourseSceneLoadsGoesToItsFilesFilmDistance) {
+  writeTerrainPly();
+  const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
+  std::ofstream(scratch / "terrain-course.pbrt")
+      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"realistic\" \"string specfile\" \"" << lenses
+      << "dgauss-50mm.dat\" \"float filmdistance\" 36.77 \"float aperture_diameter\" 17.1 "
+         "\"float filmdiag\" 43\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  // The course scene dropped on the window over the default scene (whose chart, 3.6 m away, is
+  // in focus), and the lens opened while it loads.
+  const auto result =
+      runScript("wait-scene-load\ndrop terrain-course.pbrt\nwait-frames 1\nload-lens " + lenses +
+                    "dgauss-100mm.dat\ndump-ui opened.json\nwait-scene-load\nwait-frames 1\n"
+                    "dump-ui loaded.json\nquit\n",
+                "", "");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto opened = json("opened.json");
+  ASSERT_EQ(opened["state"]["scene_loading"], "terrain-course.pbrt")
+      << "the scene loaded before the lens opened: the test did not race";
+  const optics::LoadedLens file = optics::loadLens(lenses + "dgauss-100mm.dat");
+  ASSERT_TRUE(file.ok());
+  // While the course scene loads, the lens opened focused for the default scene ...
+  EXPECT_GT(opened["state"]["film_distance_mm"].get<double>(), file.system->filmDistanceMm() + 1.0);
+  // ... and once it has loaded, it is at its file's film distance, and the log says why.
+  const auto loaded = json("loaded.json");
+  EXPECT_EQ(loaded["state"]["scene_path"], "terrain-course.pbrt");
+  EXPECT_NE(loaded["state"]["lens_path"].get<std::string>().find("dgauss-100mm.dat"),
+            std::string::npos);
+  EXPECT_DOUBLE_EQ(loaded["state"]["film_distance_mm"].get<double>(),
+                   file.system->filmDistanceMm());
+  bool said = false;
+  for (const auto& entry : loaded["state"]["log"]) {
+    said = said || entry["text"].get<std::string>().find(
+                       "the scene sets a film distance, not a focus distance") != std::string::npos;
+  }
+  EXPECT_TRUE(said) << loaded["state"]["log"];
+}
+
 // ... but an edit made after opening it, while the scene still loads, is the user's: the film
 // distance set then stays.
 TEST_F(ScriptedViewer, ALensEditedWhileTheSceneLoadsKeepsItsEdit) {
