@@ -38,6 +38,11 @@ struct SampleWavelengths {
   std::int32_t* pixels = nullptr;
   // Per ray (not per wavelength): the pixel the renderer took it for, y * width + x.
   const std::int32_t* samplePixels = nullptr;
+  // Where in its pixel each wavelength landed, x and y in [0, 1) at landing[2 * (i * perSample
+  // + j)] and the next: written by a camera that sends wavelengths to other pixels than the
+  // sample's (a lens that disperses: for the wavelengths after the hero), for the renderer to
+  // share them across the pixel edges near where they land (render/landing_filter.h).
+  float* landing = nullptr;
 };
 
 class Camera {

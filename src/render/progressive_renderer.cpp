@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "render/landing_filter.h"
 #include "render/sampler_batch.h"
 #include "render/spectral_film.h"
 #include "render/thread_priority.h"
@@ -158,6 +159,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
                               static_cast<std::uint32_t>(perSample));
   };
   thread_local std::vector<std::int32_t> wavelengthPixels, rayPixels;
+  thread_local std::vector<float> landing;  // where in its pixel each wavelength landed
   thread_local std::vector<Splat> pendingSplats;
   constexpr std::size_t kSplatBatch = 4096;
   struct FlushAtExit {  // also when cancelled
@@ -251,6 +253,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       wavelengths.resize(n * points * perSample);
       wavelengthWeights.resize(n * points * perSample);
       wavelengthPixels.resize(n * points * perSample);
+      landing.resize(2 * n * points * perSample);
       const std::size_t drawnNow = drawAfterRays ? 0 : perSample;
       heroUs.resize(n);
       for (int p = 0; p < pixels; ++p) {
@@ -282,9 +285,12 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       }
     }
     if (spectral) {
-      sampleWavelengths = {static_cast<int>(perSample), wavelengths.data(),
-                           wavelengthWeights.data(), wavelengthPixels.data(),
-                           drawAfterRays ? nullptr : rayPixels.data()};
+      sampleWavelengths = {static_cast<int>(perSample),
+                           wavelengths.data(),
+                           wavelengthWeights.data(),
+                           wavelengthPixels.data(),
+                           drawAfterRays ? nullptr : rayPixels.data(),
+                           landing.data()};
     }
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
@@ -316,8 +322,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     std::size_t next = 0;  // the next passing ray in `passing`
     for (int p = 0; p < pixels; ++p) {
       glm::vec3 sum(0.0f);
-      const auto ownPixel =
-          static_cast<std::int32_t>(visible[first + p].y * width + visible[first + p].x);
+      const int ownX = visible[first + p].x, ownY = visible[first + p].y;
       const std::size_t pixelEnd = (p + 1) * samplesPerPixel * points;
       for (; next < passCount && passing[next] < pixelEnd; ++next) {
         const std::size_t r = passing[next];
@@ -344,20 +349,37 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
               dropped = true;  // (a weight the camera could not give: not expected)
               continue;
             }
-            const std::int32_t target = wavelengthPixels[j] == SampleWavelengths::kSamplePixel
-                                            ? ownPixel
-                                            : wavelengthPixels[j];
-            if (target == ownPixel) {
+            if (wavelengthPixels[j] == SampleWavelengths::kSamplePixel) {
               radiance += colour;
-            } else if (const int tx = target % width, ty = target / width;
-                       tx >= tile.x0 && tx < tile.x1 && ty >= tile.y0 && ty < tile.y1) {
-              // In this tile: its pixels are this thread's alone during the wave.
-              double* pixel = &sums[3 * static_cast<std::size_t>(target)];
-              pixel[0] += colour.x;
-              pixel[1] += colour.y;
-              pixel[2] += colour.z;
-            } else {
-              pendingSplats.push_back({target, colour});
+              continue;
+            }
+            // A wavelength the lens landed elsewhere: shared with the neighbours across the
+            // pixel edges near it (render/landing_filter.h).
+            const std::int32_t target = wavelengthPixels[j];
+            const int landedY = target / width, landedX = target - landedY * width;
+            const LandingShare alongX = landingShare(landing[2 * j], landedX, width);
+            const LandingShare alongY = landingShare(landing[2 * j + 1], landedY, wave.height);
+            auto deposit = [&](int tx, int ty, glm::vec3 part) {
+              if (tx == ownX && ty == ownY) {
+                radiance += part;
+              } else if (tx >= tile.x0 && tx < tile.x1 && ty >= tile.y0 && ty < tile.y1) {
+                // In this tile: its pixels are this thread's alone during the wave.
+                double* pixel = &sums[3 * (static_cast<std::size_t>(ty) * width + tx)];
+                pixel[0] += part.x;
+                pixel[1] += part.y;
+                pixel[2] += part.z;
+              } else {
+                pendingSplats.push_back({ty * width + tx, part});
+              }
+            };
+            const glm::vec3 keptY = (1.0f - alongY.share) * colour;
+            deposit(landedX, landedY, (1.0f - alongX.share) * keptY);
+            if (alongX.share > 0.0f) deposit(landedX + alongX.step, landedY, alongX.share * keptY);
+            if (alongY.share > 0.0f) {
+              const glm::vec3 movedY = alongY.share * colour;
+              deposit(landedX, landedY + alongY.step, (1.0f - alongX.share) * movedY);
+              if (alongX.share > 0.0f)
+                deposit(landedX + alongX.step, landedY + alongY.step, alongX.share * movedY);
             }
           }
           if (pendingSplats.size() >= kSplatBatch) splats.add(pendingSplats);

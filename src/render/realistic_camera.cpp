@@ -46,7 +46,8 @@ void landBackRays(const BackRayLanding& l, std::size_t n, const float* __restric
                   const float* __restrict dzs, const std::uint8_t* __restrict alive,
                   float* __restrict densityOut, float* __restrict cos4Out,
                   float* __restrict planeOut, float* __restrict filmYOut,
-                  std::int32_t* __restrict columnOut, std::int32_t* __restrict rowOut) {
+                  std::int32_t* __restrict columnOut, std::int32_t* __restrict rowOut,
+                  float* __restrict fracXOut, float* __restrict fracYOut) {
   const bool exitPupil = l.exitPupil;
   const float planeZ = l.planeZ, planeZSquared = l.planeZ * l.planeZ;
   const float diskRadiusSq = l.diskRadiusSq, diskPdf = l.diskPdf;
@@ -67,7 +68,10 @@ void landBackRays(const BackRayLanding& l, std::size_t n, const float* __restric
     // (The caller makes the pixel index: SSE2 has no 32-bit multiply to vectorize it with.)
     const auto column = static_cast<std::int32_t>(onFilm ? rasterX : 0.0f);
     columnOut[b] = onFilm ? column : -1;
-    rowOut[b] = static_cast<std::int32_t>(onFilm ? rasterY : 0.0f);
+    const auto row = static_cast<std::int32_t>(onFilm ? rasterY : 0.0f);
+    rowOut[b] = row;
+    fracXOut[b] = onFilm ? rasterX - static_cast<float>(column) : 0.5f;
+    fracYOut[b] = onFilm ? rasterY - static_cast<float>(row) : 0.5f;
     // Directions stay unit length through the trace: -dz is the cosine to the axis.
     const float cos2 = dz * dz;
     cos4Out[b] = cos2 * cos2;
@@ -341,10 +345,12 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
 // (the weight's variance across the spectrum) mostly cancels. A lens that disperses sends the
 // other wavelengths to other pixels than the sample's (the flint landscape lens's F-C focus
 // shift of 2 mm blurs them by several pixels; even the corrected double-Gauss sends 6% of them
-// across a pixel edge at 300 x 200), so the renderer adds them there. How many such wavelengths
-// land in a pixel is random, where the RGB render's stratified film points give each pixel its
-// own samples exactly; s < 1 moves weight toward the strategies whose film point lies in the
-// pixel the light lands in, so less of a pixel's value rides on that count. s = 0 would drop
+// across a pixel edge at 300 x 200), so the renderer adds them there, with where in the pixel
+// they landed (SampleWavelengths::landing: render/landing_filter.h shares them across the edges
+// near it). How many such wavelengths land in a pixel is random, where the RGB render's
+// stratified film points give each pixel its own samples exactly; sharing them across edges
+// makes that count smooth, and s < 1 moves weight toward the strategies whose film point lies in
+// the pixel the light lands in, so less of a pixel's value rides on that count. s = 0 would drop
 // those wavelengths instead, concentrating the weight on fewer wavelengths: more colour noise.
 // Measured (bench/README.md, stop 33): of the shares tried on each dispersive bundled lens (0,
 // 0.15, 0.3, 0.5, 0.7, 1 on the dgauss at 300 x 200; 0.3, 0.5, 0.7, 1 on the Cooke triplet and
@@ -410,6 +416,9 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
   // when it does not reach the film).
   thread_local std::vector<float> backDensity, backCos4, planePdf, backFilmY;
   thread_local std::vector<std::int32_t> backPixel, backRow;
+  thread_local std::vector<float> backFracX, backFracY;
+  backFracX.resize(backCount);
+  backFracY.resize(backCount);
   backDensity.resize(backCount);
   backCos4.resize(backCount);
   planePdf.resize(backCount);
@@ -418,8 +427,8 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
   backRow.resize(backCount);
   landBackRays(landing, backCount, back.ox.data(), back.oy.data(), back.oz.data(), back.dx.data(),
                back.dy.data(), back.dz.data(), back.alive.data(), backDensity.data(),
-               backCos4.data(), planePdf.data(), backFilmY.data(), backPixel.data(),
-               backRow.data());
+               backCos4.data(), planePdf.data(), backFilmY.data(), backPixel.data(), backRow.data(),
+               backFracX.data(), backFracY.data());
   if (exitPupil)
     lens_->spectralExitPupilTable().pdfInPassRegion(planePdf.data(), backFilmY.data(),
                                                     planePdf.data(), backCount);
@@ -471,6 +480,12 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
         out[j] = pixel[j] < 0 ? 0.0f : balance;
         pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
       }
+      if (wavelengths.landing != nullptr) {
+        for (std::size_t j = 1; j < k; ++j) {
+          wavelengths.landing[2 * (i * k + j)] = backFracX[first + j - 1];
+          wavelengths.landing[2 * (i * k + j) + 1] = backFracY[first + j - 1];
+        }
+      }
       continue;
     }
     for (std::size_t j = 0; j < k; ++j) {
@@ -488,6 +503,10 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
           cos4Weighting_ ? 1.0f : 1.0f / (j == 0 ? heroCos4[i] : backCos4[first + j - 1]);
       out[j] = c * heroShare / total;
       pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
+      if (wavelengths.landing != nullptr && j > 0) {
+        wavelengths.landing[2 * (i * k + j)] = backFracX[first + j - 1];
+        wavelengths.landing[2 * (i * k + j) + 1] = backFracY[first + j - 1];
+      }
     }
   }
 }

@@ -149,9 +149,10 @@ double rmsDifference(const RenderSnapshot& a, const RenderSnapshot& b) {
 //   wherever the lens's colour moves them, which this checks too: a wrong pixel or weight
 //   shifts or dims the blocks);
 // - less colour noise: at 16 samples per pixel, the error against the converged picture is
-//   under 0.6 of one wavelength per path's (measured 0.42), and at most 1.6 times the RGB
-//   render's against its own converged picture (measured 1.46; issue 23 asks for 1.5 on its
-//   benchmark, bench/spectral-error.sh).
+//   under 0.6 of one wavelength per path's (measured 0.37), and at most 1.27 times the RGB
+//   render's against its own converged picture (issue 23 asks for 1.5; bench/spectral-error.sh).
+//   Measured 1.22 with the other wavelengths shared across the pixel edges near where they land
+//   (render/landing_filter.h); 1.32 when each goes wholly to the pixel it lands in.
 // A camera as another, but saying it reads a sample's wavelengths before its ray is traced: the
 // renderer then draws them all up front, as it does for a lens that disperses.
 class EveryWavelengthFirst final : public Camera {
@@ -264,7 +265,7 @@ TEST(SpectralRender, HeroWavelengthsAreUnbiasedAndCutTheColourNoise) {
   std::printf("RMS error at 16 spp: hero %.5f, one wavelength %.5f, RGB %.5f\n", heroError,
               singleError, rgbError);
   EXPECT_LT(heroError, 0.6 * singleError);
-  EXPECT_LT(heroError, 1.6 * rgbError);
+  EXPECT_LT(heroError, 1.27 * rgbError);
 }
 
 // The viewer's coarse first look of a spectral render through a lens that disperses: one sample
