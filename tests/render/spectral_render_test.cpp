@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "optics/lens_system.h"
+#include "render/landing_filter.h"
 #include "render/realistic_camera.h"
 #include "render/spectral_film.h"
 #include "render_support.h"
@@ -145,7 +146,9 @@ double rmsDifference(const RenderSnapshot& a, const RenderSnapshot& b) {
 // bundled double-Gauss 50 mm, which carries the course table's V_d, against the simple estimator
 // of one wavelength per path:
 // - no bias: at 256 samples per pixel the two converge to the same picture, 8 x 8 block by
-//   block, within their noise (and the hero estimator sends other wavelengths to other pixels
+//   block, within their noise (up to the hero estimator's other wavelengths being shared across
+//   pixel edges, render/landing_filter.h, which moves light between blocks only at their edges
+//   and by a quarter pixel at most) (and the hero estimator sends other wavelengths to other pixels
 //   wherever the lens's colour moves them, which this checks too: a wrong pixel or weight
 //   shifts or dims the blocks);
 // - less colour noise: at 16 samples per pixel, the error against the converged picture is
@@ -205,6 +208,108 @@ TEST(SpectralRender, DrawingTheWavelengthsAfterTheRayChangesNothing) {
   RenderJob dispersive = loadJob(defaultScene(), 1, throughBundledLens("dgauss-50mm.dat", 30, 20));
   ASSERT_TRUE(dispersive.camera && dispersive.camera->spectral());
   EXPECT_TRUE(dispersive.camera->readsWavelengths());
+}
+
+// A spectral camera that sends every sample's second wavelength, and only it, to one pixel at
+// one place in it (as a lens that disperses would report: SampleWavelengths::pixels and
+// landing), so that the renderer's deposits can be read off the picture exactly.
+class LandsEverythingAt final : public Camera {
+ public:
+  LandsEverythingAt(int width, int height, glm::ivec2 pixel, glm::vec2 fraction)
+      : Camera(width, height), pixel_(pixel), fraction_(fraction) {}
+  bool generateRay(glm::vec2, glm::vec2, CameraRay& ray) const override {
+    ray = CameraRay{};
+    return true;
+  }
+  void generateRays(std::size_t count, const glm::vec2*, const glm::vec2*, CameraRay* rays,
+                    std::uint8_t* passed, const SampleWavelengths* wavelengths) const override {
+    const auto k = static_cast<std::size_t>(wavelengths->perSample);
+    for (std::size_t i = 0; i < count; ++i) {
+      rays[i] = CameraRay{};
+      passed[i] = 1;
+      for (std::size_t j = 0; j < k; ++j) {
+        wavelengths->weights[i * k + j] = j == 1 ? 1.0f : 0.0f;
+        wavelengths->pixels[i * k + j] =
+            j == 0 ? SampleWavelengths::kSamplePixel : pixel_.y * width() + pixel_.x;
+        wavelengths->landing[2 * (i * k + j)] = fraction_.x;
+        wavelengths->landing[2 * (i * k + j) + 1] = fraction_.y;
+      }
+    }
+  }
+  bool spectral() const override { return true; }
+  bool readsWavelengths() const override { return true; }
+  float pixelSpreadRadians() const override { return 0.0f; }
+
+ private:
+  glm::ivec2 pixel_;
+  glm::vec2 fraction_;
+};
+
+// The renderer shares a wavelength that lands near a pixel's edge with the neighbour across it
+// (render/landing_filter.h), by the landing place the camera gives: along x by its x, along y by
+// its y, nothing across the image's edge, through and beyond the tiles' edges (16 pixels).
+TEST(SpectralRender, ALandedWavelengthIsSharedAcrossTheNearPixelEdges) {
+  const auto directory = lenslab::testing::makeTestDirectory("spectral-landing");
+  const auto scene =
+      writeFile(directory / "sky.pbrt",
+                "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" [40]\n"
+                "Film \"image\" \"integer xresolution\" [40] \"integer yresolution\" [24]\n"
+                "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+                "Translate 0 0 -100\nShape \"sphere\" \"float radius\" [1]\nWorldEnd\n");
+  constexpr int kWidth = 40, kHeight = 24;
+  struct Case {
+    glm::ivec2 pixel;
+    glm::vec2 fraction;
+    std::vector<std::pair<glm::ivec2, double>> expected;  // pixel, share of the light
+  };
+  const double a = kLandingRampPx;
+  // The neighbour's share 0.1 and 0.05 from an edge: 0.3 and 0.4.
+  const double lowX = 0.5 - 0.1 / (2 * a), highY = 0.5 - 0.05 / (2 * a);
+  const std::vector<Case> cases = {
+      // Inside, near its left (x 0.1) and lower-row (y 0.95) edges, across a tile's edge (x 16).
+      {{16, 10},
+       {0.1f, 0.95f},
+       {{{16, 10}, (1 - lowX) * (1 - highY)},
+        {{15, 10}, lowX * (1 - highY)},
+        {{16, 11}, (1 - lowX) * highY},
+        {{15, 11}, lowX * highY}}},
+      // In the middle of a pixel: all of it there.
+      {{7, 5}, {0.5f, 0.5f}, {{{7, 5}, 1.0}}},
+      // At the image's left and bottom edges, near those edges: it stays.
+      {{0, kHeight - 1}, {0.1f, 0.95f}, {{{0, kHeight - 1}, 1.0}}},
+      // At the bottom edge, near the pixel's upper and right edges: shared up and right.
+      // (x 0.9: 0.1 from the right edge, as x 0.1 was from the left; y 0.05 from the top.)
+      {{20, kHeight - 1},
+       {0.9f, 0.05f},
+       {{{20, kHeight - 1}, (1 - lowX) * (1 - highY)},
+        {{21, kHeight - 1}, lowX * (1 - highY)},
+        {{20, kHeight - 2}, (1 - lowX) * highY},
+        {{21, kHeight - 2}, lowX * highY}}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(::testing::Message() << "pixel " << c.pixel.x << ", " << c.pixel.y);
+    RenderJob job = loadJob(scene, 4);
+    ASSERT_TRUE(job.camera && job.scene);
+    job.camera = std::make_shared<LandsEverythingAt>(kWidth, kHeight, c.pixel, c.fraction);
+    job.settings.wavelengthsPerSample = 4;
+    const auto image = renderToCompletion(job);
+    ASSERT_TRUE(image);
+    ASSERT_EQ(image->width, kWidth);
+    auto brightness = [&](glm::ivec2 at) {
+      const std::size_t i = 3 * (static_cast<std::size_t>(at.y) * kWidth + at.x);
+      return static_cast<double>(image->rgb[i]) + image->rgb[i + 1] + image->rgb[i + 2];
+    };
+    double total = 0.0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) total += brightness({x, y});
+    ASSERT_GT(total, 0.0);
+    double listed = 0.0;
+    for (const auto& [at, share] : c.expected) {
+      EXPECT_NEAR(brightness(at) / total, share, 1e-5) << "at " << at.x << ", " << at.y;
+      listed += brightness(at);
+    }
+    EXPECT_NEAR(listed / total, 1.0, 1e-6) << "light elsewhere than the listed pixels";
+  }
 }
 
 TEST(SpectralRender, HeroWavelengthsAreUnbiasedAndCutTheColourNoise) {
