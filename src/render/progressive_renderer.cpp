@@ -359,27 +359,32 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
             const int landedY = target / width, landedX = target - landedY * width;
             const LandingShare alongX = landingShare(landing[2 * j], landedX, width);
             const LandingShare alongY = landingShare(landing[2 * j + 1], landedY, wave.height);
-            auto deposit = [&](int tx, int ty, glm::vec3 part) {
-              if (tx == ownX && ty == ownY) {
+            // Up to four pixels and their shares (a loop, not a lambda called four times: GCC
+            // kept that out of line).
+            struct Share {
+              int x, y;
+              float share;
+            };
+            const float keptX = 1.0f - alongX.share, keptY = 1.0f - alongY.share;
+            const Share shares[4] = {
+                {landedX, landedY, keptX * keptY},
+                {landedX + alongX.step, landedY, alongX.share * keptY},
+                {landedX, landedY + alongY.step, keptX * alongY.share},
+                {landedX + alongX.step, landedY + alongY.step, alongX.share * alongY.share}};
+            for (const Share& to : shares) {
+              if (to.share == 0.0f) continue;
+              const glm::vec3 part = to.share * colour;
+              if (to.x == ownX && to.y == ownY) {
                 radiance += part;
-              } else if (tx >= tile.x0 && tx < tile.x1 && ty >= tile.y0 && ty < tile.y1) {
+              } else if (to.x >= tile.x0 && to.x < tile.x1 && to.y >= tile.y0 && to.y < tile.y1) {
                 // In this tile: its pixels are this thread's alone during the wave.
-                double* pixel = &sums[3 * (static_cast<std::size_t>(ty) * width + tx)];
+                double* pixel = &sums[3 * (static_cast<std::size_t>(to.y) * width + to.x)];
                 pixel[0] += part.x;
                 pixel[1] += part.y;
                 pixel[2] += part.z;
               } else {
-                pendingSplats.push_back({ty * width + tx, part});
+                pendingSplats.push_back({to.y * width + to.x, part});
               }
-            };
-            const glm::vec3 keptY = (1.0f - alongY.share) * colour;
-            deposit(landedX, landedY, (1.0f - alongX.share) * keptY);
-            if (alongX.share > 0.0f) deposit(landedX + alongX.step, landedY, alongX.share * keptY);
-            if (alongY.share > 0.0f) {
-              const glm::vec3 movedY = alongY.share * colour;
-              deposit(landedX, landedY + alongY.step, (1.0f - alongX.share) * movedY);
-              if (alongX.share > 0.0f)
-                deposit(landedX + alongX.step, landedY + alongY.step, alongX.share * movedY);
             }
           }
           if (pendingSplats.size() >= kSplatBatch) splats.add(pendingSplats);
