@@ -43,13 +43,18 @@ class ScriptedViewer : public ::testing::Test {
     for (const auto& problem : dump["state"]["problems"]) rows.push_back(problem["surface"]);
     return rows;
   }
-  // Whether the dump's log has an error whose text contains `text`.
-  static bool loggedError(const nlohmann::json& dump, const std::string& text) {
+  // Whether the dump's log has an entry (of `level`, when given) whose text contains `text`.
+  static bool logged(const nlohmann::json& dump, const std::string& text,
+                     const std::string& level = "") {
     for (const auto& entry : dump["state"]["log"]) {
-      const std::string logged = entry["text"];
-      if (entry["level"] == "error" && logged.find(text) != std::string::npos) return true;
+      const std::string said = entry["text"];
+      if ((level.empty() || entry["level"] == level) && said.find(text) != std::string::npos)
+        return true;
     }
     return false;
+  }
+  static bool loggedError(const nlohmann::json& dump, const std::string& text) {
+    return logged(dump, text, "error");
   }
   // Whether a recent file of the dump's has `text` in its path.
   static bool inRecentFiles(const nlohmann::json& dump, const std::string& text) {
@@ -90,6 +95,17 @@ class ScriptedViewer : public ::testing::Test {
         }
       }
     }
+  }
+  // `name` in the scratch directory: the terrain above, lit by a uniform sky, seen from 1.2 m up
+  // by `camera` (a Camera directive, and a Film one where wanted); writes terrain.ply too.
+  void writeTerrainScene(const std::string& name, const std::string& camera) {
+    writeTerrainPly();
+    std::ofstream(scratch / name) << "LookAt 0 1.2 3  0 0 0  0 1 0\n"
+                                  << camera
+                                  << "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+                                     "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
+                                     "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\n"
+                                     "WorldEnd\n";
   }
   std::filesystem::path scratch = testing::makeTestDirectory("script");
 };
@@ -552,13 +568,9 @@ TEST_F(ScriptedViewer, ABrokenSceneOnTheCommandLineEndsTheSessionWithItsError) {
 // A scene of a million triangles takes about a second to parse and build (two on a busy
 // machine): it loads while the window draws, which shows it loading, and then renders it.
 TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
-  writeTerrainPly();
-  std::ofstream(scratch / "terrain.pbrt")
-      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [45]\n"
-         "Film \"image\" \"integer xresolution\" [300] \"integer yresolution\" [200]\n"
-         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-         "Material \"matte\" \"rgb Kd\" [0.5 0.5 0.5]\n"
-         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  writeTerrainScene("terrain.pbrt",
+                    "Camera \"perspective\" \"float fov\" [45]\n"
+                    "Film \"image\" \"integer xresolution\" [300] \"integer yresolution\" [200]\n");
   const auto result = runScript(
       "dump-ui first-frame.json\nwait-spp 1\ndump-ui loaded.json\n"
       "screenshot-render terrain.png\nquit\n",
@@ -579,14 +591,12 @@ TEST_F(ScriptedViewer, AFrameIsDrawnWhileALargeSceneLoads) {
 // default scene now and then), and focuses it at the scene's focus distance, as opening it over
 // the loaded scene would have.
 TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKeptAndFocusedForTheScene) {
-  writeTerrainPly();
   const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
-  std::ofstream(scratch / "terrain-lens.pbrt")
-      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"realistic\" \"string lensfile\" \"" << lenses
-      << "dgauss-50mm.dat\" \"float aperturediameter\" [10] \"float focusdistance\" [3]\n"
-         "Film \"image\" \"integer xresolution\" [300] \"integer yresolution\" [200]\n"
-         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  writeTerrainScene("terrain-lens.pbrt",
+                    "Camera \"realistic\" \"string lensfile\" \"" + lenses +
+                        "dgauss-50mm.dat\" \"float aperturediameter\" [10] \"float focusdistance\" "
+                        "[3]\nFilm \"image\" \"integer xresolution\" [300] \"integer "
+                        "yresolution\" [200]\n");
   const auto result = runScript("load-lens " + lenses +
                                     "dgauss-100mm.dat\ndump-ui opened.json\n"
                                     "wait-scene-load\nwait-frames 1\ndump-ui loaded.json\n"
@@ -600,13 +610,8 @@ TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKeptAndFocusedForTheScene)
   EXPECT_EQ(loaded["state"]["scene_path"], "terrain-lens.pbrt");
   const std::string lensPath = loaded["state"]["lens_path"];
   EXPECT_NE(lensPath.find("dgauss-100mm.dat"), std::string::npos) << lensPath;
-  bool said = false;
-  for (const auto& entry : loaded["state"]["log"]) {
-    said = said || entry["text"].get<std::string>().find(
-                       "Kept the lens opened while the scene "
-                       "loaded") != std::string::npos;
-  }
-  EXPECT_TRUE(said) << loaded["state"]["log"];
+  EXPECT_TRUE(logged(loaded, "Kept the lens opened while the scene loaded"))
+      << loaded["state"]["log"];
   // Focused at the scene's "focusdistance" [3] (metres from the film), by the optics library's
   // real-ray focus of the lens file at the film distance the viewer reports.
   const optics::LoadedLens file = optics::loadLens(lenses + "dgauss-100mm.dat");
@@ -629,14 +634,11 @@ TEST_F(ScriptedViewer, ALensOpenedWhileTheSceneLoadsIsKeptAndFocusedForTheScene)
 // opened over it keeps its file's film distance, so one opened while it loads goes there too,
 // not where it was focused for the scene before.
 TEST_F(ScriptedViewer, ALensOpenedWhileACourseSceneLoadsGoesToItsFilesFilmDistance) {
-  writeTerrainPly();
   const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
-  std::ofstream(scratch / "terrain-course.pbrt")
-      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"realistic\" \"string specfile\" \"" << lenses
-      << "dgauss-50mm.dat\" \"float filmdistance\" 36.77 \"float aperture_diameter\" 17.1 "
-         "\"float filmdiag\" 43\n"
-         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  writeTerrainScene("terrain-course.pbrt",
+                    "Camera \"realistic\" \"string specfile\" \"" + lenses +
+                        "dgauss-50mm.dat\" \"float filmdistance\" 36.77 \"float "
+                        "aperture_diameter\" 17.1 \"float filmdiag\" 43\n");
   // The course scene dropped on the window over the default scene (whose chart, 3.6 m away, is
   // in focus), and the lens opened while it loads.
   const auto result =
@@ -659,24 +661,16 @@ TEST_F(ScriptedViewer, ALensOpenedWhileACourseSceneLoadsGoesToItsFilesFilmDistan
             std::string::npos);
   EXPECT_DOUBLE_EQ(loaded["state"]["film_distance_mm"].get<double>(),
                    file.system->filmDistanceMm());
-  bool said = false;
-  for (const auto& entry : loaded["state"]["log"]) {
-    said = said || entry["text"].get<std::string>().find(
-                       "the scene sets a film distance, not a focus distance") != std::string::npos;
-  }
-  EXPECT_TRUE(said) << loaded["state"]["log"];
+  EXPECT_TRUE(logged(loaded, "the scene sets a film distance, not a focus distance"))
+      << loaded["state"]["log"];
 }
 
 // ... but an edit made after opening it, while the scene still loads, is the user's: the film
 // distance set then stays.
 TEST_F(ScriptedViewer, ALensEditedWhileTheSceneLoadsKeepsItsEdit) {
-  writeTerrainPly();
   const std::string lenses = std::string(LENSLAB_SOURCE_DIR) + "/lenses/";
-  std::ofstream(scratch / "terrain-lens.pbrt")
-      << "LookAt 0 1.2 3  0 0 0  0 1 0\nCamera \"realistic\" \"string lensfile\" \"" << lenses
-      << "dgauss-50mm.dat\" \"float focusdistance\" [3]\n"
-         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
-         "Shape \"plymesh\" \"string filename\" \"terrain.ply\"\nWorldEnd\n";
+  writeTerrainScene("terrain-lens.pbrt", "Camera \"realistic\" \"string lensfile\" \"" + lenses +
+                                             "dgauss-50mm.dat\" \"float focusdistance\" [3]\n");
   const auto result = runScript("load-lens " + lenses +
                                     "dgauss-100mm.dat\nset film-distance 97.5\n"
                                     "dump-ui opened.json\nwait-scene-load\nwait-frames 1\n"

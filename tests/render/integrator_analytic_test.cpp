@@ -107,30 +107,34 @@ double cylinderProjectedSolidAngle(const Lamp& lamp) {
   return kPi * static_cast<double>(hits) / (static_cast<double>(kGrid) * kGrid);
 }
 
+// "[v v v]", an RGB parameter's value.
+std::string greyRgb(double v) {
+  // (Appended rather than "[" + ...: GCC 12 warns falsely of an overlapping copy there.)
+  std::string text = "[";
+  for (int channel = 0; channel < 3; ++channel)
+    text += std::to_string(v) + (channel < 2 ? " " : "]");
+  return text;
+}
+
 std::string sceneText(const LampScene& s) {
   auto number = [](double v) { return std::to_string(v); };
-  auto rgb = [&](double v) {
-    // (Appended rather than "[" + ...: GCC 12 warns falsely of an overlapping copy there.)
-    std::string text = "[";
-    for (int channel = 0; channel < 3; ++channel) text += number(v) + (channel < 2 ? " " : "]");
-    return text;
-  };
   std::string text =
       "LookAt 0 3 3  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [10]\n"
       "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\n"
       "WorldBegin\n";
-  if (s.skyRadiance > 0) text += "LightSource \"infinite\" \"rgb L\" " + rgb(s.skyRadiance) + "\n";
+  if (s.skyRadiance > 0)
+    text += "LightSource \"infinite\" \"rgb L\" " + greyRgb(s.skyRadiance) + "\n";
   if (s.sunRadiance > 0) {
     text += "LightSource \"distant\" \"point from\" [" + number(s.sunFrom.x) + " " +
             number(s.sunFrom.y) + " " + number(s.sunFrom.z) + "] \"point to\" [0 0 0] \"rgb L\" " +
-            rgb(s.sunRadiance) + "\n";
+            greyRgb(s.sunRadiance) + "\n";
   }
   for (const Lamp& lamp : s.lamps) {
-    text += "AttributeBegin\n AreaLightSource \"diffuse\" \"rgb L\" " + rgb(lamp.radiance) +
+    text += "AttributeBegin\n AreaLightSource \"diffuse\" \"rgb L\" " + greyRgb(lamp.radiance) +
             "\n Translate " + number(lamp.x) + " " + number(lamp.y) + " 0\n" + shapeText(lamp) +
             "\nAttributeEnd\n";
   }
-  text += "AttributeBegin\n Material \"matte\" \"rgb Kd\" " + rgb(s.albedo) +
+  text += "AttributeBegin\n Material \"matte\" \"rgb Kd\" " + greyRgb(s.albedo) +
           "\n Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]"
           " \"point P\" [-50 0 -50  50 0 -50  50 0 50  -50 0 50]\nAttributeEnd\nWorldEnd\n";
   return text;
@@ -159,18 +163,26 @@ double analyticRadiance(const LampScene& s) {
   return s.albedo / kPi * irradiance;
 }
 
+// The scene `text` parses and builds to; fails the test (and returns null) on errors.
+std::shared_ptr<const Scene> builtScene(const std::string& text, const std::string& name) {
+  ParseResult parsed = parsePbrtText(text, name, ".");
+  EXPECT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
+  if (!parsed.scene) return nullptr;
+  BuildResult built = buildScene(*parsed.scene);
+  EXPECT_TRUE(built.scene) << built.diagnostics.formatAll();
+  return built.scene;
+}
+
 class IntegratorAnalytic : public ::testing::TestWithParam<IntegratorKind> {};
 
 void expectAnalytic(const LampScene& lamps, IntegratorKind kind) {
-  ParseResult parsed = parsePbrtText(sceneText(lamps), "lamps.pbrt", ".");
-  ASSERT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
-  BuildResult built = buildScene(*parsed.scene);
-  ASSERT_TRUE(built.scene) << built.diagnostics.formatAll();
+  const auto scene = builtScene(sceneText(lamps), "lamps.pbrt");
+  ASSERT_TRUE(scene);
   IntegratorSettings settings;
   settings.kind = kind;
   settings.maxDepth = 1;
   const glm::vec3 origin(0.0f, 3.0f, 3.0f);
-  const Estimate e = estimate(*built.scene, origin, glm::normalize(-origin), settings, 64, 1024);
+  const Estimate e = estimate(*scene, origin, glm::normalize(-origin), settings, 64, 1024);
   const double expected = analyticRadiance(lamps);
   std::printf("%s: %.6f of the closed form, standard error %.6f\n",
               kind == IntegratorKind::Path ? "path" : "direct", e.mean / expected,
@@ -250,13 +262,12 @@ TEST_P(IntegratorAnalyticFurnace, EachBounceAddsRhoTimesTheLast) {
   const std::string text =
       "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" [10]\n"
       "Film \"image\" \"integer xresolution\" [4] \"integer yresolution\" [4]\nWorldBegin\n"
-      "AttributeBegin\n Material \"matte\" \"rgb Kd\" [0.6 0.6 0.6]\n"
-      " AreaLightSource \"diffuse\" \"rgb L\" [1 1 1] \"bool twosided\" \"true\"\n"
-      " Shape \"sphere\" \"float radius\" [1]\nAttributeEnd\nWorldEnd\n";
-  ParseResult parsed = parsePbrtText(text, "furnace.pbrt", ".");
-  ASSERT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
-  BuildResult built = buildScene(*parsed.scene);
-  ASSERT_TRUE(built.scene) << built.diagnostics.formatAll();
+      "AttributeBegin\n Material \"matte\" \"rgb Kd\" " +
+      greyRgb(kAlbedo) + "\n AreaLightSource \"diffuse\" \"rgb L\" " + greyRgb(kEmitted) +
+      " \"bool twosided\" \"true\"\n Shape \"sphere\" \"float radius\" [1]\nAttributeEnd\n"
+      "WorldEnd\n";
+  const auto scene = builtScene(text, "furnace.pbrt");
+  ASSERT_TRUE(scene);
   const ReflectingFurnace& furnace = GetParam();
   IntegratorSettings settings;
   settings.kind = furnace.kind;
@@ -267,8 +278,8 @@ TEST_P(IntegratorAnalyticFurnace, EachBounceAddsRhoTimesTheLast) {
   // A direction off every axis, from off the centre.
   const glm::vec3 origin(0.1f, -0.2f, 0.15f);
   // (Enough samples that Russian roulette's noise at maxdepth 8 stays under rho^9's share.)
-  const Estimate e = estimate(*built.scene, origin, glm::normalize(glm::vec3(0.3f, 0.5f, -0.8f)),
-                              settings, 64, 1024);
+  const Estimate e =
+      estimate(*scene, origin, glm::normalize(glm::vec3(0.3f, 0.5f, -0.8f)), settings, 64, 1024);
   std::printf("%s, maxdepth %d: %.6f of Le (1 + ... + rho^%d), standard error %.6f\n",
               furnace.kind == IntegratorKind::Path ? "path" : "direct", furnace.maxDepth,
               e.mean / expected, bounces, e.standardError / expected);
@@ -299,12 +310,10 @@ TEST(IntegratorAnalytic, ASphereUnderARotationWrittenWithSevenDigitsIsSampledByI
       " Shape \"sphere\" \"float radius\" [0.1]\nAttributeEnd\n"
       "Shape \"trianglemesh\" \"integer indices\" [0 1 2 0 2 3]"
       " \"point P\" [-50 0 -50  50 0 -50  50 0 50  -50 0 50]\nWorldEnd\n";
-  ParseResult parsed = parsePbrtText(text, "rotated.pbrt", ".");
-  ASSERT_TRUE(parsed.scene) << parsed.diagnostics.formatAll();
-  BuildResult built = buildScene(*parsed.scene);
-  ASSERT_TRUE(built.scene) << built.diagnostics.formatAll();
-  ASSERT_EQ(built.scene->lights().size(), 1u);
-  const Emitter& emitter = *built.scene->lights()[0].emitter;
+  const auto scene = builtScene(text, "rotated.pbrt");
+  ASSERT_TRUE(scene);
+  ASSERT_EQ(scene->lights().size(), 1u);
+  const Emitter& emitter = *scene->lights()[0].emitter;
   EXPECT_TRUE(emitter.isSphere);
   EXPECT_NEAR(emitter.sphereRadius, 0.1, 1e-6);
   EXPECT_NEAR(emitter.sphereCenter.x, 0.3, 1e-6);
@@ -312,11 +321,9 @@ TEST(IntegratorAnalytic, ASphereUnderARotationWrittenWithSevenDigitsIsSampledByI
   // A sphere stretched by 1% is an ellipsoid: area sampling.
   std::string stretched = text;
   stretched.replace(stretched.find("0 0 1 0  0.3"), 7, "0 0 1.01 0");
-  ParseResult parsedStretched = parsePbrtText(stretched, "stretched.pbrt", ".");
-  ASSERT_TRUE(parsedStretched.scene) << parsedStretched.diagnostics.formatAll();
-  BuildResult builtStretched = buildScene(*parsedStretched.scene);
-  ASSERT_TRUE(builtStretched.scene);
-  EXPECT_FALSE(builtStretched.scene->lights()[0].emitter->isSphere);
+  const auto stretchedScene = builtScene(stretched, "stretched.pbrt");
+  ASSERT_TRUE(stretchedScene);
+  EXPECT_FALSE(stretchedScene->lights()[0].emitter->isSphere);
 }
 
 }  // namespace
