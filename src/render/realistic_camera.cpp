@@ -474,17 +474,18 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
       densitySum += density[1 + j];
       onePixel &= pixel[1 + j] == pixel[0] || pixel[1 + j] < 0;
     }
+    // Where in its pixel each other wavelength landed, for the renderer's landing filter.
+    if (wavelengths.landing != nullptr) {
+      for (std::size_t j = 1; j < k; ++j) {
+        wavelengths.landing[2 * (i * k + j)] = backFracX[first + j - 1];
+        wavelengths.landing[2 * (i * k + j) + 1] = backFracY[first + j - 1];
+      }
+    }
     if (onePixel && cos4Weighting_) {  // the common case: the plain balance heuristic
       const float balance = 1.0f / densitySum;
       for (std::size_t j = 0; j < k; ++j) {
         out[j] = pixel[j] < 0 ? 0.0f : balance;
         pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
-      }
-      if (wavelengths.landing != nullptr) {
-        for (std::size_t j = 1; j < k; ++j) {
-          wavelengths.landing[2 * (i * k + j)] = backFracX[first + j - 1];
-          wavelengths.landing[2 * (i * k + j) + 1] = backFracY[first + j - 1];
-        }
       }
       continue;
     }
@@ -503,10 +504,6 @@ void RealisticCamera::heroWavelengthWeights(std::size_t count, const std::uint32
           cos4Weighting_ ? 1.0f : 1.0f / (j == 0 ? heroCos4[i] : backCos4[first + j - 1]);
       out[j] = c * heroShare / total;
       pixelOut[j] = j == 0 ? SampleWavelengths::kSamplePixel : pixel[j];
-      if (wavelengths.landing != nullptr && j > 0) {
-        wavelengths.landing[2 * (i * k + j)] = backFracX[first + j - 1];
-        wavelengths.landing[2 * (i * k + j) + 1] = backFracY[first + j - 1];
-      }
     }
   }
 }
