@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "render/landing_filter.h"
+#include "render/passing_rays.h"
 #include "render/sampler_batch.h"
 #include "render/spectral_film.h"
 #include "render/thread_priority.h"
@@ -295,19 +296,9 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     camera.generateRays(m, rasterPoints.data(), lensSamples.data(), rays.data(), passed.data(),
                         spectral ? &sampleWavelengths : nullptr);
     statistics.cameraSamples += m;
-    // The rays that left the lens, in order, listed without a branch: the pixels' loops below run
-    // over them alone (testing each ray instead mispredicts often where few pass: a shaped stop,
-    // the course scenes' rear-disk sampling).
-    passing.resize(m);
-    std::size_t passCount = 0;
-    {
-      std::uint32_t* __restrict list = passing.data();
-      const std::uint8_t* __restrict left = passed.data();
-      for (std::size_t r = 0; r < m; ++r) {
-        list[passCount] = static_cast<std::uint32_t>(r);
-        passCount += left[r] != 0 ? 1 : 0;
-      }
-    }
+    // The rays that left the lens, in order: the pixels' loops below run over them alone
+    // (render/passing_rays.h).
+    const std::size_t passCount = listPassingRays(passed.data(), m, passing);
     statistics.lensPassed += passCount;
     if (drawAfterRays) {
       const SpectralFilm& film = SpectralFilm::instance();

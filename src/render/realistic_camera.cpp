@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "optics/exit_pupil.h"
+#include "render/passing_rays.h"
 #include "render/sampling.h"
 
 namespace lenslab::render {
@@ -291,22 +292,12 @@ void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoi
     lens_->traceFromFilmBatch(batch, heroNm.data());
   else
     lens_->traceFromFilmBatch(batch);
-  // The rays that left the lens, listed without a branch: the loops after this run over them
-  // alone, rather than test every ray, a branch that a low pass rate (a shaped stop, the course
-  // scenes' rear-disk sampling) mispredicts often.
-  thread_local std::vector<std::uint32_t> passing;
-  passing.resize(count);
-  std::size_t passCount = 0;
-  {
-    std::uint32_t* __restrict list = passing.data();
-    const std::uint8_t* __restrict left = batch.alive.data();  // (after the trace)
-    for (std::size_t i = 0; i < count; ++i) {
-      rays[i].weight = weights[i];
-      passed[i] = left[i];
-      list[passCount] = static_cast<std::uint32_t>(i);
-      passCount += left[i] != 0 ? 1 : 0;
-    }
+  for (std::size_t i = 0; i < count; ++i) {
+    rays[i].weight = weights[i];
+    passed[i] = batch.alive[i];
   }
+  thread_local std::vector<std::uint32_t> passing;  // render/passing_rays.h
+  const std::size_t passCount = listPassingRays(passed, count, passing);
   for (std::size_t p = 0; p < passCount; ++p) {
     const std::size_t i = passing[p];
     finishRay({batch.ox[i], batch.oy[i], batch.oz[i]}, {batch.dx[i], batch.dy[i], batch.dz[i]},
