@@ -51,12 +51,14 @@ AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments)
   options.filmDistance =
       analyze
           .add_option("--film-distance", arguments.filmDistanceMm,
-                      "Film distance in mm (rear vertex to film; default: the file's)")
+                      "Film distance in mm (rear vertex to film; default: the one that focuses "
+                      "the object distance, not the file's)")
           ->check(PositiveFiniteNumber());
   options.objectDistance = analyze.add_option(
       "--object-distance", arguments.objectDistance,
-      "Object distance from the film plane (mm, or 3.6 m), or 'inf' (the default); without "
-      "--film-distance the lens is focused there first");
+      "Object distance from the film plane (mm, or 3.6 m), or 'inf' (the default). Without "
+      "--film-distance the lens is focused there first; with it the film stays where it is "
+      "given, and the header says which object distance is then in focus");
   analyze
       .add_option("--film-diagonal", arguments.filmDiagonalMm,
                   "Film diagonal in mm; curves run from the axis to its corner (default "
