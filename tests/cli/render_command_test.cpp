@@ -195,6 +195,33 @@ TEST_F(RenderCommand, AnEmptySceneIsAnErrorAndWritesNoImage) {
   }
 }
 
+// A sky alone is a picture, as in pbrt: through a pinhole every pixel is the sky's radiance L.
+TEST_F(RenderCommand, ASceneOfOnlyASkyRendersTheSky) {
+  std::ofstream(scratch / "sky.pbrt")
+      << "LookAt 0 0 0  0 0 -1  0 1 0\nCamera \"perspective\" \"float fov\" [60]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.25 0.5 1.5]\nWorldEnd\n";
+  const auto out = scratch / "sky.pfm";
+  const auto result = testing::runProcess(
+      lenslab("render '" + (scratch / "sky.pbrt").string() +
+              "' --spp 4 --resolution 16x12 --quiet --out '" + out.string() + "'"),
+      scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream in(out, std::ios::binary);
+  std::string magic;
+  int width = 0, height = 0;
+  double scale = 0;
+  in >> magic >> width >> height >> scale;
+  in.get();
+  ASSERT_EQ(magic, "PF");
+  ASSERT_EQ(width * height, 16 * 12);
+  std::vector<float> rgb(static_cast<std::size_t>(width) * height * 3);
+  in.read(reinterpret_cast<char*>(rgb.data()), static_cast<std::streamsize>(rgb.size() * 4));
+  ASSERT_TRUE(in) << "short PFM";
+  const float L[3] = {0.25f, 0.5f, 1.5f};
+  for (std::size_t i = 0; i < rgb.size(); ++i)
+    ASSERT_NEAR(rgb[i], L[i % 3], 1e-3 * L[i % 3]) << "value " << i;
+}
+
 TEST_F(RenderCommand, BadInputNeverCrashes) {
   // Each used to abort: a zero view direction reached Embree (exit 134), a 300-character name
   // threw filesystem_error.
