@@ -22,6 +22,10 @@ std::optional<std::vector<const AnalysisReport*>> selectedReports(const std::str
   std::vector<bool> wanted(analysisReports().size(), false);
   std::stringstream keys(only);
   for (std::string key; std::getline(keys, key, ',');) {
+    // "mtf, spot" as a person types a list: the spaces around a key are no part of it.
+    const auto first = key.find_first_not_of(" \t");
+    key = first == std::string::npos ? ""
+                                     : key.substr(first, key.find_last_not_of(" \t") + 1 - first);
     const AnalysisReport* report = findAnalysisReport(key);
     if (!report) {
       printUsageError("lenslab analyze", "--only: unknown analysis '" + key.substr(0, 40) +

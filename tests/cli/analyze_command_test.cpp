@@ -174,6 +174,17 @@ TEST_F(AnalyzeCommand, OnlyRunsTheNamedAnalyses) {
   EXPECT_TRUE(json.at("object_distance_mm").is_null());
 }
 
+// A list as a person types it, with spaces after the commas, names the same analyses.
+TEST_F(AnalyzeCommand, OnlyAcceptsSpacesAroundTheKeys) {
+  const auto json = analyzeJson("--only 'mtf, spot' --fields 0 " + lensPath("dgauss-50mm.dat"));
+  EXPECT_TRUE(json.contains("mtf"));
+  EXPECT_TRUE(json.contains("spot"));
+  EXPECT_FALSE(json.contains("relative_illumination"));
+  const auto padded = analyzeJson("--only ' distortion ,seidel ' " + lensPath("dgauss-50mm.dat"));
+  EXPECT_TRUE(padded.contains("distortion"));
+  EXPECT_TRUE(padded.contains("seidel"));
+}
+
 // `mtf` of a slow singlet (f/40: a hundredth of a wave of spherical aberration) at its paraxial
 // focus, by the thick-lens formulas: the MTF of a circular aperture with the cutoff D / (lambda f);
 // a field beyond what the lens images is an entry with nulls and its reason.
