@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -25,6 +26,32 @@ std::string objectText(const std::optional<double>& objectDistanceMm) {
   return objectDistanceMm ? distanceText(*objectDistanceMm) + " from the film" : "infinity";
 }
 
+// Where the analysed lens is focused.
+struct Focus {
+  bool atObject = true;  // focused at the analysed object; false: --film-distance put the film
+  // The object distance in focus, from the film (infinity allowed); nullopt when none is
+  // (the film nearer the lens than its infinity focus: whyNot).
+  std::optional<double> objectDistanceMm;
+  std::string whyNot;
+};
+
+// "focused at infinity", "focused at 3.720 m from the film", or why no object is in focus.
+std::string focusText(const Focus& focus) {
+  if (!focus.objectDistanceMm) return "focused at no object distance: " + focus.whyNot;
+  if (std::isinf(*focus.objectDistanceMm)) return "focused at infinity";
+  return "focused at " + distanceText(*focus.objectDistanceMm) + " from the film";
+}
+
+// Whether the analysed object is the one in focus: a given film within 1 um of the film distance
+// that focuses it (inside the depth of focus, 2 lambda N^2, of any lens slower than f/0.7).
+bool objectInFocus(const Focus& focus, const optics::LensSystem& lens,
+                   const std::optional<double>& objectDistanceMm) {
+  if (focus.atObject) return true;
+  const optics::FocusResult film = optics::filmDistanceForObjectDistance(
+      lens, objectDistanceMm.value_or(std::numeric_limits<double>::infinity()));
+  return film.ok() && std::abs(*film.valueMm - lens.filmDistanceMm()) <= 1e-3;
+}
+
 int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
   const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, objectGiven);
   if (!request) return kUsageError;
@@ -41,6 +68,11 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
       return 1;
     }
   }
+  // Where the lens is focused: at the object (infinity unless --object-distance says otherwise)
+  // unless --film-distance puts the film elsewhere; then the header says which object distance
+  // that film distance focuses, so that numbers for an object at infinity are never read as the
+  // in-focus ones when they are not.
+  Focus focus;
   if (filmGiven) {
     lens = lens->withFilmDistance(arguments.filmDistanceMm);
     if (!lens) {
@@ -48,17 +80,25 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
                 << " mm is beyond what a lens may have\n";
       return 1;
     }
-  } else if (objectGiven) {
+    const optics::FocusResult object =
+        optics::objectDistanceForFilmDistance(*lens, lens->filmDistanceMm());
+    focus.atObject = false;
+    focus.objectDistanceMm = object.valueMm;
+    focus.whyNot = object.whyNot;
+  } else {
     const double focusAtMm = objectDistanceMm.value_or(std::numeric_limits<double>::infinity());
     const optics::FocusResult film = optics::filmDistanceForObjectDistance(*lens, focusAtMm);
     if (!film.ok()) {
       std::cerr << "lenslab analyze: cannot focus "
-                << (objectDistanceMm ? "at " + distanceText(*objectDistanceMm) : "at infinity")
-                << ": " << film.whyNot << "\n";
+                << (objectDistanceMm ? "at " + distanceText(*objectDistanceMm)
+                                     : std::string("at infinity (the default object distance)"))
+                << ": " << film.whyNot
+                << "\n(give --film-distance MM to analyse the lens with the film there)\n";
       return 1;
     }
     lens = lens->withFilmDistance(*film.valueMm);
     if (!lens) return 1;
+    focus.objectDistanceMm = focusAtMm;
   }
 
   AnalyzeContext context;
@@ -70,23 +110,35 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   context.setup.objectDistanceFromFilmMm = objectDistanceMm;
   context.setup.wavelengthNm = arguments.wavelengthNm;
 
-  nlohmann::json json{{"lens", arguments.lensPath},
-                      {"film_distance_mm", lens->filmDistanceMm()},
-                      {"film_diagonal_mm", arguments.filmDiagonalMm},
-                      {"stop_diameter_mm", lens->stopDiameterMm()},
-                      {"wavelength_nm", arguments.wavelengthNm},
-                      {"object_distance_mm", objectDistanceMm ? nlohmann::json(*objectDistanceMm)
-                                                              : nlohmann::json(nullptr)},
-                      {"object_at_infinity", !objectDistanceMm.has_value()},
-                      {"field_fractions", arguments.fieldFractions}};
+  const bool inFocus = objectInFocus(focus, *lens, objectDistanceMm);
+  nlohmann::json json{
+      {"lens", arguments.lensPath},
+      {"film_distance_mm", lens->filmDistanceMm()},
+      {"film_diagonal_mm", arguments.filmDiagonalMm},
+      {"stop_diameter_mm", lens->stopDiameterMm()},
+      {"wavelength_nm", arguments.wavelengthNm},
+      {"object_distance_mm",
+       objectDistanceMm ? nlohmann::json(*objectDistanceMm) : nlohmann::json(nullptr)},
+      {"object_at_infinity", !objectDistanceMm.has_value()},
+      // Where the lens is focused, and so whether the object is sharp:
+      // "object_distance" (focused there first) or "film_distance" (as given).
+      {"focused_by", focus.atObject ? "object_distance" : "film_distance"},
+      {"focus_object_distance_mm", focus.objectDistanceMm && std::isfinite(*focus.objectDistanceMm)
+                                       ? nlohmann::json(*focus.objectDistanceMm)
+                                       : nlohmann::json(nullptr)},
+      {"focused_at_infinity", focus.objectDistanceMm && std::isinf(*focus.objectDistanceMm)},
+      {"object_in_focus", inFocus},
+      {"field_fractions", arguments.fieldFractions}};
   std::string text;
-  char header[512];
-  std::snprintf(header, sizeof header,
-                "%s: film distance %s, film diagonal %s, object at %s, %.2f nm\n",
-                arguments.lensPath.c_str(), millimetresText(lens->filmDistanceMm()).c_str(),
-                millimetresText(arguments.filmDiagonalMm).c_str(),
-                objectText(objectDistanceMm).c_str(), arguments.wavelengthNm);
-  text += header;
+  if (!focus.whyNot.empty()) json["focus_why_not"] = focus.whyNot;
+  // The header says where the film is, what it focuses, and which object the numbers are for.
+  text += arguments.lensPath + ": film distance " + millimetresText(lens->filmDistanceMm()) + " (" +
+          (focus.atObject ? "" : "as given, ") + focusText(focus) + "), film diagonal " +
+          millimetresText(arguments.filmDiagonalMm) + ", object at " +
+          objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
+  char wavelength[32];
+  std::snprintf(wavelength, sizeof wavelength, "%.2f nm\n", arguments.wavelengthNm);
+  text += wavelength;
   nlohmann::json unavailable = nlohmann::json::object();
   for (const AnalysisReport* report : reports) {
     text += std::string("\n== ") + report->key + " ==\n";
@@ -114,7 +166,10 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
 void addAnalyzeCommand(CLI::App& app, SubcommandRunner& run) {
   auto arguments = std::make_shared<AnalyzeArguments>();
   CLI::App* analyze = app.add_subcommand(
-      "analyze", "Analyse a lens at its film distance: " + knownAnalysisKeys() + " (JSON keys)");
+      "analyze",
+      "Analyse a lens focused at the object distance (infinity by default) or at a "
+      "given film distance: " +
+          knownAnalysisKeys() + " (JSON keys)");
   const AnalyzeOptions options = addAnalyzeOptions(*analyze, *arguments);
   CLI::Option* film = options.filmDistance;
   CLI::Option* object = options.objectDistance;

@@ -22,6 +22,10 @@ std::optional<std::vector<const AnalysisReport*>> selectedReports(const std::str
   std::vector<bool> wanted(analysisReports().size(), false);
   std::stringstream keys(only);
   for (std::string key; std::getline(keys, key, ',');) {
+    // "mtf, spot" as a person types a list: the spaces around a key are no part of it.
+    const auto first = key.find_first_not_of(" \t");
+    key = first == std::string::npos ? ""
+                                     : key.substr(first, key.find_last_not_of(" \t") + 1 - first);
     const AnalysisReport* report = findAnalysisReport(key);
     if (!report) {
       printUsageError("lenslab analyze", "--only: unknown analysis '" + key.substr(0, 40) +
@@ -51,12 +55,14 @@ AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments)
   options.filmDistance =
       analyze
           .add_option("--film-distance", arguments.filmDistanceMm,
-                      "Film distance in mm (rear vertex to film; default: the file's)")
+                      "Film distance in mm (rear vertex to film; default: the one that focuses "
+                      "the object distance, not the file's)")
           ->check(PositiveFiniteNumber());
   options.objectDistance = analyze.add_option(
       "--object-distance", arguments.objectDistance,
-      "Object distance from the film plane (mm, or 3.6 m), or 'inf' (the default); without "
-      "--film-distance the lens is focused there first");
+      "Object distance from the film plane (mm, or 3.6 m), or 'inf' (the default). Without "
+      "--film-distance the lens is focused there first; with it the film stays where it is "
+      "given, and the header says which object distance is then in focus");
   analyze
       .add_option("--film-diagonal", arguments.filmDiagonalMm,
                   "Film diagonal in mm; curves run from the axis to its corner (default "

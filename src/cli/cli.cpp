@@ -1,15 +1,18 @@
 #include "cli/cli.h"
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "app/viewer.h"
 #include "cli/analyze_command.h"
 #include "cli/focus_command.h"
 #include "cli/info_command.h"
+#include "cli/nearest_name.h"
 #include "cli/render_command.h"
 #include "cli/size_argument.h"
 #include "cli/subcommand.h"
@@ -46,7 +49,7 @@ void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
   app.add_option("--screenshot", arguments.screenshotPath,
                  "Draw --frames frames, save the window as this PNG, and exit");
   app.add_option("--script", arguments.scriptPath,
-                 "Run viewer commands from this file (see src/app/script.h)")
+                 "Run viewer commands from this file (see src/app/automation/script.h)")
       ->check(CLI::ExistingFile);
   app.add_option("--stats-json", arguments.statsJsonPath,
                  "On exit, write the viewer's frame times and edit-to-preview latency as JSON");
@@ -74,6 +77,55 @@ std::string takeFileArgument(const ViewerArguments& arguments, app::ViewerOption
            (isScene ? "scene" : "lens") + ": give one";
   }
   path = arguments.filePath;
+  return "";
+}
+
+// The options' names `parsed` (the app or one of its subcommands) knows, with their dashes.
+std::vector<std::string> optionNames(const CLI::App& parsed) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : parsed.get_options()) {
+    for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+  }
+  return names;
+}
+
+// The headless subcommands' names.
+std::vector<std::string> subcommandNames(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* subcommand : app.get_subcommands({}))
+    names.push_back(subcommand->get_name());
+  return names;
+}
+
+// "did you mean `render`?" for the first word of the command line that is a slip from a name
+// the command knows: an option of the subcommand it follows (or of the viewer), or, in place of
+// a subcommand, a subcommand (unless a file of that name exists: then it is the viewer's file).
+// Empty when no word is near one.
+std::string didYouMean(const CLI::App& app, const CLI::App& innermost,
+                       const std::vector<std::string>& words) {
+  const CLI::App* reading = &app;
+  bool first = true;
+  for (const std::string& word : words) {
+    if (word == "--") break;
+    if (reading == &app && &innermost != &app && word == innermost.get_name()) {
+      reading = &innermost;
+      continue;
+    }
+    if (word.size() > 1 && word[0] == '-' && !std::isdigit(static_cast<unsigned char>(word[1]))) {
+      const std::string name = word.substr(0, word.find('='));
+      if (reading->get_option_no_throw(name) != nullptr) continue;
+      if (const auto near = nearestName(name, optionNames(*reading)))
+        return "did you mean `" + *near + "`?";
+      continue;
+    }
+    std::error_code ignored;  // a name too long for a path is no file either
+    if (first && reading == &app && !std::filesystem::exists(word, ignored)) {
+      if (const auto near = nearestName(word, subcommandNames(app)))
+        return "did you mean `" + *near + "`?";
+    }
+    first = false;
+  }
   return "";
 }
 
@@ -112,9 +164,6 @@ int runViewer(const ViewerArguments& arguments) {
 int run(int argc, char** argv) {
   CLI::App app{"lenslab: see what a real camera lens does", "lenslab"};
   app.set_version_flag("--version", std::string("lenslab ") + LENSLAB_VERSION);
-  app.footer(
-      "With no subcommand, opens the viewer (needs a display).\n"
-      "Headless: lenslab SUBCOMMAND --help for each subcommand.");
   ViewerArguments viewerArguments;
   addViewerOptions(app, viewerArguments);
   SubcommandRunner subcommand;  // set when a headless subcommand was named
@@ -122,6 +171,11 @@ int run(int argc, char** argv) {
   addFocusCommand(app, subcommand);
   addAnalyzeCommand(app, subcommand);
   addRenderCommand(app, subcommand);
+  // After the subcommands: CLI11 gives a subcommand its parent's footer when it is added, and a
+  // subcommand's help is no place for the viewer's.
+  app.footer(
+      "With no subcommand, opens the viewer (needs a display).\n"
+      "Headless: lenslab SUBCOMMAND --help for each subcommand.");
 
   try {
     app.parse(argc, argv);
@@ -134,11 +188,16 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     // The error belongs to the innermost subcommand parsed so far (render for render --spp 0).
     std::string command = "lenslab";
-    for (const CLI::App* parsed = &app; !parsed->get_subcommands().empty();) {
-      parsed = parsed->get_subcommands().back();
-      command += " " + parsed->get_name();
+    const CLI::App* innermost = &app;
+    while (!innermost->get_subcommands().empty()) {
+      innermost = innermost->get_subcommands().back();
+      command += " " + innermost->get_name();
     }
-    printUsageError(command, error.what());
+    std::string message = error.what();
+    const std::string hint =
+        didYouMean(app, *innermost, std::vector<std::string>(argv + 1, argv + argc));
+    if (!hint.empty()) message += " (" + hint + ")";
+    printUsageError(command, message);
     return kUsageError;
   }
   // Last resort: nothing a user passes may end in an uncaught exception (an abort, exit 134).

@@ -4,17 +4,21 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "cli/number_validators.h"
 #include "cli/size_argument.h"
 #include "cli/usage_error.h"
+#include "render/auto_exposure.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
 #include "render/pbrt_parser.h"
@@ -38,14 +42,81 @@ void printDiagnostics(const Diagnostics& diagnostics) {
   std::fputs(diagnostics.formatAll().c_str(), stderr);
 }
 
-void drawProgress(double fraction) {
+// "42 s", "3 min 05 s", "2 h 07 min": a duration as a person reads it.
+std::string durationText(double seconds) {
+  char text[48];
+  const long whole = std::lround(std::max(0.0, seconds));
+  if (seconds < 10.0)
+    std::snprintf(text, sizeof text, "%.1f s", std::max(0.0, seconds));
+  else if (whole < 60)
+    std::snprintf(text, sizeof text, "%ld s", whole);
+  else if (whole < 3600)
+    std::snprintf(text, sizeof text, "%ld min %02ld s", whole / 60, whole % 60);
+  else
+    std::snprintf(text, sizeof text, "%ld h %02ld min", whole / 3600, (whole % 3600) / 60);
+  return text;
+}
+
+// The bar with the time left, extrapolated from the time the waves so far took (each wave is
+// the same samples per pixel over the whole image, so the rate holds).
+void drawProgress(double fraction, double elapsedSeconds) {
   constexpr int kWidth = 40;
   const int filled = static_cast<int>(fraction * kWidth + 0.5);
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\r[%s] %3d%%", bar.c_str(), static_cast<int>(fraction * 100.0 + 0.5));
+  const std::string left =
+      fraction >= 1.0  ? "done in " + durationText(elapsedSeconds)
+      : fraction > 0.0 ? durationText(elapsedSeconds * (1.0 - fraction) / fraction) + " left"
+                       : std::string("starting");
+  // Padded so that a shorter text overwrites the end of a longer one on the same line.
+  std::fprintf(stderr, "\r[%s] %3d%%  %-20s", bar.c_str(), static_cast<int>(fraction * 100.0 + 0.5),
+               left.c_str());
   if (fraction >= 1.0) std::fputc('\n', stderr);
   std::fflush(stderr);
+}
+
+// --exposure: a number of stops, or "auto" (the viewer's metering, render/auto_exposure.h).
+class ExposureValue : public CLI::Validator {
+ public:
+  ExposureValue() {
+    name_ = "STOPS|auto";
+    func_ = [](std::string& text) -> std::string {
+      if (text == "auto") return {};
+      return FiniteNumber()(text).empty() ? std::string()
+                                          : "'" + text + "' is neither a number of stops nor auto";
+    };
+  }
+};
+
+// ".png" for out.PNG: the extension that says the output's format, in lower case.
+std::string lowerExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+bool knownImageExtension(const std::string& path) {
+  const std::string extension = lowerExtension(path);
+  return extension == ".png" || extension == ".exr" || extension == ".pfm";
+}
+
+// Before any rendering: the picture (and the statistics) can be written where they are to go,
+// so that a typo in a directory name costs no render. Prints the error; false if not.
+bool checkOutputs(const std::string& outPath, const std::string& statsJsonPath, bool* usage) {
+  *usage = false;
+  if (!knownImageExtension(outPath)) {
+    printUsageError("lenslab render", outPath + ": unknown image format (use .png, .exr or .pfm)");
+    *usage = true;
+    return false;
+  }
+  for (const std::string& path : {outPath, statsJsonPath}) {
+    if (path.empty()) continue;
+    if (const std::string error = checkWritable(path); !error.empty()) {
+      std::fprintf(stderr, "lenslab render: %s (nothing was rendered)\n", error.c_str());
+      return false;
+    }
+  }
+  return true;
 }
 
 bool writeStats(const std::string& path, const nlohmann::json& stats, std::string& error) {
@@ -79,10 +150,13 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
                       "(default: the scene's film filename, else out.png)");
   command->add_option("--stats-json", arguments->statsJsonPath, "Write timing statistics here");
   command
-      ->add_option("--exposure", arguments->exposureStops,
-                   "PNG exposure in stops (default: log2 of the Film's \"scale\", else 0)")
-      ->check(FiniteNumber());
-  command->add_flag("--quiet", arguments->quiet, "No progress bar");
+      ->add_option("--exposure", arguments->exposure,
+                   "PNG exposure in stops, or 'auto': metered as the viewer's auto exposure "
+                   "does (default: log2 of the Film's \"scale\", else 0)")
+      ->check(ExposureValue())
+      ->type_name("STOPS|auto");
+  command->add_flag("--quiet", arguments->quiet,
+                    "No progress bar (on a terminal) and no closing line");
   command->add_flag("--no-cos4", arguments->noCos4,
                     "Realistic camera without Kolb's cos^4 in the exposure weight (teaching)");
   command
@@ -121,19 +195,28 @@ int runRenderCommand(const RenderArguments& arguments) {
       !arguments.noCos4, !arguments.noRims,
       render::parseSpectralMode(arguments.spectral).value_or(render::SpectralMode::Auto)};
 
+  // A named output is checked before the scene is even read (a large scene takes a while).
+  bool usage = false;
+  if (!arguments.outPath.empty() &&
+      !checkOutputs(arguments.outPath, arguments.statsJsonPath, &usage)) {
+    return usage ? kUsageError : kFailure;
+  }
+
   render::ParseResult parsed = render::parsePbrtFile(arguments.scenePath);
   printDiagnostics(parsed.diagnostics);
   if (!parsed.scene) return kFailure;
   const render::SceneDescription& description = *parsed.scene;
 
   std::string outPath = arguments.outPath;
-  if (outPath.empty())
+  // Without --out the picture goes where the scene says, else out.png, in the working
+  // directory: the closing line names it, as nothing on the command line does.
+  std::string outOrigin;
+  if (outPath.empty()) {
     outPath = description.film.filename.empty() ? "out.png" : description.film.filename;
-  std::string extension = std::filesystem::path(outPath).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".png" && extension != ".exr" && extension != ".pfm") {
-    printUsageError("lenslab render", outPath + ": unknown image format (use .png, .exr or .pfm)");
-    return kUsageError;
+    outOrigin = description.film.filename.empty() ? "no --out, the default name"
+                                                  : "no --out, the scene's Film \"filename\"";
+    if (!checkOutputs(outPath, arguments.statsJsonPath, &usage))
+      return usage ? kUsageError : kFailure;
   }
 
   Diagnostics cameraDiagnostics;
@@ -168,9 +251,14 @@ int runRenderCommand(const RenderArguments& arguments) {
     job.settings.integrator.kind = render::IntegratorKind::DirectLighting;
   }
   const bool showProgress = !arguments.quiet && isatty(STDERR_FILENO);
-  const auto snapshot =
-      render::renderToCompletion(job, showProgress ? std::function<void(double)>(drawProgress)
-                                                   : std::function<void(double)>());
+  const Clock::time_point renderStarted = Clock::now();
+  std::function<void(double)> progress;
+  if (showProgress) {
+    progress = [renderStarted](double fraction) {
+      drawProgress(fraction, secondsSince(renderStarted));
+    };
+  }
+  const auto snapshot = render::renderToCompletion(job, progress);
   if (!snapshot) {
     std::fprintf(stderr, "lenslab render: nothing was rendered\n");
     return kFailure;
@@ -178,14 +266,39 @@ int runRenderCommand(const RenderArguments& arguments) {
   render::FloatImage image{snapshot->width, snapshot->height, snapshot->rgb};
   // A PNG's exposure: --exposure, else the one the scene sets (Film "scale", as the viewer shows
   // it); EXR and PFM hold the radiance.
-  double exposureStops = arguments.exposureStops;
-  if (arguments.command->count("--exposure") == 0 && description.film.scale) {
+  double exposureStops = 0.0;
+  std::string exposureText;  // for the closing line, when it applies (a PNG)
+  if (arguments.exposure == "auto") {
+    exposureStops = render::autoExposureStops(image);
+    exposureText = "auto exposure";
+  } else if (!arguments.exposure.empty()) {
+    exposureStops = std::stod(arguments.exposure);  // checked by ExposureValue
+    exposureText = "exposure";
+  } else if (description.film.scale) {
     exposureStops = std::log2(*description.film.scale);
+    exposureText = "the Film's exposure";
   }
   const render::WriteResult written = render::writeImage(outPath, image, exposureStops);
   if (!written.ok) {
     std::fprintf(stderr, "lenslab render: %s\n", written.error.c_str());
     return kFailure;
+  }
+  const bool png = lowerExtension(outPath) == ".png";  // the only format with an exposure
+  if (!arguments.quiet) {
+    // The closing line: what was made, how long it took, and where it is.
+    std::string where = outPath;
+    if (!outOrigin.empty()) {
+      std::error_code ignored;
+      const auto absolute = std::filesystem::absolute(outPath, ignored);
+      where = (absolute.empty() ? outPath : absolute.string()) + " (" + outOrigin + ")";
+    }
+    char exposure[64] = "";
+    if (png && !exposureText.empty())
+      std::snprintf(exposure, sizeof exposure, ", %s %+.2f stops", exposureText.c_str(),
+                    exposureStops);
+    std::fprintf(stderr, "lenslab render: %dx%d, %d spp, %s%s: wrote %s\n", snapshot->width,
+                 snapshot->height, snapshot->samplesPerPixel,
+                 durationText(snapshot->renderSeconds).c_str(), exposure, where.c_str());
   }
   if (!arguments.statsJsonPath.empty()) {
     const auto& statistics = snapshot->statistics;
@@ -209,6 +322,7 @@ int runRenderCommand(const RenderArguments& arguments) {
     stats["falloff"] = overrides.falloff.describe();
     stats["spectral"] = camera->spectral();
     stats["output"] = outPath;
+    if (png) stats["exposure_stops"] = exposureStops;
     std::string error;
     if (!writeStats(arguments.statsJsonPath, stats, error)) {
       std::fprintf(stderr, "lenslab render: %s\n", error.c_str());

@@ -20,7 +20,7 @@ struct RenderArguments {
   std::string integrator;  // empty: the scene's
   std::string outPath;
   std::string statsJsonPath;
-  double exposureStops = 0.0;
+  std::string exposure;  // stops (a number), "auto", or empty: the scene's
   bool quiet = false;
   bool noCos4 = false, noRims = false;  // the teaching toggles (render/falloff_toggles.h)
   std::string spectral = "auto";        // on, off, auto (render/spectral_mode.h)

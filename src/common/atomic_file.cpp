@@ -39,6 +39,27 @@ std::string writeThroughTemporary(
   return {};
 }
 
+std::string checkWritable(const std::filesystem::path& path) {
+  const std::string prefix = "cannot write " + path.string() + ": ";
+  const std::filesystem::path directory =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::error_code error;
+  if (!std::filesystem::exists(directory, error))
+    return prefix + "the directory " + directory.string() + " does not exist";
+  if (!std::filesystem::is_directory(directory, error))
+    return prefix + directory.string() + " is not a directory";
+  if (std::filesystem::is_directory(path, error)) return prefix + "it is a directory";
+  // The very temporary the write will use: the same name length, directory permissions and
+  // filesystem (root passes every permission check, but not a read-only filesystem's).
+  const std::filesystem::path temporary = temporaryFor(path);
+  errno = 0;
+  std::ofstream probe(temporary, std::ios::binary | std::ios::trunc);
+  if (!probe) return prefix + std::strerror(errno != 0 ? errno : EACCES);
+  probe.close();
+  std::filesystem::remove(temporary, error);
+  return {};
+}
+
 std::string writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
   return writeThroughTemporary(path, [&](const std::filesystem::path& temporary) -> std::string {
     std::ofstream output(temporary, std::ios::binary | std::ios::trunc);

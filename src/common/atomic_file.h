@@ -20,4 +20,10 @@ std::string writeThroughTemporary(
     const std::filesystem::path& path,
     const std::function<std::string(const std::filesystem::path& temporary)>& write);
 
+// Whether a file could be written at `path` now, before the work that makes it (a long render):
+// its directory exists and the temporary the write would use can be created there (and is
+// removed again). "" if so, else a message that names `path` and says why not ("the directory
+// renders does not exist", "Permission denied", "Read-only file system", "File name too long").
+std::string checkWritable(const std::filesystem::path& path);
+
 }  // namespace lenslab

@@ -29,8 +29,17 @@ void reportEmptyScene(const SceneDescription& scene, Diagnostics& diagnostics) {
                          anyInstancedObject(scene, [](const std::vector<ShapeDescription>& shapes) {
                            return !shapes.empty();
                          });
+  // A sky alone is a picture, as in pbrt: every camera ray escapes to the infinite light. Without
+  // one, no light can reach the camera however the lights are placed.
+  const bool hasSky =
+      std::any_of(scene.lights.begin(), scene.lights.end(),
+                  [](const LightDescription& light) { return light.type == "infinite"; });
   if (!hasShapes) {
-    diagnostics.error(file, "the scene has no shapes: there is nothing to render");
+    if (!hasSky) {
+      diagnostics.error(file,
+                        "the scene has no shapes and no infinite light (a sky): no light can "
+                        "reach the camera, there is nothing to render");
+    }
     return;
   }
   const bool hasLight =

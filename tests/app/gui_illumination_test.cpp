@@ -62,7 +62,9 @@ TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
   EXPECT_NEAR(wide.rows.back()[0], 0.5 * diagonal, 1e-6);
   const auto analyzed = testing::runProcess(
       std::string("env -u DISPLAY '") + LENSLAB_BINARY + "' analyze --json --film-diagonal " +
-          std::to_string(diagonal) + " '" + (scratch / "wide-as-shown.dat").string() + "'",
+          std::to_string(diagonal) + " --film-distance " +
+          std::to_string(ui["state"]["film_distance_mm"].get<double>()) + " '" +
+          (scratch / "wide-as-shown.dat").string() + "'",
       scratch);
   ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
   const auto points = nlohmann::json::parse(analyzed.out).at("relative_illumination");

@@ -36,7 +36,8 @@ TEST(MtfPanel, PlotsTheMtfAnalyzeGivesAndFollowsEdits) {
   const auto scratch = testing::makeTestDirectory("mtf-panel");
   const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
   // Film at 36.0 mm, nearer than the infinity focus (36.11 mm): the panel's object is at
-  // infinity, as analyze's is by default.
+  // infinity, as analyze's is by default (analyze is told the film distance: by default it would
+  // focus at infinity first).
   std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
                                              << "set layout 0.3 0.36 0.45\n"
                                                 "set film-distance 36.0\n"
@@ -73,10 +74,11 @@ TEST(MtfPanel, PlotsTheMtfAnalyzeGivesAndFollowsEdits) {
   }
 
   // analyze's MTF of the lens as shown: 65 samples to the axis's cutoff, so every other row.
-  const auto analyzed = testing::runProcess(std::string("env -u DISPLAY '") + LENSLAB_BINARY +
-                                                "' analyze --json --only mtf '" +
-                                                (scratch / "as-shown.dat").string() + "'",
-                                            scratch);
+  const auto analyzed =
+      testing::runProcess(std::string("env -u DISPLAY '") + LENSLAB_BINARY +
+                              "' analyze --json --only mtf --film-distance 36.0 '" +
+                              (scratch / "as-shown.dat").string() + "'",
+                          scratch);
   ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
   const auto fields = nlohmann::json::parse(analyzed.out).at("mtf").at("fields");
   ASSERT_EQ(fields.size(), 3u);

@@ -10,6 +10,7 @@
 
 #include "cli/analyze_test_fixture.h"
 #include "cli/headless_lenslab.h"
+#include "common/distance_text.h"
 #include "support/run_process.h"
 
 namespace lenslab {
@@ -27,7 +28,8 @@ class AnalyzeCommand : public AnalyzeTest {
 TEST_F(AnalyzeCommand, RelativeIlluminationOfABareOpeningFollowsTheClosedForm) {
   const std::string lens =
       writeFile("opening.dat", "# a 20 mm stop, 30 mm from the film\n0 30 0 20\n");
-  const auto json = analyzeJson(lens + " --film-diagonal 60 --only relative_illumination");
+  const auto json =
+      analyzeJson(lens + " --film-distance 30 --film-diagonal 60 --only relative_illumination");
   ASSERT_TRUE(json.contains("relative_illumination"));
   EXPECT_EQ(json.at("film_distance_mm").get<double>(), 30.0);
   EXPECT_EQ(json.at("film_diagonal_mm").get<double>(), 60.0);
@@ -71,6 +73,69 @@ TEST_F(AnalyzeCommand, FocusesFirstWhenGivenAnObjectDistance) {
   EXPECT_FALSE(corner.at("clipped_by").empty());
 }
 
+// Without --film-distance the lens is focused at the object distance, infinity by default, as
+// the help says: the telephoto's file puts its film where it focuses 3.7 m, where the on-axis
+// spot of an object at infinity is over a millimetre wide.
+TEST_F(AnalyzeCommand, FocusesAtInfinityByDefault) {
+  const std::string telephoto = lensPath("telephoto-250mm.dat");
+  const auto focus =
+      testing::runProcess(lenslab("focus --json --object-distance inf " + telephoto), scratch);
+  ASSERT_EQ(focus.exitCode, 0) << focus.err;
+  const double infinityFilm = nlohmann::json::parse(focus.out).at("film_distance_mm").get<double>();
+  ASSERT_GT(std::abs(infinityFilm - 123.7439), 1.0);  // the file's film is elsewhere
+  auto axialSpotUm = [](const nlohmann::json& json) {
+    return json.at("spot").at("fields")[0].at("rms_radius_um").get<double>();
+  };
+  const auto byDefault = analyzeJson("--only spot " + telephoto);
+  const auto atInfinity = analyzeJson("--only spot --object-distance inf " + telephoto);
+  const auto atFileFilm = analyzeJson("--only spot --film-distance 123.7439 " + telephoto);
+  EXPECT_NEAR(byDefault.at("film_distance_mm").get<double>(), infinityFilm, 1e-9);
+  EXPECT_EQ(axialSpotUm(byDefault), axialSpotUm(atInfinity));
+  EXPECT_LT(axialSpotUm(byDefault), 50.0);
+  EXPECT_GT(axialSpotUm(atFileFilm), 20.0 * axialSpotUm(byDefault));
+  EXPECT_EQ(byDefault.at("focused_by"), "object_distance");
+  EXPECT_TRUE(byDefault.at("focused_at_infinity").get<bool>());
+  EXPECT_TRUE(byDefault.at("object_in_focus").get<bool>());
+
+  // A given film distance stays, and the header says where it focuses: at the distance `focus`
+  // finds for it, with the object at infinity out of focus.
+  const auto reverse =
+      testing::runProcess(lenslab("focus --json --film-distance 123.7439 " + telephoto), scratch);
+  ASSERT_EQ(reverse.exitCode, 0) << reverse.err;
+  const double focusedMm =
+      nlohmann::json::parse(reverse.out).at("object_distance_mm").get<double>();
+  EXPECT_EQ(atFileFilm.at("focused_by"), "film_distance");
+  EXPECT_NEAR(atFileFilm.at("focus_object_distance_mm").get<double>(), focusedMm, 1e-9);
+  EXPECT_FALSE(atFileFilm.at("focused_at_infinity").get<bool>());
+  EXPECT_FALSE(atFileFilm.at("object_in_focus").get<bool>());
+  EXPECT_TRUE(atFileFilm.at("object_at_infinity").get<bool>());
+  const auto text = testing::runProcess(
+      lenslab("analyze --only spot --film-distance 123.7439 " + telephoto), scratch);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  const std::string header = text.out.substr(0, text.out.find('\n'));
+  EXPECT_NE(header.find("as given, focused at " + distanceText(focusedMm) + " from the film"),
+            std::string::npos)
+      << header;
+  EXPECT_NE(header.find("object at infinity (out of focus)"), std::string::npos) << header;
+  const auto focusedText =
+      testing::runProcess(lenslab("analyze --only spot " + telephoto), scratch);
+  ASSERT_EQ(focusedText.exitCode, 0) << focusedText.err;
+  const std::string focusedHeader = focusedText.out.substr(0, focusedText.out.find('\n'));
+  EXPECT_NE(focusedHeader.find("(focused at infinity)"), std::string::npos) << focusedHeader;
+  EXPECT_EQ(focusedHeader.find("out of focus"), std::string::npos) << focusedHeader;
+}
+
+// A lens that forms no real image of an object at infinity cannot be focused there by default:
+// the command says so and why, instead of analysing it at the file's film distance.
+TEST_F(AnalyzeCommand, SaysWhyItCannotFocusAtInfinityByDefault) {
+  const std::string opening = writeFile("opening.dat", "# a bare 20 mm stop\n0 30 0 20\n");
+  const auto refused = testing::runProcess(lenslab("analyze --only spot " + opening), scratch);
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_NE(refused.err.find("cannot focus at infinity"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("no real image"), std::string::npos) << refused.err;
+  EXPECT_TRUE(refused.out.empty()) << refused.out;
+}
+
 TEST_F(AnalyzeCommand, TextTableAndBadOptions) {
   const auto text = testing::runProcess(lenslab("analyze " + lensPath("wide-22mm.dat")), scratch);
   ASSERT_EQ(text.exitCode, 0) << text.err;
@@ -107,6 +172,17 @@ TEST_F(AnalyzeCommand, OnlyRunsTheNamedAnalyses) {
   EXPECT_EQ(json.at("wavelength_nm").get<double>(), 656.27);
   EXPECT_TRUE(json.at("object_at_infinity").get<bool>());
   EXPECT_TRUE(json.at("object_distance_mm").is_null());
+}
+
+// A list as a person types it, with spaces after the commas, names the same analyses.
+TEST_F(AnalyzeCommand, OnlyAcceptsSpacesAroundTheKeys) {
+  const auto json = analyzeJson("--only 'mtf, spot' --fields 0 " + lensPath("dgauss-50mm.dat"));
+  EXPECT_TRUE(json.contains("mtf"));
+  EXPECT_TRUE(json.contains("spot"));
+  EXPECT_FALSE(json.contains("relative_illumination"));
+  const auto padded = analyzeJson("--only ' distortion ,seidel ' " + lensPath("dgauss-50mm.dat"));
+  EXPECT_TRUE(padded.contains("distortion"));
+  EXPECT_TRUE(padded.contains("seidel"));
 }
 
 // `mtf` of a slow singlet (f/40: a hundredth of a wave of spherical aberration) at its paraxial

@@ -34,7 +34,7 @@ constexpr double kBackFocusMm = 99.9333;
 TEST_F(AnalyzeDistortion, ThinLensWithTheStopAtTheLens) {
   const std::string lens = writeFile("thin.dat", kThinLens);
   const auto json = analyzeJson(lens +
-                                " --film-diagonal 40 --points 33 --only "
+                                " --film-distance 99 --film-diagonal 40 --points 33 --only "
                                 "distortion,field_curvature,distortion_grid");
   const auto& distortion = json.at("distortion");
   ASSERT_EQ(distortion.size(), 33u);
@@ -112,7 +112,8 @@ TEST_F(AnalyzeDistortion, FieldsNoRayReachesAreNullWithAReason) {
 TEST_F(AnalyzeDistortion, AnAfocalLensIsRefusedWithAReason) {
   const std::string lens = writeFile("opening.dat", "0 30 0 20\n");
   const auto result = testing::runProcess(
-      lenslab("analyze --json --only distortion,field_curvature " + lens), scratch);
+      lenslab("analyze --json --film-distance 30 --only distortion,field_curvature " + lens),
+      scratch);
   EXPECT_EQ(result.exitCode, 1);
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_TRUE(json.at("distortion").is_null());

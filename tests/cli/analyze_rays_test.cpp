@@ -23,7 +23,8 @@ class AnalyzeRays : public AnalyzeTest {
 
 TEST_F(AnalyzeRays, BareOpeningFansAndSpotsAreTheBundlesSpread) {
   const std::string lens = writeFile("opening.dat", "0 30 0 20\n");
-  const auto json = analyzeJson(lens + " --only ray_fan,spot --fields 0,0.5 --film-diagonal 40");
+  const auto json = analyzeJson(
+      lens + " --film-distance 30 --only ray_fan,spot --fields 0,0.5 --film-diagonal 40");
   EXPECT_FALSE(json.contains("relative_illumination"));
   const auto& fans = json.at("ray_fan");
   EXPECT_EQ(fans.at("wavelengths_nm"), nlohmann::json::array({587.56}));

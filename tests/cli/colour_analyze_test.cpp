@@ -112,7 +112,8 @@ TEST_F(ColourAnalyze, LensWithoutAbbeNumbersHasNoChromaticKeys) {
 TEST_F(ColourAnalyze, AfocalLensIsUnavailableWithAReason) {
   const std::string window = writeFile("window.dat", "inf 5 1.5 20 60\ninf 1 1 20\n0 50 0 10\n");
   const auto result = testing::runProcess(
-      lenslab("analyze --json --only seidel,chromatic_focal_shift_mm " + window), scratch);
+      lenslab("analyze --json --film-distance 50 --only seidel,chromatic_focal_shift_mm " + window),
+      scratch);
   EXPECT_EQ(result.exitCode, 1);
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_TRUE(json.at("seidel").is_null());

@@ -64,6 +64,67 @@ TEST_F(CommandLine, UsageErrorsAreOneLineAndTheCommandsHelpHint) {
   }
 }
 
+// The viewer's --script help points at the file that lists the script commands.
+TEST_F(CommandLine, ScriptHelpNamesTheRealPathOfTheCommands) {
+  const auto result = testing::runProcess(lenslab("--help"), scratch);
+  ASSERT_EQ(result.exitCode, 0);
+  const std::size_t at = result.out.find("src/app/automation/script.h");
+  ASSERT_NE(at, std::string::npos) << result.out;
+  EXPECT_TRUE(
+      std::filesystem::exists(std::string(LENSLAB_SOURCE_DIR) + "/src/app/automation/script.h"));
+  EXPECT_EQ(result.out.find("src/app/script.h"), std::string::npos) << result.out;
+  // The viewer's own help keeps its footer.
+  EXPECT_NE(result.out.find("With no subcommand, opens the viewer"), std::string::npos);
+}
+
+// A subcommand's help is about the subcommand: not the viewer's footer nor its options.
+TEST_F(CommandLine, SubcommandHelpHasNothingOfTheViewer) {
+  for (const char* subcommand : {"info", "focus", "analyze", "render"}) {
+    const auto result = testing::runProcess(lenslab(std::string(subcommand) + " --help"), scratch);
+    ASSERT_EQ(result.exitCode, 0) << subcommand;
+    EXPECT_NE(result.out.find(std::string("lenslab ") + subcommand), std::string::npos)
+        << result.out;
+    for (const char* viewerOnly :
+         {"opens the viewer", "--screenshot", "--script", "--wait-spp", "--frames"}) {
+      EXPECT_EQ(result.out.find(viewerOnly), std::string::npos)
+          << subcommand << " --help shows " << viewerOnly << ":\n"
+          << result.out;
+    }
+  }
+}
+
+// A misspelt subcommand or option is answered with the nearest one, in the error's one line;
+// a word near nothing gets no guess.
+TEST_F(CommandLine, MisspeltNamesAreAnsweredWithTheNearestOne) {
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
+  const std::string scene = std::string(LENSLAB_SOURCE_DIR) + "/scenes/default.pbrt";
+  struct Case {
+    std::string arguments, command, suggestion;
+  };
+  const Case cases[] = {
+      {"rendr x.pbrt", "lenslab", "did you mean `render`?"},
+      {"anlayze " + lens, "lenslab", "did you mean `analyze`?"},
+      {"analyze " + lens + " --ony spot", "lenslab analyze", "did you mean `--only`?"},
+      {"analyze " + lens + " --film-distnace 40", "lenslab analyze",
+       "did you mean `--film-distance`?"},
+      {"render " + scene + " --sp 4", "lenslab render", "did you mean `--spp`?"},
+      {"--screenshots x.png", "lenslab", "did you mean `--screenshot`?"},
+  };
+  for (const auto& c : cases) {
+    const auto result = testing::runProcess(lenslab(c.arguments), scratch);
+    EXPECT_EQ(result.exitCode, 2) << c.arguments << ": " << result.err;
+    const std::string firstLine = result.err.substr(0, result.err.find('\n'));
+    EXPECT_EQ(firstLine.rfind(c.command + ": ", 0), 0u) << c.arguments << ": " << result.err;
+    EXPECT_NE(firstLine.find(c.suggestion), std::string::npos) << c.arguments << ": " << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 2) << result.err;
+  }
+  for (const char* far : {"--frobnicate", "render-everything-now", "-q"}) {
+    const auto result = testing::runProcess(lenslab(far), scratch);
+    EXPECT_EQ(result.exitCode, 2) << far;
+    EXPECT_EQ(result.err.find("did you mean"), std::string::npos) << far << ": " << result.err;
+  }
+}
+
 TEST_F(CommandLine, BadSizesAreClearErrorsWithExit2) {
   for (const char* size : {"0x0", "garbage", "10x-3"}) {
     const auto result =

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -193,6 +195,179 @@ TEST_F(RenderCommand, AnEmptySceneIsAnErrorAndWritesNoImage) {
     EXPECT_EQ(result.exitCode, 0) << name << "\n" << result.err;
     EXPECT_TRUE(std::filesystem::exists(out)) << name;
   }
+}
+
+// A sky alone is a picture, as in pbrt: through a pinhole every pixel is the sky's radiance L.
+TEST_F(RenderCommand, ASceneOfOnlyASkyRendersTheSky) {
+  std::ofstream(scratch / "sky.pbrt")
+      << "LookAt 0 0 0  0 0 -1  0 1 0\nCamera \"perspective\" \"float fov\" [60]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.25 0.5 1.5]\nWorldEnd\n";
+  const auto out = scratch / "sky.pfm";
+  const auto result = testing::runProcess(
+      lenslab("render '" + (scratch / "sky.pbrt").string() +
+              "' --spp 4 --resolution 16x12 --quiet --out '" + out.string() + "'"),
+      scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream in(out, std::ios::binary);
+  std::string magic;
+  int width = 0, height = 0;
+  double scale = 0;
+  in >> magic >> width >> height >> scale;
+  in.get();
+  ASSERT_EQ(magic, "PF");
+  ASSERT_EQ(width * height, 16 * 12);
+  std::vector<float> rgb(static_cast<std::size_t>(width) * height * 3);
+  in.read(reinterpret_cast<char*>(rgb.data()), static_cast<std::streamsize>(rgb.size() * 4));
+  ASSERT_TRUE(in) << "short PFM";
+  const float L[3] = {0.25f, 0.5f, 1.5f};
+  for (std::size_t i = 0; i < rgb.size(); ++i)
+    ASSERT_NEAR(rgb[i], L[i % 3], 1e-3 * L[i % 3]) << "value " << i;
+}
+
+// Where the picture cannot go is said before any rendering: a render of 2^20 samples per pixel
+// (hours) ends at once (`timeout` stops a render that started: exit 124).
+TEST_F(RenderCommand, ChecksItsOutputBeforeRendering) {
+  std::filesystem::create_directories(scratch / "folder.png");
+  std::ofstream(scratch / "plain-file") << "not a directory\n";
+  struct Case {
+    std::string out;
+    int exitCode;
+    std::string message;
+  };
+  const Case cases[] = {
+      {(scratch / "no-such-directory" / "out.png").string(), 1,
+       "the directory " + (scratch / "no-such-directory").string() + " does not exist"},
+      {(scratch / "folder.png").string(), 1, "it is a directory"},
+      {(scratch / "plain-file" / "out.png").string(), 1, "plain-file is not a directory"},
+      {(scratch / "out.tiff").string(), 2, "unknown image format"},
+  };
+  const std::string slow = "--spp 1048576 --resolution 64x48 --quiet";
+  for (const Case& c : cases) {
+    const auto result =
+        testing::runProcess("timeout 60 " + lenslab("render '" + (scratch / "scene.pbrt").string() +
+                                                    "' " + slow + " --out '" + c.out + "'"),
+                            scratch);
+    EXPECT_EQ(result.exitCode, c.exitCode) << c.out << "\n" << result.err;
+    EXPECT_NE(result.err.find(c.message), std::string::npos) << c.out << "\n" << result.err;
+  }
+  // Without --out, the scene's Film "filename" is checked as soon as the scene is read.
+  std::ofstream(scratch / "elsewhere.pbrt")
+      << "LookAt 0 1 4  0 0.3 0  0 1 0\nCamera \"perspective\" \"float fov\" [40]\n"
+         "Film \"image\" \"string filename\" \"gone/picture.png\"\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.3 0.3 0.3]\n"
+         "Shape \"sphere\" \"float radius\" [0.5]\nWorldEnd\n";
+  const auto film = testing::runProcess(
+      "cd '" + scratch.string() + "' && timeout 60 " +
+          lenslab("render '" + (scratch / "elsewhere.pbrt").string() + "' " + slow),
+      scratch);
+  EXPECT_EQ(film.exitCode, 1) << film.err;
+  EXPECT_NE(film.err.find("cannot write gone/picture.png: the directory gone does not exist"),
+            std::string::npos)
+      << film.err;
+  // The statistics' file too.
+  const auto stats = testing::runProcess(
+      "timeout 60 " + lenslab("render '" + (scratch / "scene.pbrt").string() + "' " + slow +
+                              " --out '" + (scratch / "fine.png").string() + "' --stats-json '" +
+                              (scratch / "nowhere" / "stats.json").string() + "'"),
+      scratch);
+  EXPECT_EQ(stats.exitCode, 1) << stats.err;
+  EXPECT_NE(stats.err.find("nowhere does not exist"), std::string::npos) << stats.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch / "fine.png"));
+}
+
+// Unless --quiet, a closing line says what was made and where: with no --out, the full path of
+// the file and why it is there.
+TEST_F(RenderCommand, AClosingLineSaysWhatWasWrittenAndWhere) {
+  const auto named = testing::runProcess(
+      lenslab("render '" + (scratch / "scene.pbrt").string() +
+              "' --spp 2 --resolution 20x10 --out '" + (scratch / "named.png").string() + "'"),
+      scratch);
+  ASSERT_EQ(named.exitCode, 0) << named.err;
+  EXPECT_NE(named.err.find("lenslab render: 20x10, 2 spp, "), std::string::npos) << named.err;
+  EXPECT_NE(named.err.find("wrote " + (scratch / "named.png").string() + "\n"), std::string::npos)
+      << named.err;
+
+  const auto defaulted = testing::runProcess(
+      "cd '" + scratch.string() + "' && " +
+          lenslab("render '" + (scratch / "scene.pbrt").string() + "' --spp 1 --resolution 8x6"),
+      scratch);
+  ASSERT_EQ(defaulted.exitCode, 0) << defaulted.err;
+  EXPECT_TRUE(std::filesystem::exists(scratch / "out.png"));
+  EXPECT_NE(defaulted.err.find("wrote " + (scratch / "out.png").string() +
+                               " (no --out, the default name)"),
+            std::string::npos)
+      << defaulted.err;
+
+  const auto quiet = testing::runProcess(lenslab("render '" + (scratch / "scene.pbrt").string() +
+                                                 "' --spp 1 --resolution 8x6 --quiet --out '" +
+                                                 (scratch / "quiet.png").string() + "'"),
+                                         scratch);
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+}
+
+// On a terminal the progress bar says how long is left; `script` gives the render a terminal.
+TEST_F(RenderCommand, ProgressOnATerminalShowsTheTimeLeft) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
+  const std::string command =
+      lenslab("render '" + (scratch / "scene.pbrt").string() +
+              "' --spp 16 --resolution 32x24 --out '" + (scratch / "tty.png").string() + "'");
+  std::ofstream(scratch / "tty.sh") << command << "\n";
+  const auto result = testing::runProcess(
+      "script -qefc 'sh " + (scratch / "tty.sh").string() + "' /dev/null", scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.out << result.err;
+  EXPECT_NE(result.out.find("% "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find(" left"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("done in "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("wrote " + (scratch / "tty.png").string()), std::string::npos)
+      << result.out;
+}
+
+// --exposure auto meters the PNG as the viewer's auto exposure does: a uniform sky of luminance
+// 0.05 is metered at log2(0.8 / 0.05) = 4 stops, so every pixel encodes sRGB(0.8); numbers of
+// stops still work.
+TEST_F(RenderCommand, ExposureAutoMetersThePngAsTheViewerDoes) {
+  std::ofstream(scratch / "grey-sky.pbrt")
+      << "LookAt 0 0 0  0 0 -1  0 1 0\nCamera \"perspective\" \"float fov\" [60]\n"
+         "WorldBegin\nLightSource \"infinite\" \"rgb L\" [0.05 0.05 0.05]\nWorldEnd\n";
+  auto srgb8 = [](double linear) {
+    const double encoded =
+        linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+    return static_cast<int>(std::lround(255.0 * std::clamp(encoded, 0.0, 1.0)));
+  };
+  struct Case {
+    const char* exposure;
+    double linear;  // what every pixel shows
+  };
+  for (const Case c : {Case{"auto", 0.8}, Case{"2", 0.2}, Case{"0", 0.05}}) {
+    const std::string name = std::string("sky-") + c.exposure;
+    const auto result = testing::runProcess(
+        lenslab("render '" + (scratch / "grey-sky.pbrt").string() +
+                "' --spp 2 --resolution 16x12 --exposure " + c.exposure + " --out '" +
+                (scratch / (name + ".png")).string() + "' --stats-json '" +
+                (scratch / (name + ".json")).string() + "'"),
+        scratch);
+    ASSERT_EQ(result.exitCode, 0) << c.exposure << ": " << result.err;
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* pixels = stbi_load((scratch / (name + ".png")).c_str(), &width, &height, &channels, 4);
+    ASSERT_NE(pixels, nullptr) << c.exposure;
+    const int expected = srgb8(c.linear);
+    for (int i = 0; i < width * height * 4; ++i) {
+      if (i % 4 == 3) continue;
+      ASSERT_NEAR(pixels[i], expected, 1) << c.exposure << " value " << i;
+    }
+    stbi_image_free(pixels);
+    const auto stats = nlohmann::json::parse(testing::readWholeFile(scratch / (name + ".json")));
+    EXPECT_NEAR(stats.at("exposure_stops").get<double>(), std::log2(c.linear / 0.05), 1e-3)
+        << c.exposure;
+  }
+  const auto refused = testing::runProcess(
+      lenslab("render '" + (scratch / "grey-sky.pbrt").string() + "' --exposure automatic"),
+      scratch);
+  EXPECT_EQ(refused.exitCode, 2) << refused.err;
+  EXPECT_NE(refused.err.find("'automatic' is neither a number of stops nor auto"),
+            std::string::npos)
+      << refused.err;
 }
 
 TEST_F(RenderCommand, BadInputNeverCrashes) {
