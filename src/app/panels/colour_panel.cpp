@@ -68,7 +68,7 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
   requestColour(view, request);
   if (beginPanel("Colour", place)) {
     drawAnalysisControls(state, "colour");
-    if (ImGui::SmallButton("Save lateral colour...")) {
+    if (ImGui::Button("Save lateral colour...")) {
       state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, "lateral-colour"});
     }
     const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
@@ -112,6 +112,7 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
       PlotSpec shift = focalShiftPlot(*result);
       PlotSpec lateral = lateralColourPlot(*result);
       ImGui::TextDisabled("%s", shift.note.c_str());
+      drawAnalysisConditions(state, "colour", *result->lens, result->setup);
       shift.note.clear();
       lateral.note.clear();
       ImVec2 room = ImGui::GetContentRegionAvail();

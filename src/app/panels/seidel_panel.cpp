@@ -67,6 +67,7 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
             "the lens has no dispersion and no colour sums. Untick \"Colour sums\" for S_I..S_V.");
       } else {
         ImGui::TextDisabled("%s", spec.note.c_str());
+        drawAnalysisConditions(state, "seidel", *result->lens, result->setup);
         spec.title.clear();
         spec.note.clear();
         const PlotWidgetResult plot =
