@@ -83,6 +83,8 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::SameLine();
       ImGui::TextDisabled("(the last valid lens)");
     }
+    // What the figures are for, even when there is no colour to show.
+    if (result) drawAnalysisConditions(state, "colour", *result->lens, result->setup);
     if (result && !result->dispersive) {
       ImGui::Spacing();
       const std::string sentence = std::string("No colour: ") + kNoDispersion + ".";
@@ -112,7 +114,6 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
       PlotSpec shift = focalShiftPlot(*result);
       PlotSpec lateral = lateralColourPlot(*result);
       ImGui::TextDisabled("%s", shift.note.c_str());
-      drawAnalysisConditions(state, "colour", *result->lens, result->setup);
       shift.note.clear();
       lateral.note.clear();
       ImVec2 room = ImGui::GetContentRegionAvail();

@@ -57,6 +57,7 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::SameLine();
       ImGui::TextDisabled("(the last valid lens)");
     }
+    if (result) drawAnalysisConditions(state, "seidel", *result->lens, result->setup);
     if (result && !result->seidel) {
       ImGui::TextWrapped("No Seidel sums for this lens: %s.", result->seidelWhyNot.c_str());
     } else if (result) {
@@ -67,7 +68,6 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
             "the lens has no dispersion and no colour sums. Untick \"Colour sums\" for S_I..S_V.");
       } else {
         ImGui::TextDisabled("%s", spec.note.c_str());
-        drawAnalysisConditions(state, "seidel", *result->lens, result->setup);
         spec.title.clear();
         spec.note.clear();
         const PlotWidgetResult plot =
