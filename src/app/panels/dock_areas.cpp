@@ -100,6 +100,7 @@ void drawDockAreas(ViewerState& state) {
     const Rect rect = rectOf(state.layout, area);
     if (panels.size() == 1) {
       state.settings.selectedTabs[dockAreaName(area)] = panels.front()->id;
+      state.tabsToSelect.erase(dockAreaName(area));  // it shows: captures need not wait for it
       panels.front()->draw(state, {rect, true});
       if (state.frameStages) state.frameStages->mark(panels.front()->id);
       continue;
