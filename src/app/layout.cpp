@@ -34,8 +34,17 @@ LayoutFractions clampFractions(LayoutFractions fractions, float width, float hei
     const float low = std::min(0.5f * minExtent / height, 0.5f);
     const float high = std::max(low, 1.0f - minExtent / height);
     fractions.logHeight = std::clamp(fractions.logHeight, low, high);
+    fractions.plotHeight = std::clamp(fractions.plotHeight, low, high);
   }
   return fractions;
+}
+
+float shownBottomShare(const LayoutFractions& fractions, BottomAreaSize size, float height,
+                       float uiScale) {
+  LayoutFractions shown = fractions;
+  if (size == BottomAreaSize::Plot) shown.logHeight = fractions.plotHeight;
+  if (size == BottomAreaSize::Maximised) shown.logHeight = 1.0f;
+  return clampFractions(shown, 0.0f, height, uiScale).logHeight;
 }
 
 PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,

@@ -16,6 +16,9 @@ struct LayoutFractions {
   float lensTableWidth = 0.30f;  // left column (lens table) share of the width
   float previewWidth = 0.36f;    // right column (render preview) share of the width
   float logHeight = 0.20f;       // bottom strip (log) share of the height below the menu
+  // The bottom strip's share while it shows an analysis plot: a plot in the log's 150 px shrank
+  // to a few tens of pixels of axes under its controls (issue 38). At 1600 x 900 some 390 px.
+  float plotHeight = 0.45f;
   bool operator==(const LayoutFractions&) const = default;
 };
 
@@ -40,6 +43,16 @@ inline constexpr float kMinPanelExtent = 80.0f;
 // minimum (the preview gives way first; in a narrower window the table scrolls sideways).
 LayoutFractions clampFractions(LayoutFractions fractions, float width, float height,
                                float uiScale = 1.0f, float minLensTableWidth = 0.0f);
+
+// How high the bottom area shows: at the log's share, at the plots' share (an analysis panel's
+// tab), or maximised (a double-click on its tab, View > Maximise bottom area): all but the upper
+// panels' minimum.
+enum class BottomAreaSize { Log, Plot, Maximised };
+
+// The bottom area's share of `height` (below the menu) as shown, within what clampFractions
+// allows.
+float shownBottomShare(const LayoutFractions& fractions, BottomAreaSize size, float height,
+                       float uiScale = 1.0f);
 
 // With includeLog false the upper panels take the whole height and the log rects are empty.
 PanelLayout computeLayout(float windowWidth, float windowHeight, float menuBarHeight,

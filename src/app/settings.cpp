@@ -41,6 +41,7 @@ Settings loadSettings(const std::filesystem::path& file, std::string* warning) {
           layout->value("lens_table_width", defaults.layout.lensTableWidth);
       settings.layout.previewWidth = layout->value("preview_width", defaults.layout.previewWidth);
       settings.layout.logHeight = layout->value("log_height", defaults.layout.logHeight);
+      settings.layout.plotHeight = layout->value("plot_height", defaults.layout.plotHeight);
     }
     settings.selectedTabs = json.value("selected_tabs", std::map<std::string, std::string>{});
     settings.recentFiles = json.value("recent_files", std::vector<std::string>{});
@@ -65,7 +66,8 @@ std::string saveSettings(const std::filesystem::path& file, const Settings& sett
       {"layout",
        {{"lens_table_width", settings.layout.lensTableWidth},
         {"preview_width", settings.layout.previewWidth},
-        {"log_height", settings.layout.logHeight}}},
+        {"log_height", settings.layout.logHeight},
+        {"plot_height", settings.layout.plotHeight}}},
       {"selected_tabs", settings.selectedTabs},
       {"recent_files", settings.recentFiles},
       {"keep_lens_film_distance", settings.keepLensFilmDistance},

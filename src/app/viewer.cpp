@@ -96,8 +96,12 @@ void Viewer::drawFrame() {
   state_.settings.layout =
       clampFractions(state_.settings.layout, width, std::max(0.0f, height - menuHeight), uiScale(),
                      lensTableWidth);
-  state_.layout = computeLayout(width, height, menuHeight, state_.settings.layout,
-                                state_.showBottomArea, uiScale());
+  // The layout as shown: the bottom area at the plots' share for an analysis panel, the log's
+  // for the log and the lens file, or maximised.
+  LayoutFractions shown = state_.settings.layout;
+  shown.logHeight = shownBottomShare(shown, bottomAreaSize(state_),
+                                     std::max(0.0f, height - menuHeight), uiScale());
+  state_.layout = computeLayout(width, height, menuHeight, shown, state_.showBottomArea, uiScale());
   drawSplitters(state_, width, height);
   drawDockAreas(state_);
   drawAboutWindow(state_);

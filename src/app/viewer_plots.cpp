@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "app/analysis/analysis_plots.h"
+#include "app/panels/panel_registry.h"
 #include "app/plot/plot_csv.h"
 #include "app/plot/plot_picture.h"
 #include "app/plot/plot_svg.h"
@@ -44,6 +45,12 @@ ScriptHost::PlotExport Viewer::exportPlot(const std::string& plotId, const std::
 }
 
 bool Viewer::analysesSettled() const {
+  // A tab asked for (show-panel) shows from the frame after the one that asked: until then the
+  // window still has the previous tab, and the panel asked for has not started its figures.
+  for (const auto& [area, id] : state_.tabsToSelect) {
+    const PanelSpec* panel = findPanel(id);
+    if (panel && (panel->area != DockArea::Bottom || state_.showBottomArea)) return false;
+  }
   const auto& lens = state_.lensSystem;
   if (!lens) return true;
   // The first-order figures, copied into the state by the lens panel (beam figures wait for a

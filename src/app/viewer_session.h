@@ -124,9 +124,15 @@ class Viewer final : public ScriptHost {
                       : state_.vignettingOverlay) = on;
   }
   void setSpectralMode(render::SpectralMode mode) override { state_.falloff.spectral = mode; }
+  void setBottomAreaMaximised(bool maximised) override { state_.bottomAreaMaximised = maximised; }
+  void setMtfRange(double cyclesPerMm) override {
+    for (std::size_t i = 0; i < std::size(kMtfRangesCyclesPerMm); ++i)
+      if (kMtfRangesCyclesPerMm[i] == cyclesPerMm) state_.mtf.rangeChoice = static_cast<int>(i);
+  }
   void setLayout(double lensTable, double preview, double log) override {
+    // The bottom area's share, for the log and the plots alike.
     state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),
-                              static_cast<float>(log)};
+                              static_cast<float>(log), static_cast<float>(log)};
   }
 
  private:

@@ -175,6 +175,12 @@ struct ViewerState {
   bool frameHadOverlay = false;
   bool showAbout = false;
   bool showBottomArea = true;  // the log and the other panels docked along the bottom
+  // The bottom area over all but the upper panels' minimum height (a double-click on its tab,
+  // View > Maximise bottom area, a script's set bottom-area); not persisted.
+  bool bottomAreaMaximised = false;
+  // What each analysis panel last said its figures are for (its object, film distance and the
+  // fields' coverage warning), by plot id, for dump-ui.
+  std::map<std::string, std::string> analysisConditions;
   // Tabs to select in the next frame, by dock area name (the settings' choice at start, a
   // script's show-panel, the View menu); each is dropped once its tab shows.
   std::map<std::string, std::string> tabsToSelect;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "optics/field_coverage.h"
 #include "optics/glass.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unclipped_trace.h"
@@ -279,6 +280,13 @@ class FanTracer {
 
 }  // namespace
 
+double coverageImageHeightMm(const LensSystem& lens,
+                             const std::optional<double>& objectDistanceMm) {
+  FanSpec spec;
+  spec.objectDistanceMm = objectDistanceMm;
+  return FanTracer(lens, spec).coverage().aim.imageHeight;
+}
+
 RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
   RayFans result;
   result.wavelengthNm = lens.wavelengthNm();
@@ -295,14 +303,14 @@ RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
       if (auto at = lens.withWavelength(wavelengthNm)) others.push_back(std::move(at));
     }
   }
-  const bool filmCovered = spec.filmHalfDiagonalMm <= covered.aim.imageHeight * (1.0 + 1e-9);
-  const double halfHeight = filmCovered ? spec.filmHalfDiagonalMm : covered.aim.imageHeight;
+  // The fields' one meaning (field_coverage.h), shared with the analyses.
+  const FieldScale scale{spec.filmHalfDiagonalMm, covered.aim.imageHeight};
   for (double fraction : spec.fieldFractions) {
     RayFan fan;
     fan.fieldFraction = fraction;
     fan.requestedImageHeightMm = fraction * spec.filmHalfDiagonalMm;
-    const auto solved = tracer.fieldForImageHeight(fraction * halfHeight, covered);
-    fan.fieldReached = filmCovered || fraction <= 0.0;
+    const auto solved = tracer.fieldForImageHeight(scale.imageHeightMm(fraction), covered);
+    fan.fieldReached = scale.filmCovered() || fraction <= 0.0;
     fan.imageHeightMm = solved.aim.imageHeight;
     if (spec.objectDistanceMm) {
       fan.objectHeightMm = solved.parameter;

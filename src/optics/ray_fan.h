@@ -82,4 +82,9 @@ struct RayFans {
 
 RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec);
 
+// The image height (mm) of the lens's coverage as the header defines it, for an object at
+// objectDistanceMm from the front vertex (nullopt: at infinity). field_coverage.h makes it the
+// fields' scale for every view.
+double coverageImageHeightMm(const LensSystem& lens, const std::optional<double>& objectDistanceMm);
+
 }  // namespace lenslab::optics

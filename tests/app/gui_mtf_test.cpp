@@ -41,6 +41,7 @@ TEST(MtfPanel, PlotsTheMtfAnalyzeGivesAndFollowsEdits) {
   std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
                                              << "set layout 0.3 0.36 0.45\n"
                                                 "set film-distance 36.0\n"
+                                                "set mtf-range cutoff\n"
                                                 "show-panel mtf\n"
                                                 "export-plot mtf mtf.csv\n"
                                                 "export-plot mtf mtf.svg\n"

@@ -64,5 +64,21 @@ TEST(Layout, TheLensTablesMinimumWidensItsColumnAndTheOthersKeepTheirShares) {
   EXPECT_FLOAT_EQ(capped.previewWidth, 80.0f / 800.0f);
 }
 
+TEST(Layout, TheBottomAreaShowsAtTheLogsThePlotsOrAllButTheUpperMinimum) {
+  LayoutFractions fractions;  // log 0.20, plots 0.45
+  EXPECT_FLOAT_EQ(shownBottomShare(fractions, BottomAreaSize::Log, 878.0f), 0.20f);
+  EXPECT_FLOAT_EQ(shownBottomShare(fractions, BottomAreaSize::Plot, 878.0f), 0.45f);
+  // Maximised: the upper panels keep their minimum, 80 px at scale 1 and 160 at scale 2.
+  EXPECT_NEAR(shownBottomShare(fractions, BottomAreaSize::Maximised, 878.0f) * 878.0f, 798.0f,
+              0.01f);
+  EXPECT_NEAR(shownBottomShare(fractions, BottomAreaSize::Maximised, 878.0f, 2.0f) * 878.0f, 718.0f,
+              0.01f);
+  // Each share is the user's own, within the minimums.
+  fractions.plotHeight = 0.99f;
+  EXPECT_NEAR(shownBottomShare(fractions, BottomAreaSize::Plot, 878.0f) * 878.0f, 798.0f, 0.01f);
+  fractions.logHeight = 0.3f;
+  EXPECT_FLOAT_EQ(shownBottomShare(fractions, BottomAreaSize::Log, 878.0f), 0.3f);
+}
+
 }  // namespace
 }  // namespace lenslab::app

@@ -232,5 +232,32 @@ TEST(PlotSvg, BarsAreRectanglesWithTheirNamesAndTheCategoriesLabelTheAxis) {
   EXPECT_EQ(attributes(svg, "polyline", "points").size(), 0u);  // no line series
 }
 
+TEST(PlotLayout, TickLabelsNeverRunIntoEachOther) {
+  // Long x labels (a million, at 10 px a character) on a 420 px plot, and a plot only a few lines
+  // high: before, five x labels of 70 px stood 66 px apart and three y labels in 10 px.
+  PlotSpec spec;
+  spec.x.label = "x";
+  spec.y.label = "y";
+  spec.series = {{"a", {1e6, 5e6}, {-0.012, 0.011}, 0xffffffffu, false}};
+  const auto width = [](const std::string& s) { return 10.0f * s.size(); };
+  for (const Rect outer : {Rect{0, 0, 420, 400}, Rect{0, 0, 900, 120}, Rect{0, 0, 300, 90}}) {
+    const PlotFrame frame = layoutPlot(spec, outer, 14.0f, width);
+    const auto& xs = frame.xTicks.values;
+    ASSERT_GE(xs.size(), 1u);
+    for (std::size_t i = 1; i < xs.size(); ++i) {
+      const float left = width(tickLabel(xs[i - 1], frame.xTicks.decimals));
+      const float right = width(tickLabel(xs[i], frame.xTicks.decimals));
+      EXPECT_GE(frame.toScreenX(xs[i]) - frame.toScreenX(xs[i - 1]), 0.5f * (left + right))
+          << outer.width << " x " << outer.height << ": " << xs[i - 1] << ", " << xs[i];
+    }
+    const auto& ys = frame.yTicks.values;
+    ASSERT_GE(ys.size(), 1u);
+    for (std::size_t i = 1; i < ys.size(); ++i) {
+      EXPECT_GE(frame.toScreenY(ys[i - 1]) - frame.toScreenY(ys[i]), frame.lineHeightPx)
+          << outer.width << " x " << outer.height << ": " << ys[i - 1] << ", " << ys[i];
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lenslab::app

@@ -219,12 +219,11 @@ TEST_F(AnalyzeCommand, MtfOfASlowSingletIsTheCircularApertureMtf) {
       EXPECT_NEAR(axis.at("diffraction_limit")[k].get<double>(), expected, 0.01) << k;
     }
     EXPECT_LT(axis.at("rms_wavefront_error_waves").get<double>(), 0.01);
+    // The film's corner lies far beyond the singlet's coverage: the field is at the coverage's
+    // edge instead (issue 38, optics/field_coverage.h), not 5000 mm out with no ray.
     const auto& beyond = mtf.at("fields")[1];
-    EXPECT_EQ(beyond.at("image_height_mm").get<double>(), 5000.0);
-    ASSERT_TRUE(beyond.contains("tangential") && beyond.contains("cutoff_cycles_per_mm"));
-    EXPECT_TRUE(beyond.at("tangential").is_null());
-    EXPECT_TRUE(beyond.at("cutoff_cycles_per_mm").is_null());
-    EXPECT_FALSE(beyond.at("why_not").get<std::string>().empty());
+    EXPECT_GT(beyond.at("image_height_mm").get<double>(), 0.0);
+    EXPECT_LT(beyond.at("image_height_mm").get<double>(), 5000.0);
   }
   const auto text = testing::runProcess(lenslab("analyze --only mtf " + lens), scratch);
   EXPECT_EQ(text.exitCode, 0) << text.err;

@@ -94,11 +94,11 @@ TEST_F(AnalyzeRays, AFieldNoRayReachesIsNullWithAReason) {
     ASSERT_EQ(fields.size(), 2u);
     EXPECT_TRUE(fields[0].at("field_angle_deg").is_number()) << key;
     EXPECT_FALSE(fields[0].contains("why_not")) << key;
-    EXPECT_TRUE(fields[1].at("field_angle_deg").is_null()) << key;
-    EXPECT_FALSE(fields[1].at("why_not").get<std::string>().empty()) << key;
+    // Field 1 is at the coverage's edge (issue 38, optics/field_coverage.h), not at the
+    // 150 mm corner no ray reaches.
+    EXPECT_TRUE(fields[1].at("field_angle_deg").is_number()) << key;
+    EXPECT_LT(fields[1].at("image_height_mm").get<double>(), 150.0) << key;
   }
-  EXPECT_TRUE(json.at("ray_fan").at("fields")[1].at("wavelengths").empty());
-  EXPECT_TRUE(json.at("spot").at("fields")[1].at("rms_radius_um").is_null());
 
   const auto text = testing::runProcess(
       lenslab("analyze " + lensPath("dgauss-50mm.dat") + " --only ray_fan,spot"), scratch);

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "optics/analysis/distortion.h"
+#include "optics/field_coverage.h"
 #include "optics/lens_file.h"
 #include "seidel_by_hand.h"
 #include "test_lenses.h"
@@ -190,13 +191,22 @@ TEST(Distortion, AnAfocalLensHasNoReference) {
   EXPECT_FALSE(distortionGrid(*lens, AnalysisSetup{}, 1.5, 8, 64, &why));
 }
 
-// A film far larger than the double-Gauss covers: the points beyond its coverage are null with
-// a reason, the rest are numbers.
+// A film far larger than the double-Gauss covers: the curve ends at the coverage's edge (issue
+// 38: fields spread over the image circle, field_coverage.h), every point a number. Told the
+// lens covers more (a caller's coverageMm), the points beyond what it reaches are null with a
+// reason, the rest are numbers.
 TEST(Distortion, FieldsBeyondCoverageSayWhy) {
   const auto lens = testing::loadLens(testing::bundledLensDir() / "dgauss-50mm.dat");
   ASSERT_TRUE(lens);
   AnalysisSetup setup;
   setup.filmHalfDiagonalMm = 200.0;
+  const auto covered = distortionCurve(*lens, setup, 40);
+  ASSERT_TRUE(covered);
+  const double circleMm = fieldScaleFor(*lens, setup).radiusMm();
+  EXPECT_LT(circleMm, 100.0);
+  EXPECT_NEAR(covered->points.back().imageHeightMm, circleMm, 1e-3);
+  for (const DistortionPoint& p : covered->points) EXPECT_TRUE(p.percent) << p.imageHeightMm;
+  setup.coverageMm = 1e9;
   const auto curve = distortionCurve(*lens, setup, 40);
   ASSERT_TRUE(curve);
   EXPECT_TRUE(curve->points[1].percent);

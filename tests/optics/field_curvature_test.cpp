@@ -9,6 +9,7 @@
 
 #include "optics/analysis/field_curvature.h"
 #include "optics/analysis/field_point.h"
+#include "optics/field_coverage.h"
 #include "seidel_by_hand.h"
 #include "test_lenses.h"
 
@@ -128,6 +129,12 @@ TEST(FieldCurvature, AFieldNoRayReachesIsNullWithAReason) {
   ASSERT_TRUE(lens);
   AnalysisSetup setup;
   setup.filmHalfDiagonalMm = 200.0;
+  // The curve ends at the coverage's edge (field_coverage.h); told the lens covers the film,
+  // it reaches the points no ray reaches.
+  const auto covered = fieldCurvature(*lens, setup, 20);
+  ASSERT_TRUE(covered);
+  EXPECT_TRUE(covered->points.back().tangentialMm);
+  setup.coverageMm = 1e9;
   const auto curve = fieldCurvature(*lens, setup, 20);
   ASSERT_TRUE(curve);
   EXPECT_TRUE(curve->points[1].tangentialMm);

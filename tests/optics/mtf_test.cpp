@@ -337,6 +337,12 @@ TEST(DiffractionMtf, AFieldNoRayReachesSaysWhy) {
   AnalysisSetup setup;
   setup.fieldFractions = {0.0, 1.0};
   setup.filmHalfDiagonalMm = 5000.0;  // far beyond what a 20 mm singlet images
+  // Fields spread over the coverage (field_coverage.h) unless the caller says the lens covers
+  // the film: then the corner is a field no ray reaches.
+  const MtfResult covered = diffractionMtf(*lens, setup);
+  ASSERT_EQ(covered.fields.size(), 2u);
+  EXPECT_LT(covered.fields[1].imageHeightMm, 5000.0);
+  setup.coverageMm = 1e9;
   const MtfResult result = diffractionMtf(*lens, setup);
   ASSERT_EQ(result.fields.size(), 2u);
   EXPECT_FALSE(result.fields[0].whyNot);

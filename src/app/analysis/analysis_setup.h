@@ -29,7 +29,19 @@ struct AnalysisRequest {
 
 AnalysisRequest analysisRequestOf(const ViewerState& state);
 
-// On the worker: the optics setup for the request (the lens must be non-null).
+// On the worker: the optics setup for the request (the lens must be non-null), with the lens's
+// coverage, so that the fields mean what the cross-section's do (optics/field_coverage.h).
 optics::AnalysisSetup analysisSetupFor(const AnalysisRequest& request);
+
+// The image height field 1.0 names in that setup: the film's half diagonal, or the image
+// circle's edge when the film's corner is beyond it.
+double fieldRadiusMm(const optics::AnalysisSetup& setup);
+// The cross-section's warning when the fields spread over the image circle; empty otherwise.
+std::string fieldCoverageWarning(const optics::AnalysisSetup& setup);
+
+// What an analysis's figures are for, as each panel states it under its controls: "object at
+// 3.600 m from the film, film distance 51.2 mm" (or "object at infinity, ...").
+std::string analysisConditionsText(const optics::LensSystem& lens,
+                                   const optics::AnalysisSetup& setup);
 
 }  // namespace lenslab::app

@@ -36,7 +36,7 @@ ColourResult computeColour(const std::shared_ptr<const optics::LensSystem>& lens
   if (!lens) return result;
   result.seidel =
       optics::computeSeidelSums(*lens, setup.objectDistanceFromFilmMm,
-                                optics::seidelFieldHeightMm(setup), &result.seidelWhyNot);
+                                optics::seidelFieldHeightMm(*lens, setup), &result.seidelWhyNot);
   result.dispersive = optics::lensHasDispersion(lens->prescription());
   if (!result.dispersive) return result;
   result.focalShift = optics::chromaticFocalShift(*lens, setup.objectDistanceFromFilmMm, 31, 400.0,
@@ -164,13 +164,13 @@ PlotSpec lateralColourPlot(const ColourResult& result) {
     PlotSeries third{"third order (C_T)", {}, {}, 0xb0b0b0ffu, true};
     const double perMm =
         1000.0 * result.seidel->transverse.lateralColourMm / result.seidel->fieldHeightMm;
-    for (double h : {0.0, result.setup.filmHalfDiagonalMm}) {
+    for (double h : {0.0, fieldRadiusMm(result.setup)}) {
       third.x.push_back(h);
       third.y.push_back(perMm * h);
     }
     spec.series.push_back(third);
   }
-  if (!real.x.empty() && real.x.back() > 0.0) spec.x.max = result.setup.filmHalfDiagonalMm;
+  if (!real.x.empty() && real.x.back() > 0.0) spec.x.max = fieldRadiusMm(result.setup);
   return spec;
 }
 

@@ -1,5 +1,7 @@
 #include "app/analysis/distortion_analysis.h"
 
+#include "optics/field_coverage.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,11 +47,13 @@ void requestDistortion(DistortionView& view, const AnalysisRequest& request) {
     DistortionResult result;
     result.request = request;
     const optics::AnalysisSetup setup = analysisSetupFor(request);
+    result.setup = setup;
     result.objectDistanceFromFilmMm = setup.objectDistanceFromFilmMm;
     const optics::LensSystem& lens = *request.lens;
     result.distortion = optics::distortionCurve(lens, setup, kDistortionPoints, &result.whyNot);
+    const optics::FieldScale scale = optics::fieldScaleFor(lens, setup);
     for (double fraction : setup.fieldFractions) {
-      const double h = fraction * setup.filmHalfDiagonalMm;
+      const double h = scale.imageHeightMm(fraction);
       const auto field = optics::FieldPoint::resolve(lens, h, setup.objectDistanceFromFilmMm);
       result.fieldMarks.push_back(
           {fraction, h, field ? std::optional(field->fieldAngleDeg()) : std::nullopt});

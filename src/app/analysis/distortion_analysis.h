@@ -19,7 +19,8 @@
 namespace lenslab::app {
 
 struct DistortionResult {
-  AnalysisRequest request;  // what it was computed for
+  AnalysisRequest request;      // what it was computed for
+  optics::AnalysisSetup setup;  // the object and the fields' scale it meant
   std::optional<double> objectDistanceFromFilmMm;
   std::optional<optics::DistortionCurve> distortion;  // nullopt: whyNot
   std::optional<optics::DistortionGrid> grid;

@@ -65,6 +65,7 @@ void requestRayAnalysis(RayAnalysisView& view, const AnalysisRequest& request) {
     const optics::AnalysisSetup setup = analysisSetupFor(request);
     RayAnalysisResult result;
     result.request = request;
+    result.setup = setup;
     result.fans = optics::computeTransverseRayFans(*request.lens, setup);
     result.spots = optics::computeSpotDiagrams(*request.lens, setup);
     return result;

@@ -17,7 +17,8 @@
 namespace lenslab::app {
 
 struct RayAnalysisResult {
-  AnalysisRequest request;  // what it was computed for
+  AnalysisRequest request;      // what it was computed for
+  optics::AnalysisSetup setup;  // the object and the fields' scale it meant
   optics::TransverseRayFans fans;
   optics::SpotDiagrams spots;
 };

@@ -226,6 +226,14 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
       host.setColourFans(a[1] == "on");
       return true;
     }
+    if (a[0] == "bottom-area") {
+      host.setBottomAreaMaximised(a[1] == "maximised");
+      return true;
+    }
+    if (a[0] == "mtf-range") {
+      host.setMtfRange(a[1] == "cutoff" ? 0.0 : *parseNumber(a[1]));
+      return true;
+    }
     if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
       host.setVignettingSwitch(a[0], a[1] == "on");
       return true;

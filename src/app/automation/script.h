@@ -63,10 +63,13 @@
 //   cancel-export               cancels the running export: nothing is written
 //   set auto-exposure on|off    meters the preview's exposure (render/auto_exposure.h)
 //
-// "set layout" takes the lens table's and the preview's shares of the width and the log's share
-// of the height, as fractions. "load-scene" waits until the scene has loaded (it loads off the
-// UI thread) and fails with its errors. "load-lens" focuses the lens at the scene's focus
-// distance, as opening it from the File menu does, unless keep-film-distance is given or set.
+// "set layout" takes the lens table's and the preview's shares of the width and the bottom area's
+// share of the height (the log's and the analysis plots' alike), as fractions. "set bottom-area
+// maximised" gives the bottom area all but the upper panels' minimum height, as a double-click on
+// its tab does; "restored" undoes it. "set mtf-range cutoff|400|200|100" is the MTF panel's
+// "Up to" choice (cycles/mm; the default is 100). "load-scene" waits until the scene has loaded (it
+// loads off the UI thread) and fails with its errors. "load-lens" focuses the lens at the scene's
+// focus distance, as opening it from the File menu does, unless keep-film-distance is given or set.
 //
 // A wait that lasts longer than two minutes fails the script.
 
@@ -215,6 +218,9 @@ class ScriptHost {
   // The fields of the fans and the analysis panels, as fractions of the film's half diagonal.
   virtual void setFieldFractions(const std::vector<double>& /*fractions*/) {}
   virtual void setLayout(double /*lensTable*/, double /*preview*/, double /*log*/) {}
+  virtual void setBottomAreaMaximised(bool /*maximised*/) {}
+  // The MTF panel's frequency range: 0 (to the cutoff) or cycles/mm (one of its choices).
+  virtual void setMtfRange(double /*cyclesPerMm*/) {}
   // The persisted "keep the lens file's film distance" choice (opening_focus.h).
   virtual void setKeepFilmDistance(bool /*keep*/) {}
   // The vignetting teaching's switches: "cos4", "rims" (the render's FalloffToggles) and

@@ -200,6 +200,8 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     return std::nullopt;
   }
   if (a[0] == "auto-exposure" || a[0] == "colour-fans") return expectOneOf(command, {"on", "off"});
+  if (a[0] == "bottom-area") return expectOneOf(command, {"maximised", "restored"});
+  if (a[0] == "mtf-range") return expectOneOf(command, {"cutoff", "400", "200", "100"});
   // The vignetting teaching's switches (issue 21): the render's cos^4 weighting and rims
   // (render/falloff_toggles.h), and the heat map over the preview.
   if (a[0] == "cos4" || a[0] == "rims" || a[0] == "vignetting-overlay") {
@@ -226,7 +228,7 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
       "unknown setting '" + a[0] +
           "' (expected surface, film-distance, stop-diameter, aperture, exposure, camera, "
           "blocked-rays, layout, keep-film-distance, auto-exposure, film-point, cos4, rims, "
-          "vignetting-overlay, colour-fans, spectral or fields)");
+          "vignetting-overlay, colour-fans, spectral, fields, bottom-area or mtf-range)");
 }
 
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {

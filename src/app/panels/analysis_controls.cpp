@@ -11,7 +11,9 @@
 namespace lenslab::app {
 
 void drawAnalysisControls(ViewerState& state, const char* plotId) {
-  if (ImGui::SmallButton("Save plot...")) {
+  // A full-height button, as high as the Fields box beside it (a small one's label touched its
+  // top edge and looked cut off).
+  if (ImGui::Button("Save plot...")) {
     state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, plotId});
   }
   const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
@@ -49,6 +51,21 @@ void drawAnalysisControls(ViewerState& state, const char* plotId) {
     state.fieldsEditing = false;
   }
   ImGui::SameLine();
+}
+
+void drawAnalysisConditions(ViewerState& state, const char* plotId, const optics::LensSystem& lens,
+                            const optics::AnalysisSetup& setup) {
+  std::string text = analysisConditionsText(lens, setup);
+  ImGui::TextDisabled("%s", text.c_str());
+  if (const std::string warning = fieldCoverageWarning(setup); !warning.empty()) {
+    // The cross-section's words and colour.
+    ImGui::SameLine();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", warning.c_str());
+    ImGui::PopTextWrapPos();
+    text += "; " + warning;
+  }
+  state.analysisConditions[plotId] = std::move(text);
 }
 
 }  // namespace lenslab::app

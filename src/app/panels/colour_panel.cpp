@@ -68,7 +68,7 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
   requestColour(view, request);
   if (beginPanel("Colour", place)) {
     drawAnalysisControls(state, "colour");
-    if (ImGui::SmallButton("Save lateral colour...")) {
+    if (ImGui::Button("Save lateral colour...")) {
       state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, "lateral-colour"});
     }
     const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
@@ -83,6 +83,8 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::SameLine();
       ImGui::TextDisabled("(the last valid lens)");
     }
+    // What the figures are for, even when there is no colour to show.
+    if (result) drawAnalysisConditions(state, "colour", *result->lens, result->setup);
     if (result && !result->dispersive) {
       ImGui::Spacing();
       const std::string sentence = std::string("No colour: ") + kNoDispersion + ".";

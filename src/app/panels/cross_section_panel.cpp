@@ -13,6 +13,7 @@
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
 #include "app/platform/ui_scale.h"
+#include "optics/field_coverage.h"
 #include "optics/lens_outline.h"
 
 namespace lenslab::app {
@@ -203,15 +204,15 @@ void drawFanControls(ViewerState& state) {
   legend(palette::kChiefRay, "chief (dashed)");
   legend(palette::kMarginalRay, "marginal");
   if (beyondCoverage) {
-    // A circular fisheye on a larger film: the lens does not reach the film's corner.
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "the film corner (%.1f mm) is beyond the lens's coverage: fans spread over its "
-                  "image circle (%.1f mm)",
-                  traced.back().requestedImageHeightMm, traced.back().imageHeightMm);
-    legendRow.next(ImGui::CalcTextSize(text).x);
+    // A circular fisheye on a larger film: the lens does not reach the film's corner. The
+    // analysis panels say the same of their fields (optics/field_coverage.h).
+    const optics::RayFan& last = traced.back();
+    const std::string text =
+        optics::coverageWarning({last.requestedImageHeightMm / last.fieldFraction,
+                                 last.imageHeightMm / last.fieldFraction});
+    legendRow.next(ImGui::CalcTextSize(text.c_str()).x);
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", text);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", text.c_str());
     ImGui::PopTextWrapPos();
   }
   static constexpr const char* kHint = "wheel: zoom, drag: pan, drag film/stop edge: edit";

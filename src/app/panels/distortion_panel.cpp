@@ -60,7 +60,7 @@ void drawDistortionPanel(ViewerState& state, const PanelPlace& place) {
   requestDistortion(view, request);
   if (beginPanel("Distortion", place)) {
     drawAnalysisControls(state, "distortion");
-    if (ImGui::SmallButton("Save grid...")) {
+    if (ImGui::Button("Save grid...")) {
       state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, "distortion-grid"});
     }
     ImGui::SameLine();
@@ -80,6 +80,7 @@ void drawDistortionPanel(ViewerState& state, const PanelPlace& place) {
       // The tab names the analysis; the note goes on the controls' line.
       ImGui::SameLine();
       ImGui::TextDisabled("%s", curve.note.c_str());
+      drawAnalysisConditions(state, "distortion", *result->request.lens, result->setup);
       curve.title.clear();
       curve.note.clear();
       grid.note.clear();

@@ -48,6 +48,15 @@ const PanelSpec* drawTabStrip(ViewerState& state, DockArea area, const Rect& rec
           ImGui::BeginTabItem(panel->title, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0);
       const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
       state.uiRects[std::string("tab/") + panel->id] = {min.x, min.y, max.x - min.x, max.y - min.y};
+      // A double-click on a bottom tab maximises the bottom area, or restores it.
+      if (area == DockArea::Bottom && ImGui::IsItemHovered()) {
+        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+          state.bottomAreaMaximised = !state.bottomAreaMaximised;
+        } else if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+          ImGui::SetTooltip(state.bottomAreaMaximised ? "Double-click: restore the bottom area"
+                                                      : "Double-click: maximise the bottom area");
+        }
+      }
       if (open) {
         shown = panel;
         ImGui::EndTabItem();
@@ -66,6 +75,18 @@ const PanelSpec* drawTabStrip(ViewerState& state, DockArea area, const Rect& rec
 
 }  // namespace
 
+BottomAreaSize bottomAreaSize(const ViewerState& state) {
+  if (state.bottomAreaMaximised) return BottomAreaSize::Maximised;
+  const char* area = dockAreaName(DockArea::Bottom);
+  const auto wanted = state.tabsToSelect.find(area);
+  const auto selected = state.settings.selectedTabs.find(area);
+  const PanelSpec* shown = wanted != state.tabsToSelect.end() ? findPanel(wanted->second)
+                           : selected != state.settings.selectedTabs.end()
+                               ? findPanel(selected->second)
+                               : nullptr;
+  return shown && shown->plot ? BottomAreaSize::Plot : BottomAreaSize::Log;
+}
+
 void showPanel(ViewerState& state, const PanelSpec& panel) {
   state.tabsToSelect[dockAreaName(panel.area)] = panel.id;
   if (panel.area == DockArea::Bottom) state.showBottomArea = true;
@@ -79,6 +100,7 @@ void drawDockAreas(ViewerState& state) {
     const Rect rect = rectOf(state.layout, area);
     if (panels.size() == 1) {
       state.settings.selectedTabs[dockAreaName(area)] = panels.front()->id;
+      state.tabsToSelect.erase(dockAreaName(area));  // it shows: captures need not wait for it
       panels.front()->draw(state, {rect, true});
       if (state.frameStages) state.frameStages->mark(panels.front()->id);
       continue;

@@ -32,6 +32,7 @@ void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place) {
     if (result) {
       PlotSpec spec = fieldCurvesPlot(*result);
       ImGui::TextDisabled("%s", spec.note.c_str());
+      drawAnalysisConditions(state, "field-curves", *result->request.lens, result->setup);
       spec.title.clear();
       spec.note.clear();
       const PlotWidgetResult plot =

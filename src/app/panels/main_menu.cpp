@@ -92,6 +92,8 @@ void viewMenu(ViewerState& state) {
     if (ImGui::MenuItem(panel.title, nullptr, shown)) showPanel(state, panel);
   }
   ImGui::MenuItem("Bottom area", nullptr, &state.showBottomArea);
+  ImGui::MenuItem("Maximise bottom area", nullptr, &state.bottomAreaMaximised,
+                  state.showBottomArea);
   ImGui::Separator();
   if (ImGui::MenuItem("Fit cross-section")) state.crossSectionNeedsFit = true;
   if (ImGui::MenuItem("Reset layout")) state.settings.layout = LayoutFractions{};

@@ -41,8 +41,8 @@ void drawMtfPanel(ViewerState& state, const PanelPlace& place) {
   if (beginPanel("MTF", place)) {
     const AnalysisRequest request = analysisRequestOf(state);
     drawAnalysisControls(state, "mtf");
-    // The frequency range: to the cutoff (where the diffraction limit reaches 0), or the few
-    // hundred cycles/mm where a photographic lens keeps its contrast.
+    // The frequency range: 100 cycles/mm at first, where a photographer reads an MTF, up to the
+    // cutoff (where the diffraction limit reaches 0).
     ImGui::TextUnformatted("Up to");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(px(110));
@@ -67,6 +67,7 @@ void drawMtfPanel(ViewerState& state, const PanelPlace& place) {
       // The tab names the plot; its note goes above it, leaving the height to the curves (an
       // export keeps both).
       ImGui::TextDisabled("%s", spec.note.c_str());
+      drawAnalysisConditions(state, "mtf", *result->request.lens, result->setup);
       spec.title.clear();
       spec.note.clear();
       const PlotWidgetResult plot =

@@ -13,14 +13,14 @@ constexpr PanelSpec kPanels[] = {
     {"preview", "Render preview", DockArea::Right, drawRenderPreviewPanel},
     {"log", "Log", DockArea::Bottom, drawLogPanel},
     {"lens-file", "Lens file", DockArea::Bottom, drawLensFilePanel},
-    {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel},
-    {"seidel", "Seidel", DockArea::Bottom, drawSeidelPanel},
-    {"colour", "Colour", DockArea::Bottom, drawColourPanel},
-    {"ray-fan", "Ray fan", DockArea::Bottom, drawRayFanPanel},
-    {"spot", "Spot", DockArea::Bottom, drawSpotPanel},
-    {"distortion", "Distortion", DockArea::Bottom, drawDistortionPanel},
-    {"field-curves", "Field curves", DockArea::Bottom, drawFieldCurvesPanel},
-    {"mtf", "MTF", DockArea::Bottom, drawMtfPanel},
+    {"illumination", "Illumination", DockArea::Bottom, drawIlluminationPanel, true},
+    {"seidel", "Seidel", DockArea::Bottom, drawSeidelPanel, true},
+    {"colour", "Colour", DockArea::Bottom, drawColourPanel, true},
+    {"ray-fan", "Ray fan", DockArea::Bottom, drawRayFanPanel, true},
+    {"spot", "Spot", DockArea::Bottom, drawSpotPanel, true},
+    {"distortion", "Distortion", DockArea::Bottom, drawDistortionPanel, true},
+    {"field-curves", "Field curves", DockArea::Bottom, drawFieldCurvesPanel, true},
+    {"mtf", "MTF", DockArea::Bottom, drawMtfPanel, true},
 };
 
 }  // namespace

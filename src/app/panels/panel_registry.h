@@ -36,6 +36,8 @@ struct PanelSpec {
   const char* title;  // the tab's label (and the panel's title bar)
   DockArea area;
   void (*draw)(ViewerState& state, const PanelPlace& place);
+  // An analysis plot: its bottom area grows to kPlotBottomShare of the height while it shows.
+  bool plot = false;
 };
 
 // Every panel, in the order their tabs appear.

@@ -12,6 +12,9 @@ float drawMainMenu(ViewerState& state);
 // Every dock area with its panels (tabbed where an area has several), in the rectangles of
 // state.layout.
 void drawDockAreas(ViewerState& state);
+// How high the bottom area is to be this frame: maximised, at the plots' share for the analysis
+// plot its tab shows (or is about to show: a script's show-panel, a menu's choice), or the log's.
+BottomAreaSize bottomAreaSize(const ViewerState& state);
 // Makes `panel` the one its area shows, from the next frame (and shows the bottom area, if it
 // docks there): View > (a panel) and a script's show-panel.
 void showPanel(ViewerState& state, const PanelSpec& panel);
@@ -42,6 +45,11 @@ void drawMtfPanel(ViewerState& state, const PanelPlace& place);
 // shared with the cross-section's fans) and "Save plot..." for the plot `plotId`
 // (analysis/analysis_plots.h). Leaves the cursor on the same line for the panel's own controls.
 void drawAnalysisControls(ViewerState& state, const char* plotId);
+// The line under them that says what the figures are for ("object at 3.600 m from the film, film
+// distance 51.2 mm"), and the cross-section's warning when the fields spread over the image
+// circle; from the result shown.
+void drawAnalysisConditions(ViewerState& state, const char* plotId, const optics::LensSystem& lens,
+                            const optics::AnalysisSetup& setup);
 
 // How wide the lens table's panel must be for every column of its table to show (the layout
 // keeps it at least that wide where the window allows).

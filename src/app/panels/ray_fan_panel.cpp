@@ -87,6 +87,7 @@ void drawRayFanPanel(ViewerState& state, const PanelPlace& place) {
       PlotSpec tangential = rayFanPlot(*result, FanPlane::Tangential);
       PlotSpec sagittal = rayFanPlot(*result, FanPlane::Sagittal);
       ImGui::TextDisabled("%s", tangential.note.c_str());
+      drawAnalysisConditions(state, "ray-fan", *result->request.lens, result->setup);
       tangential.note.clear();
       sagittal.note.clear();
       const ImVec2 room = ImGui::GetContentRegionAvail();

@@ -57,6 +57,7 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::SameLine();
       ImGui::TextDisabled("(the last valid lens)");
     }
+    if (result) drawAnalysisConditions(state, "seidel", *result->lens, result->setup);
     if (result && !result->seidel) {
       ImGui::TextWrapped("No Seidel sums for this lens: %s.", result->seidelWhyNot.c_str());
     } else if (result) {

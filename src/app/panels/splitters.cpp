@@ -36,6 +36,8 @@ void drawSplitters(ViewerState& state, float windowWidth, float /*windowHeight*/
   const PanelLayout& layout = state.layout;
   state.uiRects["layout/left-splitter"] = layout.leftSplitter;
   state.uiRects["layout/right-splitter"] = layout.rightSplitter;
+  state.uiRects["layout/upper"] = layout.crossSection;
+  state.uiRects["layout/bottom"] = layout.log;
   const float usableHeight =
       layout.lensTable.height + layout.bottomSplitter.height + layout.log.height;
   if (windowWidth > 0) {
@@ -45,9 +47,16 @@ void drawSplitters(ViewerState& state, float windowWidth, float /*windowHeight*/
         splitter("##split-right", layout.rightSplitter, ImGuiMouseCursor_ResizeEW).x / windowWidth;
   }
   if (state.showBottomArea && usableHeight > 0) {
-    fractions.logHeight -=
-        splitter("##split-bottom", layout.bottomSplitter, ImGuiMouseCursor_ResizeNS).y /
-        usableHeight;
+    // Dragged from where it shows: the plots' share on an analysis panel's tab, else the log's;
+    // a maximised area is no longer maximised.
+    const float drag =
+        splitter("##split-bottom", layout.bottomSplitter, ImGuiMouseCursor_ResizeNS).y;
+    if (drag != 0.0f) {
+      float& share =
+          bottomAreaSize(state) == BottomAreaSize::Log ? fractions.logHeight : fractions.plotHeight;
+      share = (layout.log.height - drag) / usableHeight;
+      state.bottomAreaMaximised = false;
+    }
   }
 }
 

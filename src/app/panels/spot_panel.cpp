@@ -66,6 +66,7 @@ void drawSpotPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::TextDisabled(
           "%s; white circle: the Airy disk; DOF = 2 lambda N^2 = %.4f mm; rays from the chief ray",
           overview.note.c_str(), result->spots.depthOfFocusMm.value_or(0.0));
+      drawAnalysisConditions(state, "spot", *result->request.lens, result->setup);
       const std::size_t fields = std::max<std::size_t>(1, result->spots.fields.size());
       const float line = ImGui::GetTextLineHeightWithSpacing();
       const ImVec2 room = ImGui::GetContentRegionAvail();

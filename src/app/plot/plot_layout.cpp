@@ -59,6 +59,36 @@ AxisTicks categoryTicks(const PlotSpec& spec, float widthPx, float fontPx,
   return ticks;
 }
 
+// Ticks over [lo, hi] for an axis `lengthPx` long whose labels do not touch: fewer ticks while a
+// label (`labelPx` of it: its width on the x axis, its line on the y axis) and a gap of `gapPx`
+// do not fit between neighbours; at the last, only the ends. The Colour panel's ticks of 0.005 mm
+// ran into each other on a narrow plot.
+AxisTicks spacedTicks(double lo, double hi, float lengthPx, float pxPerTick,
+                      std::optional<double> fixedMin, std::optional<double> fixedMax,
+                      const std::function<float(const std::string&)>& labelPx, float gapPx) {
+  const auto fits = [&](const AxisTicks& ticks) {
+    if (ticks.values.size() < 2) return true;
+    const double span = ticks.max - ticks.min;
+    if (!(span > 0.0)) return true;
+    float widest = 0.0f;
+    for (double value : ticks.values)
+      widest = std::max(widest, labelPx(tickLabel(value, ticks.decimals)));
+    const double stepPx = (ticks.values[1] - ticks.values[0]) / span * lengthPx;
+    return widest + gapPx <= stepPx;
+  };
+  int target = std::max(2, static_cast<int>(lengthPx / pxPerTick));
+  AxisTicks ticks = niceTicks(lo, hi, target, fixedMin, fixedMax);
+  while (!fits(ticks) && target > 2) ticks = niceTicks(lo, hi, --target, fixedMin, fixedMax);
+  if (!fits(ticks) && ticks.values.size() > 2) {
+    // Even the fewest round ticks crowd: the first and the last alone, if they fit.
+    AxisTicks ends = ticks;
+    ends.values = {ticks.values.front(), ticks.values.back()};
+    ticks =
+        fits(ends) ? ends : AxisTicks{ticks.min, ticks.max, {ticks.values.front()}, ticks.decimals};
+  }
+  return ticks;
+}
+
 // Bars of every Bars series: within each category the group takes 80% of the slot.
 std::vector<PlotBar> layoutBars(const PlotSpec& spec, const PlotFrame& frame) {
   std::vector<std::size_t> barSeries;
@@ -109,9 +139,9 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   // First pass: the y ticks for the height left, to know how wide their labels are.
   const float bottomRoom = 2.0f * line + pad;  // tick labels, then the x label
   const float areaHeight = std::max(10.0f, outer.bottom() - bottomRoom - top);
-  frame.yTicks =
-      niceTicks(range ? range->yMin : 0.0, range ? range->yMax : 1.0,
-                std::max(2, static_cast<int>(areaHeight / (2.5f * line))), spec.y.min, spec.y.max);
+  const auto lineTall = [&](const std::string&) { return line; };
+  frame.yTicks = spacedTicks(range ? range->yMin : 0.0, range ? range->yMax : 1.0, areaHeight,
+                             2.5f * line, spec.y.min, spec.y.max, lineTall, 0.2f * line);
   float yLabelWidth = 0.0f;
   for (double value : frame.yTicks.values) {
     yLabelWidth = std::max(yLabelWidth, textWidth(tickLabel(value, frame.yTicks.decimals)));
@@ -135,11 +165,11 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
       frame.legend = {frame.area.right() + 0.5f * fontPx, frame.area.y, width, height};
     }
   }
-  frame.xTicks = spec.categories.empty()
-                     ? niceTicks(range ? range->xMin : 0.0, range ? range->xMax : 1.0,
-                                 std::max(2, static_cast<int>(frame.area.width / (6.0f * fontPx))),
-                                 spec.x.min, spec.x.max)
-                     : categoryTicks(spec, frame.area.width, fontPx, textWidth);
+  frame.xTicks =
+      spec.categories.empty()
+          ? spacedTicks(range ? range->xMin : 0.0, range ? range->xMax : 1.0, frame.area.width,
+                        6.0f * fontPx, spec.x.min, spec.x.max, textWidth, fontPx)
+          : categoryTicks(spec, frame.area.width, fontPx, textWidth);
   if (spec.equalAspect && range) {
     // The larger of the two scales (data units per pixel) for both, 4% to spare, centred.
     const Rect& a = frame.area;
@@ -147,12 +177,10 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
                                                (range->yMax - range->yMin) / a.height, 1e-12});
     const double cx = 0.5 * (range->xMin + range->xMax), cy = 0.5 * (range->yMin + range->yMax);
     const double halfX = 0.5 * unitsPerPx * a.width, halfY = 0.5 * unitsPerPx * a.height;
-    frame.xTicks =
-        niceTicks(cx - halfX, cx + halfX, std::max(2, static_cast<int>(a.width / (6.0f * fontPx))),
-                  cx - halfX, cx + halfX);
-    frame.yTicks =
-        niceTicks(cy - halfY, cy + halfY, std::max(2, static_cast<int>(a.height / (2.5f * line))),
-                  cy - halfY, cy + halfY);
+    frame.xTicks = spacedTicks(cx - halfX, cx + halfX, a.width, 6.0f * fontPx, cx - halfX,
+                               cx + halfX, textWidth, fontPx);
+    frame.yTicks = spacedTicks(cy - halfY, cy + halfY, a.height, 2.5f * line, cy - halfY,
+                               cy + halfY, lineTall, 0.2f * line);
   }
   frame.bars = layoutBars(spec, frame);
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;

@@ -34,8 +34,9 @@ std::string termsLine(const std::string& name, const optics::SeidelTerms& t, boo
 
 ReportPart seidelReport(const AnalyzeContext& context) {
   std::string whyNot;
-  const auto sums = optics::computeSeidelSums(*context.lens, context.setup.objectDistanceFromFilmMm,
-                                              optics::seidelFieldHeightMm(context.setup), &whyNot);
+  const auto sums =
+      optics::computeSeidelSums(*context.lens, context.setup.objectDistanceFromFilmMm,
+                                optics::seidelFieldHeightMm(*context.lens, context.setup), &whyNot);
   if (!sums) throw AnalysisUnavailable(whyNot);
   const bool chromatic = sums->chromatic;
   nlohmann::json surfaces = nlohmann::json::array();

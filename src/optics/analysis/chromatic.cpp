@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "optics/analysis/paraxial_ray.h"
+#include "optics/field_coverage.h"
 #include "optics/glass.h"
 #include "optics/unclipped_trace.h"
 
@@ -74,10 +75,11 @@ std::vector<LateralColour> lateralColour(const LensSystem& lens, const AnalysisS
   const auto atD = lens.withWavelength(kWavelengthDNm);
   const auto atF = lens.withWavelength(kWavelengthFNm);
   const auto atC = lens.withWavelength(kWavelengthCNm);
+  const FieldScale scale = fieldScaleFor(lens, setup);
   for (double fraction : setup.fieldFractions) {
     LateralColour entry;
     entry.fieldFraction = fraction;
-    entry.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
+    entry.imageHeightMm = scale.imageHeightMm(fraction);
     if (!dispersive) {
       entry.whyNot = "no glass of the lens has an Abbe number (V_d)";
     } else if (!atD || !atF || !atC) {

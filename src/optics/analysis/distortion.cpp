@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "optics/analysis/paraxial_image.h"
+#include "optics/field_coverage.h"
 #include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
@@ -77,8 +78,9 @@ std::optional<DistortionCurve> distortionCurve(const LensSystem& lens, const Ana
   curve.magnification = reference->magnification;
   curve.filmHeightScale = reference->filmHeightScale;
   curve.points.reserve(static_cast<std::size_t>(points));
+  const double radiusMm = fieldScaleFor(lens, setup).radiusMm();  // to the image circle's edge
   for (int i = 0; i < points; ++i) {
-    const double h = setup.filmHalfDiagonalMm * i / (points - 1);
+    const double h = radiusMm * i / (points - 1);
     curve.points.push_back(distortionAt(lens, *reference, h, setup.objectDistanceFromFilmMm));
   }
   return curve;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "optics/analysis/paraxial_image.h"
+#include "optics/field_coverage.h"
 #include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
@@ -69,8 +70,9 @@ std::optional<FieldCurvatureCurve> fieldCurvature(const LensSystem& lens,
   FieldCurvatureCurve curve;
   curve.gaussianFocusBehindFilmMm = reference->focusBehindFilmMm;
   curve.points.reserve(static_cast<std::size_t>(points));
+  const double radiusMm = fieldScaleFor(lens, setup).radiusMm();  // to the image circle's edge
   for (int i = 0; i < points; ++i) {
-    const double h = setup.filmHalfDiagonalMm * i / (points - 1);
+    const double h = radiusMm * i / (points - 1);
     FieldCurvaturePoint point = fieldFoci(lens, h, setup.objectDistanceFromFilmMm);
     point.petzvalMm = reference->focusBehindFilmMm - 0.5 * reference->petzvalSumPerMm * h * h;
     curve.points.push_back(std::move(point));

@@ -43,6 +43,10 @@ struct AnalysisSetup {
   // object at infinity.
   std::optional<double> objectDistanceFromFilmMm;
   double wavelengthNm = 587.56;  // the d line; the lens passed in must be at this wavelength
+  // The lens's coverage (optics/field_coverage.h) when the caller has found it once for several
+  // analyses; nullopt: each analysis finds it. The fields are fractions of the film's half
+  // diagonal, or of this when the film's corner is beyond it.
+  std::optional<double> coverageMm;
 };
 
 class FieldPoint {

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "optics/analysis/pupil_mtf.h"
+#include "optics/field_coverage.h"
 
 namespace lenslab::optics {
 
@@ -91,9 +92,10 @@ MtfResult diffractionMtf(const LensSystem& lens, const AnalysisSetup& setup,
   };
   std::vector<Traced> traced;
   double largestCutoffCyclesPerMm = 0.0;
+  const FieldScale scale = fieldScaleFor(lens, setup);
   for (double fraction : setup.fieldFractions) {
     Traced t;
-    t.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
+    t.imageHeightMm = scale.imageHeightMm(fraction);
     const auto point =
         FieldPoint::resolve(lens, t.imageHeightMm, setup.objectDistanceFromFilmMm, &t.whyNot);
     if (point) {

@@ -6,6 +6,7 @@
 
 #include "optics/analysis/chromatic.h"
 #include "optics/analysis/paraxial_ray.h"
+#include "optics/field_coverage.h"
 #include "optics/glass.h"
 #include "optics/limiting_aperture.h"
 
@@ -38,10 +39,10 @@ Dispersion dispersionOf(const LensSystem& lens) {
 
 }  // namespace
 
-double seidelFieldHeightMm(const AnalysisSetup& setup) {
+double seidelFieldHeightMm(const LensSystem& lens, const AnalysisSetup& setup) {
   double largest = 0.0;
   for (double fraction : setup.fieldFractions) largest = std::max(largest, fraction);
-  return (largest > 0.0 ? largest : 1.0) * setup.filmHalfDiagonalMm;
+  return fieldScaleFor(lens, setup).imageHeightMm(largest > 0.0 ? largest : 1.0);
 }
 
 SeidelTerms& SeidelTerms::operator+=(const SeidelTerms& other) {

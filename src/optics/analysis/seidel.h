@@ -93,7 +93,8 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
                                             double fieldHeightMm, std::string* whyNot = nullptr);
 
 // The field the chief ray is scaled to for a setup: its largest field (the film's half diagonal
-// when every field is on the axis), as `lenslab analyze` and the Seidel panel take it.
-double seidelFieldHeightMm(const AnalysisSetup& setup);
+// when every field is on the axis; the image circle's edge when the film's corner is beyond it,
+// field_coverage.h), as `lenslab analyze` and the Seidel panel take it.
+double seidelFieldHeightMm(const LensSystem& lens, const AnalysisSetup& setup);
 
 }  // namespace lenslab::optics

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "optics/analysis/ray_landing.h"
+#include "optics/field_coverage.h"
 
 namespace lenslab::optics {
 
@@ -140,10 +141,11 @@ SpotDiagrams computeSpotDiagrams(const LensSystem& lens, const AnalysisSetup& se
   }
 
   const int minPassing = std::max(1, options.minPassingRays);
+  const FieldScale scale = fieldScaleFor(lens, setup);
   for (double fraction : setup.fieldFractions) {
     SpotField entry;
     entry.fieldFraction = fraction;
-    entry.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
+    entry.imageHeightMm = scale.imageHeightMm(fraction);
     const auto resolved =
         traceField(lens, entry.imageHeightMm, setup.objectDistanceFromFilmMm, &entry.whyNot);
     if (!resolved) {

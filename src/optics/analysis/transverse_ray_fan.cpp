@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "optics/analysis/ray_landing.h"
+#include "optics/field_coverage.h"
 #include "optics/glass.h"
 
 namespace lenslab::optics {
@@ -61,10 +62,11 @@ TransverseRayFans computeTransverseRayFans(const LensSystem& lens, const Analysi
   for (std::size_t w = 1; w < fans.wavelengthsNm.size(); ++w)
     atWavelength.push_back(lens.withWavelength(fans.wavelengthsNm[w]));
 
+  const FieldScale scale = fieldScaleFor(lens, setup);
   for (double fraction : setup.fieldFractions) {
     TransverseFanField entry;
     entry.fieldFraction = fraction;
-    entry.imageHeightMm = fraction * setup.filmHalfDiagonalMm;
+    entry.imageHeightMm = scale.imageHeightMm(fraction);
     const auto resolved =
         traceField(lens, entry.imageHeightMm, setup.objectDistanceFromFilmMm, &entry.whyNot);
     if (!resolved) {
