@@ -161,10 +161,10 @@ SpotDiagrams computeSpotDiagrams(const LensSystem& lens, const AnalysisSetup& se
     TracedPupil traced = tracePupil(lens, *field, minPassing);
     while (!traced.grid.empty() && static_cast<int>(traced.grid.size()) < minPassing &&
            traced.gridRaysTraced < kMaxRaysOverPupil) {
-      const double scale = static_cast<double>(minPassing) / traced.grid.size() * 1.05;
+      const double growth = static_cast<double>(minPassing) / traced.grid.size() * 1.05;
       traced = tracePupil(
           lens, *field,
-          std::min(kMaxRaysOverPupil, static_cast<int>(std::ceil(traced.gridRaysTraced * scale))));
+          std::min(kMaxRaysOverPupil, static_cast<int>(std::ceil(traced.gridRaysTraced * growth))));
     }
     entry.raysTraced = traced.gridRaysTraced;
     if (traced.grid.empty()) {
