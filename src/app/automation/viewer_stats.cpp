@@ -47,13 +47,16 @@ void ViewerStats::frameCompute(std::chrono::nanoseconds cpu, bool rendering, con
     worstComputeStages_ = stages;
   }
   renderingComputeMs_.push_back(ms);
-  for (const auto& [stage, stageMs] : stages) {
+  for (const auto& timed : stages) {
+    // A name, not a structured binding: clang 14 (the sanitizer builds' compiler) cannot capture
+    // one in a lambda.
+    const auto& stage = timed.first;
     // Few stages, the same ones each frame: a linear search by name is the cheapest.
     auto found = std::find_if(stageMs_.begin(), stageMs_.end(), [&](const auto& entry) {
       return std::string_view(entry.first) == stage;
     });
     if (found == stageMs_.end()) found = stageMs_.insert(stageMs_.end(), {stage, {}});
-    found->second.push_back(stageMs);
+    found->second.push_back(timed.second);
   }
 }
 
