@@ -132,5 +132,49 @@ TEST(LensDocument, IsModifiedUntilSavedOrUndoneBackToTheSavedLens) {
   EXPECT_FALSE(document.modified());
 }
 
+// Opening a lens is one undo step: undoing it brings back the lens before, as that lens's own
+// file had it (unmodified), not compared with the file opened after it; redo opens the second
+// again, unmodified too. An edit of the first still shows as modified after the round trip.
+TEST(LensDocument, UndoingAnOpenComparesTheEarlierLensWithItsOwnFile) {
+  LensDocument document(triplet(), "triplet.dat");
+  optics::Prescription other = triplet();
+  other.surfaces[0].radiusMm = 55.0;
+  ASSERT_FALSE(document.apply(ReplaceLens{other, "other.dat"}));
+  EXPECT_FALSE(document.modified());
+  ASSERT_TRUE(document.undo());
+  EXPECT_EQ(document.path(), "triplet.dat");
+  EXPECT_FALSE(document.modified());
+  ASSERT_TRUE(document.redo());
+  EXPECT_EQ(document.path(), "other.dat");
+  EXPECT_FALSE(document.modified());
+  ASSERT_TRUE(document.undo());
+  ASSERT_FALSE(document.apply(SetFilmDistance{50.0}));
+  ASSERT_FALSE(document.apply(ReplaceLens{other, "other.dat"}));
+  ASSERT_TRUE(document.undo());
+  EXPECT_TRUE(document.modified());  // the triplet with its film moved
+  ASSERT_TRUE(document.undo());
+  EXPECT_FALSE(document.modified());
+}
+
+// "Save as" renames the lens's earlier steps too: undoing an edit made before it keeps the new
+// name and compares with what that file now holds. The steps of a lens opened before are left
+// with their own file.
+TEST(LensDocument, SavingAsRenamesTheStepsOfThatLensOnly) {
+  LensDocument document(triplet(), "first.dat");
+  optics::Prescription other = triplet();
+  other.surfaces[0].radiusMm = 55.0;
+  ASSERT_FALSE(document.apply(ReplaceLens{other, "other.dat"}));
+  ASSERT_FALSE(document.apply(SetFilmDistance{50.0}));
+  ASSERT_FALSE(document.apply(SetFilmDistance{60.0}));
+  document.markSaved("renamed.dat");
+  ASSERT_TRUE(document.undo());
+  EXPECT_EQ(document.path(), "renamed.dat");
+  EXPECT_TRUE(document.modified());  // film at 50, the file has 60
+  ASSERT_TRUE(document.undo());
+  ASSERT_TRUE(document.undo());  // before opening other.dat
+  EXPECT_EQ(document.path(), "first.dat");
+  EXPECT_FALSE(document.modified());
+}
+
 }  // namespace
 }  // namespace lenslab::app

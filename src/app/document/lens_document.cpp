@@ -111,6 +111,15 @@ LensDocument::LensDocument(optics::Prescription prescription, std::string path)
 void LensDocument::markSaved(std::string path) {
   path_ = std::move(path);
   saved_ = current_;
+  // Every step of this lens, since it was opened, is now of the file it was saved as, and
+  // compares with what that file holds (undo after "Save as" keeps the new name, modified).
+  for (std::vector<Snapshot>* steps : {&undo_, &redo_}) {
+    for (Snapshot& step : *steps) {
+      if (step.openedLens != openedLens_) continue;
+      step.path = path_;
+      step.saved = saved_;
+    }
+  }
 }
 
 bool LensDocument::modified() const {
@@ -209,7 +218,7 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
 
   const bool merges = !mergeKey.empty() && mergeKey == lastMergeKey_ && !undo_.empty();
   if (!merges) {
-    undo_.push_back({current_, path_, headerComments_});
+    undo_.push_back(snapshot());
     if (undo_.size() > kMaxUndoSteps) undo_.erase(undo_.begin());
   }
   lastMergeKey_ = mergeKey;
@@ -217,33 +226,40 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
   current_ = std::move(next);
   path_ = std::move(nextPath);
   headerComments_ = std::move(nextHeaderComments);
-  // A lens just opened is unmodified.
-  if (std::holds_alternative<ReplaceLens>(command)) saved_ = current_;
+  // A lens just opened is unmodified, and a lens of its own for the steps that follow.
+  if (std::holds_alternative<ReplaceLens>(command)) {
+    saved_ = current_;
+    openedLens_ = ++lensesOpened_;
+  }
   ++generation_;
   return std::nullopt;
 }
 
-bool LensDocument::undo() {
-  if (undo_.empty()) return false;
-  redo_.push_back({current_, path_, headerComments_});
-  current_ = std::move(undo_.back().prescription);
-  path_ = std::move(undo_.back().path);
-  headerComments_ = std::move(undo_.back().headerComments);
-  undo_.pop_back();
+void LensDocument::restore(Snapshot&& from) {
+  current_ = std::move(from.prescription);
+  path_ = std::move(from.path);
+  headerComments_ = std::move(from.headerComments);
+  saved_ = std::move(from.saved);
+  openedLens_ = from.openedLens;
   lastMergeKey_.clear();
   ++generation_;
+}
+
+bool LensDocument::undo() {
+  if (undo_.empty()) return false;
+  redo_.push_back(snapshot());
+  Snapshot step = std::move(undo_.back());
+  undo_.pop_back();
+  restore(std::move(step));
   return true;
 }
 
 bool LensDocument::redo() {
   if (redo_.empty()) return false;
-  undo_.push_back({current_, path_, headerComments_});
-  current_ = std::move(redo_.back().prescription);
-  path_ = std::move(redo_.back().path);
-  headerComments_ = std::move(redo_.back().headerComments);
+  undo_.push_back(snapshot());
+  Snapshot step = std::move(redo_.back());
   redo_.pop_back();
-  lastMergeKey_.clear();
-  ++generation_;
+  restore(std::move(step));
   return true;
 }
 

@@ -111,7 +111,15 @@ class LensDocument {
     optics::Prescription prescription;
     std::string path;
     std::vector<std::string> headerComments;
+    // What that lens was last opened or saved as: undoing back across opening another lens
+    // compares the earlier lens with its own file, not with the one opened after it.
+    optics::Prescription saved;
+    // Which opened lens the step belongs to (openedLens_ then): saving renames and re-baselines
+    // the steps of the lens saved, not those of a lens opened before it.
+    std::uint64_t openedLens = 0;
   };
+  Snapshot snapshot() const { return {current_, path_, headerComments_, saved_, openedLens_}; }
+  void restore(Snapshot&& from);
   // A step is a prescription (about a kilobyte for a 13-surface lens; an image stop's mask is
   // shared, not copied): 5,000 steps hold an afternoon's editing in a few megabytes, and a
   // thousand random edits can all be undone (the edit-storm test).
@@ -120,7 +128,9 @@ class LensDocument {
   optics::Prescription current_;
   std::string path_;
   std::vector<std::string> headerComments_;
-  optics::Prescription saved_;  // as last opened or saved
+  optics::Prescription saved_;      // as last opened or saved
+  std::uint64_t openedLens_ = 0;    // the lens the current state belongs to
+  std::uint64_t lensesOpened_ = 0;  // ReplaceLens commands applied: each opens a new lens
   std::vector<Snapshot> undo_, redo_;
   std::string lastMergeKey_;
   std::uint64_t generation_ = 0;
