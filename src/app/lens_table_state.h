@@ -19,9 +19,11 @@ struct LensTableState {
   std::string editingCell;
   char editText[64] = {};
   double scaleTargetEflMm = 50.0;
-  // Cells drawn last frame whose value did not fit even at three significant digits (the table
-  // scrolls sideways so that none is cut off; dump-ui reports it for the layout tests).
+  // Cells drawn last frame whose value did not fit even cut to its whole number (the table
+  // scrolls sideways so that none is cut off; dump-ui reports it for the layout tests), and
+  // those shown cut, with the cut mark (drawing/value_text.h).
   int cellsCutOff = 0;
+  int cellsShortened = 0;
 };
 
 }  // namespace lenslab::app

@@ -27,6 +27,21 @@ std::string formatFieldValueExact(SurfaceField field, double value) {
   return text;
 }
 
+FittedText cutToFit(const std::string& text, float availablePx,
+                    const std::function<float(const std::string&)>& widthPx) {
+  if (widthPx(text) <= availablePx) return {text, false};
+  const std::size_t point = text.find('.');
+  if (point == std::string::npos || text.find_first_of("eE") != std::string::npos)
+    return {text, false};
+  // From the longest cut down to one digit after the point, then the whole number alone.
+  for (std::size_t keep = text.size() - 1; keep >= point + 2; --keep) {
+    std::string cut = text.substr(0, keep);
+    if (widthPx(cut) <= availablePx) return {cut, true};
+  }
+  if (std::string cut = text.substr(0, point); widthPx(cut) <= availablePx) return {cut, true};
+  return {text, false};
+}
+
 ParsedValue parseFieldValue(SurfaceField field, const std::string& raw) {
   const auto first = raw.find_first_not_of(" \t");
   const auto last = raw.find_last_not_of(" \t");

@@ -19,6 +19,7 @@ namespace {
 
 constexpr ImU32 kProblemRow = IM_COL32(140, 40, 40, 110);
 constexpr ImU32 kSelectedRow = IM_COL32(60, 90, 140, 90);
+constexpr ImU32 kCutMark = IM_COL32(255, 204, 90, 255);  // the warnings' amber
 
 double fieldValue(const optics::Surface& surface, SurfaceField field) {
   switch (field) {
@@ -37,14 +38,19 @@ double fieldValue(const optics::Surface& surface, SurfaceField field) {
   return 0;
 }
 
-// The most significant digits (6 at most, 3 at least) that fit in `width` pixels.
-std::string fittingText(SurfaceField field, double value, float width) {
-  std::string text;
-  for (int digits = 6; digits >= 3; --digits) {
-    text = formatFieldValue(field, value, digits);
-    if (ImGui::CalcTextSize(text.c_str()).x <= width) break;
-  }
-  return text;
+// The value with 6 significant digits, cut (not rounded) to fit `width` pixels
+// (drawing/value_text.h); the cell marks a cut value and its tooltip has every digit.
+FittedText fittingText(SurfaceField field, double value, float width) {
+  return cutToFit(formatFieldValue(field, value, 6), width,
+                  [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; });
+}
+
+// The mark of a cut value: a small triangle in the cell's top-right corner, as spreadsheets mark
+// a cell with more than it shows, taking no room from the digits.
+void markCut(ImVec2 min, ImVec2 max) {
+  const float side = std::min(px(6), 0.5f * (max.y - min.y));
+  ImGui::GetWindowDrawList()->AddTriangleFilled({max.x - side, min.y}, {max.x, min.y},
+                                                {max.x, min.y + side}, kCutMark);
 }
 
 struct CellCallbackData {
@@ -74,8 +80,10 @@ void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double v
   const float textWidth =
       ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().FramePadding.x;
   char display[sizeof table.editText];
-  const std::string formatted = fittingText(field, value, textWidth);
+  const FittedText fitted = fittingText(field, value, textWidth);
+  const std::string& formatted = fitted.text;
   if (ImGui::CalcTextSize(formatted.c_str()).x > textWidth) ++table.cellsCutOff;
+  if (fitted.cut) ++table.cellsShortened;
   std::strncpy(display, formatted.c_str(), sizeof display - 1);
   display[sizeof display - 1] = '\0';
   const std::string exact = formatFieldValueExact(field, value);
@@ -97,6 +105,7 @@ void valueCell(ViewerState& state, std::size_t row, SurfaceField field, double v
     ImGui::SetTooltip("%s", exact.c_str());
   }
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  if (fitted.cut && !editing) markCut(min, max);
   state.uiRects["lens-table/" + std::to_string(row + 1) + "/" + surfaceFieldName(field)] = {
       min.x, min.y, max.x - min.x, max.y - min.y};
   if (ImGui::IsItemDeactivated() && table.editingCell == cell) {
@@ -230,6 +239,7 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   const float innerWidth = sideways ? minWidth : 0.0f;
   if (ImGui::BeginTable("surfaces", 7, tableFlags, outerSize, innerWidth)) {
     state.lensTable.cellsCutOff = 0;
+    state.lensTable.cellsShortened = 0;
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
     for (int column = 0; column < 5; ++column) {
