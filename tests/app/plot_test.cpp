@@ -40,6 +40,21 @@ TEST(PlotScale, TicksAreRoundAndCoverTheData) {
   EXPECT_FALSE(niceTicks(NAN, 1.0, 4).values.empty());
 }
 
+// A spot diagram's axis is fixed at +-1.05 x its largest ray's reach. Tiny spots on a small plot
+// ask for two intervals, whose step (0.5 for +-0.42 um) is wider than either end: the axis showed
+// "0" alone, with no scale. Smaller round steps until two ticks fit, labelled apart.
+TEST(PlotScale, FixedEndsNarrowerThanAStepStillGetTwoTicks) {
+  const AxisTicks tiny = niceTicks(-0.4, 0.4, 2, -0.42, 0.42);  // step 0.5, then 0.2
+  ASSERT_EQ(tiny.values.size(), 5u);
+  EXPECT_NEAR(tiny.values.front(), -0.4, 1e-12);
+  EXPECT_EQ(tiny.values[2], 0.0);
+  EXPECT_EQ(tickLabel(tiny.values.front(), tiny.decimals), "-0.4");
+  const AxisTicks small = niceTicks(-3.0, 3.0, 2, -3.1, 3.1);  // step 5, then 2
+  EXPECT_EQ(small.values, (std::vector<double>{-2.0, 0.0, 2.0}));
+  // One fixed end only: the same.
+  EXPECT_GE(niceTicks(0.0, 0.3, 2, 0.0, 0.3).values.size(), 2u);
+}
+
 TEST(PlotScale, TickLabels) {
   EXPECT_EQ(tickLabel(0.25, 2), "0.25");
   EXPECT_EQ(tickLabel(-1e-17, 1), "0.0");

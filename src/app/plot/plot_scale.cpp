@@ -27,14 +27,26 @@ AxisTicks niceTicks(double dataMin, double dataMax, int targetCount, std::option
       break;
     }
   }
-  AxisTicks ticks;
-  ticks.min = fixedMin ? lo : std::floor(lo / step + 1e-9) * step;
-  ticks.max = fixedMax ? hi : std::ceil(hi / step - 1e-9) * step;
-  const double first = std::ceil(ticks.min / step - 1e-9) * step;
-  for (double value = first; value <= ticks.max + 1e-9 * step; value += step) {
-    ticks.values.push_back(std::abs(value) < 1e-9 * step ? 0.0 : value);
+  const auto ticksWithStep = [&](double stepSize) {
+    AxisTicks ticks;
+    ticks.min = fixedMin ? lo : std::floor(lo / stepSize + 1e-9) * stepSize;
+    ticks.max = fixedMax ? hi : std::ceil(hi / stepSize - 1e-9) * stepSize;
+    const double first = std::ceil(ticks.min / stepSize - 1e-9) * stepSize;
+    for (double value = first; value <= ticks.max + 1e-9 * stepSize; value += stepSize) {
+      ticks.values.push_back(std::abs(value) < 1e-9 * stepSize ? 0.0 : value);
+    }
+    ticks.decimals = std::max(0, -static_cast<int>(std::floor(std::log10(stepSize) + 1e-9)));
+    return ticks;
+  };
+  AxisTicks ticks = ticksWithStep(step);
+  // Fixed ends closer together than a step hold one tick at most: a small spot's axis of
+  // +-0.4 um showed "0" alone. The next smaller round step (5 -> 2 -> 1 -> 0.5) until two fit.
+  while (ticks.values.size() < 2 && (fixedMin || fixedMax)) {
+    const double decade = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    const double mantissa = step / decade;
+    step = mantissa > 4.0 ? 2.0 * decade : mantissa > 1.5 ? decade : 0.5 * decade;
+    ticks = ticksWithStep(step);
   }
-  ticks.decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
   return ticks;
 }
 
