@@ -14,6 +14,7 @@
 #include "cli/number_validators.h"
 #include "cli/usage_error.h"
 #include "common/distance_text.h"
+#include "optics/field_coverage.h"
 #include "optics/focus.h"
 
 namespace lenslab::cli {
@@ -109,6 +110,12 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   context.setup.filmHalfDiagonalMm = 0.5 * arguments.filmDiagonalMm;
   context.setup.objectDistanceFromFilmMm = objectDistanceMm;
   context.setup.wavelengthNm = arguments.wavelengthNm;
+  // The fields' one scale (optics/field_coverage.h), searched once for every report. A film
+  // corner beyond the lens's image circle is said in the header and the JSON, as the viewer's
+  // panels say it: the fields then spread over the circle, not the film.
+  const optics::FieldScale fieldScale = optics::fieldScaleFor(*lens, context.setup);
+  context.setup.coverageMm = fieldScale.coverageMm;
+  const std::string coverageWarning = optics::coverageWarning(fieldScale);
 
   const bool inFocus = objectInFocus(focus, *lens, objectDistanceMm);
   nlohmann::json json{
@@ -131,6 +138,9 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
       {"field_fractions", arguments.fieldFractions}};
   std::string text;
   if (!focus.whyNot.empty()) json["focus_why_not"] = focus.whyNot;
+  json["film_covered"] = fieldScale.filmCovered();
+  json["field_radius_mm"] = fieldScale.radiusMm();
+  if (!coverageWarning.empty()) json["coverage_warning"] = coverageWarning;
   // The header says where the film is, what it focuses, and which object the numbers are for.
   text += arguments.lensPath + ": film distance " + millimetresText(lens->filmDistanceMm()) + " (" +
           (focus.atObject ? "" : "as given, ") + focusText(focus) + "), film diagonal " +
@@ -139,6 +149,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   char wavelength[32];
   std::snprintf(wavelength, sizeof wavelength, "%.2f nm\n", arguments.wavelengthNm);
   text += wavelength;
+  if (!coverageWarning.empty()) text += "warning: " + coverageWarning + "\n";
   nlohmann::json unavailable = nlohmann::json::object();
   for (const AnalysisReport* report : reports) {
     text += std::string("\n== ") + report->key + " ==\n";

@@ -185,6 +185,29 @@ TEST_F(AnalyzeCommand, OnlyAcceptsSpacesAroundTheKeys) {
   EXPECT_TRUE(padded.contains("seidel"));
 }
 
+// The fisheye's image circle ends inside the full-frame film: analyze says so in its header and
+// its JSON, as the viewer's panels do, and its field 1.0 is the circle's edge, not the film's
+// corner (21.6 mm). The double-Gauss covers the film: no warning, field 1.0 at the corner.
+TEST_F(AnalyzeCommand, SaysWhenTheFilmCornerIsBeyondTheImageCircle) {
+  const auto fisheye = analyzeJson("--only distortion " + lensPath("fisheye-10mm.dat"));
+  EXPECT_FALSE(fisheye.at("film_covered").get<bool>());
+  const double radiusMm = fisheye.at("field_radius_mm").get<double>();
+  EXPECT_LT(radiusMm, 21.0);
+  EXPECT_GT(radiusMm, 5.0);
+  const std::string warning = fisheye.at("coverage_warning").get<std::string>();
+  EXPECT_NE(warning.find("beyond the lens's coverage"), std::string::npos) << warning;
+  const auto text = testing::runProcess(
+      lenslab("analyze --only distortion " + lensPath("fisheye-10mm.dat")), scratch);
+  EXPECT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("warning: " + warning), std::string::npos) << text.out;
+
+  const auto dgauss = analyzeJson("--only distortion " + lensPath("dgauss-50mm.dat"));
+  EXPECT_TRUE(dgauss.at("film_covered").get<bool>());
+  EXPECT_NEAR(dgauss.at("field_radius_mm").get<double>(),
+              0.5 * dgauss.at("film_diagonal_mm").get<double>(), 1e-9);
+  EXPECT_FALSE(dgauss.contains("coverage_warning"));
+}
+
 // `mtf` of a slow singlet (f/40: a hundredth of a wave of spherical aberration) at its paraxial
 // focus, by the thick-lens formulas: the MTF of a circular aperture with the cutoff D / (lambda f);
 // a field beyond what the lens images is an entry with nulls and its reason.
