@@ -25,6 +25,10 @@ std::optional<std::string> Viewer::startExportRender(const std::string& path, in
   dialog.heightPx = height;
   dialog.samplesPerPixel = samplesPerPixel;
   dialog.path = path;
+  dialog.exportedScene = state_.scenePath;
+  // The size chosen for this scene's film (the window offers it until another scene opens).
+  dialog.sizedForScene = state_.scenePath;
+  std::tie(dialog.sizedForFilmWidthPx, dialog.sizedForFilmHeightPx) = filmSize();
   dialog.open = true;  // its progress bar and Cancel button
   dialog.progress = export_.progress();
   state_.log.info("Exporting " + std::to_string(width) + "x" + std::to_string(height) + " at " +

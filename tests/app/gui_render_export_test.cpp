@@ -146,6 +146,38 @@ TEST_F(ExportRender, CancelWritesNothing) {
   EXPECT_TRUE(logged(after, "Export cancelled: nothing was written")) << after["state"]["log"];
 }
 
+// The Export render window belongs to the scene that is open: after another scene is opened it
+// offers that scene's film size (600x400), not the size of the last export, and no longer shows
+// the last export's "Written ..." line, which was of the scene before.
+TEST_F(ExportRender, TheWindowFollowsTheSceneThatIsOpen) {
+  const std::string vignetting = std::string(LENSLAB_SOURCE_DIR) + "/scenes/vignetting.pbrt";
+  const auto result = runViewer(
+      "wait-spp 1\n"
+      "export-render small.png 160x100 1\n"
+      "open-dialog export-render\n"
+      "wait-frames 3\n"
+      "dump-ui first.json\n"
+      "load-scene " +
+      vignetting +
+      "\n"
+      "wait-frames 3\n"
+      "dump-ui second.json\n"
+      "quit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const nlohmann::json first = readJson(scratch / "first.json");
+  const nlohmann::json second = readJson(scratch / "second.json");
+  const auto& before = first["state"]["export"];
+  const auto& after = second["state"]["export"];
+  EXPECT_TRUE(before["open"].get<bool>());
+  EXPECT_EQ(before["width"], 160);
+  EXPECT_NE(before["shown_result"].get<std::string>().find("small.png"), std::string::npos)
+      << before;
+  EXPECT_TRUE(after["open"].get<bool>());
+  EXPECT_EQ(after["width"], 600) << after;
+  EXPECT_EQ(after["height"], 400);
+  EXPECT_EQ(after["shown_result"], "") << after;
+}
+
 // An export-render that is cancelled fails its script; one with a bad size fails to parse.
 TEST_F(ExportRender, ScriptErrorsSayWhat) {
   auto result = runViewer("export-render out.png 640by400 16\n");

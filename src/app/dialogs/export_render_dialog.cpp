@@ -104,12 +104,27 @@ void drawSettings(ViewerState& state, int filmWidthPx, int filmHeightPx) {
 
 }  // namespace
 
+namespace {
+
+// A new scene or film: its film size, rather than the size chosen for the one before.
+void followTheFilm(ViewerState& state, int filmWidthPx, int filmHeightPx) {
+  ExportDialogState& dialog = state.exportDialog;
+  if (dialog.progress.running()) return;
+  if (dialog.widthPx > 0 && dialog.sizedForScene == state.scenePath &&
+      dialog.sizedForFilmWidthPx == filmWidthPx && dialog.sizedForFilmHeightPx == filmHeightPx)
+    return;
+  dialog.widthPx = filmWidthPx;
+  dialog.heightPx = filmHeightPx;
+  dialog.sizedForScene = state.scenePath;
+  dialog.sizedForFilmWidthPx = filmWidthPx;
+  dialog.sizedForFilmHeightPx = filmHeightPx;
+}
+
+}  // namespace
+
 void openExportRenderDialog(ViewerState& state, int filmWidthPx, int filmHeightPx) {
   ExportDialogState& dialog = state.exportDialog;
-  if (dialog.widthPx <= 0 || dialog.heightPx <= 0) {
-    dialog.widthPx = filmWidthPx;
-    dialog.heightPx = filmHeightPx;
-  }
+  followTheFilm(state, filmWidthPx, filmHeightPx);
   if (dialog.path.empty()) {
     dialog.path =
         render::nonClobberingPath(std::filesystem::current_path(), "lenslab-export", ".png")
@@ -125,17 +140,23 @@ void drawExportRenderDialog(ViewerState& state, int filmWidthPx, int filmHeightP
                           ImVec2(0.5f, 0.5f));
   if (ImGui::Begin("Export render", &dialog.open,
                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
+    dialog.shownResult.clear();
     if (dialog.progress.running()) {
       drawProgress(state);
     } else {
+      if (filmWidthPx > 0) followTheFilm(state, filmWidthPx, filmHeightPx);
       drawSettings(state, filmWidthPx, filmHeightPx);
       const ExportProgress& last = dialog.progress;
-      if (last.phase == ExportProgress::Phase::Failed) {
+      // The last export's outcome belongs to the scene it rendered, not to one opened since.
+      const bool ofThisScene = dialog.exportedScene == state.scenePath;
+      if (ofThisScene && last.phase == ExportProgress::Phase::Failed) {
+        dialog.shownResult = last.message;
         ImGui::PushTextWrapPos(px(420));
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", last.message.c_str());
         ImGui::PopTextWrapPos();
-      } else if (last.phase == ExportProgress::Phase::Written ||
-                 last.phase == ExportProgress::Phase::Cancelled) {
+      } else if (ofThisScene && (last.phase == ExportProgress::Phase::Written ||
+                                 last.phase == ExportProgress::Phase::Cancelled)) {
+        dialog.shownResult = last.message;
         ImGui::PushTextWrapPos(px(420));
         ImGui::TextDisabled("%s", last.message.c_str());
         ImGui::PopTextWrapPos();

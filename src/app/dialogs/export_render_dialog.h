@@ -21,6 +21,13 @@ struct ExportDialogState {
   bool cancelRequested = false;
   bool browseRequested = false;
   ExportProgress progress;  // the running or last export, as of this frame
+  // The scene and film size the width and height were set for: another scene, or another film,
+  // sets them to its film again (when no export runs).
+  std::string sizedForScene;
+  int sizedForFilmWidthPx = 0, sizedForFilmHeightPx = 0;
+  // The scene the last export rendered: its result is shown only while that scene is open.
+  std::string exportedScene;
+  std::string shownResult;  // the result line drawn last frame ("" when none; dump-ui)
 };
 
 struct ViewerState;
