@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/analysis/analysis_setup.h"
+#include "app/analysis/drawn_figures.h"
 #include "app/analysis/latest_job.h"
 #include "app/plot/plot_spec.h"
 #include "optics/analysis/chromatic.h"
@@ -38,6 +39,7 @@ struct ColourView {
   std::optional<AnalysisRequest> requested;
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<ColourResult>> job;
+  DrawnFigures drawn;  // what the two panels that share the result drew last frame
 };
 
 inline constexpr int kLateralColourCurvePoints = 24;

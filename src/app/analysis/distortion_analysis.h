@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/analysis/analysis_setup.h"
+#include "app/analysis/drawn_figures.h"
 #include "app/analysis/latest_job.h"
 #include "app/plot/plot_spec.h"
 #include "optics/analysis/distortion.h"
@@ -40,6 +41,7 @@ struct DistortionView {
   AnalysisRequest requested;      // what was last asked of the job
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<DistortionResult>> job;
+  DrawnFigures drawn;  // what the two panels that share the result drew last frame
 };
 
 inline constexpr int kDistortionPoints = 64;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/analysis/analysis_setup.h"
+#include "app/analysis/drawn_figures.h"
 #include "app/analysis/latest_job.h"
 #include "app/plot/plot_spec.h"
 #include "optics/analysis/mtf.h"
@@ -32,10 +33,7 @@ struct MtfView {
   int rangeChoice = 3;
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<MtfAnalysisResult>> job;
-  // The frame the panel last drew in, and whether that drawing showed the current request's
-  // result (a screenshot waits for it, not only for the worker).
-  std::uint64_t drawnInFrame = 0;
-  bool drawnCurrent = false;
+  DrawnFigures drawn;  // what the panel drew last frame (a screenshot waits for it)
 };
 
 // Asks for the MTF of `request` when it differs from the last one; a request without a valid

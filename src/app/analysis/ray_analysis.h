@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/analysis/analysis_setup.h"
+#include "app/analysis/drawn_figures.h"
 #include "app/analysis/latest_job.h"
 #include "app/plot/plot_spec.h"
 #include "optics/analysis/spot_diagram.h"
@@ -29,6 +30,7 @@ struct RayAnalysisView {
   AnalysisRequest requested;  // what was last asked of the job
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<RayAnalysisResult>> job;
+  DrawnFigures drawn;  // what the two panels that share the result drew last frame
 };
 
 // Asks for the fans and spots of `request` when it differs from the last request (a null lens

@@ -75,6 +75,7 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
     state.uiRects["lateral-colour/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
                                             saveMax.y - saveMin.y};
     const auto result = latestColour(view);
+    view.drawn.note(state.frameNumber, colourIsCurrent(view, request));
     if (request.lens && !colourIsCurrent(view, request)) {
       ImGui::SameLine();
       ImGui::TextDisabled("computing...");

@@ -51,7 +51,8 @@ std::optional<PlotSpec> fieldCurvesCurrentPlot(ViewerState& state, std::string* 
 bool distortionSettled(const ViewerState& state) {
   const AnalysisRequest request = analysisRequestOf(state);
   if (!request.lens || !(request == state.distortion.requested)) return true;
-  return currentDistortion(state.distortion, request) != nullptr;
+  return currentDistortion(state.distortion, request) != nullptr &&
+         state.distortion.drawn.settled(state.frameNumber);
 }
 
 void drawDistortionPanel(ViewerState& state, const PanelPlace& place) {
@@ -67,6 +68,7 @@ void drawDistortionPanel(ViewerState& state, const PanelPlace& place) {
     ImGui::Checkbox("Against field angle", &view.againstFieldAngle);
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && result->request == request;
+    view.drawn.note(state.frameNumber, current);
     if (!request.lens) {
       ImGui::SameLine();
       ImGui::TextDisabled("no valid lens: showing the last one");

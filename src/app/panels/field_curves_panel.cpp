@@ -22,6 +22,7 @@ void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place) {
     drawAnalysisControls(state, "field-curves");
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && result->request == request;
+    view.drawn.note(state.frameNumber, current);
     if (!request.lens) {
       ImGui::TextDisabled("no valid lens: showing the last one");
       ImGui::SameLine();

@@ -32,8 +32,7 @@ bool mtfSettled(const ViewerState& state) {
   const auto result = latestMtf(state.mtf);
   if (!mtfIsCurrent(state.mtf, result.get(), request)) return false;
   // While the panel shows, until it has drawn that result.
-  const bool panelShows = state.mtf.drawnInFrame + 1 >= state.frameNumber;
-  return !panelShows || state.mtf.drawnCurrent;
+  return state.mtf.drawn.settled(state.frameNumber);
 }
 
 void drawMtfPanel(ViewerState& state, const PanelPlace& place) {
@@ -53,11 +52,11 @@ void drawMtfPanel(ViewerState& state, const PanelPlace& place) {
     ImGui::SameLine();
     requestMtf(view, request);  // only while the panel shows: an MTF costs ~10 ms a lens
     const auto result = latestMtf(view);
-    view.drawnInFrame = state.frameNumber;
-    view.drawnCurrent = mtfIsCurrent(view, result.get(), request);
+    const bool current = mtfIsCurrent(view, result.get(), request);
+    view.drawn.note(state.frameNumber, current);
     if (!request.lens) {
       ImGui::TextDisabled("the lens is invalid: showing the last valid lens's MTF");
-    } else if (!view.drawnCurrent) {
+    } else if (!current) {
       ImGui::TextDisabled("computing...");
     } else {
       ImGui::NewLine();

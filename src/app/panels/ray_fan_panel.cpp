@@ -72,7 +72,7 @@ bool rayFanSettled(const ViewerState& state) {
   if (!request.lens || !(state.rayAnalysis.requested == request)) return true;
   bool current = false;
   latestRayAnalysis(state.rayAnalysis, request, &current);
-  return current;
+  return current && state.rayAnalysis.drawn.settled(state.frameNumber);
 }
 
 void drawRayFanPanel(ViewerState& state, const PanelPlace& place) {
@@ -82,6 +82,7 @@ void drawRayFanPanel(ViewerState& state, const PanelPlace& place) {
     drawAnalysisControls(state, "ray-fan");
     bool current = false;
     const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
+    state.rayAnalysis.drawn.note(state.frameNumber, current);
     drawRayStatus(state, result.get(), current);
     if (result) {
       PlotSpec tangential = rayFanPlot(*result, FanPlane::Tangential);

@@ -36,7 +36,7 @@ std::optional<PlotSpec> seidelCurrentPlot(ViewerState& state, std::string* whyNo
 bool seidelSettled(const ViewerState& state) {
   const AnalysisRequest request = analysisRequestOf(state);
   if (!request.lens || state.colour.requested != request) return true;
-  return colourIsCurrent(state.colour, request);
+  return colourIsCurrent(state.colour, request) && state.colour.drawn.settled(state.frameNumber);
 }
 
 void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
@@ -49,6 +49,7 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Show the chromatic sums: C_L axial colour, C_T lateral colour");
     const auto result = latestColour(view);
+    view.drawn.note(state.frameNumber, colourIsCurrent(view, request));
     if (request.lens && !colourIsCurrent(view, request)) {
       ImGui::SameLine();
       ImGui::TextDisabled("computing...");

@@ -39,6 +39,7 @@ void drawSpotPanel(ViewerState& state, const PanelPlace& place) {
     drawAnalysisControls(state, "spot");
     bool current = false;
     const auto result = latestRayAnalysis(view, request, &current);
+    view.drawn.note(state.frameNumber, current);
     // The film plane: the film itself or moved through focus, in depths of focus.
     ImGui::TextUnformatted("Film");
     const std::vector<double> steps =
