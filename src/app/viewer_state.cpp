@@ -42,7 +42,8 @@ void refreshLens(ViewerState& state) {
     state.rayFans = {};
     return;
   }
-  if (lensChanged || state.fanSettings != state.fansComputedWith) {
+  if (lensChanged || state.fanSettings != state.fansComputedWith ||
+      state.falloff.rims != state.fansComputedWithRims) {
     optics::FanSpec spec;
     spec.raysPerFan = state.fanSettings.raysPerFan;
     spec.fieldFractions = state.fanSettings.fieldFractions;
@@ -51,20 +52,32 @@ void refreshLens(ViewerState& state) {
     if (state.fanSettings.colourFans) {
       spec.otherWavelengthsNm = {optics::kWavelengthFNm, optics::kWavelengthCNm};
     }
-    state.rayFans = optics::computeRayFans(*state.lensSystem, spec);
+    state.rayFans = optics::computeRayFans(*lensAsRendered(state), spec);
     state.fansComputedWith = state.fanSettings;
+    state.fansComputedWithRims = state.falloff.rims;
     ++state.fansRevision;
   }
+}
+
+const std::shared_ptr<const optics::LensSystem>& lensAsRendered(ViewerState& state) {
+  if (state.falloff.rims || !state.lensSystem) return state.lensSystem;
+  auto& cached = state.lensWithoutRims;
+  if (cached.from != state.lensSystem) {
+    cached.from = state.lensSystem;
+    cached.stopOnly = state.lensSystem->withApertureClipping(optics::ApertureClipping::StopOnly);
+  }
+  return cached.stopOnly;
 }
 
 const optics::FilmPointBundle* filmPointBundle(ViewerState& state) {
   if (!state.filmPointHeightMm || !state.lensSystem || !state.lensSystemIsCurrent) return nullptr;
   auto& traced = state.filmPointBundle;
-  if (traced.lens != state.lensSystem || traced.heightMm != *state.filmPointHeightMm) {
+  const auto& lens = lensAsRendered(state);
+  if (traced.lens != lens || traced.heightMm != *state.filmPointHeightMm) {
     // About half a millisecond (bench/README.md): traced here, when the lens or the point moves.
-    traced.lens = state.lensSystem;
+    traced.lens = lens;
     traced.heightMm = *state.filmPointHeightMm;
-    traced.bundle = optics::traceFilmPointBundle(*state.lensSystem, traced.heightMm);
+    traced.bundle = optics::traceFilmPointBundle(*lens, traced.heightMm);
   }
   return &traced.bundle;
 }
@@ -77,10 +90,12 @@ const CrossSectionCache& crossSection(ViewerState& state) {
       bundle ? std::optional(bundle->imageHeightMm) : std::nullopt;
   if (cache.lensGeneration == state.lens.generation() && cache.fansRevision == state.fansRevision &&
       cache.filmDiagonalMm == state.filmDiagonalMm && cache.showBlocked == showBlocked &&
-      cache.filmPointHeightMm == bundleHeight) {
+      cache.filmPointHeightMm == bundleHeight &&
+      (!bundle || cache.filmPointBundleLens == state.filmPointBundle.lens)) {
     return cache;
   }
   cache.filmPointHeightMm = bundleHeight;
+  cache.filmPointBundleLens = bundle ? state.filmPointBundle.lens : nullptr;
   cache.lensGeneration = state.lens.generation();
   cache.fansRevision = state.fansRevision;
   cache.filmDiagonalMm = state.filmDiagonalMm;

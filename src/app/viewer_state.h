@@ -86,6 +86,8 @@ struct CrossSectionCache {
   double filmDiagonalMm = 0;
   bool showBlocked = true;
   std::optional<double> filmPointHeightMm;
+  // The lens the film point's bundle was traced through (the rims toggle changes it).
+  std::shared_ptr<const optics::LensSystem> filmPointBundleLens;
   optics::LensOutline outline;
   CrossSectionDrawing drawing;
   BoundsMm fitBounds;  // the lens, the film and room for the incoming rays
@@ -108,9 +110,18 @@ struct ViewerState {
   std::shared_ptr<const optics::LensSystem> lensSystem;
   bool lensSystemIsCurrent = false;  // lensSystem was built from the current document
   std::uint64_t lensBuiltGeneration = ~std::uint64_t{0};
+  // lensSystem as the render traces it: with the rims toggle off (falloff.rims), only its stop
+  // clips (ApertureClipping::StopOnly). Built by lensAsRendered() when either changes.
+  struct {
+    std::shared_ptr<const optics::LensSystem> from;
+    std::shared_ptr<const optics::LensSystem> stopOnly;
+  } lensWithoutRims;
   FanSettings fanSettings;
   FanSettings fansComputedWith;
-  optics::RayFans rayFans;         // for lensSystem, when lensSystemIsCurrent
+  bool fansComputedWithRims = true;
+  // For lensAsRendered(), when lensSystemIsCurrent: the cross-section shows the rays as the
+  // render traces them.
+  optics::RayFans rayFans;
   std::uint64_t fansRevision = 0;  // bumped whenever rayFans is replaced
   CrossSectionCache crossSection;
   // The figures that take real-ray searches, for lensSystem: computed off the UI thread once per
@@ -127,6 +138,9 @@ struct ViewerState {
   // The "Focus at" field: the distance in focus (from the film) once the lens has one, else the
   // last typed; its text while it is typed into, and what it showed last frame (dump-ui).
   double focusDistanceInputMm = 3000.0;
+  // The current lens focuses nothing (film too near or too far): the field is empty, its hint
+  // says so and names focusDistanceInputMm, which the button still focuses at.
+  bool nothingInFocus = false;
   char focusDistanceText[32] = {};
   // The analysis panels' Fields box (panels/analysis_controls.cpp), while it is being typed in.
   char fieldsText[96] = {};
@@ -229,8 +243,13 @@ inline double shownExposureStops(const ViewerState& state) {
 // LensSystem (when valid), the first-order figures and the ray fans.
 void refreshLens(ViewerState& state);
 
-// The bundle of state.filmPointHeightMm for the current lens (traced when either changes); null
-// when no film point is chosen or the document is not a valid lens.
+// The lens the render traces: lensSystem itself, or with the rims toggle off its copy whose stop
+// alone clips. The cross-section's fans and film-point bundle and the Illumination panel show
+// this one, so that what they draw is what the preview renders. Null without a lens.
+const std::shared_ptr<const optics::LensSystem>& lensAsRendered(ViewerState& state);
+
+// The bundle of state.filmPointHeightMm for the lens as rendered (traced when either changes);
+// null when no film point is chosen or the document is not a valid lens.
 const optics::FilmPointBundle* filmPointBundle(ViewerState& state);
 
 // The cross-section's drawing for the current lens, fans and film, from the cache.

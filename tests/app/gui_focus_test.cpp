@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -157,6 +158,36 @@ TEST_F(LensesOpenInFocus, ACourseSceneKeepsItsFilmDistanceAndALensOpenedOverItTh
   EXPECT_DOUBLE_EQ(dump["state"]["film_distance_mm"].get<double>(),
                    lensFile("dgauss-lowenthal-100mm-f1.35.dat").system->filmDistanceMm());
   EXPECT_TRUE(logged(dump, "the scene sets a film distance, not a focus distance"));
+}
+
+// With the film nearer the lens than its infinity focus nothing is in focus: "Focus at" no
+// longer shows the scene's 3.6 m as if the lens were focused there, but says there is none, as
+// "In focus" does; focusing again brings the distance back.
+TEST_F(LensesOpenInFocus, FocusAtSaysNoneWhenNothingIsInFocus) {
+  const nlohmann::json none = run("set film-distance 20\nwait-frames 2\n", "none.json");
+  ASSERT_TRUE(none.is_object());
+  EXPECT_EQ(none["state"]["focus_at_text"], "none in focus");
+  const std::string inFocus = none["state"]["in_focus_text"];
+  EXPECT_EQ(inFocus.rfind("nothing", 0), 0u) << inFocus;
+  // And says it where it can be read: beside "Focus at", whole, inside the lens panel (it was
+  // the first-order table's last row, below the panel's fold and cut off).
+  const auto& widgets = none["widgets"];
+  ASSERT_TRUE(widgets.contains("first-order/in-focus")) << widgets;
+  const auto& line = widgets["first-order/in-focus"];
+  const auto& upper = widgets["layout/upper"];
+  EXPECT_LE(line["y"].get<double>() + line["height"].get<double>(),
+            upper["y"].get<double>() + upper["height"].get<double>());
+  EXPECT_GT(line["y"].get<double>(), widgets["first-order/focus"]["y"].get<double>());
+  // Back to the film distance the viewer opened with, focused on the chart.
+  const nlohmann::json opened = run("wait-frames 2\n", "opened.json");
+  ASSERT_EQ(opened["state"]["focus_at_text"], "3.600 m");
+  char setFilm[64];
+  std::snprintf(setFilm, sizeof setFilm, "set film-distance %.17g\n",
+                opened["state"]["film_distance_mm"].get<double>());
+  const nlohmann::json back =
+      run(std::string("set film-distance 20\nwait-frames 2\n") + setFilm + "wait-frames 2\n",
+          "back.json");
+  EXPECT_EQ(back["state"]["focus_at_text"], "3.600 m");
 }
 
 TEST_F(LensesOpenInFocus, ALensThatCannotFocusThereKeepsTheFilesFilmDistanceAndSaysWhy) {

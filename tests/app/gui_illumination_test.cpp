@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -200,6 +202,59 @@ TEST(FilmPointBundleView, TheCrossSectionShowsWhatReachesAFilmPointAndWhatStopsT
 
 namespace lenslab {
 namespace {
+
+// With the render's rims toggle off, the views show the lens as the render traces it: the film
+// point's bundle is cut by the stop alone (the wide 22 mm's rims take about half the iris's light
+// at 18 mm with them on), the Illumination curves are those of the stop-only lens, brighter in
+// the corner, and the curve with the rims stays beside them, equal to the one shown before.
+TEST(FilmPointBundleView, WithTheRimsOffTheBundleAndCurvesAreTheLensAsRendered) {
+  const auto scratch = testing::makeTestDirectory("film-point-rims-off");
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/wide-22mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
+                                             << "show-panel illumination\n"
+                                                "set film-point 18\n"
+                                                "wait-frames 2\n"
+                                                "dump-ui on.json\n"
+                                                "export-plot illumination on.csv\n"
+                                                "set rims off\n"
+                                                "wait-frames 2\n"
+                                                "dump-ui off.json\n"
+                                                "export-plot illumination off.csv\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const nlohmann::json on = testing::readJson(scratch / "on.json");
+  const nlohmann::json off = testing::readJson(scratch / "off.json");
+  const auto& pointOn = on["state"]["film_point"];
+  const auto& pointOff = off["state"]["film_point"];
+  ASSERT_TRUE(pointOn.is_object() && pointOff.is_object()) << off["state"];
+  EXPECT_EQ(pointOn["rims"], true);
+  EXPECT_EQ(pointOff["rims"], false);
+  EXPECT_LT(pointOn["passing"].get<double>(), 0.9);
+  EXPECT_FALSE(pointOn["blocked"].empty());
+  // Only a ray that misses a surface or reflects totally could still be lost.
+  EXPECT_GT(pointOff["passing"].get<double>(), 0.99) << pointOff;
+
+  const CsvTable withRims = readCsv(scratch / "on.csv");
+  const CsvTable asRendered = readCsv(scratch / "off.csv");
+  const auto column = [](const CsvTable& table, const std::string& name) {
+    const auto at = std::find(table.header.begin(), table.header.end(), name);
+    return at == table.header.end() ? -1 : static_cast<int>(at - table.header.begin());
+  };
+  ASSERT_GE(column(withRims, "total"), 1);
+  ASSERT_GE(column(asRendered, "total"), 1);
+  EXPECT_EQ(column(withRims, "total with the rims"), -1);
+  ASSERT_GE(column(asRendered, "total with the rims"), 1) << asRendered.header.size();
+  ASSERT_EQ(withRims.rows.size(), asRendered.rows.size());
+  const auto& cornerOn = withRims.rows.back();
+  const auto& cornerOff = asRendered.rows.back();
+  const double totalOn = cornerOn[column(withRims, "total")];
+  const double totalOff = cornerOff[column(asRendered, "total")];
+  std::printf("corner total: rims on %.3f, rims off %.3f\n", totalOn, totalOff);
+  EXPECT_GT(totalOff, totalOn + 0.1);
+  EXPECT_NEAR(cornerOff[column(asRendered, "total with the rims")], totalOn, 1e-6);
+}
 
 // With a film point's bundle shown, a real click on the preview chooses the film point: its
 // distance from the picture's centre, in the film's millimetres (the picture's diagonal is the

@@ -11,18 +11,35 @@ namespace lenslab::app {
 
 void requestIllumination(IlluminationView& view,
                          const std::shared_ptr<const optics::LensSystem>& lens,
-                         double filmDiagonalMm) {
+                         double filmDiagonalMm, bool rims) {
   if (!lens) return;
-  if (lens == view.requestedLens && filmDiagonalMm == view.requestedFilmDiagonalMm) return;
+  if (lens == view.requestedLens && filmDiagonalMm == view.requestedFilmDiagonalMm &&
+      rims == view.requestedRims)
+    return;
   if (!view.job) view.job = std::make_unique<LatestJob<IlluminationResult>>();
   view.requestedLens = lens;
   view.requestedFilmDiagonalMm = filmDiagonalMm;
-  view.job->request(++view.requests, [lens, filmDiagonalMm] {
-    IlluminationResult result{lens, filmDiagonalMm, std::nullopt};
-    result.curve = optics::relativeIllumination(*lens, 0.5 * filmDiagonalMm, kIlluminationPoints,
-                                                {}, /*withRearDiskTotal=*/true);
+  view.requestedRims = rims;
+  view.job->request(++view.requests, [lens, filmDiagonalMm, rims] {
+    IlluminationResult result{lens, filmDiagonalMm, rims, std::nullopt, std::nullopt};
+    const double halfDiagonalMm = 0.5 * filmDiagonalMm;
+    if (rims) {
+      result.curve = optics::relativeIllumination(*lens, halfDiagonalMm, kIlluminationPoints, {},
+                                                  /*withRearDiskTotal=*/true);
+    } else {
+      // The render then samples the exit pupil, not the rear disk: no course curve.
+      const auto stopOnly = lens->withApertureClipping(optics::ApertureClipping::StopOnly);
+      result.curve = optics::relativeIllumination(*stopOnly, halfDiagonalMm, kIlluminationPoints);
+      result.withRims = optics::relativeIllumination(*lens, halfDiagonalMm, kIlluminationPoints);
+    }
     return result;
   });
+}
+
+bool illuminationIsFor(const IlluminationResult& result,
+                       const std::shared_ptr<const optics::LensSystem>& lens, double filmDiagonalMm,
+                       bool rims) {
+  return result.lens == lens && result.filmDiagonalMm == filmDiagonalMm && result.rims == rims;
 }
 
 std::string renderFalloffNote(render::FalloffToggles falloff) {
@@ -51,6 +68,18 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   PlotSeries cos4{"cos4 (chief ray)", {}, {}, 0xffb347ffu, true};
   PlotSeries vignetting{"vignetting (apertures)", {}, {}, 0x5ec8ffffu, false};
   PlotSeries rearDisk{"course: rear-disk sampling", {}, {}, 0xff6b9dffu, true};
+  PlotSeries totalWithRims{"total with the rims", {}, {}, 0x9a9a9affu, true};
+  if (!result.rims) {
+    // The curves below are the lens as rendered; the total with its rims for comparison.
+    spec.note += "; curves as rendered (the stop alone clips)";
+    if (result.withRims) {
+      for (const optics::RelativeIlluminationPoint& p : result.withRims->points) {
+        if (againstFieldAngle && !p.fieldAngleDeg) continue;
+        totalWithRims.x.push_back(againstFieldAngle ? *p.fieldAngleDeg : p.imageHeightMm);
+        totalWithRims.y.push_back(p.total);
+      }
+    }
+  }
   for (const optics::RelativeIlluminationPoint& p : result.curve->points) {
     double x = p.imageHeightMm;
     if (againstFieldAngle) {
@@ -73,6 +102,7 @@ PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAng
   // The axis ends at the film corner (or its field angle), not at the next round tick.
   if (!total.x.empty() && total.x.back() > 0.0) spec.x.max = total.x.back();
   spec.series = {total, cos4, vignetting};
+  if (!totalWithRims.x.empty()) spec.series.push_back(totalWithRims);
   if (sceneSamplesRearDisk && falloff.rims) {  // rims off samples the exit pupil instead
     spec.series.push_back(rearDisk);
     spec.note += "; the render samples the rear element's disk, as the course did";

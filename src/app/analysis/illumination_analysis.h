@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "app/analysis/drawn_figures.h"
 #include "app/analysis/latest_job.h"
 #include "app/analysis/measured_falloff.h"
 #include "app/plot/plot_spec.h"
@@ -20,7 +21,11 @@ namespace lenslab::app {
 struct IlluminationResult {
   std::shared_ptr<const optics::LensSystem> lens;  // the lens it was computed for
   double filmDiagonalMm = 0.0;
+  // The render's rims toggle it was computed for. Off: `curve` is the lens as the render traces
+  // it (its stop alone clips) and `withRims` the lens itself, drawn beside it for comparison.
+  bool rims = true;
   std::optional<optics::RelativeIllumination> curve;  // nullopt: no light on the axis
+  std::optional<optics::RelativeIllumination> withRims;
 };
 
 struct IlluminationView {
@@ -28,31 +33,31 @@ struct IlluminationView {
   // What was last asked of the job, so that a frame asks again only when it changed.
   std::shared_ptr<const optics::LensSystem> requestedLens;
   double requestedFilmDiagonalMm = 0.0;
+  bool requestedRims = true;
   std::uint64_t requests = 0;
   std::unique_ptr<LatestJob<IlluminationResult>> job;
   std::string renderNote;  // what the plot last said of the render's toggles ("" when all on)
-  // What was drawn from the result in frame `drawnInFrame` (the panel's curve and footprint, the
-  // preview's heat map): whether all of it was the current lens's. Scripts' captures wait for
-  // that, not merely for the result to exist: one that arrives after they were drawn shows only
-  // in the next frame.
-  std::uint64_t drawnInFrame = 0;
-  bool drewCurrent = false;
-  void noteDrawn(std::uint64_t frame, bool current) {
-    drewCurrent = (drawnInFrame == frame ? drewCurrent : true) && current;
-    drawnInFrame = frame;
-  }
+  // What the panel's curve and footprint and the preview's heat map drew from the result.
+  DrawnFigures drawn;
 };
 
 inline constexpr int kIlluminationPoints = 64;
 
-// Asks for the curve of `lens` when it (or the film) differs from the last request.
+// Asks for the curve of `lens` when it (or the film, or the rims toggle) differs from the last
+// request. `rims` false: the curve of the lens as the render traces it with its rims toggle off.
 void requestIllumination(IlluminationView& view,
                          const std::shared_ptr<const optics::LensSystem>& lens,
-                         double filmDiagonalMm);
+                         double filmDiagonalMm, bool rims = true);
+
+// Whether `result` is the one for this lens, film and rims toggle.
+bool illuminationIsFor(const IlluminationResult& result,
+                       const std::shared_ptr<const optics::LensSystem>& lens, double filmDiagonalMm,
+                       bool rims);
 
 // The curves to plot: total, cos4 and vignetting (and the course's rear-disk total when the
 // scene renders that way), against image height or field angle. The note says which of the
-// render's factors are off (`falloff`), since the preview then departs from `total`.
+// render's factors are off (`falloff`), since the preview then departs from `total`; with the
+// rims off the curves are the lens as rendered, and the total with the rims is drawn dashed.
 // `measured`, the fall-off measured from the preview (measured_falloff.h), is drawn when it was
 // rendered through the result's lens.
 PlotSpec illuminationPlot(const IlluminationResult& result, bool againstFieldAngle,

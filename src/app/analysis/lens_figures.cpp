@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include "common/distance_text.h"
 #include "optics/analysis/chromatic.h"
@@ -36,8 +38,15 @@ LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSys
   const optics::LensSystem& lens = *lensSystem;
   const optics::FocusResult inFocus =
       optics::objectDistanceForFilmDistance(lens, lens.filmDistanceMm());
-  figures.inFocusText = inFocus.ok() ? distanceText(*inFocus.valueMm) + " from the film"
-                                     : "nothing (" + inFocus.whyNot + ")";
+  if (inFocus.ok()) {
+    figures.inFocusText = distanceText(*inFocus.valueMm) + " from the film";
+  } else {
+    // "nothing: the film is nearer the lens than ...", not "nothing (...: nothing is in focus)".
+    std::string why = inFocus.whyNot;
+    const std::string_view repeated = ": nothing is in focus";
+    if (why.ends_with(repeated)) why.erase(why.size() - repeated.size());
+    figures.inFocusText = "nothing: " + why;
+  }
   figures.inFocusMm = inFocus.valueMm;
   figures.colourFocusText = colourFocusText(lens);
   if (!withBeamFigures) return figures;

@@ -67,6 +67,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
       {"scene_path", state.scenePath},
       {"scene_loading", state.loadingScenePath},
       {"lens_table_cells_cut_off", state.lensTable.cellsCutOff},
+      {"lens_table_cells_shortened", state.lensTable.cellsShortened},
       {"lens_panel_scroll_max_y", state.lensPanelScrollMaxY},
       {"film_distance_mm", filmDistance},
       {"film_diagonal_mm", state.filmDiagonalMm},
@@ -100,7 +101,8 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"samples_per_pixel", state.exportDialog.samplesPerPixel},
         {"path", state.exportDialog.path},
         {"running", state.exportDialog.progress.running()},
-        {"spp_done", state.exportDialog.progress.sppDone()}}},
+        {"spp_done", state.exportDialog.progress.sppDone()},
+        {"shown_result", state.exportDialog.shownResult}}},
       {"cross_section_view",
        {{"pixels_per_mm", view.pixelsPerMm},
         {"centre_z_mm", view.centreZMm},
@@ -108,14 +110,21 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
   };
   // The film point's bundle as the cross-section shows it (surfaces from 1).
   const auto& traced = state.filmPointBundle;
-  if (state.filmPointHeightMm && traced.lens && traced.lens == state.lensSystem) {
+  const bool tracedForCurrentLens =
+      traced.lens &&
+      (traced.lens == state.lensSystem || (traced.lens == state.lensWithoutRims.stopOnly &&
+                                           state.lensWithoutRims.from == state.lensSystem));
+  if (state.filmPointHeightMm && tracedForCurrentLens) {
     nlohmann::json blocked = nlohmann::json::array();
     for (const optics::BundleShare& share : traced.bundle.blocked)
       blocked.push_back({{"surface", share.surface + 1}, {"fraction", share.fraction}});
-    about["film_point"] = {{"height_mm", traced.heightMm},
-                           {"passing", traced.bundle.passing},
-                           {"blocked", blocked},
-                           {"rays", traced.bundle.rays.size()}};
+    about["film_point"] = {
+        {"height_mm", traced.heightMm},
+        {"passing", traced.bundle.passing},
+        {"blocked", blocked},
+        // false: traced as the render with its rims toggle off (stop only)
+        {"rims", traced.lens->apertureClipping() == optics::ApertureClipping::EveryRim},
+        {"rays", traced.bundle.rays.size()}};
   }
   // The vignetting teaching's switches (issue 21) and what the illumination plot notes.
   about["spectral"] = render::toString(state.falloff.spectral);

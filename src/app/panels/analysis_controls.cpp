@@ -56,6 +56,9 @@ void drawAnalysisControls(ViewerState& state, const char* plotId) {
 void drawAnalysisConditions(ViewerState& state, const char* plotId, const optics::LensSystem& lens,
                             const optics::AnalysisSetup& setup) {
   std::string text = analysisConditionsText(lens, setup);
+  // The analyses are of the lens itself: with the render's rims toggle off they differ from
+  // what the preview shows, and say so.
+  if (!state.falloff.rims) text += "; with every rim (the render's rims are off)";
   ImGui::TextDisabled("%s", text.c_str());
   if (const std::string warning = fieldCoverageWarning(setup); !warning.empty()) {
     // The cross-section's words and colour.

@@ -22,6 +22,7 @@ namespace {
 
 constexpr float kGrabDistancePx = 6.0f;  // at UI scale 1
 constexpr float kDashPx = 8.0f, kGapPx = 5.0f;
+constexpr const char* kRimsOffNote = "rims off: only the stop clips, as in the render";
 
 ImVec2 toImVec(const CanvasPoint& point) {
   return ImVec2(static_cast<float>(point.x), static_cast<float>(point.y));
@@ -132,6 +133,12 @@ void drawFanControls(ViewerState& state) {
     ImGui::TextColored(ImVec4(colour.r / 255.f, colour.g / 255.f, colour.b / 255.f, 1.f), "%s",
                        text);
   };
+  if (!state.falloff.rims) {
+    // The rays are traced as the render traces them (lensAsRendered): say so, since the rims
+    // drawn no longer stop them.
+    legendRow.next(ImGui::CalcTextSize(kRimsOffNote).x);
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", kRimsOffNote);
+  }
   if (const optics::FilmPointBundle* bundle = filmPointBundle(state)) {
     // A film point's bundle instead of the fans: what reaches it, and what stops the rest.
     char text[96];

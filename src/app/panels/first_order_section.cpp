@@ -103,16 +103,31 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   focusRow.next(px(110));
   ImGui::SetNextItemWidth(px(110));
   const std::string shown = distanceText(state.focusDistanceInputMm);
+  // With nothing in focus the last distance would read as the lens's: the field is left empty
+  // with a hint, and its tooltip says what the button would focus at.
+  const char* hint = "none in focus";
   if (!state.focusFieldEditing) {
-    std::snprintf(state.focusDistanceText, sizeof state.focusDistanceText, "%s", shown.c_str());
+    std::snprintf(state.focusDistanceText, sizeof state.focusDistanceText, "%s",
+                  state.nothingInFocus ? "" : shown.c_str());
   }
-  state.focusAtShown = state.focusDistanceText;
-  focus |= ImGui::InputText("##focus-distance", state.focusDistanceText,
-                            sizeof state.focusDistanceText, ImGuiInputTextFlags_EnterReturnsTrue);
+  state.focusAtShown = state.focusDistanceText[0] ? state.focusDistanceText : hint;
+  focus |= ImGui::InputTextWithHint("##focus-distance", hint, state.focusDistanceText,
+                                    sizeof state.focusDistanceText,
+                                    ImGuiInputTextFlags_EnterReturnsTrue);
   state.focusFieldEditing = ImGui::IsItemActive();
   const ImVec2 fieldMin = ImGui::GetItemRectMin(), fieldMax = ImGui::GetItemRectMax();
   state.uiRects["first-order/focus-distance"] = {fieldMin.x, fieldMin.y, fieldMax.x - fieldMin.x,
                                                  fieldMax.y - fieldMin.y};
+  if (ImGui::IsItemHovered() && state.nothingInFocus) {
+    ImGui::SetTooltip(
+        "Nothing is in focus at this film distance (see In focus below).\n"
+        "The button focuses at %s, or type a distance.",
+        shown.c_str());
+  }
+  if ((ImGui::IsItemDeactivated() || focus) && !state.focusDistanceText[0]) {
+    // Left empty: the distance the hint names.
+    std::snprintf(state.focusDistanceText, sizeof state.focusDistanceText, "%s", shown.c_str());
+  }
   if (ImGui::IsItemDeactivated() || focus) {
     if (const auto typed = parseDistanceMm(state.focusDistanceText)) {
       state.focusDistanceInputMm = *typed;
@@ -124,6 +139,20 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     std::snprintf(state.focusDistanceText, sizeof state.focusDistanceText, "%s",
                   distanceText(state.focusDistanceInputMm).c_str());
   }
+  // What is in focus, beside the control that changes it: as the first-order table's last row
+  // it was below the panel's fold, its "nothing (...)" cut off.
+  ImGui::TextDisabled("In focus");
+  ImGui::SameLine();
+  ImGui::PushTextWrapPos(0.0f);
+  if (state.nothingInFocus) {
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "%s", state.inFocusText.c_str());
+  } else {
+    ImGui::TextUnformatted(state.inFocusText.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  const ImVec2 inFocusMin = ImGui::GetItemRectMin(), inFocusMax = ImGui::GetItemRectMax();
+  state.uiRects["first-order/in-focus"] = {inFocusMin.x, inFocusMin.y, inFocusMax.x - inFocusMin.x,
+                                           inFocusMax.y - inFocusMin.y};
   if (focus) {
     const optics::FocusResult result =
         optics::filmDistanceForObjectDistance(lens, state.focusDistanceInputMm);
@@ -147,9 +176,10 @@ void updateLensFigures(ViewerState& state) {
   state.lensFigures.shownInFrame = state.frameNumber;
   state.inFocusText = figures->inFocusText;
   state.colourFocusText = figures->colourFocusText;
-  // "Focus at" shows the distance actually in focus.
-  if (figures->inFocusMm && figures->lens == state.lensSystem) {
-    state.focusDistanceInputMm = *figures->inFocusMm;
+  // "Focus at" shows the distance actually in focus, or that there is none.
+  if (figures->lens == state.lensSystem) {
+    if (figures->inFocusMm) state.focusDistanceInputMm = *figures->inFocusMm;
+    state.nothingInFocus = !figures->inFocusMm;
   }
   if (figures->hasBeamFigures) {
     state.fNumberText = figures->fNumberText;
@@ -244,7 +274,6 @@ void drawFirstOrderSection(ViewerState& state) {
           "the Colour panel report it).");
     }
     textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
-    textRow("In focus", state.inFocusText);
     ImGui::EndTable();
   }
 }

@@ -83,9 +83,10 @@ std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string*
     return std::nullopt;
   }
   IlluminationView& view = state.illumination;
-  requestIllumination(view, state.lensSystem, state.filmDiagonalMm);
+  requestIllumination(view, state.lensSystem, state.filmDiagonalMm, state.falloff.rims);
   const auto result = view.job->latest();
-  if (!result || result->lens != state.lensSystem || result->filmDiagonalMm != state.filmDiagonalMm)
+  if (!result ||
+      !illuminationIsFor(*result, state.lensSystem, state.filmDiagonalMm, state.falloff.rims))
     return std::nullopt;
   // The measured fall-off is copied into the spec, so the result it came from may go after.
   std::shared_ptr<const void> keepMeasured;
@@ -98,16 +99,20 @@ std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string*
 
 bool illuminationSettled(const ViewerState& state) {
   const IlluminationView& view = state.illumination;
-  if (!state.lensSystem || view.requestedLens != state.lensSystem) return true;
+  if (!state.lensSystem || view.requestedLens != state.lensSystem ||
+      view.requestedRims != state.falloff.rims)
+    return true;
   const auto result = view.job->latest();
-  if (!result || result->lens != state.lensSystem) return false;
+  if (!result ||
+      !illuminationIsFor(*result, state.lensSystem, state.filmDiagonalMm, state.falloff.rims))
+    return false;
   // Drawn in this frame (the panel, the heat map): from the current result, or it arrived after.
-  return view.drawnInFrame != state.frameNumber || view.drewCurrent;
+  return view.drawn.settled(state.frameNumber);
 }
 
 void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
   IlluminationView& view = state.illumination;
-  requestIllumination(view, state.lensSystem, state.filmDiagonalMm);
+  requestIllumination(view, state.lensSystem, state.filmDiagonalMm, state.falloff.rims);
   if (beginPanel("Illumination", place)) {
     ImGui::Checkbox("Against field angle", &view.againstFieldAngle);
     ImGui::SameLine();
@@ -144,9 +149,9 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
       state.uiRects["illumination/film-point"] = {min.x, min.y, max.x - min.x, max.y - min.y};
     }
     const auto result = view.job ? view.job->latest() : nullptr;
-    const bool current = result && result->lens == state.lensSystem &&
-                         result->filmDiagonalMm == state.filmDiagonalMm;
-    view.noteDrawn(state.frameNumber, current);
+    const bool current = result && illuminationIsFor(*result, state.lensSystem,
+                                                     state.filmDiagonalMm, state.falloff.rims);
+    view.drawn.note(state.frameNumber, current);
     if (!current) {
       ImGui::SameLine();
       ImGui::TextDisabled("computing...");

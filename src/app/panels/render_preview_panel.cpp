@@ -103,11 +103,12 @@ void drawControls(ViewerState& state) {
 // The heat map of `vignetting` over the picture (drawing/vignetting_overlay.h) and its colour bar
 // in the picture's top-right corner, from the Illumination curve computed on its worker.
 void drawVignettingOverlay(ViewerState& state, ImDrawList* draw, ImVec2 topLeft, ImVec2 size) {
-  requestIllumination(state.illumination, state.lensSystem, state.filmDiagonalMm);
+  requestIllumination(state.illumination, state.lensSystem, state.filmDiagonalMm,
+                      state.falloff.rims);
   const auto result = state.illumination.job ? state.illumination.job->latest() : nullptr;
-  state.illumination.noteDrawn(
-      state.frameNumber,
-      result && result->lens == state.lensSystem && result->filmDiagonalMm == state.filmDiagonalMm);
+  state.illumination.drawn.note(
+      state.frameNumber, result && illuminationIsFor(*result, state.lensSystem,
+                                                     state.filmDiagonalMm, state.falloff.rims));
   if (!result || !result->curve) return;
   std::vector<double> heights, shares;
   for (const optics::RelativeIlluminationPoint& p : result->curve->points) {
