@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include "optics/film_point_bundle.h"
@@ -33,6 +34,10 @@ struct Polyline {
   // gives its colour instead of the field; 0 for the field-coloured rays.
   double wavelengthNm = 0;
   bool blocked = false;  // a ray that does not reach the film
+  // A film point's bundle's ray (drawFilmPointBundle): coloured by what becomes of it, not by a
+  // field: the passing colour, or its stopping surface's (stopSurface, 0-based) when blocked.
+  bool bundleRay = false;
+  int stopSurface = -1;
 };
 
 struct FilledQuads {
@@ -99,5 +104,16 @@ void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool
 // the point in kBundlePassing, stopped rays up to their rim in that surface's colour, the chief
 // ray dashed.
 void drawFilmPointBundle(CrossSectionDrawing& drawing, const optics::FilmPointBundle& bundle);
+
+// What a film point's bundle legend says, in the panel and on the slide: "reaches it 64%" in the
+// passing colour (surface -1), then each surface that stops a share, largest first ("surface 3:
+// 20%", with " (front)", " (rear)" or " (stop)" where it is one of those), in its colour; or
+// "no ray from it reaches the stop" (surface -2) for an empty bundle.
+struct BundleLegendEntry {
+  int surface = -1;  // -1: the passing share; -2: nothing passes the stop; else 0-based
+  std::string text;
+};
+std::vector<BundleLegendEntry> bundleLegend(const optics::FilmPointBundle& bundle,
+                                            std::size_t surfaceCount, std::size_t stopIndex);
 
 }  // namespace lenslab::app
