@@ -70,11 +70,14 @@ inline constexpr Colour kFieldColours[] = {
     {80, 220, 120, 255}, {250, 180, 60, 255}, {235, 90, 200, 255}, {90, 170, 255, 255}};
 inline constexpr Colour kChiefRay{255, 255, 255, 255};
 // A film point's bundle: the rays that reach it, and those stopped, in the colour of the surface
-// that stops them (cycled by surface number).
+// that stops them (cycled by surface number). Twelve, so that no two surfaces of a lens of up to
+// twelve (every stock lens but the 13-surface wide angle) share one: with eight, the double
+// Gauss's surfaces 1 and 9 were both red in one legend.
 inline constexpr Colour kBundlePassing{120, 235, 140, 255};
 inline constexpr Colour kStoppingSurfaceColours[] = {
-    {255, 110, 90, 255},  {255, 190, 60, 255}, {200, 120, 255, 255}, {80, 180, 255, 255},
-    {255, 120, 200, 255}, {170, 220, 60, 255}, {255, 150, 120, 255}, {120, 140, 255, 255}};
+    {255, 110, 90, 255},  {255, 190, 60, 255},  {200, 120, 255, 255}, {80, 180, 255, 255},
+    {255, 120, 200, 255}, {170, 220, 60, 255},  {255, 150, 120, 255}, {120, 140, 255, 255},
+    {60, 215, 190, 255},  {235, 235, 100, 255}, {205, 155, 105, 255}, {200, 200, 215, 255}};
 inline Colour stoppingSurfaceColour(int surface) {
   constexpr int kCount = static_cast<int>(std::size(kStoppingSurfaceColours));
   return kStoppingSurfaceColours[((surface % kCount) + kCount) % kCount];
