@@ -257,6 +257,26 @@ TEST(PlotLayout, AFiguresPlotsStandSideBySideWithSquareBoxesAndTheLegendUnderThe
             "Airy disk");
 }
 
+TEST(PlotLayout, ASquarePlotsAxesHaveThreeLabelsAtTheLeast) {
+  // A spot diagram of the fisheye: -44 to 44 um in a box some 300 px wide. The x axis was
+  // labelled "0" alone (its round step of 50 put -50 and 50 outside the box).
+  PlotSpec spec = threeSpots().plots[0];
+  spec.x.min = spec.y.min = -44.0;
+  spec.x.max = spec.y.max = 44.0;
+  spec.equalAspect = false;  // as spotPlot: fixed equal ranges
+  const float fontPx = 18.75f;
+  const PlotFrame frame = layoutPlot(spec, {0, 0, 380, 380}, fontPx, [&](const std::string& s) {
+    return 0.6f * fontPx * static_cast<float>(s.size());
+  });
+  ASSERT_LT(frame.area.width, 340.0f);
+  EXPECT_GE(frame.xTicks.values.size(), 3u);
+  EXPECT_GE(frame.yTicks.values.size(), 3u);
+  for (double value : frame.xTicks.values) {
+    EXPECT_GE(value, -44.0);
+    EXPECT_LE(value, 44.0);
+  }
+}
+
 TEST(PlotSvg, AFigureHasOneBoxPerPlotAndTheTitleOnce) {
   const std::string svg = figureSvg(threeSpots(), 1200, 750);
   const auto boxes = svgBoxes(svg);

@@ -76,10 +76,17 @@ AxisTicks spacedTicks(double lo, double hi, float lengthPx, float pxPerTick,
     const double stepPx = (ticks.values[1] - ticks.values[0]) / span * lengthPx;
     return widest + gapPx <= stepPx;
   };
-  // Three at the least: a square spot diagram's x axis labelled "0" alone said nothing of its
-  // scale (crowded labels still thin it below).
-  int target = std::max(3, static_cast<int>(lengthPx / pxPerTick));
+  int target = std::max(2, static_cast<int>(lengthPx / pxPerTick));
   AxisTicks ticks = niceTicks(lo, hi, target, fixedMin, fixedMax);
+  // Three labels at the least where they fit: a square spot diagram's x axis (-44 to 44 um)
+  // was labelled "0" alone, its round step of 50 leaving the box.
+  for (int denser = target + 1; ticks.values.size() < 3 && denser <= 4 * target + 4; ++denser) {
+    const AxisTicks more = niceTicks(lo, hi, denser, fixedMin, fixedMax);
+    if (more.values.size() > ticks.values.size() && fits(more)) {
+      ticks = more;
+      target = denser;
+    }
+  }
   while (!fits(ticks) && target > 2) ticks = niceTicks(lo, hi, --target, fixedMin, fixedMax);
   if (!fits(ticks) && ticks.values.size() > 2) {
     // Even the fewest round ticks crowd: the first and the last alone, if they fit.
@@ -179,8 +186,11 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
                                                (range->yMax - range->yMin) / a.height, 1e-12});
     const double cx = 0.5 * (range->xMin + range->xMax), cy = 0.5 * (range->yMin + range->yMax);
     const double halfX = 0.5 * unitsPerPx * a.width, halfY = 0.5 * unitsPerPx * a.height;
-    frame.xTicks = spacedTicks(cx - halfX, cx + halfX, a.width, 6.0f * fontPx, cx - halfX,
-                               cx + halfX, textWidth, fontPx);
+    // Ticks as dense across as up (one scale: a square box gets the same steps both ways),
+    // thinned only where their labels would crowd; at 6 em apart a square spot plot's x axis
+    // had "0" alone.
+    frame.xTicks = spacedTicks(cx - halfX, cx + halfX, a.width, 2.5f * line, cx - halfX, cx + halfX,
+                               textWidth, fontPx);
     frame.yTicks = spacedTicks(cy - halfY, cy + halfY, a.height, 2.5f * line, cy - halfY,
                                cy + halfY, lineTall, 0.2f * line);
   }
