@@ -2,17 +2,15 @@
 
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "app/drawing/png_dpi.h"
 #include "app/drawing/slide_raster.h"
 #include "app/drawing/slide_svg.h"
+#include "app/lens_caption.h"
 #include "app/viewer_state.h"
 #include "common/atomic_file.h"
 #include "common/distance_text.h"
 #include "optics/glass.h"
-#include "optics/lens_loader.h"
-#include "optics/limiting_aperture.h"
 
 namespace lenslab::app {
 
@@ -41,31 +39,7 @@ std::string fieldAngleText(double degrees) {
   return text;
 }
 
-namespace {
-
-std::string trimmed(std::string text) {
-  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '#'; };
-  while (!text.empty() && blank(text.front())) text.erase(text.begin());
-  while (!text.empty() && (blank(text.back()) || text.back() == '.')) text.pop_back();
-  return text;
-}
-
-// The lens's name: its first header comment ("Double-Gauss 50 mm f/2, 22 degree half field"),
-// read from its file when the document has none (a scene's lens is opened without them).
-std::string lensName(const ViewerState& state) {
-  std::vector<std::string> comments = state.lens.document().headerComments();
-  const std::string& path = state.lens.document().path();
-  if (comments.empty() && !path.empty()) comments = optics::loadLens(path).file.headerComments;
-  for (const std::string& comment : comments) {
-    if (std::string name = trimmed(comment); !name.empty()) return name;
-  }
-  if (!path.empty()) return std::filesystem::path(path).stem().string();
-  return "Untitled lens";
-}
-
-}  // namespace
-
-SlideCaption crossSectionCaption(const ViewerState& state) {
+SlideCaption crossSectionCaption(ViewerState& state) {
   SlideCaption caption;
   caption.title = lensName(state);
   std::string subtitle;
@@ -77,19 +51,11 @@ SlideCaption crossSectionCaption(const ViewerState& state) {
   }
   if (state.lensSystem) {
     const optics::FirstOrderData& firstOrder = state.lensSystem->firstOrder();
-    char text[64];
-    if (firstOrder.afocal) {
-      add("afocal");
-    } else {
-      // As `lenslab info` prints "f-number (infinity)": EFL over the paraxial beam that passes
-      // every clear aperture (the iris's entrance pupil, or less when a rim limits first).
-      const optics::LimitingAperture limit =
-          optics::findLimitingAperture(*state.lensSystem, std::numeric_limits<double>::infinity());
-      const double fNumber = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
-                                 ? limit.paraxial->workingFNumber
-                                 : firstOrder.fNumber;
-      std::snprintf(text, sizeof text, "f/%.4f", fNumber);
-      add(text);
+    // As the first-order section writes it (and the plots' exports): EFL over the paraxial beam
+    // that passes every clear aperture.
+    add(lensFNumberText(state));
+    if (!firstOrder.afocal) {
+      char text[64];
       std::snprintf(text, sizeof text, "EFL %.2f mm", firstOrder.eflMm);
       add(text);
     }
@@ -97,6 +63,19 @@ SlideCaption crossSectionCaption(const ViewerState& state) {
   const bool atInfinity = state.fanSettings.objectAtInfinity;
   add(atInfinity ? std::string("object at infinity")
                  : "object " + distanceText(state.fanSettings.objectDistanceMm) + " from the film");
+  if (const optics::FilmPointBundle* bundle = filmPointBundle(state)) {
+    // The bundle is drawn instead of the fans: the legend gives its shares, as the panel's.
+    char text[96];
+    std::snprintf(text, sizeof text, "bundle of the film point %.1f mm", bundle->imageHeightMm);
+    add(text);
+    caption.subtitle = subtitle;
+    std::snprintf(text, sizeof text,
+                  "Film point %.1f mm, of the light the iris admits:", bundle->imageHeightMm);
+    caption.bundle = SlideBundleLegend{
+        text,
+        bundleLegend(*bundle, state.lensSystem->surfaces().size(), state.lensSystem->stopIndex())};
+    return caption;
+  }
   caption.subtitle = subtitle;
   for (std::size_t i = 0; i < state.rayFans.fans.size(); ++i) {
     const optics::RayFan& fan = state.rayFans.fans[i];

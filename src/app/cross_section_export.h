@@ -27,10 +27,12 @@ inline constexpr double kMaxExportPixels = 50e6;
 // Why these settings cannot be exported, or "".
 std::string checkExportSettings(const CrossSectionExportSettings& settings);
 
-// The caption of the current lens: its name (the file's first header comment, else the file
-// name), the file name, the first-order f-number (as `lenslab info` prints it) and focal length,
-// the object distance, and the fans' field angles (or object heights for a near object).
-SlideCaption crossSectionCaption(const ViewerState& state);
+// The caption of the current lens: its name (lens_caption.h: the file's first header comment
+// without its nominal f-number, else the file name), the file name, the f-number as the
+// first-order section writes it and the focal length, the object distance, and the fans' field
+// angles (or object heights for a near object); with a film point chosen, the point and its
+// bundle's shares instead of the fields.
+SlideCaption crossSectionCaption(ViewerState& state);
 
 // A field's legend text: "0°" on axis, else the angle with one decimal ("14.2°").
 std::string fieldAngleText(double degrees);

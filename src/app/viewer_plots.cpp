@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "app/analysis/analysis_plots.h"
+#include "app/lens_caption.h"
 #include "app/panels/panel_registry.h"
 #include "app/plot/plot_csv.h"
 #include "app/plot/plot_picture.h"
@@ -31,14 +32,24 @@ ScriptHost::PlotExport Viewer::exportPlot(const std::string& plotId, const std::
   if (!spec) return {false, std::nullopt};
   const std::string extension = std::filesystem::path(path).extension().string();
   std::string error;
-  if (extension == ".svg")
-    error = writePlotSvg(path, *spec, kPlotExportWidthPx, kPlotExportHeightPx);
-  else if (extension == ".png")
-    error = writePlotPng(path, *spec, kPlotExportWidthPx, kPlotExportHeightPx, kPlotExportDpi);
-  else if (extension == ".csv")
+  if (extension == ".svg" || extension == ".png") {
+    // A picture shows the plots as the panel lays them out (the Spot panel's fields side by
+    // side, the Ray fan panel's two planes), under a title naming the lens and its f-number.
+    std::optional<PlotFigure> figure =
+        source->currentFigure ? source->currentFigure(state_, &whyNot) : singlePlotFigure(*spec);
+    if (!whyNot.empty())
+      return {true, "cannot save the " + std::string(source->title) + " plot: " + whyNot};
+    if (!figure) return {false, std::nullopt};
+    figure->title += (figure->title.empty() ? "" : " · ") + lensTitle(state_);
+    error = extension == ".svg"
+                ? writeFigureSvg(path, *figure, kPlotExportWidthPx, kPlotExportHeightPx)
+                : writeFigurePng(path, *figure, kPlotExportWidthPx, kPlotExportHeightPx,
+                                 kPlotExportDpi);
+  } else if (extension == ".csv") {
     error = writePlotCsv(path, *spec);
-  else
+  } else {
     return {true, "cannot write a plot as '" + extension + "' (use .svg, .png or .csv)"};
+  }
   if (!error.empty()) return {true, error};
   state_.log.info("Saved the " + spec->title + " plot to " + path);
   return {true, std::nullopt};

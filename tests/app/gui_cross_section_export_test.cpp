@@ -13,6 +13,7 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "optics/lens_loader.h"
@@ -233,8 +234,9 @@ TEST_F(CrossSectionExport, TheLightThemeIsWhiteWithGlassAndOutlinesWhereTheLensI
 TEST_F(CrossSectionExport, TheSvgLabelsSurfacesStopFilmFieldsAndTheFNumber) {
   // The lens as the viewer shows it (opened over the scene, it is focused at the scene's
   // distance), saved for the fans traced here.
-  const auto result =
-      runScript("wait-frames 2\nexport-cross-section slide.svg\nsave-lens shown.dat\nquit\n");
+  const auto result = runScript(
+      "wait-frames 2\nexport-cross-section slide.svg\nsave-lens shown.dat\n"
+      "wait-frames 3\ndump-ui ui.json\nquit\n");
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const std::string svg = file("slide.svg");
   EXPECT_NE(svg.find("width=\"1920\" height=\"1080\""), std::string::npos);
@@ -265,7 +267,8 @@ TEST_F(CrossSectionExport, TheSvgLabelsSurfacesStopFilmFieldsAndTheFNumber) {
   }
   ASSERT_EQ(angles.size(), 3u);
   EXPECT_EQ(textsOf(texts, "legend-field"), angles);
-  // The f-number as `lenslab info` prints it.
+  // The f-number as the first-order section writes it (dump-ui), which is `lenslab info`'s
+  // rounded to two decimals.
   // Built in steps: GCC 12 warns (-Wrestrict, a false positive) on the one-expression form.
   std::string infoCommand = "'";
   infoCommand += LENSLAB_BINARY;
@@ -276,13 +279,103 @@ TEST_F(CrossSectionExport, TheSvgLabelsSurfacesStopFilmFieldsAndTheFNumber) {
   std::smatch match;
   ASSERT_TRUE(std::regex_search(info.out, match, std::regex("f-number \\(infinity\\) +([0-9.]+)")))
       << info.out;
+  std::ifstream dumpFile(scratch / "ui.json");
+  const nlohmann::json dump = nlohmann::json::parse(dumpFile, nullptr, false);
+  const std::string fNumber = dump["state"]["first_order"]["f_number"];
+  char rounded[32];
+  std::snprintf(rounded, sizeof rounded, "f/%.2f", std::stod(match[1].str()));
+  EXPECT_EQ(fNumber, rounded);
   const auto subtitle = textsOf(texts, "subtitle");
   ASSERT_EQ(subtitle.size(), 1u);
-  EXPECT_NE(subtitle[0].find("f/" + match[1].str()), std::string::npos) << subtitle[0];
+  EXPECT_NE(subtitle[0].find("  " + fNumber + "  "), std::string::npos) << subtitle[0];
   EXPECT_NE(subtitle[0].find("object at infinity"), std::string::npos) << subtitle[0];
-  // The name: the file's first header comment.
+  // The name: the file's first header comment, without its nominal "f/2" (issue 38: the slide
+  // said "f/2" in its title and the lens's real f-number beside it). One f-number on the slide.
   EXPECT_EQ(textsOf(texts, "title"),
-            std::vector<std::string>{"Double-Gauss 50 mm f/2, 22 degree half field"});
+            std::vector<std::string>{"Double-Gauss 50 mm, 22 degree half field"});
+}
+
+// An "rgb(r,g,b)" attribute's colour.
+testing::Rgb rgbOf(const std::string& text) {
+  std::smatch m;
+  if (!std::regex_search(text, m, std::regex("rgb\\((\\d+),(\\d+),(\\d+)\\)"))) return {};
+  return {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3])};
+}
+
+// The SVG's text elements of a class with their fill colours, in order.
+std::vector<std::pair<std::string, testing::Rgb>> svgColouredTexts(const std::string& svg,
+                                                                   const std::string& kind) {
+  std::vector<std::pair<std::string, testing::Rgb>> texts;
+  const std::regex text("<text class=\"" + kind + "\"[^>]* fill=\"([^\"]*)\">([^<]*)</text>");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator();
+       ++it) {
+    texts.push_back({(*it)[2].str(), rgbOf((*it)[1].str())});
+  }
+  return texts;
+}
+
+TEST_F(CrossSectionExport, AFilmPointsBundleIsColouredByTheRimThatStopsItWithItsShares) {
+  // Issue 38: with a film point chosen, the slide drew the bundle all in the first field's green
+  // under the fans' legend. It must show what the panel shows: each stopped ray in its rim's
+  // colour, the passing rays in the bundle's, and the shares that dump-ui reports.
+  const auto result = runScript(
+      "wait-frames 2\nset film-point 18\nwait-frames 2\n"
+      "export-cross-section bundle.svg 1600x900 light\n"
+      "export-cross-section bundle.png 1600x900 light\ndump-ui ui.json\nquit\n");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  std::ifstream dumpFile(scratch / "ui.json");
+  const nlohmann::json dump = nlohmann::json::parse(dumpFile, nullptr, false);
+  const nlohmann::json& point = dump["state"]["film_point"];
+  ASSERT_TRUE(point.is_object()) << dump["state"].dump().substr(0, 2000);
+  std::vector<std::string> expected;
+  char text[96];
+  std::snprintf(text, sizeof text, "reaches it %.0f%%", 100.0 * point["passing"].get<double>());
+  expected.push_back(text);
+  for (const auto& share : point["blocked"]) {
+    std::snprintf(text, sizeof text, "surface %d", share["surface"].get<int>());
+    expected.push_back(text);
+  }
+  ASSERT_GE(expected.size(), 3u) << "the point must be vignetted by at least two rims";
+  const std::string svg = file("bundle.svg");
+  const auto shares = svgColouredTexts(svg, "legend-share");
+  ASSERT_EQ(shares.size(), expected.size())
+      << svg.substr(svg.size() > 6000 ? svg.size() - 6000 : 0);
+  EXPECT_EQ(shares[0].first, expected[0]);
+  for (std::size_t i = 1; i < shares.size(); ++i) {
+    // "surface 3: 20%" or "surface 1 (front): 5%": the surface, then its share.
+    EXPECT_EQ(shares[i].first.rfind(expected[i], 0), 0u) << shares[i].first;
+    std::snprintf(text, sizeof text, ": %.0f%%",
+                  100.0 * point["blocked"][i - 1]["fraction"].get<double>());
+    EXPECT_NE(shares[i].first.find(text), std::string::npos) << shares[i].first;
+  }
+  // The fans' legend is gone: no field angles, no marginal ray.
+  const auto texts = svgTexts(svg);
+  EXPECT_TRUE(textsOf(texts, "legend-field").empty());
+  const auto legend = textsOf(texts, "legend");
+  EXPECT_EQ(std::find(legend.begin(), legend.end(), "marginal ray"), legend.end());
+  EXPECT_NE(textsOf(texts, "subtitle").at(0).find("film point 18.0 mm"), std::string::npos);
+  // Each share's colour is a colour of the rays, and the colours differ from one another.
+  std::set<std::tuple<int, int, int>> rayColours, shareColours;
+  const std::regex rayStroke("<polyline class=\"rays\"[^>]* stroke=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), rayStroke);
+       it != std::sregex_iterator(); ++it) {
+    const testing::Rgb c = rgbOf((*it)[1].str());
+    rayColours.insert({c.r, c.g, c.b});
+  }
+  for (const auto& [words, c] : shares) shareColours.insert({c.r, c.g, c.b});
+  // No two shares in one colour (with eight colours cycled, surfaces 1 and 9 were both red).
+  EXPECT_EQ(shareColours.size(), shares.size());
+  for (const auto& [r, g, b] : shareColours) {
+    EXPECT_EQ(rayColours.count({r, g, b}), 1u) << "rgb(" << r << "," << g << "," << b << ")";
+  }
+  // The PNG draws the rays in those colours: pixels of every stopping rim's colour in the
+  // drawing (above the legend's band), not only its swatch.
+  const auto image = testing::PngImage::load(scratch / "bundle.png");
+  ASSERT_TRUE(image.valid());
+  for (std::size_t i = 0; i < shares.size(); ++i) {
+    const double inDrawing = image.fractionNear(0, 150, image.width, 700, shares[i].second, 12);
+    EXPECT_GT(inDrawing * image.width * 550, 40.0) << shares[i].first;
+  }
 }
 
 TEST_F(CrossSectionExport, TheScaleBarIsAsLongAsItsLabelSays) {

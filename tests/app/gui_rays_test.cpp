@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "support/png_image.h"
@@ -134,8 +136,9 @@ TEST(RayPanels, FansAndSpotsArePlottedExportedAndFollowEdits) {
     std::string why;
     EXPECT_TRUE(wellFormedSvg(svg, &why)) << name << ": " << why;
   }
-  EXPECT_NE(testing::readWholeFile(scratch / "fan.svg").find(">pupil coordinate</text>"),
-            std::string::npos);
+  // The fans' picture has the panel's two plots, each with its pupil axis.
+  for (const char* axis : {">pupil py</text>", ">pupil px</text>"})
+    EXPECT_NE(testing::readWholeFile(scratch / "fan.svg").find(axis), std::string::npos) << axis;
   EXPECT_NE(testing::readWholeFile(scratch / "spot.svg").find("<circle"), std::string::npos);
   const auto png = testing::PngImage::load(scratch / "fan.png");
   ASSERT_TRUE(png.valid());
@@ -172,6 +175,126 @@ TEST(RayPanels, FansAndSpotsArePlottedExportedAndFollowEdits) {
     const auto& box = spotUi["widgets"][plot];
     EXPECT_GT(box["width"].get<int>(), 80) << plot;
     EXPECT_GT(fractionOfColour(spotShot, box, colours[f]), 0.002) << plot;
+  }
+}
+
+// The axes' boxes of a saved plot's PNG: dark horizontal runs at least `minLengthPx` long (a
+// box's top and bottom edges; grid lines are light grey and text is short), grouped by where
+// they start. Returns each box's left edge.
+std::vector<int> boxesInPng(const testing::PngImage& image, int minLengthPx) {
+  std::vector<int> lefts;
+  for (int y = 0; y < image.height; ++y) {
+    int run = 0;
+    for (int x = 0; x <= image.width; ++x) {
+      // Dark grey: the ink of the boxes (anti-aliased across two rows), not a curve's colour.
+      const testing::Rgb c = x < image.width ? image.at(x, y) : testing::Rgb{255, 255, 255};
+      const int hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b});
+      const bool dark = hi < 150 && hi - lo < 30;
+      if (dark) {
+        ++run;
+        continue;
+      }
+      if (run >= minLengthPx) {
+        const int left = x - run;
+        const bool known = std::any_of(lefts.begin(), lefts.end(),
+                                       [&](int other) { return std::abs(other - left) <= 3; });
+        if (!known) lefts.push_back(left);
+      }
+      run = 0;
+    }
+  }
+  std::sort(lefts.begin(), lefts.end());
+  return lefts;
+}
+
+struct SvgBox {
+  double x = 0, y = 0, width = 0, height = 0;
+};
+
+std::vector<SvgBox> boxesInSvg(const std::string& svg) {
+  std::vector<SvgBox> boxes;
+  const std::regex box(
+      "<rect x=\"([0-9.]+)\" y=\"([0-9.]+)\" width=\"([0-9.]+)\" height=\"([0-9.]+)\" "
+      "fill=\"none\" stroke=\"#000000\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), box); it != std::sregex_iterator();
+       ++it)
+    boxes.push_back(
+        {std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3]), std::stod((*it)[4])});
+  return boxes;
+}
+
+// The texts of a class with their baselines' y.
+std::vector<std::pair<std::string, double>> textsOfClass(const std::string& svg,
+                                                         const std::string& kind) {
+  std::vector<std::pair<std::string, double>> texts;
+  const std::regex text("<text class=\"" + kind + "\" x=\"[0-9.]+\" y=\"([0-9.]+)\"[^>]*>([^<]*)<");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator();
+       ++it)
+    texts.push_back({(*it)[2].str(), std::stod((*it)[1])});
+  return texts;
+}
+
+TEST(RayPanels, SavedPicturesAreLaidOutAsThePanelsUnderATitleNamingTheLens) {
+  // Issue 38: the spot picture overlaid every field in one axes, the fans' put both planes in
+  // one, legends covered the curves, and the title said "f/2" beside "f/2.4797". A picture now
+  // shows the panel's plots side by side, the legend under them, and one f-number: the
+  // first-order section's.
+  const auto scratch = testing::makeTestDirectory("ray-pictures");
+  const std::string lens = std::string(LENSLAB_SOURCE_DIR) + "/lenses/dgauss-50mm.dat";
+  std::ofstream(scratch / "commands.script") << "load-lens " << lens << "\n"
+                                             << "set fields 0,0.7,1\n"
+                                                "show-panel spot\n"
+                                                "export-plot spot spot.png\n"
+                                                "export-plot spot spot.svg\n"
+                                                "show-panel ray-fan\n"
+                                                "export-plot ray-fan fan.png\n"
+                                                "export-plot ray-fan fan.svg\n"
+                                                "show-panel mtf\n"
+                                                "export-plot mtf mtf.svg\n"
+                                                "wait-frames 3\n"
+                                                "dump-ui ui.json\n"
+                                                "quit\n";
+  const auto run =
+      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::ifstream uiFile(scratch / "ui.json");
+  const nlohmann::json ui = nlohmann::json::parse(uiFile);
+  const std::string fNumber = ui["state"]["first_order"]["f_number"];
+  ASSERT_EQ(fNumber.rfind("f/", 0), 0u) << fNumber;
+
+  // The PNGs: three axes' boxes side by side for the spot, two for the fans.
+  for (const auto& [name, count] : {std::pair{"spot.png", 3u}, {"fan.png", 2u}}) {
+    const auto png = testing::PngImage::load(scratch / name);
+    ASSERT_TRUE(png.valid()) << name;
+    EXPECT_EQ(boxesInPng(png, 150).size(), count) << name;
+  }
+  for (const auto& [name, count] : {std::pair{"spot.svg", 3u}, {"fan.svg", 2u}, {"mtf.svg", 1u}}) {
+    SCOPED_TRACE(name);
+    const std::string svg = testing::readWholeFile(scratch / name);
+    const auto boxes = boxesInSvg(svg);
+    ASSERT_EQ(boxes.size(), count);
+    double lowest = 0;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      lowest = std::max(lowest, boxes[i].y + boxes[i].height);
+      if (i > 0) {
+        EXPECT_GT(boxes[i].x, boxes[i - 1].x + boxes[i - 1].width);  // no overlap
+      }
+    }
+    // The spot diagrams' boxes are square, as in the panel.
+    if (std::string(name) == "spot.svg") {
+      for (const SvgBox& box : boxes) EXPECT_NEAR(box.width, box.height, 1.0);
+    }
+    // The legend stands under every box (a text's top is its baseline less its size).
+    const auto legend = textsOfClass(svg, "legend");
+    EXPECT_GE(legend.size(), 2u);
+    for (const auto& [text, baseline] : legend) EXPECT_GT(baseline - 20.0, lowest) << text;
+    // One title: the lens's name and the f-number as the first-order section writes it, once.
+    const auto titles = textsOfClass(svg, "title");
+    ASSERT_EQ(titles.size(), 1u);
+    const std::string& title = titles[0].first;
+    EXPECT_NE(title.find("Double-Gauss 50 mm"), std::string::npos) << title;
+    EXPECT_NE(title.find(fNumber), std::string::npos) << title << " vs " << fNumber;
+    EXPECT_EQ(title.find("f/"), title.rfind("f/")) << title;
   }
 }
 

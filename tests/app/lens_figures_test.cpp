@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "app/analysis/lens_figures.h"
+#include "app/lens_caption.h"
 
 namespace lenslab::app {
 namespace {
@@ -32,6 +33,20 @@ TEST(LensFigures, AShapedStopGetsItsFNumberByAreaAndTheCircleNone) {
   EXPECT_TRUE(round.areaFNumberText.empty()) << round.areaFNumberText;
   // Beam figures not asked for (a drag): none.
   EXPECT_TRUE(computeLensFigures(stopThenSinglet(square), false).areaFNumberText.empty());
+}
+
+TEST(LensCaption, TheNameLosesItsNominalFNumberSoTheTitleCarriesOne) {
+  // Issue 38: a slide said "f/2" in its title (the designer's name) and "f/2.4797" beside it.
+  EXPECT_EQ(withoutNominalFNumber("Double-Gauss 50 mm f/2, 22 degree half field."),
+            "Double-Gauss 50 mm, 22 degree half field");
+  EXPECT_EQ(withoutNominalFNumber("Double-Gauss 100 mm f/1.35, 13 degree half field (Lowenthal)"),
+            "Double-Gauss 100 mm, 13 degree half field (Lowenthal)");
+  EXPECT_EQ(withoutNominalFNumber("a landscape lens of 50 mm, f/4, in one dense flint"),
+            "a landscape lens of 50 mm, in one dense flint");
+  EXPECT_EQ(withoutNominalFNumber("Telephoto 250 mm F/5.6"), "Telephoto 250 mm");
+  EXPECT_EQ(withoutNominalFNumber("Wide-angle 22 mm"), "Wide-angle 22 mm");
+  // The f-number as the first-order section writes it: EFL 50.6757 mm over the 10 mm stop.
+  EXPECT_EQ(fNumberText(*stopThenSinglet(optics::ApertureShape{})), "f/5.07");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <sstream>
@@ -140,7 +141,8 @@ TEST(PlotSvg, LabelsTicksLegendAndCurvesWhereTheAxesSay) {
   EXPECT_TRUE(has("relative to the axis"));
   EXPECT_TRUE(has("total"));
   EXPECT_TRUE(has("cos4, &quot;chief&quot;"));
-  for (const char* tick : {"0", "10", "20", "0.0", "0.5", "1.0"}) EXPECT_TRUE(has(tick)) << tick;
+  // (0.2 apart on y: the legend under the box leaves it some 550 px tall.)
+  for (const char* tick : {"0", "10", "20", "0.0", "0.4", "1.0"}) EXPECT_TRUE(has(tick)) << tick;
   // The curves: the point (10, 0.6) of "total" lies where the x tick "10" and the y ticks say.
   // x ticks: where the label "10" is centred.
   const std::regex xTick("<text class=\"x-tick\" x=\"([0-9.]+)\"[^>]*>10</text>");
@@ -185,6 +187,122 @@ TEST(PlotLayout, LegendAvoidsTheCurves) {
   const PlotFrame low = layoutPlot(spec, {0, 0, 800, 500}, 14.0f,
                                    [](const std::string& s) { return 7.0f * s.size(); });
   EXPECT_LT(low.legend.y, low.area.y + 0.5f * low.area.height);
+}
+
+// The axes' boxes of an SVG plot: the rects with a black stroke and no fill.
+std::vector<Rect> svgBoxes(const std::string& svg) {
+  std::vector<Rect> boxes;
+  const std::regex box(
+      "<rect x=\"([0-9.]+)\" y=\"([0-9.]+)\" width=\"([0-9.]+)\" height=\"([0-9.]+)\" "
+      "fill=\"none\" stroke=\"#000000\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), box); it != std::sregex_iterator();
+       ++it)
+    boxes.push_back(
+        {std::stof((*it)[1]), std::stof((*it)[2]), std::stof((*it)[3]), std::stof((*it)[4])});
+  return boxes;
+}
+
+TEST(PlotSvg, TheLegendStandsUnderTheBoxWhereItCoversNoCurve) {
+  // Issue 38: a saved plot drew its legend inside the axes, over the curves. Each legend text's
+  // baseline is below the box (and its x label), inside the picture.
+  const std::string svg = plotSvg(sampleSpec(), 1200, 750, 16.0f);
+  const auto boxes = svgBoxes(svg);
+  ASSERT_EQ(boxes.size(), 1u);
+  const std::regex legend("<text class=\"legend\" x=\"([0-9.]+)\" y=\"([0-9.]+)\"[^>]*>([^<]*)<");
+  std::vector<std::string> names;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), legend); it != std::sregex_iterator();
+       ++it) {
+    names.push_back((*it)[3]);
+    const float y = std::stof((*it)[2]);
+    EXPECT_GT(y - 16.0f, boxes[0].bottom()) << (*it)[3];
+    EXPECT_LT(y, 750.0f);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"total", "cos4, &quot;chief&quot;"}));
+}
+
+// Three spot diagrams' worth of square plots, as the Spot panel shows them.
+PlotFigure threeSpots() {
+  PlotFigure figure;
+  figure.title = "Spot diagram · Double-Gauss 50 mm, 22 degree half field · f/2.07";
+  figure.note = "d; film shift +0.000 mm";
+  figure.squareBoxes = true;
+  for (const char* field : {"0 field", "0.7 field", "1 field"}) {
+    PlotSpec spec;
+    spec.title = std::string(field) + ", 0.0 deg";
+    spec.x.label = "x (um)";
+    spec.y.label = "y (um)";
+    spec.x.min = spec.y.min = -20.0;
+    spec.x.max = spec.y.max = 20.0;
+    spec.equalAspect = true;
+    PlotSeries rays{field, {1.0, -3.0, 5.0}, {2.0, 4.0, -6.0}, 0x50dc78ffu};
+    rays.points = true;
+    PlotSeries airy{
+        "Airy disk", {-3.0, 0.0, 3.0, 0.0, -3.0}, {0.0, 3.0, 0.0, -3.0, 0.0}, 0xf0f0f0ffu};
+    spec.series = {rays, airy};
+    figure.plots.push_back(spec);
+    figure.captions.push_back("RMS 1.0 um  GEO 2.0 um");
+  }
+  return figure;
+}
+
+TEST(PlotLayout, AFiguresPlotsStandSideBySideWithSquareBoxesAndTheLegendUnderThem) {
+  const TextWidthPx width = [](const std::string& s) { return 9.0f * s.size(); };
+  const PlotFigure figure = threeSpots();
+  const FigureFrame frame = layoutFigure(figure, {0, 0, 1200, 750}, 18.0f, width);
+  ASSERT_EQ(frame.plots.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Rect& area = frame.plots[i].area;
+    EXPECT_NEAR(area.width, area.height, 1.0f) << i;
+    EXPECT_GT(area.width, 200.0f) << i;
+    EXPECT_GE(area.x, 0.0f);
+    EXPECT_LE(area.right(), 1200.0f);
+    if (i > 0) {
+      EXPECT_GT(area.x, frame.plots[i - 1].outer.right() - 0.5f) << i;  // side by side
+      EXPECT_FLOAT_EQ(area.y, frame.plots[0].area.y);
+    }
+    EXPECT_LT(frame.titleY + frame.titlePx, frame.plots[i].outer.y + 1.0f);
+    // The caption under the plot's x label, the legend under the captions.
+    EXPECT_GE(frame.captionY[i], frame.plots[i].xLabelY + frame.lineHeightPx - 0.5f);
+    EXPECT_GE(frame.legend.y, frame.captionY[i] + frame.lineHeightPx);
+  }
+  EXPECT_LE(frame.legend.bottom(), 750.0f);
+  // Each name once: the three fields and the Airy disk.
+  ASSERT_EQ(frame.legendItems.size(), 4u);
+  EXPECT_EQ(figure.plots[frame.legendItems[3].plot].series[frame.legendItems[3].series].name,
+            "Airy disk");
+}
+
+TEST(PlotLayout, ASquarePlotsAxesHaveThreeLabelsAtTheLeast) {
+  // A spot diagram of the fisheye: -44 to 44 um in a box some 300 px wide. The x axis was
+  // labelled "0" alone (its round step of 50 put -50 and 50 outside the box).
+  PlotSpec spec = threeSpots().plots[0];
+  spec.x.min = spec.y.min = -44.0;
+  spec.x.max = spec.y.max = 44.0;
+  spec.equalAspect = false;  // as spotPlot: fixed equal ranges
+  const float fontPx = 18.75f;
+  const PlotFrame frame = layoutPlot(spec, {0, 0, 380, 380}, fontPx, [&](const std::string& s) {
+    return 0.6f * fontPx * static_cast<float>(s.size());
+  });
+  ASSERT_LT(frame.area.width, 340.0f);
+  EXPECT_GE(frame.xTicks.values.size(), 3u);
+  EXPECT_GE(frame.yTicks.values.size(), 3u);
+  for (double value : frame.xTicks.values) {
+    EXPECT_GE(value, -44.0);
+    EXPECT_LE(value, 44.0);
+  }
+}
+
+TEST(PlotSvg, AFigureHasOneBoxPerPlotAndTheTitleOnce) {
+  const std::string svg = figureSvg(threeSpots(), 1200, 750);
+  const auto boxes = svgBoxes(svg);
+  ASSERT_EQ(boxes.size(), 3u);
+  for (std::size_t i = 1; i < boxes.size(); ++i) EXPECT_GT(boxes[i].x, boxes[i - 1].right());
+  const auto words = texts(svg);
+  EXPECT_EQ(std::count(words.begin(), words.end(), threeSpots().title), 1);
+  EXPECT_EQ(std::count(words.begin(), words.end(), "RMS 1.0 um  GEO 2.0 um"), 3);
+  EXPECT_EQ(std::count(words.begin(), words.end(), "0.7 field, 0.0 deg"), 1);
+  // Each plot clips its dots to its own box.
+  EXPECT_NE(svg.find("id=\"plot-area-2\""), std::string::npos);
 }
 
 // Grouped bars on a categorical axis: two series over three categories ("1", "2", "total").

@@ -6,6 +6,7 @@
 #include "app/automation/script.h"
 #include "app/drawing/png_dpi.h"
 #include "app/drawing/slide_layout.h"
+#include "optics/film_point_bundle.h"
 #include "optics/lens_loader.h"
 #include "optics/ray_fan.h"
 
@@ -84,7 +85,8 @@ TEST(SlideLayout, EveryLensIsLabelledWithTextInsideThePictureAndNoTwoTextsOverla
     SlideCaption caption{"A lens with a long name, as its file's first comment gives it",
                          "lens.dat  ·  f/2.0302  ·  EFL 50.36 mm  ·  object at infinity",
                          {{0, "0°"}, {1, "16.7°"}, {2, "23.3°"}},
-                         {}};
+                         {},
+                         std::nullopt};
     for (const auto& [width, height] : {std::pair{1920, 1080}, {1024, 768}, {800, 1200}}) {
       SlideOptions options;
       options.widthPx = width;
@@ -109,6 +111,61 @@ TEST(SlideLayout, EveryLensIsLabelledWithTextInsideThePictureAndNoTwoTextsOverla
       EXPECT_EQ(numbers, loaded.file.prescription.surfaces.size()) << where;
       EXPECT_GT(picture.scaleBarMm, 0.0) << where;
     }
+  }
+}
+
+bool sameColour(Colour a, Colour b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+
+TEST(SlideLayout, AFilmPointsBundleIsDrawnInItsRimsColoursUnderItsSharesLegend) {
+  // Issue 38: the slide drew a film point's bundle in the first field's colour with the fans'
+  // legend. Each ray takes its stopping rim's colour (the passing ones the bundle's), and the
+  // legend gives each share in that colour, in both themes.
+  const optics::LoadedLens loaded =
+      optics::loadLens(std::filesystem::path(LENSLAB_SOURCE_DIR) / "lenses/dgauss-50mm.dat");
+  ASSERT_TRUE(loaded.ok());
+  const optics::LensOutline outline = optics::computeLensOutline(loaded.file.prescription);
+  const optics::FilmPointBundle bundle = optics::traceFilmPointBundle(*loaded.system, 18.0);
+  ASSERT_GE(bundle.blocked.size(), 2u);
+  CrossSectionDrawing drawing = drawLens(outline, 21.6);
+  drawFilmPointBundle(drawing, bundle);
+  SlideCaption caption;
+  caption.title = "Double-Gauss 50 mm, 22 degree half field";
+  caption.fields = {{0, "0°"}};  // ignored: the bundle replaces the fans' legend
+  caption.bundle = SlideBundleLegend{
+      "Film point 18.0 mm:",
+      bundleLegend(bundle, loaded.file.prescription.surfaces.size(), loaded.system->stopIndex())};
+  for (const SlideTheme theme : {SlideTheme::Light, SlideTheme::Dark}) {
+    SlideOptions options;
+    options.theme = theme;
+    const SlidePalette colours = slidePalette(theme);
+    const SlidePicture picture =
+        layoutSlide(drawing, outline, drawing.bounds, caption, options, approximateMetrics());
+    std::vector<const SlideText*> shares;
+    for (const SlideText& text : picture.texts) {
+      EXPECT_NE(text.kind, "legend-field") << text.text;
+      EXPECT_NE(text.text, "marginal ray");
+      if (text.kind == "legend-share") shares.push_back(&text);
+    }
+    ASSERT_EQ(shares.size(), 1 + bundle.blocked.size());
+    std::size_t anyStopped = 0;
+    EXPECT_EQ(shares[0]->text.rfind("reaches it ", 0), 0u);
+    EXPECT_TRUE(sameColour(shares[0]->colour, colours.bundlePassing));
+    for (std::size_t i = 0; i < bundle.blocked.size(); ++i) {
+      const int surface = bundle.blocked[i].surface;
+      EXPECT_EQ(shares[i + 1]->text.rfind("surface " + std::to_string(surface + 1), 0), 0u)
+          << shares[i + 1]->text;
+      const Colour colour = colours.stoppingSurfaceColour(surface);
+      EXPECT_TRUE(sameColour(shares[i + 1]->colour, colour)) << shares[i + 1]->text;
+      // Rays in that colour: as many as the bundle has rays stopped there.
+      std::size_t stopped = 0, drawn = 0;
+      for (const optics::FanRay& ray : bundle.rays)
+        stopped += !ray.filmPoint && ray.path.stopSurface == surface;
+      for (const SlideLine& line : picture.lines)
+        drawn += line.group == "rays" && sameColour(line.colour, colour);
+      EXPECT_GE(drawn, stopped) << shares[i + 1]->text;
+      anyStopped += stopped;
+    }
+    EXPECT_GT(anyStopped, 0u);
   }
 }
 

@@ -9,18 +9,18 @@ namespace lenslab::app {
 namespace {
 
 constexpr AnalysisPlotSource kPlots[] = {
-    {"illumination", "illumination", illuminationCurrentPlot, illuminationSettled},
-    {"seidel", "Seidel sums", seidelCurrentPlot, seidelSettled},
-    {"colour", "chromatic focal shift", colourCurrentPlot, colourSettled},
-    {"lateral-colour", "lateral colour", lateralColourCurrentPlot, colourSettled},
-    {"ray-fan", "ray fan", rayFanCurrentPlot, rayFanSettled},
-    {"ray-fan-tangential", "tangential fan", rayFanTangentialPlot, rayFanSettled},
-    {"ray-fan-sagittal", "sagittal fan", rayFanSagittalPlot, rayFanSettled},
-    {"spot", "spot diagram", spotCurrentPlot, spotSettled},
-    {"distortion", "distortion", distortionCurrentPlot, distortionSettled},
-    {"distortion-grid", "distortion grid", distortionGridCurrentPlot, distortionSettled},
-    {"field-curves", "field curves", fieldCurvesCurrentPlot, distortionSettled},
-    {"mtf", "MTF", mtfCurrentPlot, mtfSettled},
+    {"illumination", "illumination", illuminationCurrentPlot, nullptr, illuminationSettled},
+    {"seidel", "Seidel sums", seidelCurrentPlot, nullptr, seidelSettled},
+    {"colour", "chromatic focal shift", colourCurrentPlot, nullptr, colourSettled},
+    {"lateral-colour", "lateral colour", lateralColourCurrentPlot, nullptr, colourSettled},
+    {"ray-fan", "ray fan", rayFanCurrentPlot, rayFanCurrentFigure, rayFanSettled},
+    {"ray-fan-tangential", "tangential fan", rayFanTangentialPlot, nullptr, rayFanSettled},
+    {"ray-fan-sagittal", "sagittal fan", rayFanSagittalPlot, nullptr, rayFanSettled},
+    {"spot", "spot diagram", spotCurrentPlot, spotCurrentFigure, spotSettled},
+    {"distortion", "distortion", distortionCurrentPlot, nullptr, distortionSettled},
+    {"distortion-grid", "distortion grid", distortionGridCurrentPlot, nullptr, distortionSettled},
+    {"field-curves", "field curves", fieldCurvesCurrentPlot, nullptr, distortionSettled},
+    {"mtf", "MTF", mtfCurrentPlot, nullptr, mtfSettled},
 };
 
 // The registry and the id list the script parser checks names against (analysis_plot_ids.h) are

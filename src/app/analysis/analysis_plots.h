@@ -26,6 +26,10 @@ struct AnalysisPlotSource {
   // Sets *whyNot (and returns nullopt) when there is nothing to plot (no valid lens, a lens
   // without dispersion for a colour plot).
   std::optional<PlotSpec> (*currentPlot)(ViewerState& state, std::string* whyNot);
+  // The plot as its panel lays it out for a picture (.svg, .png), when that is several plots
+  // side by side (the Spot panel's fields, the Ray fan panel's planes), as currentPlot; null:
+  // the plot alone (singlePlotFigure). The CSV is always currentPlot's.
+  std::optional<PlotFigure> (*currentFigure)(ViewerState& state, std::string* whyNot);
   // False while the worker is computing for the lens it was last asked about (true when it was
   // never asked: its panel has not been shown).
   bool (*settled)(const ViewerState& state);

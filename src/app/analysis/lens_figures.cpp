@@ -30,6 +30,26 @@ std::string colourFocusText(const optics::LensSystem& lens) {
   return text;
 }
 
+namespace {
+
+std::string fNumberText(const optics::LensSystem& lens, const optics::LimitingAperture& limit) {
+  // The paraxial f-number of the beam that passes (EFL / limited entrance pupil), as `info`
+  // prints it: not the iris's alone, which opened past the rims reads f/0.87 for an f/2 lens.
+  const double fNumber = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
+                             ? limit.paraxial->workingFNumber
+                             : lens.firstOrder().fNumber;
+  char text[32];
+  std::snprintf(text, sizeof text, "f/%.2f", fNumber);
+  return text;
+}
+
+}  // namespace
+
+std::string fNumberText(const optics::LensSystem& lens) {
+  return fNumberText(lens,
+                     optics::findLimitingAperture(lens, std::numeric_limits<double>::infinity()));
+}
+
 LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSystem,
                                bool withBeamFigures) {
   LensFigures figures;
@@ -68,13 +88,7 @@ LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lensSys
                   limit.real->workingFNumber);
     figures.axialBeamText = text;
   }
-  // The paraxial f-number of the beam that passes (EFL / limited entrance pupil), as `info`
-  // prints it: not the iris's alone, which opened past the rims reads f/0.87 for an f/2 lens.
-  const double fNumber = limit.paraxial && std::isfinite(limit.paraxial->workingFNumber)
-                             ? limit.paraxial->workingFNumber
-                             : lens.firstOrder().fNumber;
-  std::snprintf(text, sizeof text, "f/%.2f", fNumber);
-  figures.fNumberText = text;
+  figures.fNumberText = fNumberText(lens, limit);
   if (!lens.stopShape().isCircle()) {
     if (const auto beam = optics::axialBeamAreaFromInfinity(lens)) {
       std::snprintf(text, sizeof text, "f/%.2f (a %.1f mm2 beam from infinity)",

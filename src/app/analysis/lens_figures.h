@@ -36,6 +36,10 @@ struct LensFigures {
 // "F-C" of the first-order data: the paraxial focus at F minus at C, object at infinity.
 std::string colourFocusText(const optics::LensSystem& lens);
 
+// "f/2.48": the paraxial f-number of the beam that passes every rim from infinity, as the
+// first-order section, dump-ui's `f_number` and the exports' titles write it.
+std::string fNumberText(const optics::LensSystem& lens);
+
 // Pure: the figures of `lens` (the beam ones too when withBeamFigures).
 LensFigures computeLensFigures(std::shared_ptr<const optics::LensSystem> lens,
                                bool withBeamFigures);

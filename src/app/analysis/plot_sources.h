@@ -19,10 +19,12 @@ std::optional<PlotSpec> colourCurrentPlot(ViewerState& state, std::string* whyNo
 std::optional<PlotSpec> lateralColourCurrentPlot(ViewerState& state, std::string* whyNot);
 bool colourSettled(const ViewerState& state);
 std::optional<PlotSpec> rayFanCurrentPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotFigure> rayFanCurrentFigure(ViewerState& state, std::string* whyNot);
 bool rayFanSettled(const ViewerState& state);
 std::optional<PlotSpec> rayFanTangentialPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot);
+std::optional<PlotFigure> spotCurrentFigure(ViewerState& state, std::string* whyNot);
 bool spotSettled(const ViewerState& state);
 // Distortion, its grid and the field curves (panels/distortion_panel.cpp): one worker, one settled.
 std::optional<PlotSpec> distortionCurrentPlot(ViewerState& state, std::string* whyNot);

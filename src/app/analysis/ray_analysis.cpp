@@ -145,7 +145,8 @@ PlotSpec spotPlot(const RayAnalysisResult& result, int fieldIndex, int focusInde
   char note[160];
   const optics::SpotField* any = spots.fields.empty() ? nullptr : &spots.fields.front();
   const optics::Spot* plane = any ? spotAt(*any, focusIndex) : nullptr;
-  std::snprintf(note, sizeof note, "%s; film shift %+.3f mm; Airy radius %.2f um (f/%.2f)",
+  // "working": the real-ray f-number of the Airy disk, not the lens's f-number of the title.
+  std::snprintf(note, sizeof note, "%s; film shift %+.3f mm; Airy radius %.2f um (working f/%.2f)",
                 lineName(spots.wavelengthNm).c_str(), plane ? plane->filmShiftMm : 0.0,
                 spots.airyRadiusMm.value_or(NAN) * kMicronsPerMm,
                 spots.workingFNumber.value_or(NAN));
@@ -181,6 +182,37 @@ PlotSpec spotPlot(const RayAnalysisResult& result, int fieldIndex, int focusInde
     spec.series.push_back(std::move(airy));
   }
   return spec;
+}
+
+PlotFigure rayFanFigure(const RayAnalysisResult& result) {
+  PlotFigure figure;
+  figure.plots = {rayFanPlot(result, FanPlane::Tangential), rayFanPlot(result, FanPlane::Sagittal)};
+  figure.title = "Transverse ray fans";
+  figure.note = figure.plots.front().note;
+  // Each plot keeps its legend for the panel; a saved figure draws one under both instead.
+  for (PlotSpec& plot : figure.plots) plot.note.clear();
+  return figure;
+}
+
+PlotFigure spotFigure(const RayAnalysisResult& result, int focusIndex) {
+  PlotFigure figure;
+  const PlotSpec overview = spotPlot(result, -1, focusIndex);
+  figure.title = overview.title;
+  figure.note = overview.note;
+  figure.squareBoxes = true;
+  for (std::size_t f = 0; f < result.spots.fields.size(); ++f) {
+    const optics::SpotField& field = result.spots.fields[f];
+    PlotSpec spec = spotPlot(result, static_cast<int>(f), focusIndex);
+    char title[96];
+    std::snprintf(title, sizeof title, "%.2g field, %.1f deg", field.fieldFraction,
+                  field.fieldAngleDeg.value_or(0.0));
+    spec.title = field.fieldAngleDeg ? title : "no ray reaches this field";
+    spec.note.clear();
+    spec.legend = false;
+    figure.plots.push_back(std::move(spec));
+    figure.captions.push_back(spotFigures(result, static_cast<int>(f), focusIndex));
+  }
+  return figure;
 }
 
 std::string spotFigures(const RayAnalysisResult& result, int fieldIndex, int focusIndex) {

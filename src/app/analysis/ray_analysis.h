@@ -47,6 +47,9 @@ enum class FanPlane { Tangential, Sagittal, Both };
 // d line solid, F and C (when the lens has V_d) as bluer and redder shades of it. Both: the
 // tangential fans solid and the sagittal dashed, in one plot (the export).
 PlotSpec rayFanPlot(const RayAnalysisResult& result, FanPlane plane);
+// The Ray fan panel's plots: the tangential and the sagittal fans side by side, their common
+// note above them. The panel draws it, and a saved picture of `ray-fan`.
+PlotFigure rayFanFigure(const RayAnalysisResult& result);
 
 // The spots at through-focus plane `focusIndex` (clamped), x and y in um from the chief ray, with
 // the Airy circle: one field (fieldIndex) or all of them overlaid (-1: the export). Equal axis
@@ -54,5 +57,9 @@ PlotSpec rayFanPlot(const RayAnalysisResult& result, FanPlane plane);
 PlotSpec spotPlot(const RayAnalysisResult& result, int fieldIndex, int focusIndex);
 // "RMS 12.3 um  GEO 40.1 um" for a field at a plane, or why it has no spot.
 std::string spotFigures(const RayAnalysisResult& result, int fieldIndex, int focusIndex);
+// The Spot panel's plots: one square plot per field in a row, each titled with its field
+// ("0.7 field, 15.4 deg"), its figures under it, the common note above them. The panel draws it,
+// and a saved picture of `spot`.
+PlotFigure spotFigure(const RayAnalysisResult& result, int focusIndex);
 
 }  // namespace lenslab::app

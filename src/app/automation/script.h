@@ -17,7 +17,8 @@
 //                                is at Z 0, the lens toward +Z)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
-//   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI)
+//   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI:
+//                                laid out as the panel, titled with the lens and its f-number)
 //                                or .csv, once computed for the current lens; the IDs are in
 //                                analysis/analysis_plots.cpp: illumination, ...)
 //   drop FILE                   (as if the file were dropped onto the window)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 
 #include "optics/glass.h"
@@ -176,13 +177,36 @@ void drawFilmPointBundle(CrossSectionDrawing& drawing, const optics::FilmPointBu
   for (const optics::FanRay& ray : bundle.rays) {
     const Colour colour = ray.filmPoint ? palette::kBundlePassing
                                         : palette::stoppingSurfaceColour(ray.path.stopSurface);
-    drawing.lines.push_back(rayLine(ray, colour, 1.2f, DrawingPart::Ray));
+    Polyline line = rayLine(ray, colour, 1.2f, DrawingPart::Ray);
+    line.bundleRay = true;
+    line.stopSurface = ray.filmPoint ? -1 : ray.path.stopSurface;
+    drawing.lines.push_back(std::move(line));
   }
   if (bundle.chief) {
     Polyline chief = rayLine(*bundle.chief, palette::kChiefRay, 1.2f, DrawingPart::ChiefRay);
     chief.dashed = true;
     drawing.lines.push_back(std::move(chief));
   }
+}
+
+std::vector<BundleLegendEntry> bundleLegend(const optics::FilmPointBundle& bundle,
+                                            std::size_t surfaceCount, std::size_t stopIndex) {
+  if (bundle.empty()) return {{-2, "no ray from it reaches the stop"}};
+  std::vector<BundleLegendEntry> entries;
+  char text[96];
+  std::snprintf(text, sizeof text, "reaches it %.0f%%", 100.0 * bundle.passing);
+  entries.push_back({-1, text});
+  for (const optics::BundleShare& share : bundle.blocked) {
+    const auto surface = static_cast<std::size_t>(std::max(0, share.surface));
+    const char* where = surface == 0                  ? " (front)"
+                        : surface + 1 == surfaceCount ? " (rear)"
+                        : surface == stopIndex        ? " (stop)"
+                                                      : "";
+    std::snprintf(text, sizeof text, "surface %d%s: %.0f%%", share.surface + 1, where,
+                  100.0 * share.fraction);
+    entries.push_back({share.surface, text});
+  }
+  return entries;
 }
 
 }  // namespace lenslab::app

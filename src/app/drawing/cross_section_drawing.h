@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include "optics/film_point_bundle.h"
@@ -33,6 +34,10 @@ struct Polyline {
   // gives its colour instead of the field; 0 for the field-coloured rays.
   double wavelengthNm = 0;
   bool blocked = false;  // a ray that does not reach the film
+  // A film point's bundle's ray (drawFilmPointBundle): coloured by what becomes of it, not by a
+  // field: the passing colour, or its stopping surface's (stopSurface, 0-based) when blocked.
+  bool bundleRay = false;
+  int stopSurface = -1;
 };
 
 struct FilledQuads {
@@ -65,11 +70,14 @@ inline constexpr Colour kFieldColours[] = {
     {80, 220, 120, 255}, {250, 180, 60, 255}, {235, 90, 200, 255}, {90, 170, 255, 255}};
 inline constexpr Colour kChiefRay{255, 255, 255, 255};
 // A film point's bundle: the rays that reach it, and those stopped, in the colour of the surface
-// that stops them (cycled by surface number).
+// that stops them (cycled by surface number). Twelve, so that no two surfaces of a lens of up to
+// twelve (every stock lens but the 13-surface wide angle) share one: with eight, the double
+// Gauss's surfaces 1 and 9 were both red in one legend.
 inline constexpr Colour kBundlePassing{120, 235, 140, 255};
 inline constexpr Colour kStoppingSurfaceColours[] = {
-    {255, 110, 90, 255},  {255, 190, 60, 255}, {200, 120, 255, 255}, {80, 180, 255, 255},
-    {255, 120, 200, 255}, {170, 220, 60, 255}, {255, 150, 120, 255}, {120, 140, 255, 255}};
+    {255, 110, 90, 255},  {255, 190, 60, 255},  {200, 120, 255, 255}, {80, 180, 255, 255},
+    {255, 120, 200, 255}, {170, 220, 60, 255},  {255, 150, 120, 255}, {120, 140, 255, 255},
+    {60, 215, 190, 255},  {235, 235, 100, 255}, {205, 155, 105, 255}, {200, 200, 215, 255}};
 inline Colour stoppingSurfaceColour(int surface) {
   constexpr int kCount = static_cast<int>(std::size(kStoppingSurfaceColours));
   return kStoppingSurfaceColours[((surface % kCount) + kCount) % kCount];
@@ -99,5 +107,16 @@ void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool
 // the point in kBundlePassing, stopped rays up to their rim in that surface's colour, the chief
 // ray dashed.
 void drawFilmPointBundle(CrossSectionDrawing& drawing, const optics::FilmPointBundle& bundle);
+
+// What a film point's bundle legend says, in the panel and on the slide: "reaches it 64%" in the
+// passing colour (surface -1), then each surface that stops a share, largest first ("surface 3:
+// 20%", with " (front)", " (rear)" or " (stop)" where it is one of those), in its colour; or
+// "no ray from it reaches the stop" (surface -2) for an empty bundle.
+struct BundleLegendEntry {
+  int surface = -1;  // -1: the passing share; -2: nothing passes the stop; else 0-based
+  std::string text;
+};
+std::vector<BundleLegendEntry> bundleLegend(const optics::FilmPointBundle& bundle,
+                                            std::size_t surfaceCount, std::size_t stopIndex);
 
 }  // namespace lenslab::app

@@ -23,8 +23,12 @@ SlidePalette slidePalette(SlideTheme theme) {
                {},
                palette::kLineF,
                palette::kLineD,
-               palette::kLineC};
+               palette::kLineC,
+               palette::kBundlePassing,
+               {}};
     colours.fans.assign(std::begin(palette::kFieldColours), std::end(palette::kFieldColours));
+    colours.stoppingSurfaces.assign(std::begin(palette::kStoppingSurfaceColours),
+                                    std::end(palette::kStoppingSurfaceColours));
     return colours;
   }
   // On white, the panel's bright ray colours wash out: the same hues, darker (each at least
@@ -43,9 +47,23 @@ SlidePalette slidePalette(SlideTheme theme) {
              // F, d and C darkened for white, as the fields' colours.
              {20, 80, 215, 255},
              {170, 130, 0, 255},
-             {205, 30, 30, 255}};
+             {205, 30, 30, 255},
+             // The bundle's passing rays as the axis's field.
+             {0, 135, 60, 255},
+             {}};
   colours.fans = {{0, 135, 60, 255}, {205, 100, 0, 255}, {180, 30, 140, 255}, {30, 85, 200, 255}};
+  // The stopping rims' colours in the same order as the panel's, each hue darkened for white.
+  colours.stoppingSurfaces = {{210, 55, 35, 255},  {185, 120, 0, 255},  {135, 55, 210, 255},
+                              {0, 115, 195, 255},  {200, 40, 140, 255}, {95, 140, 0, 255},
+                              {165, 75, 45, 255},  {60, 75, 205, 255},  {0, 140, 125, 255},
+                              {125, 125, 15, 255}, {20, 40, 110, 255},  {90, 100, 125, 255}};
   return colours;
+}
+
+Colour SlidePalette::stoppingSurfaceColour(int surface) const {
+  if (stoppingSurfaces.empty()) return text;
+  const int count = static_cast<int>(stoppingSurfaces.size());
+  return stoppingSurfaces[static_cast<std::size_t>(((surface % count) + count) % count)];
 }
 
 Colour SlidePalette::lineColour(double wavelengthNm) const {
@@ -107,6 +125,10 @@ Colour colourOf(const Polyline& line, const SlidePalette& colours) {
     case DrawingPart::Film:
       return colours.film;
     case DrawingPart::Ray:
+      if (line.bundleRay) {
+        return line.stopSurface >= 0 ? colours.stoppingSurfaceColour(line.stopSurface)
+                                     : colours.bundlePassing;
+      }
       // Blocked rays keep the panel's fainter alpha.
       if (line.wavelengthNm > 0)
         return withAlpha(colours.lineColour(line.wavelengthNm), line.colour.a);
@@ -227,7 +249,26 @@ SlidePicture layoutSlide(const CrossSectionDrawing& drawing, const optics::LensO
     Colour swatch;
   };
   std::vector<LegendItem> legend;
-  if (options.legend && !caption.fields.empty()) {
+  if (options.legend && caption.bundle) {
+    // A film point's bundle: its shares in the colours its rays are drawn in.
+    legend.push_back({text(caption.bundle->heading, sizes.textPx, colours.mutedText, "legend"),
+                      false,
+                      false,
+                      {}});
+    for (const BundleLegendEntry& entry : caption.bundle->entries) {
+      if (entry.surface == -2) {
+        legend.push_back(
+            {text(entry.text, sizes.textPx, colours.mutedText, "legend-share"), false, false, {}});
+        continue;
+      }
+      const Colour colour = entry.surface == -1 ? colours.bundlePassing
+                                                : colours.stoppingSurfaceColour(entry.surface);
+      legend.push_back(
+          {text(entry.text, sizes.textPx, colour, "legend-share"), true, false, colour});
+    }
+    legend.push_back(
+        {text("chief ray", sizes.textPx, colours.text, "legend"), true, true, colours.chiefRay});
+  } else if (options.legend && !caption.fields.empty()) {
     legend.push_back(
         {text("Fields:", sizes.textPx, colours.mutedText, "legend"), false, false, {}});
     for (const SlideLegendField& field : caption.fields) {

@@ -7,6 +7,7 @@
 // is unit-tested.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ struct SlidePalette {
   std::vector<Colour> fans;                      // one per field position, as the panel's
   Colour lineF, lineD, lineC;                    // colour fans' rays (FanSettings::colourFans)
   Colour lineColour(double wavelengthNm) const;  // the nearest of the three
+  // A film point's bundle: the rays that reach it, and those stopped, in their surface's colour
+  // (cycled by surface number, as palette::stoppingSurfaceColour).
+  Colour bundlePassing;
+  std::vector<Colour> stoppingSurfaces;
+  Colour stoppingSurfaceColour(int surface) const;
 };
 SlidePalette slidePalette(SlideTheme theme);
 
@@ -36,7 +42,7 @@ struct SlideOptions {
   bool surfaceNumbers = true;  // 1..N as in the lens table
   bool stopAndFilm = true;     // "Stop" and "Film" labels
   bool scaleBar = true;        // a millimetre scale bar
-  bool legend = true;          // the fans' fields with their angles
+  bool legend = true;          // the fans' fields with their angles, or the bundle's shares
 };
 
 // A field in the legend: its text ("14.2°", or "12 mm" for a finite object) in its fan's colour.
@@ -52,13 +58,22 @@ struct SlideLegendLine {
   std::string text;
 };
 
+// A film point's bundle drawn instead of the fans: its legend names the point and gives the
+// shares, each in the colour its rays are drawn in (bundleLegend, as the panel's).
+struct SlideBundleLegend {
+  std::string heading;  // "Film point 12.0 mm:"
+  std::vector<BundleLegendEntry> entries;
+};
+
 struct SlideCaption {
   std::string title;     // the lens's name
-  std::string subtitle;  // "f/2.0302 · EFL 50.36 mm · object at infinity"
+  std::string subtitle;  // "f/2.48 · EFL 50.36 mm · object at infinity"
   std::vector<SlideLegendField> fields;
   // With colour fans: their lines, and the fields then listed without colours (the rays are
   // coloured by wavelength, not by field).
   std::vector<SlideLegendLine> lines;
+  // Set when the drawing is a film point's bundle: the legend is its shares, not the fields.
+  std::optional<SlideBundleLegend> bundle;
 };
 
 // Text widths in pixels for a font size in pixels (ImGui's convention: the size is the height
@@ -92,7 +107,7 @@ struct SlideText {
   double widthPx = 0, sizePx = 0;
   Colour colour;
   // "title", "subtitle", "surface-number", "stop-label", "film-label", "scale-bar-label",
-  // "legend-field" (a field's angle), "legend"
+  // "legend-field" (a field's angle), "legend-share" (a bundle's share), "legend"
   std::string kind;
   double right() const { return leftPx + widthPx; }
   double bottom() const { return topPx + sizePx; }

@@ -145,22 +145,13 @@ void drawFanControls(ViewerState& state) {
     std::snprintf(text, sizeof text, "film point %.1f mm:", bundle->imageHeightMm);
     legendRow.next(ImGui::CalcTextSize(text).x);
     ImGui::TextDisabled("%s", text);
-    if (bundle->empty()) {
-      legend(palette::kAxis, "no ray from it reaches the stop");
-    } else {
-      std::snprintf(text, sizeof text, "reaches it %.0f%%", 100.0 * bundle->passing);
-      legend(palette::kBundlePassing, text);
-      const std::size_t surfaces = state.lensSystem->surfaces().size();
-      for (const optics::BundleShare& share : bundle->blocked) {
-        const char* where = share.surface == 0                                ? " (front)"
-                            : share.surface + 1 == static_cast<int>(surfaces) ? " (rear)"
-                            : share.surface == static_cast<int>(state.lensSystem->stopIndex())
-                                ? " (stop)"
-                                : "";
-        std::snprintf(text, sizeof text, "surface %d%s: %.0f%%", share.surface + 1, where,
-                      100.0 * share.fraction);
-        legend(palette::stoppingSurfaceColour(share.surface), text);
-      }
+    // The same entries as the exported slide's legend (cross_section_export.cpp).
+    for (const BundleLegendEntry& entry : bundleLegend(*bundle, state.lensSystem->surfaces().size(),
+                                                       state.lensSystem->stopIndex())) {
+      legend(entry.surface == -2   ? palette::kAxis
+             : entry.surface == -1 ? palette::kBundlePassing
+                                   : palette::stoppingSurfaceColour(entry.surface),
+             entry.text.c_str());
     }
     legend(palette::kChiefRay, "chief (dashed)");
     static constexpr const char* kBundleHint =

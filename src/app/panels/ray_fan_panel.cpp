@@ -67,6 +67,19 @@ std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyN
   return currentFanPlot(state, FanPlane::Sagittal, whyNot);
 }
 
+std::optional<PlotFigure> rayFanCurrentFigure(ViewerState& state, std::string* whyNot) {
+  const AnalysisRequest request = analysisRequestOf(state);
+  if (!request.lens) {
+    *whyNot = "there is no valid lens to analyse";
+    return std::nullopt;
+  }
+  requestRayAnalysis(state.rayAnalysis, request);
+  bool current = false;
+  const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
+  if (!current) return std::nullopt;
+  return rayFanFigure(*result);
+}
+
 bool rayFanSettled(const ViewerState& state) {
   const AnalysisRequest request = analysisRequestOf(state);
   if (!request.lens || !(state.rayAnalysis.requested == request)) return true;
@@ -85,19 +98,17 @@ void drawRayFanPanel(ViewerState& state, const PanelPlace& place) {
     state.rayAnalysis.drawn.note(state.frameNumber, current);
     drawRayStatus(state, result.get(), current);
     if (result) {
-      PlotSpec tangential = rayFanPlot(*result, FanPlane::Tangential);
-      PlotSpec sagittal = rayFanPlot(*result, FanPlane::Sagittal);
-      ImGui::TextDisabled("%s", tangential.note.c_str());
+      // The plots a saved picture of `ray-fan` shows too (ray_analysis.h's rayFanFigure).
+      const PlotFigure figure = rayFanFigure(*result);
+      ImGui::TextDisabled("%s", figure.note.c_str());
       drawAnalysisConditions(state, "ray-fan", *result->request.lens, result->setup);
-      tangential.note.clear();
-      sagittal.note.clear();
       const ImVec2 room = ImGui::GetContentRegionAvail();
       const float half = 0.5f * (room.x - ImGui::GetStyle().ItemSpacing.x);
       state.uiRects["ray-fan/tangential"] =
-          drawPlotWidget("ray-fan-tangential", tangential, {half, room.y}).area;
+          drawPlotWidget("ray-fan-tangential", figure.plots[0], {half, room.y}).area;
       ImGui::SameLine();
       state.uiRects["ray-fan/sagittal"] =
-          drawPlotWidget("ray-fan-sagittal", sagittal, {half, room.y}).area;
+          drawPlotWidget("ray-fan-sagittal", figure.plots[1], {half, room.y}).area;
     } else {
       ImGui::NewLine();
     }

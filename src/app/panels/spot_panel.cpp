@@ -29,6 +29,19 @@ std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot)
   return spotPlot(*result, -1, state.rayAnalysis.spotFocusIndex);
 }
 
+std::optional<PlotFigure> spotCurrentFigure(ViewerState& state, std::string* whyNot) {
+  const AnalysisRequest request = analysisRequestOf(state);
+  if (!request.lens) {
+    *whyNot = "there is no valid lens to analyse";
+    return std::nullopt;
+  }
+  requestRayAnalysis(state.rayAnalysis, request);
+  bool current = false;
+  const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
+  if (!current) return std::nullopt;
+  return spotFigure(*result, state.rayAnalysis.spotFocusIndex);
+}
+
 bool spotSettled(const ViewerState& state) { return rayFanSettled(state); }
 
 void drawSpotPanel(ViewerState& state, const PanelPlace& place) {
@@ -63,46 +76,31 @@ void drawSpotPanel(ViewerState& state, const PanelPlace& place) {
     }
     if (result && !result->spots.fields.empty()) {
       const int focus = view.spotFocusIndex;
-      const PlotSpec overview = spotPlot(*result, -1, focus);
+      // The plots a saved picture shows too (ray_analysis.h's spotFigure).
+      const PlotFigure figure = spotFigure(*result, focus);
       ImGui::TextDisabled(
           "%s; white circle: the Airy disk; DOF = 2 lambda N^2 = %.4f mm; rays from the chief ray",
-          overview.note.c_str(), result->spots.depthOfFocusMm.value_or(0.0));
+          figure.note.c_str(), result->spots.depthOfFocusMm.value_or(0.0));
       drawAnalysisConditions(state, "spot", *result->request.lens, result->setup);
-      const std::size_t fields = std::max<std::size_t>(1, result->spots.fields.size());
+      const std::size_t fields = std::max<std::size_t>(1, figure.plots.size());
       const float line = ImGui::GetTextLineHeightWithSpacing();
       const ImVec2 room = ImGui::GetContentRegionAvail();
       const float spacing = ImGui::GetStyle().ItemSpacing.x;
-      // Field f's plot: titled with the field, its note above all of them, no legend.
-      auto fieldPlot = [&](std::size_t f) {
-        const optics::SpotField& field = result->spots.fields[f];
-        PlotSpec spec = spotPlot(*result, static_cast<int>(f), focus);
-        char title[96];
-        std::snprintf(title, sizeof title, "%.2g field, %.1f deg", field.fieldFraction,
-                      field.fieldAngleDeg.value_or(0.0));
-        spec.title = field.fieldAngleDeg ? title : "no ray reaches this field";
-        spec.note.clear();
-        spec.legend = false;
-        return spec;
-      };
-      // Each plot's axes' box square (x and y share a scale, so a round spot looks round): the
-      // widget is the box plus the room its labels take, measured on a probe layout.
+      // Each plot's axes' box square (x and y share a scale, so a round spot looks round).
       const float width = (room.x - spacing * (fields - 1)) / fields;
       const float height = room.y - 2.0f * line;
-      const PlotFrame probe =
-          layoutPlot(fieldPlot(0), {0, 0, width, height}, ImGui::GetFontSize(),
-                     [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; });
-      const float labelsX = width - probe.area.width, labelsY = height - probe.area.height;
-      const float box = std::max(40.0f, std::min(width - labelsX, height - labelsY));
-      const ImVec2 plotSize{box + labelsX, box + labelsY};
-      for (std::size_t f = 0; f < result->spots.fields.size(); ++f) {
+      const PlotSize size = squareBoxPlotSize(
+          figure.plots.front(), width, height, ImGui::GetFontSize(),
+          [](const std::string& text) { return ImGui::CalcTextSize(text.c_str()).x; });
+      const ImVec2 plotSize{size.width, size.height};
+      for (std::size_t f = 0; f < figure.plots.size(); ++f) {
         if (f > 0) ImGui::SameLine();
         ImGui::BeginGroup();
         const optics::SpotField& field = result->spots.fields[f];
-        const PlotSpec spec = fieldPlot(f);
         const std::string id = "spot-" + std::to_string(f);
         state.uiRects["spot/" + std::to_string(f)] =
-            drawPlotWidget(id.c_str(), spec, plotSize).area;
-        ImGui::TextUnformatted(spotFigures(*result, static_cast<int>(f), focus).c_str());
+            drawPlotWidget(id.c_str(), figure.plots[f], plotSize).area;
+        ImGui::TextUnformatted(figure.captions[f].c_str());
         // RMS at every plane, so the best focus shows without clicking through.
         std::string row = "RMS through focus:";
         for (const optics::Spot& spot : field.throughFocus) {

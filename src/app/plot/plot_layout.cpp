@@ -78,6 +78,15 @@ AxisTicks spacedTicks(double lo, double hi, float lengthPx, float pxPerTick,
   };
   int target = std::max(2, static_cast<int>(lengthPx / pxPerTick));
   AxisTicks ticks = niceTicks(lo, hi, target, fixedMin, fixedMax);
+  // Three labels at the least where they fit: a square spot diagram's x axis (-44 to 44 um)
+  // was labelled "0" alone, its round step of 50 leaving the box.
+  for (int denser = target + 1; ticks.values.size() < 3 && denser <= 4 * target + 4; ++denser) {
+    const AxisTicks more = niceTicks(lo, hi, denser, fixedMin, fixedMax);
+    if (more.values.size() > ticks.values.size() && fits(more)) {
+      ticks = more;
+      target = denser;
+    }
+  }
   while (!fits(ticks) && target > 2) ticks = niceTicks(lo, hi, --target, fixedMin, fixedMax);
   if (!fits(ticks) && ticks.values.size() > 2) {
     // Even the fewest round ticks crowd: the first and the last alone, if they fit.
@@ -177,8 +186,11 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
                                                (range->yMax - range->yMin) / a.height, 1e-12});
     const double cx = 0.5 * (range->xMin + range->xMax), cy = 0.5 * (range->yMin + range->yMax);
     const double halfX = 0.5 * unitsPerPx * a.width, halfY = 0.5 * unitsPerPx * a.height;
-    frame.xTicks = spacedTicks(cx - halfX, cx + halfX, a.width, 6.0f * fontPx, cx - halfX,
-                               cx + halfX, textWidth, fontPx);
+    // Ticks as dense across as up (one scale: a square box gets the same steps both ways),
+    // thinned only where their labels would crowd; at 6 em apart a square spot plot's x axis
+    // had "0" alone.
+    frame.xTicks = spacedTicks(cx - halfX, cx + halfX, a.width, 2.5f * line, cx - halfX, cx + halfX,
+                               textWidth, fontPx);
     frame.yTicks = spacedTicks(cy - halfY, cy + halfY, a.height, 2.5f * line, cy - halfY,
                                cy + halfY, lineTall, 0.2f * line);
   }
@@ -226,6 +238,126 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
         }
       }
     }
+  }
+  return frame;
+}
+
+PlotSize squareBoxPlotSize(const PlotSpec& spec, float width, float height, float fontPx,
+                           const TextWidthPx& textWidth) {
+  const PlotFrame probe = layoutPlot(spec, {0, 0, width, height}, fontPx, textWidth);
+  const float labelsX = width - probe.area.width, labelsY = height - probe.area.height;
+  const float box = std::max(40.0f, std::min(width - labelsX, height - labelsY));
+  return {box + labelsX, box + labelsY};
+}
+
+PlotSpec figurePlot(const PlotFigure& figure, std::size_t i) {
+  PlotSpec spec = figure.plots[i];
+  spec.legend = false;
+  return spec;
+}
+
+FigureFrame layoutFigure(const PlotFigure& figure, Rect outer, float fontPx,
+                         const TextWidthPx& textWidth) {
+  FigureFrame frame;
+  frame.outer = outer;
+  frame.fontPx = fontPx;
+  frame.lineHeightPx = std::round(fontPx * 1.3f);
+  const float line = frame.lineHeightPx, pad = std::round(fontPx * 0.8f);
+  const float usable = std::max(10.0f, outer.width - 2.0f * pad);
+  frame.left = outer.x + pad;
+  // A line shrunk, if it must be, to the width (the text measures linearly in its size).
+  const auto fitted = [&](const std::string& text, float sizePx) {
+    const float width = textWidth(text) * sizePx / fontPx;
+    return width > usable ? sizePx * usable / width : sizePx;
+  };
+  float top = outer.y + pad;
+  frame.titleY = top;
+  if (!figure.title.empty()) {
+    frame.titlePx = fitted(figure.title, std::round(1.25f * fontPx));
+    top += std::round(1.3f * frame.titlePx);
+  }
+  frame.noteY = top;
+  if (!figure.note.empty()) {
+    frame.notePx = fitted(figure.note, fontPx);
+    top += std::round(1.3f * frame.notePx);
+  }
+  top += 0.3f * fontPx;
+
+  // The legend: each series' name once (the fields of a spot diagram, the fans' fields and lines
+  // in both planes), in rows as wide as the figure.
+  const float sample = kLegendSampleEm * fontPx, sampleGap = 0.5f * fontPx, itemGap = 1.5f * fontPx;
+  struct Item {
+    std::size_t plot, series;
+    float width;
+  };
+  std::vector<Item> items;
+  if (figure.legend) {
+    // By place in the plots, then by plot: each spot diagram's rays ("0 field", "0.7 field",
+    // ...) before the Airy disk that every plot draws after them.
+    std::vector<std::string> names;
+    std::size_t most = 0;
+    for (const PlotSpec& plot : figure.plots) most = std::max(most, plot.series.size());
+    for (std::size_t s = 0; s < most; ++s) {
+      for (std::size_t p = 0; p < figure.plots.size(); ++p) {
+        const std::vector<PlotSeries>& series = figure.plots[p].series;
+        if (s >= series.size()) continue;
+        if (std::find(names.begin(), names.end(), series[s].name) != names.end()) continue;
+        names.push_back(series[s].name);
+        items.push_back({p, s, sample + sampleGap + textWidth(series[s].name)});
+      }
+    }
+    // One series in one plot needs no legend: the axes say what it is.
+    if (figure.plots.size() == 1 && items.size() < 2) items.clear();
+  }
+  std::vector<std::vector<std::pair<std::size_t, float>>> rows;  // item, x from the row's left
+  float x = 0.0f;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (rows.empty() || (x > 0.0f && x + items[i].width > usable)) {
+      rows.emplace_back();
+      x = 0.0f;
+    }
+    rows.back().push_back({i, x});
+    x += items[i].width + itemGap;
+  }
+  const float legendHeight = static_cast<float>(rows.size()) * line;
+  const float legendRoom = rows.empty() ? 0.0f : legendHeight + 0.6f * fontPx;
+  const float captionRoom = figure.captions.empty() ? 0.0f : line;
+  const float bottom = outer.bottom() - pad;
+
+  // The plots, side by side in equal cells (squares centred in the row when asked).
+  const std::size_t n = std::max<std::size_t>(1, figure.plots.size());
+  const float gap = 1.5f * fontPx;
+  const float cellWidth = std::max(10.0f, (usable - gap * static_cast<float>(n - 1)) / n);
+  const float rowHeight = std::max(10.0f, bottom - top - captionRoom - legendRoom);
+  PlotSize size{cellWidth, rowHeight};
+  if (figure.squareBoxes && !figure.plots.empty()) {
+    size = squareBoxPlotSize(figurePlot(figure, 0), cellWidth, rowHeight, fontPx, textWidth);
+    size.width = std::min(size.width, cellWidth);
+    size.height = std::min(size.height, rowHeight);
+  }
+  const float rowWidth = size.width * n + gap * static_cast<float>(n - 1);
+  const float rowLeft = frame.left + std::max(0.0f, 0.5f * (usable - rowWidth));
+  // What is left over (square boxes in a wide picture) goes above and below the block.
+  const float block = size.height + captionRoom + legendRoom;
+  const float rowTop = top + std::max(0.0f, 0.5f * (bottom - top - block));
+  for (std::size_t i = 0; i < figure.plots.size(); ++i) {
+    const Rect cell{rowLeft + static_cast<float>(i) * (size.width + gap), rowTop, size.width,
+                    size.height};
+    frame.plots.push_back(layoutPlot(figurePlot(figure, i), cell, fontPx, textWidth));
+    frame.captionY.push_back(cell.bottom());
+  }
+  if (!rows.empty()) {
+    const float legendTop = rowTop + size.height + captionRoom + 0.6f * fontPx;
+    const float legendLeft = frame.left;  // as the title: the rows were flowed in that width
+    float widest = 0.0f;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      for (const auto& [i, dx] : rows[r]) {
+        frame.legendItems.push_back({items[i].plot, items[i].series, legendLeft + dx,
+                                     legendTop + (static_cast<float>(r) + 0.5f) * line});
+        widest = std::max(widest, dx + items[i].width);
+      }
+    }
+    frame.legend = {legendLeft, legendTop, widest, legendHeight};
   }
   return frame;
 }

@@ -13,7 +13,7 @@ namespace lenslab::app {
 namespace {
 
 constexpr Colour kInk{0x20, 0x20, 0x20, 255}, kMuted{0x55, 0x55, 0x55, 255},
-    kGrid{0xd8, 0xd8, 0xd8, 255}, kWhite{255, 255, 255, 255}, kLegendEdge{0x99, 0x99, 0x99, 255};
+    kGrid{0xd8, 0xd8, 0xd8, 255}, kWhite{255, 255, 255, 255};
 
 // A dot of a scatter, as an octagon (the rasteriser fills convex polygons).
 std::vector<CanvasPoint> dot(CanvasPoint centre, double radius) {
@@ -36,19 +36,14 @@ Colour seriesColourOnWhite(std::uint32_t rgba) {
           static_cast<std::uint8_t>(b * 7 / 10), 255};
 }
 
-SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double fontPx,
-                         const SlideTextMetrics& metrics) {
-  SlidePicture picture;
-  picture.widthPx = widthPx;
-  picture.heightPx = heightPx;
-  picture.background = kWhite;
-  picture.metrics = metrics;
-  const auto size = static_cast<float>(fontPx);
-  const PlotFrame frame = layoutPlot(
-      spec, {0, 0, static_cast<float>(widthPx), static_cast<float>(heightPx)}, size,
-      [&](const std::string& text) { return static_cast<float>(metrics.widthPx(text, fontPx)); });
+namespace {
+
+// One plot of a figure in its frame: the plot's title, its axes, ticks, labels, bars and curves
+// (the figure draws the legend).
+void addPlot(SlidePicture& picture, const PlotSpec& spec, const PlotFrame& frame, double fontPx,
+             const SlideTextMetrics& metrics) {
   const Rect& area = frame.area;
-  picture.drawingArea = {area.x, area.y, area.right(), area.bottom()};
+  const CanvasRect clip{area.x, area.y, area.right(), area.bottom()};
   auto text = [&](const std::string& words, double left, double top, Colour colour,
                   const char* kind) {
     const double width = metrics.widthPx(words, fontPx);
@@ -65,7 +60,7 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
     picture.lines.push_back(std::move(l));
   };
 
-  if (!spec.title.empty()) text(spec.title, area.x, frame.titleY, kInk, "title");
+  if (!spec.title.empty()) text(spec.title, area.x, frame.titleY, kInk, "plot-title");
   if (!spec.note.empty()) text(spec.note, area.x, frame.noteY, kMuted, "note");
   text(spec.y.label, area.x, frame.yLabelY, kInk, "y-label");
   for (double value : frame.xTicks.values) {
@@ -124,51 +119,85 @@ SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double
       std::vector<CanvasPoint> points;
       for (std::size_t i = begin; i < end; ++i)
         points.push_back({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])});
-      for (auto& run : clipPolyline(points, picture.drawingArea))
+      for (auto& run : clipPolyline(points, clip))
         line(std::move(run), seriesColourOnWhite(series.rgba), 2.0, series.dashed, "series");
     }
   }
-  if (frame.legend.width > 0) {
-    const Rect& l = frame.legend;
-    picture.fills.push_back(
-        {{{l.x, l.y}, {l.right(), l.y}, {l.right(), l.bottom()}, {l.x, l.bottom()}},
-         kWhite,
-         "legend"});
-    SlideLine edge;
-    edge.points = {{l.x, l.y}, {l.right(), l.y}, {l.right(), l.bottom()}, {l.x, l.bottom()}};
-    edge.closed = true;
-    edge.colour = kLegendEdge;
-    edge.group = "legend";
-    for (std::size_t i = 0; i < spec.series.size(); ++i) {
-      const PlotSeries& series = spec.series[i];
-      const double y = l.y + 0.25 * fontPx + frame.lineHeightPx * (static_cast<double>(i) + 0.5);
-      const double x = l.x + 0.5 * fontPx;
-      if (series.kind == PlotSeriesKind::Bars) {
-        const double w = kLegendSampleEm * fontPx, h = 0.3 * fontPx;
-        picture.fills.push_back({{{x, y - h}, {x + w, y - h}, {x + w, y + h}, {x, y + h}},
-                                 seriesColourOnWhite(series.rgba),
-                                 "legend"});
-      } else if (series.points) {
-        picture.fills.push_back({dot({x + 0.5 * kLegendSampleEm * fontPx, y}, 0.25 * fontPx),
-                                 seriesColourOnWhite(series.rgba), "legend"});
-      } else {
-        line({{x, y}, {x + kLegendSampleEm * fontPx, y}}, seriesColourOnWhite(series.rgba), 2.0,
-             series.dashed, "legend");
-      }
-      text(series.name, x + (kLegendSampleEm + 0.5) * fontPx, y - 0.5 * fontPx, kInk, "legend");
+}
+
+}  // namespace
+
+SlidePicture figurePicture(const PlotFigure& figure, int widthPx, int heightPx, double fontPx,
+                           const SlideTextMetrics& metrics) {
+  SlidePicture picture;
+  picture.widthPx = widthPx;
+  picture.heightPx = heightPx;
+  picture.background = kWhite;
+  picture.metrics = metrics;
+  const FigureFrame frame = layoutFigure(
+      figure, {0, 0, static_cast<float>(widthPx), static_cast<float>(heightPx)},
+      static_cast<float>(fontPx),
+      [&](const std::string& text) { return static_cast<float>(metrics.widthPx(text, fontPx)); });
+  const auto text = [&](const std::string& words, double left, double top, double sizePx,
+                        Colour colour, const char* kind) {
+    picture.texts.push_back(
+        {words, left, top, metrics.widthPx(words, sizePx), sizePx, colour, kind});
+  };
+  if (!figure.title.empty())
+    text(figure.title, frame.left, frame.titleY, frame.titlePx, kInk, "title");
+  if (!figure.note.empty())
+    text(figure.note, frame.left, frame.noteY, frame.notePx, kMuted, "note");
+  for (std::size_t i = 0; i < frame.plots.size(); ++i) {
+    addPlot(picture, figurePlot(figure, i), frame.plots[i], fontPx, metrics);
+    if (i < figure.captions.size() && !figure.captions[i].empty())
+      text(figure.captions[i], frame.plots[i].area.x, frame.captionY[i], fontPx, kInk, "caption");
+  }
+  if (!frame.plots.empty()) {
+    const Rect& area = frame.plots.front().area;
+    picture.drawingArea = {area.x, area.y, area.right(), area.bottom()};
+  }
+  for (const FigureLegendItem& item : frame.legendItems) {
+    const PlotSeries& series = figure.plots[item.plot].series[item.series];
+    const Colour colour = seriesColourOnWhite(series.rgba);
+    const double x = item.x, y = item.y, w = kLegendSampleEm * fontPx;
+    if (series.kind == PlotSeriesKind::Bars) {
+      const double h = 0.3 * fontPx;
+      picture.fills.push_back(
+          {{{x, y - h}, {x + w, y - h}, {x + w, y + h}, {x, y + h}}, colour, "legend"});
+    } else if (series.points) {
+      picture.fills.push_back({dot({x + 0.5 * w, y}, 0.25 * fontPx), colour, "legend"});
+    } else {
+      SlideLine sample;
+      sample.points = {{x, y}, {x + w, y}};
+      sample.colour = colour;
+      sample.widthPx = 2.0;
+      sample.dashed = series.dashed;
+      sample.group = "legend";
+      picture.lines.push_back(std::move(sample));
     }
-    picture.lines.push_back(std::move(edge));
+    text(series.name, x + (kLegendSampleEm + 0.5) * fontPx, y - 0.5 * fontPx, fontPx, kInk,
+         "legend");
   }
   return picture;
 }
 
-std::string writePlotPng(const std::filesystem::path& path, const PlotSpec& spec, int widthPx,
-                         int heightPx, double dotsPerInch) {
+SlidePicture plotPicture(const PlotSpec& spec, int widthPx, int heightPx, double fontPx,
+                         const SlideTextMetrics& metrics) {
+  return figurePicture(singlePlotFigure(spec), widthPx, heightPx, fontPx, metrics);
+}
+
+std::string writeFigurePng(const std::filesystem::path& path, const PlotFigure& figure, int widthPx,
+                           int heightPx, double dotsPerInch) {
   const SlideFont font;
   const double fontPx = plotExportFontPx(heightPx);
   const SlideImage image =
-      rasterizeSlide(plotPicture(spec, widthPx, heightPx, fontPx, font.metrics()), font);
+      rasterizeSlide(figurePicture(figure, widthPx, heightPx, fontPx, font.metrics()), font);
   return writePngWithDpi(path, image.width, image.height, image.rgba, dotsPerInch);
+}
+
+std::string writePlotPng(const std::filesystem::path& path, const PlotSpec& spec, int widthPx,
+                         int heightPx, double dotsPerInch) {
+  return writeFigurePng(path, singlePlotFigure(spec), widthPx, heightPx, dotsPerInch);
 }
 
 }  // namespace lenslab::app

@@ -62,4 +62,30 @@ struct PlotSpec {
   bool legend = true;  // false: none (small multiples, whose panel names the series beside them)
 };
 
+// Plots side by side under one title, with one legend under them, outside every axes' box: what
+// a saved plot (.svg, .png) draws. The Spot panel's fields and the Ray fan panel's two planes are
+// figures of several plots, as the panels show them; any other plot is a figure of one
+// (singlePlotFigure).
+struct PlotFigure {
+  std::string title;  // the plot and the lens: "Spot diagram · Double-Gauss 50 mm · f/2.07"
+  std::string note;   // one line under the title: what the plots assume
+  std::vector<PlotSpec> plots;  // left to right, each titled (its field, its plane)
+  // A line under each plot ("RMS 12.3 um  GEO 40.1 um"), or none.
+  std::vector<std::string> captions;
+  bool squareBoxes = false;  // each plot's axes' box square (a spot diagram: a piece of film)
+  bool legend = true;        // each series' name once, under the plots (the plots draw none)
+};
+
+// A figure of one plot: the plot's title and note become the figure's.
+inline PlotFigure singlePlotFigure(PlotSpec spec) {
+  PlotFigure figure;
+  figure.title = std::move(spec.title);
+  figure.note = std::move(spec.note);
+  figure.legend = spec.legend;
+  spec.title.clear();
+  spec.note.clear();
+  figure.plots.push_back(std::move(spec));
+  return figure;
+}
+
 }  // namespace lenslab::app

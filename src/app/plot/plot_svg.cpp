@@ -27,28 +27,19 @@ std::string number(double value) {
   return text;
 }
 
-}  // namespace
-
-std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontPx) {
-  if (!(fontPx > 0.0f)) fontPx = static_cast<float>(plotExportFontPx(heightPx));
-  // Sans-serif text averages about 0.55 em per character; 0.6 leaves room.
-  const TextWidthPx width = [&](const std::string& text) {
-    return 0.6f * fontPx * static_cast<float>(text.size());
-  };
-  const PlotFrame frame = layoutPlot(
-      spec, {0, 0, static_cast<float>(widthPx), static_cast<float>(heightPx)}, fontPx, width);
-  std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << widthPx << "\" height=\""
-      << heightPx << "\" viewBox=\"0 0 " << widthPx << " " << heightPx << "\" font-family=\""
-      << "DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << number(fontPx) << "\">\n";
-  svg << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+// One plot of a figure in its frame: its title, axes, ticks, labels, bars and curves (the figure
+// writes the legend). `index` names its clip path.
+void writePlot(std::ostringstream& svg, const PlotSpec& spec, const PlotFrame& frame, float fontPx,
+               std::size_t index) {
   const float ascent = 0.8f * fontPx;  // text y is its baseline
   if (!spec.title.empty())
-    svg << "<text x=\"" << number(frame.area.x) << "\" y=\"" << number(frame.titleY + ascent)
-        << "\" font-weight=\"bold\" fill=\"#000000\">" << svgEscaped(spec.title) << "</text>\n";
+    svg << "<text class=\"plot-title\" x=\"" << number(frame.area.x) << "\" y=\""
+        << number(frame.titleY + ascent) << "\" fill=\"#000000\">" << svgEscaped(spec.title)
+        << "</text>\n";
   if (!spec.note.empty())
-    svg << "<text x=\"" << number(frame.area.x) << "\" y=\"" << number(frame.noteY + ascent)
-        << "\" fill=\"#444444\">" << svgEscaped(spec.note) << "</text>\n";
+    svg << "<text class=\"note\" x=\"" << number(frame.area.x) << "\" y=\""
+        << number(frame.noteY + ascent) << "\" fill=\"#444444\">" << svgEscaped(spec.note)
+        << "</text>\n";
   svg << "<text class=\"y-label\" x=\"" << number(frame.area.x) << "\" y=\""
       << number(frame.yLabelY + ascent) << "\" fill=\"#000000\">" << svgEscaped(spec.y.label)
       << "</text>\n";
@@ -84,9 +75,9 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
       << "\" y=\"" << number(frame.xLabelY + ascent)
       << "\" text-anchor=\"middle\" fill=\"#000000\">" << svgEscaped(spec.x.label) << "</text>\n";
   // Curves, clipped to the box.
-  svg << "<clipPath id=\"plot-area\"><rect x=\"" << number(frame.area.x) << "\" y=\""
-      << number(frame.area.y) << "\" width=\"" << number(frame.area.width) << "\" height=\""
-      << number(frame.area.height) << "\"/></clipPath>\n";
+  svg << "<clipPath id=\"plot-area-" << index << "\"><rect x=\"" << number(frame.area.x)
+      << "\" y=\"" << number(frame.area.y) << "\" width=\"" << number(frame.area.width)
+      << "\" height=\"" << number(frame.area.height) << "\"/></clipPath>\n";
   for (const PlotBar& bar : frame.bars) {
     const Rect& r = bar.rect;
     svg << "<rect class=\"bar\" data-name=\"" << svgEscaped(spec.series[bar.series].name)
@@ -100,7 +91,7 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
         << "\" x2=\"" << number(frame.area.right()) << "\" y2=\"" << number(zero)
         << "\" stroke=\"#000000\" stroke-width=\"1\"/>\n";
   }
-  svg << "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-width=\"2\">\n";
+  svg << "<g clip-path=\"url(#plot-area-" << index << ")\" fill=\"none\" stroke-width=\"2\">\n";
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
     if (series.points) {
@@ -126,40 +117,71 @@ std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontP
     }
   }
   svg << "</g>\n";
-  if (frame.legend.width > 0) {
-    const Rect& box = frame.legend;
-    svg << "<rect x=\"" << number(box.x) << "\" y=\"" << number(box.y) << "\" width=\""
-        << number(box.width) << "\" height=\"" << number(box.height)
-        << "\" fill=\"#ffffff\" fill-opacity=\"0.9\" stroke=\"#999999\"/>\n";
-    for (std::size_t i = 0; i < spec.series.size(); ++i) {
-      const PlotSeries& series = spec.series[i];
-      const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (i + 0.5f);
-      const float x = box.x + 0.5f * fontPx;
-      if (series.kind == PlotSeriesKind::Bars)
-        svg << "<rect x=\"" << number(x) << "\" y=\"" << number(y - 0.3f * fontPx) << "\" width=\""
-            << number(kLegendSampleEm * fontPx) << "\" height=\"" << number(0.6f * fontPx)
-            << "\" fill=\"" << inkOnWhite(series.rgba) << "\"/>\n";
-      else if (series.points)
-        svg << "<circle cx=\"" << number(x + 0.5f * kLegendSampleEm * fontPx) << "\" cy=\""
-            << number(y) << "\" r=\"" << number(0.25f * fontPx) << "\" fill=\""
-            << inkOnWhite(series.rgba) << "\"/>\n";
-      else
-        svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
-            << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
-            << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
-            << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
-      svg << "<text class=\"legend\" x=\"" << number(x + (kLegendSampleEm + 0.5f) * fontPx)
-          << "\" y=\"" << number(y + 0.35f * fontPx) << "\" fill=\"#000000\">"
-          << svgEscaped(series.name) << "</text>\n";
-    }
+}
+
+}  // namespace
+
+std::string figureSvg(const PlotFigure& figure, int widthPx, int heightPx, float fontPx) {
+  if (!(fontPx > 0.0f)) fontPx = static_cast<float>(plotExportFontPx(heightPx));
+  // Sans-serif text averages about 0.55 em per character; 0.6 leaves room.
+  const TextWidthPx width = [&](const std::string& text) {
+    return 0.6f * fontPx * static_cast<float>(text.size());
+  };
+  const FigureFrame frame = layoutFigure(
+      figure, {0, 0, static_cast<float>(widthPx), static_cast<float>(heightPx)}, fontPx, width);
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << widthPx << "\" height=\""
+      << heightPx << "\" viewBox=\"0 0 " << widthPx << " " << heightPx << "\" font-family=\""
+      << "DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << number(fontPx) << "\">\n";
+  if (!figure.title.empty()) svg << "<title>" << svgEscaped(figure.title) << "</title>\n";
+  svg << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+  if (!figure.title.empty())
+    svg << "<text class=\"title\" x=\"" << number(frame.left) << "\" y=\""
+        << number(frame.titleY + 0.8f * frame.titlePx) << "\" font-size=\"" << number(frame.titlePx)
+        << "\" font-weight=\"bold\" fill=\"#000000\">" << svgEscaped(figure.title) << "</text>\n";
+  if (!figure.note.empty())
+    svg << "<text class=\"note\" x=\"" << number(frame.left) << "\" y=\""
+        << number(frame.noteY + 0.8f * frame.notePx) << "\" font-size=\"" << number(frame.notePx)
+        << "\" fill=\"#444444\">" << svgEscaped(figure.note) << "</text>\n";
+  for (std::size_t i = 0; i < frame.plots.size(); ++i) {
+    writePlot(svg, figurePlot(figure, i), frame.plots[i], fontPx, i);
+    if (i < figure.captions.size() && !figure.captions[i].empty())
+      svg << "<text class=\"caption\" x=\"" << number(frame.plots[i].area.x) << "\" y=\""
+          << number(frame.captionY[i] + 0.8f * fontPx) << "\" fill=\"#000000\">"
+          << svgEscaped(figure.captions[i]) << "</text>\n";
+  }
+  // The legend, under the plots.
+  for (const FigureLegendItem& item : frame.legendItems) {
+    const PlotSeries& series = figure.plots[item.plot].series[item.series];
+    const float x = item.x, y = item.y;
+    if (series.kind == PlotSeriesKind::Bars)
+      svg << "<rect class=\"legend\" x=\"" << number(x) << "\" y=\"" << number(y - 0.3f * fontPx)
+          << "\" width=\"" << number(kLegendSampleEm * fontPx) << "\" height=\""
+          << number(0.6f * fontPx) << "\" fill=\"" << inkOnWhite(series.rgba) << "\"/>\n";
+    else if (series.points)
+      svg << "<circle cx=\"" << number(x + 0.5f * kLegendSampleEm * fontPx) << "\" cy=\""
+          << number(y) << "\" r=\"" << number(0.25f * fontPx) << "\" fill=\""
+          << inkOnWhite(series.rgba) << "\"/>\n";
+    else
+      svg << "<line x1=\"" << number(x) << "\" y1=\"" << number(y) << "\" x2=\""
+          << number(x + kLegendSampleEm * fontPx) << "\" y2=\"" << number(y) << "\" stroke=\""
+          << inkOnWhite(series.rgba) << "\" stroke-width=\"2\""
+          << (series.dashed ? " stroke-dasharray=\"6 4\"" : "") << "/>\n";
+    svg << "<text class=\"legend\" x=\"" << number(x + (kLegendSampleEm + 0.5f) * fontPx)
+        << "\" y=\"" << number(y + 0.35f * fontPx) << "\" fill=\"#000000\">"
+        << svgEscaped(series.name) << "</text>\n";
   }
   svg << "</svg>\n";
   return svg.str();
 }
 
-std::string writePlotSvg(const std::filesystem::path& path, const PlotSpec& spec, int widthPx,
-                         int heightPx) {
-  return writeFileAtomically(path, plotSvg(spec, widthPx, heightPx));
+std::string plotSvg(const PlotSpec& spec, int widthPx, int heightPx, float fontPx) {
+  return figureSvg(singlePlotFigure(spec), widthPx, heightPx, fontPx);
+}
+
+std::string writeFigureSvg(const std::filesystem::path& path, const PlotFigure& figure, int widthPx,
+                           int heightPx) {
+  return writeFileAtomically(path, figureSvg(figure, widthPx, heightPx));
 }
 
 }  // namespace lenslab::app
