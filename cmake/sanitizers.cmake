@@ -1,4 +1,5 @@
-# LENSLAB_SANITIZE builds every target (libraries, binaries, tests) with gcc's sanitizers:
+# LENSLAB_SANITIZE builds every target (libraries, binaries, tests) with the compiler's sanitizers
+# (gcc's or clang's; scripts/test-sanitize builds with clang, which compiles them faster):
 #   address   AddressSanitizer + LeakSanitizer + UndefinedBehaviorSanitizer (./test --sanitize)
 #   thread    ThreadSanitizer (./test --sanitize-thread: the threaded tests)
 # Empty (the default) builds without them. The sanitizer runs set their options and suppression

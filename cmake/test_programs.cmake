@@ -15,8 +15,11 @@ function(lenslab_test_program target)
   # (-Warray-bounds and -Wrestrict on string concatenation, -Wmaybe-uninitialized in regex's
   # automaton; 73 such warnings in a cold build, none pointing at a line of the tests): off for
   # the test code only.
-  target_compile_options(${target} PRIVATE -O1 -Wno-array-bounds -Wno-restrict
-                                           -Wno-maybe-uninitialized)
+  target_compile_options(${target} PRIVATE -O1)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(${target} PRIVATE -Wno-array-bounds -Wno-restrict
+                                             -Wno-maybe-uninitialized)
+  endif()
   target_precompile_headers(${target} PRIVATE
     <gtest/gtest.h>
     <nlohmann/json.hpp>
