@@ -120,9 +120,10 @@ class LensDocument {
   };
   Snapshot snapshot() const { return {current_, path_, headerComments_, saved_, openedLens_}; }
   void restore(Snapshot&& from);
-  // A step is a prescription (about a kilobyte for a 13-surface lens; an image stop's mask is
-  // shared, not copied): 5,000 steps hold an afternoon's editing in a few megabytes, and a
-  // thousand random edits can all be undone (the edit-storm test).
+  // A step is two prescriptions, the lens and what its file holds (about a kilobyte each for a
+  // 13-surface lens; an image stop's mask is shared, not copied): 5,000 steps hold an
+  // afternoon's editing in about ten megabytes, and a thousand random edits can all be undone
+  // (the edit-storm test).
   static constexpr std::size_t kMaxUndoSteps = 5000;
 
   optics::Prescription current_;
