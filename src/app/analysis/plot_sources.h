@@ -1,6 +1,7 @@
 #pragma once
 // The plot sources that analysis_plots.cpp registers, each defined beside its panel.
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,7 @@
 namespace lenslab::app {
 
 struct ViewerState;
+struct RayAnalysisResult;
 
 std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot);
 bool illuminationSettled(const ViewerState& state);
@@ -18,6 +20,11 @@ bool seidelSettled(const ViewerState& state);
 std::optional<PlotSpec> colourCurrentPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> lateralColourCurrentPlot(ViewerState& state, std::string* whyNot);
 bool colourSettled(const ViewerState& state);
+// The Ray fan and Spot panels' one worker (panels/ray_fan_panel.cpp): its result for the current
+// lens and fields, asked for if need be; null while it is computed, or with *whyNot set when
+// there is no valid lens.
+std::shared_ptr<const RayAnalysisResult> currentRayAnalysis(ViewerState& state,
+                                                            std::string* whyNot);
 std::optional<PlotSpec> rayFanCurrentPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotFigure> rayFanCurrentFigure(ViewerState& state, std::string* whyNot);
 bool rayFanSettled(const ViewerState& state);

@@ -37,19 +37,25 @@ void drawRayStatus(const ViewerState& state, const RayAnalysisResult* result, bo
 
 }  // namespace
 
+std::shared_ptr<const RayAnalysisResult> currentRayAnalysis(ViewerState& state,
+                                                            std::string* whyNot) {
+  const AnalysisRequest request = analysisRequestOf(state);
+  if (!request.lens) {
+    *whyNot = "there is no valid lens to analyse";
+    return nullptr;
+  }
+  requestRayAnalysis(state.rayAnalysis, request);
+  bool current = false;
+  auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
+  return current ? result : nullptr;
+}
+
 namespace {
 
 // The fans of the current lens and fields in one plane, or nullopt while they are computed.
 std::optional<PlotSpec> currentFanPlot(ViewerState& state, FanPlane plane, std::string* whyNot) {
-  const AnalysisRequest request = analysisRequestOf(state);
-  if (!request.lens) {
-    *whyNot = "there is no valid lens to analyse";
-    return std::nullopt;
-  }
-  requestRayAnalysis(state.rayAnalysis, request);
-  bool current = false;
-  const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
-  if (!current) return std::nullopt;
+  const auto result = currentRayAnalysis(state, whyNot);
+  if (!result) return std::nullopt;
   return rayFanPlot(*result, plane);
 }
 
@@ -68,15 +74,8 @@ std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyN
 }
 
 std::optional<PlotFigure> rayFanCurrentFigure(ViewerState& state, std::string* whyNot) {
-  const AnalysisRequest request = analysisRequestOf(state);
-  if (!request.lens) {
-    *whyNot = "there is no valid lens to analyse";
-    return std::nullopt;
-  }
-  requestRayAnalysis(state.rayAnalysis, request);
-  bool current = false;
-  const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
-  if (!current) return std::nullopt;
+  const auto result = currentRayAnalysis(state, whyNot);
+  if (!result) return std::nullopt;
   return rayFanFigure(*result);
 }
 

@@ -17,28 +17,14 @@
 namespace lenslab::app {
 
 std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot) {
-  const AnalysisRequest request = analysisRequestOf(state);
-  if (!request.lens) {
-    *whyNot = "there is no valid lens to analyse";
-    return std::nullopt;
-  }
-  requestRayAnalysis(state.rayAnalysis, request);
-  bool current = false;
-  const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
-  if (!current) return std::nullopt;
+  const auto result = currentRayAnalysis(state, whyNot);
+  if (!result) return std::nullopt;
   return spotPlot(*result, -1, state.rayAnalysis.spotFocusIndex);
 }
 
 std::optional<PlotFigure> spotCurrentFigure(ViewerState& state, std::string* whyNot) {
-  const AnalysisRequest request = analysisRequestOf(state);
-  if (!request.lens) {
-    *whyNot = "there is no valid lens to analyse";
-    return std::nullopt;
-  }
-  requestRayAnalysis(state.rayAnalysis, request);
-  bool current = false;
-  const auto result = latestRayAnalysis(state.rayAnalysis, request, &current);
-  if (!current) return std::nullopt;
+  const auto result = currentRayAnalysis(state, whyNot);
+  if (!result) return std::nullopt;
   return spotFigure(*result, state.rayAnalysis.spotFocusIndex);
 }
 
