@@ -10,6 +10,7 @@
 
 #include "cli/analyze/analysis_report.h"
 #include "cli/analyze_options.h"
+#include "cli/exit_codes.h"
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
 #include "cli/usage_error.h"
@@ -20,8 +21,6 @@
 namespace lenslab::cli {
 
 namespace {
-
-constexpr int kUsageError = 2;  // as for every usage error (cli.cpp)
 
 std::string objectText(const std::optional<double>& objectDistanceMm) {
   return objectDistanceMm ? distanceText(*objectDistanceMm) + " from the film" : "infinity";

@@ -10,6 +10,7 @@
 
 #include "app/viewer.h"
 #include "cli/analyze_command.h"
+#include "cli/exit_codes.h"
 #include "cli/focus_command.h"
 #include "cli/info_command.h"
 #include "cli/nearest_name.h"
@@ -22,7 +23,6 @@ namespace lenslab::cli {
 
 namespace {
 
-constexpr int kUsageError = 2;
 constexpr int kInternalError = 1;
 
 struct ViewerArguments {

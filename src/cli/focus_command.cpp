@@ -7,6 +7,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "cli/json_numbers.h"
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
 #include "cli/usage_error.h"
@@ -23,10 +24,6 @@ struct FocusArguments {
   double filmDistanceMm = 0.0;
   bool json = false;
 };
-
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
 
 int runFocus(const FocusArguments& arguments, bool objectGiven) {
   std::optional<double> objectDistance;
@@ -49,7 +46,7 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
     }
     if (arguments.json) {
       std::cout << nlohmann::json{{"lens", arguments.lensPath},
-                                  {"object_distance_mm", number(*objectDistance)},
+                                  {"object_distance_mm", finiteOrNull(*objectDistance)},
                                   {"object_distance_from", "film"},
                                   {"film_distance_mm", *film.valueMm},
                                   {"efl_mm", lens->firstOrder().eflMm}}
@@ -74,7 +71,7 @@ int runFocus(const FocusArguments& arguments, bool objectGiven) {
   if (arguments.json) {
     std::cout << nlohmann::json{{"lens", arguments.lensPath},
                                 {"film_distance_mm", arguments.filmDistanceMm},
-                                {"object_distance_mm", number(*object.valueMm)},
+                                {"object_distance_mm", finiteOrNull(*object.valueMm)},
                                 {"object_distance_from", "film"},
                                 {"object_at_infinity", std::isinf(*object.valueMm)}}
                      .dump(2)

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/json_numbers.h"
 #include "cli/lens_loading.h"
 #include "cli/number_validators.h"
 #include "optics/analysis/chromatic.h"
@@ -30,22 +31,19 @@ struct InfoArguments {
 };
 
 // JSON has no infinity; such values are null.
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
 // Focal lengths and distances of an afocal lens (zero power) are infinite: null, not the 0 that
 // FirstOrderData holds for them.
 nlohmann::json focal(const optics::FirstOrderData& fo, double value) {
-  return fo.afocal ? nlohmann::json(nullptr) : number(value);
+  return fo.afocal ? nlohmann::json(nullptr) : finiteOrNull(value);
 }
 
 nlohmann::json pupilJson(const optics::PupilData& pupil, const char* reference) {
-  return {{"diameter_mm", number(pupil.diameterMm)},
-          {"position_mm", pupil.atInfinity ? nlohmann::json(nullptr) : number(pupil.positionMm)},
-          {"position_from", reference},
-          {"z_mm", pupil.atInfinity ? nlohmann::json(nullptr) : number(pupil.zMm)},
-          {"at_infinity", pupil.atInfinity}};
+  return {
+      {"diameter_mm", finiteOrNull(pupil.diameterMm)},
+      {"position_mm", pupil.atInfinity ? nlohmann::json(nullptr) : finiteOrNull(pupil.positionMm)},
+      {"position_from", reference},
+      {"z_mm", pupil.atInfinity ? nlohmann::json(nullptr) : finiteOrNull(pupil.zMm)},
+      {"at_infinity", pupil.atInfinity}};
 }
 
 // What limits the axial beam from infinity, the unvignetted field and whether the lens forms an
@@ -80,16 +78,17 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
   nlohmann::json surfaces = nlohmann::json::array();
   for (std::size_t i = 0; i < lens.prescription().surfaces.size(); ++i) {
     const optics::Surface& s = lens.prescription().surfaces[i];
-    surfaces.push_back({{"surface", i + 1},
-                        {"radius_mm", s.isFlat() ? nlohmann::json(nullptr) : number(s.radiusMm)},
-                        {"flat", s.isFlat()},
-                        {"stop", s.isStop()},
-                        {"thickness_mm", s.thicknessMm},
-                        {"n_d", s.mediumIndexD()},
-                        {"abbe_d", s.abbeD ? nlohmann::json(*s.abbeD) : nlohmann::json(nullptr)},
-                        {"n", lens.surfaces()[i].indexRear},
-                        {"aperture_diameter_mm", s.apertureDiameterMm},
-                        {"vertex_z_mm", lens.surfaces()[i].vertexZMm}});
+    surfaces.push_back(
+        {{"surface", i + 1},
+         {"radius_mm", s.isFlat() ? nlohmann::json(nullptr) : finiteOrNull(s.radiusMm)},
+         {"flat", s.isFlat()},
+         {"stop", s.isStop()},
+         {"thickness_mm", s.thicknessMm},
+         {"n_d", s.mediumIndexD()},
+         {"abbe_d", s.abbeD ? nlohmann::json(*s.abbeD) : nlohmann::json(nullptr)},
+         {"n", lens.surfaces()[i].indexRear},
+         {"aperture_diameter_mm", s.apertureDiameterMm},
+         {"vertex_z_mm", lens.surfaces()[i].vertexZMm}});
   }
   std::string colourWhyNot;
   const std::optional<double> colourShift =
@@ -114,7 +113,7 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       {"f_number_by_area",
        beam.shapedBeam ? focal(fo, beam.shapedBeam->fNumberByArea) : nlohmann::json(nullptr)},
       {"passing_beam_area_mm2",
-       beam.shapedBeam ? number(beam.shapedBeam->areaMm2) : nlohmann::json(nullptr)},
+       beam.shapedBeam ? finiteOrNull(beam.shapedBeam->areaMm2) : nlohmann::json(nullptr)},
       {"total_track_mm", fo.totalTrackMm},
       {"lens_length_mm", fo.lensLengthMm},
       {"film_distance_mm", lens.filmDistanceMm()},
@@ -137,19 +136,21 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
                                         ? nlohmann::json(beam.limit.limitedByStop(lens.stopIndex()))
                                         : nlohmann::json(nullptr)},
       {"working_f_number",
-       beam.limit.real ? number(beam.limit.real->workingFNumber) : nlohmann::json(nullptr)},
+       beam.limit.real ? finiteOrNull(beam.limit.real->workingFNumber) : nlohmann::json(nullptr)},
       {"working_f_number_definition",
        "real rays: 1 / (2 n' sin u') of the widest axial ray from infinity that passes"},
-      {"passing_beam_diameter_mm",
-       beam.limit.real ? number(2.0 * beam.limit.real->entranceHeightMm) : nlohmann::json(nullptr)},
+      {"passing_beam_diameter_mm", beam.limit.real
+                                       ? finiteOrNull(2.0 * beam.limit.real->entranceHeightMm)
+                                       : nlohmann::json(nullptr)},
       {"paraxial_limiting_surface", beam.limit.paraxial
                                         ? nlohmann::json(beam.limit.paraxial->surfaceIndex + 1)
                                         : nlohmann::json(nullptr)},
       {"paraxial_limited_entrance_pupil_diameter_mm",
-       beam.limit.paraxial ? number(beam.limit.paraxial->entrancePupilDiameterMm)
+       beam.limit.paraxial ? finiteOrNull(beam.limit.paraxial->entrancePupilDiameterMm)
                            : nlohmann::json(nullptr)},
-      {"unvignetted_field_of_view_deg",
-       beam.unvignettedFieldDeg ? number(*beam.unvignettedFieldDeg) : nlohmann::json(nullptr)},
+      {"unvignetted_field_of_view_deg", beam.unvignettedFieldDeg
+                                            ? finiteOrNull(*beam.unvignettedFieldDeg)
+                                            : nlohmann::json(nullptr)},
       {"forms_real_image", beam.image.ok()},
       {"no_image_reason",
        beam.image.ok() ? nlohmann::json(nullptr) : nlohmann::json(beam.image.whyNot)},

@@ -1,5 +1,6 @@
 #include "cli/render_command.h"
 
+#include "cli/exit_codes.h"
 #include "common/atomic_file.h"
 
 #include <unistd.h>
@@ -31,8 +32,6 @@ namespace lenslab::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr int kUsageError = 2;
-constexpr int kFailure = 1;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();

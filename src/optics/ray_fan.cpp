@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/angles.h"
 #include "optics/field_coverage.h"
 #include "optics/glass.h"
 #include "optics/limiting_aperture.h"
@@ -12,8 +13,6 @@
 namespace lenslab::optics {
 
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 // Where the object's rays come from: a direction (object at infinity) or a point.
 struct ObjectField {
@@ -167,7 +166,7 @@ class FanTracer {
   Coverage coverage() const {
     const double limit = spec_.objectDistanceMm
                              ? *spec_.objectDistanceMm * 3.0 + 10.0 * pupilRadius_ + 1.0
-                             : 89.5 / kDegrees;
+                             : 89.5 / kDegreesPerRadian;
     Coverage covered;  // the axis: image height 0
     auto passes = [&](const ObjectField& field, const std::optional<ChiefAim>& aim) {
       return aim && trace(field, aim->pupilHeight).filmPoint.has_value();
@@ -315,7 +314,7 @@ RayFans computeRayFans(const LensSystem& lens, const FanSpec& spec) {
     if (spec.objectDistanceMm) {
       fan.objectHeightMm = solved.parameter;
     } else {
-      fan.fieldAngleDeg = solved.parameter * kDegrees;
+      fan.fieldAngleDeg = solved.parameter * kDegreesPerRadian;
     }
     const auto field = tracer.fieldFor(solved.parameter);
     const auto aim = tracer.aimChief(field, solved.aim.pupilHeight);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "common/angles.h"
 #include "optics/lens_system.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unclipped_trace.h"
@@ -13,7 +14,6 @@ namespace lenslab::optics {
 
 namespace {
 
-constexpr double kRadians = std::numbers::pi / 180.0;
 constexpr int kChordSteps = 200;
 constexpr int kBisections = 30;
 constexpr double kMaxHalfAngleDeg = 89.5;
@@ -96,7 +96,7 @@ double scanHalfWidth(const LensSystem& lens, double halfAngle) {
 bool beamPassesUnvignetted(const LensSystem& lens, std::size_t limitingSurface,
                            double halfAngleDeg) {
   if (limitingSurface >= lens.surfaces().size()) return false;
-  const double halfAngle = halfAngleDeg * kRadians;
+  const double halfAngle = halfAngleDeg * kRadiansPerDegree;
   const ObliqueBeam beam(lens, limitingSurface, halfAngle);
   const double halfWidth = scanHalfWidth(lens, halfAngle);
   const auto centre = chordCentre(beam, halfWidth);

@@ -4,16 +4,11 @@
 #include <cstdio>
 
 #include "common/distance_text.h"
+#include "common/formatted.h"
 
 namespace lenslab::app {
 
 namespace {
-
-std::string formatted(const char* format, auto... values) {
-  char text[256];
-  std::snprintf(text, sizeof text, format, values...);
-  return text;
-}
 
 // Colours for the dark theme (the exports darken them on white), one per aberration.
 constexpr std::uint32_t kSeidelColours[] = {0xff6b6bffu, 0xffb347ffu, 0xf2e05cffu, 0x5ec8ffffu,

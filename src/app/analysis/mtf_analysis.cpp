@@ -7,6 +7,7 @@
 
 #include "app/drawing/cross_section_drawing.h"
 #include "common/distance_text.h"
+#include "common/formatted.h"
 
 namespace lenslab::app {
 
@@ -18,12 +19,6 @@ constexpr int kPanelFrequencySamples = 129;
 std::uint32_t rgba(const Colour& c) {
   return (std::uint32_t{c.r} << 24) | (std::uint32_t{c.g} << 16) | (std::uint32_t{c.b} << 8) |
          std::uint32_t{c.a};
-}
-
-std::string formatted(const char* format, auto... values) {
-  char text[160];
-  std::snprintf(text, sizeof text, format, values...);
-  return text;
 }
 
 double chosenRange(const MtfView& view) {

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kMicronsPerMm = 1000.0;
 
-std::uint32_t rgba(Colour c) {
+std::uint32_t opaqueRgba(Colour c) {
   return (std::uint32_t{c.r} << 24) | (std::uint32_t{c.g} << 16) | (std::uint32_t{c.b} << 8) |
          0xffu;
 }
@@ -30,7 +30,7 @@ std::uint32_t fanColour(std::size_t field, double wavelengthNm) {
   } else if (std::abs(wavelengthNm - optics::kWavelengthCNm) < 0.01) {
     c = {mix(c.r, 255), mix(c.g, 60), mix(c.b, 50), 255};
   }
-  return rgba(c);
+  return opaqueRgba(c);
 }
 
 std::string lineName(double wavelengthNm) {
@@ -161,7 +161,7 @@ PlotSpec spotPlot(const RayAnalysisResult& result, int fieldIndex, int focusInde
     std::snprintf(name, sizeof name, "%.2g field", field.fieldFraction);
     rays.name = name;
     rays.points = true;
-    rays.rgba = rgba(palette::kFieldColours[f % std::size(palette::kFieldColours)]);
+    rays.rgba = opaqueRgba(palette::kFieldColours[f % std::size(palette::kFieldColours)]);
     for (const auto* points : {&spot->raysMm, &spot->edgeRaysMm})
       for (const glm::dvec2& p : *points) {
         rays.x.push_back(p.x * kMicronsPerMm);

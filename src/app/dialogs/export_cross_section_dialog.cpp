@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <iterator>
 
+#include "app/automation/item_rect.h"
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
 #include "app/viewer_state.h"
@@ -24,11 +25,6 @@ constexpr SizePreset kPresets[] = {{"1920×1080 (16:9)", 1920, 1080},
                                    {"3840×2160 (16:9)", 3840, 2160},
                                    {"1280×720 (16:9)", 1280, 720},
                                    {"1024×768 (4:3)", 1024, 768}};
-
-void recordRect(ViewerState& state, const char* name) {
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.uiRects[name] = {min.x, min.y, max.x - min.x, max.y - min.y};
-}
 
 }  // namespace
 
@@ -105,7 +101,7 @@ void drawExportCrossSectionDialog(ViewerState& state) {
       state.fileRequests.push_back({FileRequest::Kind::SaveCrossSection, {}});
       state.showExportCrossSection = false;
     }
-    recordRect(state, "export-cross-section/export");
+    recordItemRect(state, "export-cross-section/export");
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) state.showExportCrossSection = false;
   }

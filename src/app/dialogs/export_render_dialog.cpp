@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/automation/item_rect.h"
 #include "app/platform/ui_scale.h"
 #include "app/viewer_state.h"
 #include "render/image_io.h"
@@ -17,11 +18,6 @@ namespace {
 
 constexpr int kMaxSide = 16384;       // as the film resolution and `render --resolution`
 constexpr int kMaxSamples = 1 << 20;  // as `render --spp`
-
-void recordRect(ViewerState& state, const char* name) {
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.uiRects[name] = {min.x, min.y, max.x - min.x, max.y - min.y};
-}
 
 // "1 min 05 s", "12 s".
 std::string durationText(double seconds) {
@@ -50,11 +46,11 @@ void drawProgress(ViewerState& state) {
                   progress.secondsLeft ? durationText(*progress.secondsLeft).c_str() : "?");
   }
   ImGui::ProgressBar(static_cast<float>(fraction), ImVec2(px(360), 0), overlay);
-  recordRect(state, "export/progress");
+  recordItemRect(state, "export/progress");
   ImGui::Text("%dx%d to %s, %s so far", progress.width, progress.height,
               progress.path.filename().string().c_str(), durationText(progress.seconds).c_str());
   if (ImGui::Button("Cancel")) state.exportDialog.cancelRequested = true;
-  recordRect(state, "export/cancel");
+  recordItemRect(state, "export/cancel");
 }
 
 void drawSettings(ViewerState& state, int filmWidthPx, int filmHeightPx) {
@@ -68,7 +64,7 @@ void drawSettings(ViewerState& state, int filmWidthPx, int filmHeightPx) {
           std::clamp(static_cast<int>(std::lround(dialog.widthPx / aspect)), 1, kMaxSide);
     }
   }
-  recordRect(state, "export/width");
+  recordItemRect(state, "export/width");
   ImGui::SetNextItemWidth(px(120));
   if (ImGui::InputInt("Height", &dialog.heightPx, 0, 0)) {
     dialog.heightPx = std::clamp(dialog.heightPx, 1, kMaxSide);
@@ -77,7 +73,7 @@ void drawSettings(ViewerState& state, int filmWidthPx, int filmHeightPx) {
           std::clamp(static_cast<int>(std::lround(dialog.heightPx * aspect)), 1, kMaxSide);
     }
   }
-  recordRect(state, "export/height");
+  recordItemRect(state, "export/height");
   ImGui::Checkbox("Keep the film's aspect ratio", &dialog.linkAspect);
   ImGui::SameLine();
   char film[48];
@@ -94,12 +90,12 @@ void drawSettings(ViewerState& state, int filmWidthPx, int filmHeightPx) {
   std::snprintf(file, sizeof file, "%s", dialog.path.c_str());
   ImGui::SetNextItemWidth(px(300));
   if (ImGui::InputText("##file", file, sizeof file)) dialog.path = file;
-  recordRect(state, "export/file");
+  recordItemRect(state, "export/file");
   ImGui::SameLine();
   if (ImGui::Button("Browse...")) dialog.browseRequested = true;
   ImGui::TextDisabled(".png (shown exposure), .exr or .pfm (linear radiance)");
   if (ImGui::Button("Export")) dialog.startRequested = true;
-  recordRect(state, "export/start");
+  recordItemRect(state, "export/start");
 }
 
 }  // namespace

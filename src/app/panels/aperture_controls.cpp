@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "app/automation/item_rect.h"
 #include "app/document/aperture_image.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
@@ -14,11 +15,6 @@
 namespace lenslab::app {
 
 namespace {
-
-void remember(ViewerState& state, const char* id) {
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.uiRects[id] = {min.x, min.y, max.x - min.x, max.y - min.y};
-}
 
 void issueShape(ViewerState& state, const optics::ApertureShape& shape, const char* mergeKey) {
   state.lens.issue(SetStopShape{shape}, mergeKey);
@@ -52,7 +48,7 @@ void drawApertureControls(ViewerState& state) {
       issueShape(state, blades, "");
     }
   }
-  remember(state, "first-order/aperture");
+  recordItemRect(state, "first-order/aperture");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "The stop's shape: the circle, an iris of 3 to 32 blades, or an image\n"

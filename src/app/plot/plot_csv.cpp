@@ -23,7 +23,7 @@ std::string field(const std::string& text) {
   return quoted;
 }
 
-std::string number(double value) {
+std::string csvNumber(double value) {
   if (!std::isfinite(value)) return "";
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", value);
@@ -36,7 +36,8 @@ std::string pointsCsv(const PlotSpec& spec) {
   for (const PlotSeries& series : spec.series)
     for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
       if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-      csv += field(series.name) + "," + number(series.x[i]) + "," + number(series.y[i]) + "\n";
+      csv +=
+          field(series.name) + "," + csvNumber(series.x[i]) + "," + csvNumber(series.y[i]) + "\n";
     }
   return csv;
 }
@@ -55,8 +56,8 @@ std::string plotCsv(const PlotSpec& spec) {
       int polyline = 0;
       for (const auto& [begin, end] : finiteRuns(series)) {
         for (std::size_t i = begin; i < end; ++i)
-          csv += field(series.name) + "," + std::to_string(polyline) + "," + number(series.x[i]) +
-                 "," + number(series.y[i]) + "\n";
+          csv += field(series.name) + "," + std::to_string(polyline) + "," +
+                 csvNumber(series.x[i]) + "," + csvNumber(series.y[i]) + "\n";
         ++polyline;
       }
     }
@@ -84,7 +85,7 @@ std::string plotCsv(const PlotSpec& spec) {
       if (!std::isfinite(keys[i])) continue;
       auto& row = rows[keys[i]];
       row.resize(data.size());
-      row[s] = number(values[i]);
+      row[s] = csvNumber(values[i]);
     }
   }
   for (const auto& [x, cells] : rows) {
@@ -94,7 +95,7 @@ std::string plotCsv(const PlotSpec& spec) {
         index < static_cast<long>(spec.categories.size()) && x == static_cast<double>(index))
       csv += field(spec.categories[static_cast<std::size_t>(index)]);
     else
-      csv += number(x);
+      csv += csvNumber(x);
     for (const std::string& cell : cells) {
       csv.push_back(',');
       csv += cell;

@@ -15,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/json_numbers.h"
+#include "common/formatted.h"
 #include "optics/analysis/field_point.h"
 #include "optics/lens_system.h"
 
@@ -52,18 +54,7 @@ struct AnalysisReport {
 std::span<const AnalysisReport> analysisReports();
 const AnalysisReport* findAnalysisReport(std::string_view key);
 
-// The reports' entries: JSON cannot hold NaN or infinity (nlohmann writes null without a word);
-// every number goes through this, so a non-finite one is a visible null.
-nlohmann::json finiteOrNull(double value);
-// The same for a value an analysis may not have (a blocked ray, a field no ray reaches): null.
-nlohmann::json optionalNumber(const std::optional<double>& value);
-
-// printf into a std::string, for the reports' readable lines (up to 255 characters each).
-template <class... Values>
-std::string formatted(const char* format, Values... values) {
-  char line[256];
-  std::snprintf(line, sizeof line, format, values...);
-  return line;
-}
+// The reports' spots and fans are in micrometres, the lens in millimetres.
+inline constexpr double kMicronsPerMm = 1000.0;
 
 }  // namespace lenslab::cli

@@ -40,12 +40,4 @@ const AnalysisReport* findAnalysisReport(std::string_view key) {
   return nullptr;
 }
 
-nlohmann::json finiteOrNull(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
-nlohmann::json optionalNumber(const std::optional<double>& value) {
-  return value ? finiteOrNull(*value) : nlohmann::json(nullptr);
-}
-
 }  // namespace lenslab::cli

@@ -20,8 +20,6 @@ namespace lenslab::cli {
 
 namespace {
 
-constexpr double kMicronsPerMm = 1000.0;
-
 nlohmann::json fanJson(const std::vector<optics::TransverseFanSample>& samples) {
   nlohmann::json points = nlohmann::json::array();
   for (const optics::TransverseFanSample& s : samples)

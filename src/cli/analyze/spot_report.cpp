@@ -19,8 +19,6 @@ namespace lenslab::cli {
 
 namespace {
 
-constexpr double kMicronsPerMm = 1000.0;
-
 nlohmann::json micronsOrNull(const std::optional<double>& mm) {
   return mm ? finiteOrNull(*mm * kMicronsPerMm) : nlohmann::json(nullptr);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "optics/analysis/paraxial_ray.h"
+#include "optics/analysis/why_not.h"
 #include "optics/field_coverage.h"
 #include "optics/glass.h"
 #include "optics/unclipped_trace.h"
@@ -10,10 +11,6 @@
 namespace lenslab::optics {
 
 namespace {
-
-void say(std::string* whyNot, std::string text) {
-  if (whyNot) *whyNot = std::move(text);
-}
 
 // Where a ray from the object side meets the film plane z = 0, clear apertures ignored.
 std::optional<double> heightOnFilmMm(const LensSystem& lens, const LensRay& ray) {
@@ -29,7 +26,7 @@ std::optional<ChromaticFocalShift> chromaticFocalShift(
     const LensSystem& lens, const std::optional<double>& objectDistanceFromFilmMm, int points,
     double firstNm, double lastNm, std::string* whyNot) {
   if (!lensHasDispersion(lens.prescription())) {
-    say(whyNot, "no glass of the lens has an Abbe number (V_d), so it has no dispersion");
+    sayWhyNot(whyNot, "no glass of the lens has an Abbe number (V_d), so it has no dispersion");
     return std::nullopt;
   }
   auto imageAt = [&](double wavelengthNm) -> std::optional<double> {
@@ -40,9 +37,9 @@ std::optional<ChromaticFocalShift> chromaticFocalShift(
   const auto atD = imageAt(kWavelengthDNm), atF = imageAt(kWavelengthFNm),
              atC = imageAt(kWavelengthCNm);
   if (!atD || !atF || !atC) {
-    say(whyNot,
-        "the lens forms no paraxial image of the object (afocal, or the object is not in "
-        "front of the lens)");
+    sayWhyNot(whyNot,
+              "the lens forms no paraxial image of the object (afocal, or the object is not in "
+              "front of the lens)");
     return std::nullopt;
   }
   ChromaticFocalShift out;
@@ -53,7 +50,7 @@ std::optional<ChromaticFocalShift> chromaticFocalShift(
     const double wavelengthNm = firstNm + (lastNm - firstNm) * i / (points - 1);
     const auto image = imageAt(wavelengthNm);
     if (!image) {
-      say(whyNot, "the lens is afocal at " + std::to_string(wavelengthNm) + " nm");
+      sayWhyNot(whyNot, "the lens is afocal at " + std::to_string(wavelengthNm) + " nm");
       return std::nullopt;
     }
     out.curve.push_back({wavelengthNm, *image - *atD});

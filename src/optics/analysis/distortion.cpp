@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/angles.h"
 #include "optics/analysis/paraxial_image.h"
 #include "optics/field_coverage.h"
 #include "optics/unclipped_trace.h"
@@ -11,8 +12,6 @@
 namespace lenslab::optics {
 
 namespace {
-
-constexpr double kRadians = std::numbers::pi / 180.0;
 
 // The chief ray of the field at image height h, traced afresh to the film: its height there, its
 // angle in object space and the Gaussian image height of its object point.
@@ -31,9 +30,10 @@ DistortionPoint distortionAt(const LensSystem& lens, const ParaxialImage& refere
     return point;
   }
   const double yMm = out->origin.y - out->direction.y * (out->origin.z / out->direction.z);
-  const double gaussianMm = reference.magnification
-                                ? *reference.magnification * field->objectPoint()->y
-                                : reference.eflMm * std::tan(field->fieldAngleDeg() * kRadians);
+  const double gaussianMm =
+      reference.magnification
+          ? *reference.magnification * field->objectPoint()->y
+          : reference.eflMm * std::tan(field->fieldAngleDeg() * kRadiansPerDegree);
   const double idealMm = gaussianMm * reference.filmHeightScale + 0.0;  // + 0: no -0 on the axis
   point.imageHeightMm = yMm + 0.0;
   point.fieldAngleDeg = field->fieldAngleDeg() + 0.0;

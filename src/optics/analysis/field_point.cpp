@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/mat2x2.hpp>
 
+#include "common/angles.h"
+#include "optics/analysis/why_not.h"
 #include "optics/chief_ray.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unclipped_trace.h"
@@ -15,12 +17,6 @@
 namespace lenslab::optics {
 
 namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-void say(std::string* whyNot, std::string text) {
-  if (whyNot) *whyNot = std::move(text);
-}
 
 // Offsets on the entrance-pupil plane that scale the pupil's unit disk, when the Jacobian of the
 // aim cannot be found (a field at the very edge of coverage): the limited pupil, unstretched.
@@ -34,7 +30,7 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
                                               const std::optional<double>& objectDistanceFromFilmMm,
                                               std::string* whyNot) {
   if (!std::isfinite(imageHeightMm) || imageHeightMm < 0.0) {
-    say(whyNot, "the image height must be a finite distance from the axis");
+    sayWhyNot(whyNot, "the image height must be a finite distance from the axis");
     return std::nullopt;
   }
   const FirstOrderData& firstOrder = lens.firstOrder();
@@ -51,9 +47,9 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
   const double nearestObjectZMm = lens.frontVertexZ() + maxSemiApertureMm;
   if (objectDistanceFromFilmMm && !std::isinf(*objectDistanceFromFilmMm) &&
       !(*objectDistanceFromFilmMm > nearestObjectZMm)) {
-    say(whyNot, "the object plane must lie in front of the lens (more than " +
-                    std::to_string(static_cast<int>(std::ceil(nearestObjectZMm))) +
-                    " mm from the film)");
+    sayWhyNot(whyNot, "the object plane must lie in front of the lens (more than " +
+                          std::to_string(static_cast<int>(std::ceil(nearestObjectZMm))) +
+                          " mm from the film)");
     return std::nullopt;
   }
   const bool atInfinity = !objectDistanceFromFilmMm || std::isinf(*objectDistanceFromFilmMm);
@@ -62,9 +58,9 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
   // x is this frame's y).
   const auto aim = aimChiefRay(lens, imageHeightMm);
   if (!aim) {
-    say(whyNot,
-        "no ray from the film point reaches the centre of the stop (beyond what the "
-        "lens can image)");
+    sayWhyNot(whyNot,
+              "no ray from the film point reaches the centre of the stop (beyond what the "
+              "lens can image)");
     return std::nullopt;
   }
   const glm::dvec3 filmPoint{imageHeightMm, 0.0, 0.0};
@@ -72,12 +68,12 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
       filmPoint, glm::normalize(glm::dvec3{aim->planeXMm, 0.0, lens.rearVertexZ()} - filmPoint)};
   const auto out = traceFromFilmUnclipped(lens, fromFilm, 0);
   if (!out || !(out->direction.z > 0.0)) {
-    say(whyNot, "the chief ray does not leave the front of the lens");
+    sayWhyNot(whyNot, "the chief ray does not leave the front of the lens");
     return std::nullopt;
   }
   const glm::dvec3 origin{0.0, out->origin.x, out->origin.z};
   const glm::dvec3 direction{0.0, out->direction.x, out->direction.z};
-  field.fieldAngleDeg_ = std::atan2(-direction.y, direction.z) * kDegrees;
+  field.fieldAngleDeg_ = std::atan2(-direction.y, direction.z) * kDegreesPerRadian;
 
   field.entrancePupilZMm_ =
       firstOrder.entrancePupil.atInfinity ? lens.frontVertexZ() : firstOrder.entrancePupil.zMm;
@@ -98,7 +94,7 @@ std::optional<FieldPoint> FieldPoint::resolve(const LensSystem& lens, double ima
   if (limit && limit->entrancePupilDiameterMm > 0.0)
     limitedPupilRadiusMm = 0.5 * limit->entrancePupilDiameterMm;
   if (!(limitedPupilRadiusMm > 0.0) || !std::isfinite(limitedPupilRadiusMm)) {
-    say(whyNot, "the lens has no entrance pupil to aim at");
+    sayWhyNot(whyNot, "the lens has no entrance pupil to aim at");
     return std::nullopt;
   }
   field.entrancePupilRadiusMm_ = limitedPupilRadiusMm;

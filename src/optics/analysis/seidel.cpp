@@ -6,6 +6,7 @@
 
 #include "optics/analysis/chromatic.h"
 #include "optics/analysis/paraxial_ray.h"
+#include "optics/analysis/why_not.h"
 #include "optics/field_coverage.h"
 #include "optics/glass.h"
 #include "optics/limiting_aperture.h"
@@ -13,10 +14,6 @@
 namespace lenslab::optics {
 
 namespace {
-
-void say(std::string* whyNot, std::string text) {
-  if (whyNot) *whyNot = std::move(text);
-}
 
 // n_F - n_C of the medium behind each surface (index i), and in front of the first (index -1:
 // the object space, air, but computed all the same).
@@ -60,12 +57,12 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
                                             const std::optional<double>& objectDistanceFromFilmMm,
                                             double fieldHeightMm, std::string* whyNot) {
   if (!(fieldHeightMm > 0.0) || !std::isfinite(fieldHeightMm)) {
-    say(whyNot, "the field height for the chief ray must be a positive distance");
+    sayWhyNot(whyNot, "the field height for the chief ray must be a positive distance");
     return std::nullopt;
   }
   const auto objectMm = objectFromFrontVertexMm(lens, objectDistanceFromFilmMm);
   if (!objectMm) {
-    say(whyNot, "the object plane must lie in front of the lens");
+    sayWhyNot(whyNot, "the object plane must lie in front of the lens");
     return std::nullopt;
   }
   const bool atInfinity = std::isinf(*objectMm);
@@ -88,14 +85,15 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
   const double perObjectSlope = atInfinity ? 0.0 : a * *objectMm + b;  // stop height per unit u
   if (atInfinity) {
     if (!(std::abs(a) > 1e-12)) {
-      say(whyNot, "no ray parallel to the axis reaches the stop (entrance pupil at infinity)");
+      sayWhyNot(whyNot,
+                "no ray parallel to the axis reaches the stop (entrance pupil at infinity)");
       return std::nullopt;
     }
     marginalHeight = stopTargetMm / a;
   } else {
     if (!(std::abs(perObjectSlope) > 1e-12)) {
-      say(whyNot,
-          "the object lies on the entrance pupil, so no ray from it marks the pupil's edge");
+      sayWhyNot(whyNot,
+                "the object lies on the entrance pupil, so no ray from it marks the pupil's edge");
       return std::nullopt;
     }
     marginalSlope = stopTargetMm / perObjectSlope;
@@ -105,7 +103,7 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
   double chiefHeight = 0.0, chiefSlope = 0.0;
   if (atInfinity) {
     if (!(std::abs(a) > 1e-12)) {
-      say(whyNot, "the entrance pupil is at infinity");
+      sayWhyNot(whyNot, "the entrance pupil is at infinity");
       return std::nullopt;
     }
     chiefSlope = 1.0;
@@ -121,9 +119,9 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
   const double nImage = surfaces.back().indexRear;
   const double uImage = marginal.back().slopeAfter;
   if (!(std::abs(uImage) > 1e-12) || !std::isfinite(uImage)) {
-    say(whyNot,
-        "the lens is afocal: its image lies at infinity, where third-order sums in this "
-        "form do not apply");
+    sayWhyNot(whyNot,
+              "the lens is afocal: its image lies at infinity, where third-order sums in this "
+              "form do not apply");
     return std::nullopt;
   }
   // Scale the chief ray so that its Gaussian image height H / (n' u') is fieldHeightMm.
@@ -131,7 +129,7 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
                                   chief.front().slopeBefore * marginal.front().heightMm);
   const double unitImageHeight = unitH / (nImage * uImage);
   if (!(std::abs(unitImageHeight) > 1e-15) || !std::isfinite(unitImageHeight)) {
-    say(whyNot, "the chief ray reaches no image height (the Lagrange invariant is zero)");
+    sayWhyNot(whyNot, "the chief ray reaches no image height (the Lagrange invariant is zero)");
     return std::nullopt;
   }
   const double scale = fieldHeightMm / unitImageHeight;

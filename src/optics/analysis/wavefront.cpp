@@ -6,15 +6,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "optics/analysis/why_not.h"
 #include "optics/unclipped_trace.h"
 
 namespace lenslab::optics {
 
 namespace {
-
-void say(std::string* whyNot, std::string text) {
-  if (whyNot) *whyNot = std::move(text);
-}
 
 // A ray's optical path from the object-space reference to the reference sphere, and where it
 // meets the sphere.
@@ -48,7 +45,7 @@ std::optional<double> toNearSide(const ReferenceSphere& sphere, const LensRay& r
 std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint& field,
                                         int samples, std::string* whyNot) {
   if (samples < 8 || samples % 2 != 0) {
-    say(whyNot, "the pupil grid needs an even number of samples, at least 8");
+    sayWhyNot(whyNot, "the pupil grid needs an even number of samples, at least 8");
     return std::nullopt;
   }
   Wavefront front;
@@ -60,7 +57,7 @@ std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint
   const LensRay chief = field.chiefRay();
   const auto chiefOut = traceFromSceneUnclipped(lens, chief, lens.surfaces().size() - 1);
   if (!chiefOut || !(chiefOut->direction.z < 0.0)) {
-    say(whyNot, "the chief ray does not reach the film");
+    sayWhyNot(whyNot, "the chief ray does not reach the film");
     return std::nullopt;
   }
   ReferenceSphere sphere;
@@ -73,7 +70,7 @@ std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint
       chiefOut->direction * ((pupilZMm - chiefOut->origin.z) / chiefOut->direction.z);
   sphere.radiusMm = glm::distance(chiefOnPupil, sphere.centreMm);
   if (!(sphere.radiusMm > 0.0) || !std::isfinite(sphere.radiusMm)) {
-    say(whyNot, "the exit pupil lies on the film, so there is no reference sphere");
+    sayWhyNot(whyNot, "the exit pupil lies on the film, so there is no reference sphere");
     return std::nullopt;
   }
   const glm::dvec3 chiefDirectionOnSphere = (chiefOnPupil - sphere.centreMm) / sphere.radiusMm;
@@ -133,7 +130,7 @@ std::optional<Wavefront> traceWavefront(const LensSystem& lens, const FieldPoint
     }
   }
   if (front.passedCount == 0) {
-    say(whyNot, "no ray of this field passes the lens");
+    sayWhyNot(whyNot, "no ray of this field passes the lens");
     return std::nullopt;
   }
   front.referenceCentreMm = sphere.centreMm;
