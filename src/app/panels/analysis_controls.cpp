@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/analysis/analysis_setup.h"
+#include "app/automation/item_rect.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
@@ -16,9 +17,7 @@ void drawAnalysisControls(ViewerState& state, const char* plotId) {
   if (ImGui::Button("Save plot...")) {
     state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, plotId});
   }
-  const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
-  state.uiRects[std::string(plotId) + "/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
-                                                  saveMax.y - saveMin.y};
+  recordItemRect(state, std::string(plotId) + "/save");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Save this plot as SVG, PNG (for slides) or CSV");
   // The fields, typed as fractions of the half diagonal; read on Enter or when the box is left.
   ImGui::SameLine();
@@ -34,8 +33,7 @@ void drawAnalysisControls(ViewerState& state, const char* plotId) {
       ImGui::InputText("##fields", state.fieldsText, sizeof state.fieldsText,
                        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   state.fieldsEditing = ImGui::IsItemActive();
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.uiRects[std::string(plotId) + "/fields"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+  recordItemRect(state, std::string(plotId) + "/fields");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Fields as fractions of the film's half diagonal: 0 is the axis, 1 the corner.\n"

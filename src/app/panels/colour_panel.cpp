@@ -8,6 +8,7 @@
 
 #include "app/analysis/colour_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/automation/item_rect.h"
 #include "app/drawing/cross_section_drawing.h"
 #include "app/drawing/im_colour.h"
 #include "app/panels/panel_window.h"
@@ -71,9 +72,7 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
     if (ImGui::Button("Save lateral colour...")) {
       state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, "lateral-colour"});
     }
-    const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
-    state.uiRects["lateral-colour/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
-                                            saveMax.y - saveMin.y};
+    recordItemRect(state, "lateral-colour/save");
     const auto result = latestColour(view);
     view.drawn.note(state.frameNumber, colourIsCurrent(view, request));
     if (request.lens && !colourIsCurrent(view, request)) {
@@ -90,8 +89,7 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
       ImGui::Spacing();
       const std::string sentence = std::string("No colour: ") + kNoDispersion + ".";
       ImGui::TextWrapped("%s", sentence.c_str());
-      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      state.uiRects["colour/no-dispersion"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+      recordItemRect(state, "colour/no-dispersion");
     } else if (result) {
       // Each field's lateral colour, in the colour of its fan in the cross-section.
       ImGui::TextDisabled("lateral colour (F - C):");

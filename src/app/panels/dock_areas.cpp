@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/automation/item_rect.h"
 #include "app/panels/panels.h"
 
 namespace lenslab::app {
@@ -46,8 +47,7 @@ const PanelSpec* drawTabStrip(ViewerState& state, DockArea area, const Rect& rec
       const bool select = wanted != state.tabsToSelect.end() && wanted->second == panel->id;
       const bool open =
           ImGui::BeginTabItem(panel->title, nullptr, select ? ImGuiTabItemFlags_SetSelected : 0);
-      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      state.uiRects[std::string("tab/") + panel->id] = {min.x, min.y, max.x - min.x, max.y - min.y};
+      recordItemRect(state, std::string("tab/") + panel->id);
       // A double-click on a bottom tab maximises the bottom area, or restores it.
       if (area == DockArea::Bottom && ImGui::IsItemHovered()) {
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {

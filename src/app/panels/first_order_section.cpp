@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "app/automation/item_rect.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
 #include "app/platform/ui_scale.h"
@@ -78,9 +79,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
                          "stop-diameter-drag");
       }
     }
-    const ImVec2 stopMin = ImGui::GetItemRectMin(), stopMax = ImGui::GetItemRectMax();
-    state.uiRects["first-order/stop-diameter"] = {stopMin.x, stopMin.y, stopMax.x - stopMin.x,
-                                                  stopMax.y - stopMin.y};
+    recordItemRect(state, "first-order/stop-diameter");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stop diameter (drag or type)");
     if (ImGui::IsItemDeactivatedAfterEdit()) state.lens.endMerge();
     state.dragging |= ImGui::IsItemActive();
@@ -90,8 +89,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
   const char* kFocusLabel = "Focus at";
   focusRow.next(ImGui::CalcTextSize(kFocusLabel).x + ImGui::GetStyle().FramePadding.x * 2);
   bool focus = ImGui::Button(kFocusLabel);
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.uiRects["first-order/focus"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+  recordItemRect(state, "first-order/focus");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Moves the film so that an object this far from the film is sharp\n"
@@ -115,9 +113,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
                                     sizeof state.focusDistanceText,
                                     ImGuiInputTextFlags_EnterReturnsTrue);
   state.focusFieldEditing = ImGui::IsItemActive();
-  const ImVec2 fieldMin = ImGui::GetItemRectMin(), fieldMax = ImGui::GetItemRectMax();
-  state.uiRects["first-order/focus-distance"] = {fieldMin.x, fieldMin.y, fieldMax.x - fieldMin.x,
-                                                 fieldMax.y - fieldMin.y};
+  recordItemRect(state, "first-order/focus-distance");
   if (ImGui::IsItemHovered() && state.nothingInFocus) {
     ImGui::SetTooltip(
         "Nothing is in focus at this film distance (see In focus below).\n"
@@ -150,9 +146,7 @@ void drawControls(ViewerState& state, const optics::LensSystem& lens) {
     ImGui::TextUnformatted(state.inFocusText.c_str());
   }
   ImGui::PopTextWrapPos();
-  const ImVec2 inFocusMin = ImGui::GetItemRectMin(), inFocusMax = ImGui::GetItemRectMax();
-  state.uiRects["first-order/in-focus"] = {inFocusMin.x, inFocusMin.y, inFocusMax.x - inFocusMin.x,
-                                           inFocusMax.y - inFocusMin.y};
+  recordItemRect(state, "first-order/in-focus");
   if (focus) {
     const optics::FocusResult result =
         optics::filmDistanceForObjectDistance(lens, state.focusDistanceInputMm);

@@ -5,6 +5,7 @@
 
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/automation/item_rect.h"
 #include "app/drawing/im_colour.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -119,9 +120,7 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
     if (ImGui::SmallButton("Save plot...")) {
       state.fileRequests.push_back({FileRequest::Kind::SavePlot, {}, "illumination"});
     }
-    const ImVec2 saveMin = ImGui::GetItemRectMin(), saveMax = ImGui::GetItemRectMax();
-    state.uiRects["illumination/save"] = {saveMin.x, saveMin.y, saveMax.x - saveMin.x,
-                                          saveMax.y - saveMin.y};
+    recordItemRect(state, "illumination/save");
     // The render's teaching toggles: the preview restarts without the factor switched off.
     ImGui::SameLine();
     ImGui::TextUnformatted("Render:");
@@ -145,8 +144,7 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
                              static_cast<float>(0.5 * state.filmDiagonalMm), "%.1f")) {
         state.filmPointHeightMm = height;
       }
-      const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-      state.uiRects["illumination/film-point"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+      recordItemRect(state, "illumination/film-point");
     }
     const auto result = view.job ? view.job->latest() : nullptr;
     const bool current = result && illuminationIsFor(*result, state.lensSystem,

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "app/automation/item_rect.h"
 #include "app/drawing/value_text.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -284,8 +285,7 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
       {
         // Every row's check box and cell, for the layout tests.
         const std::string widget = "lens-table/" + std::to_string(row + 1) + "/stop";
-        const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-        state.uiRects[widget] = {min.x, min.y, max.x - min.x, max.y - min.y};
+        recordItemRect(state, widget);
         state.uiRects[widget + "-cell"] = {cellMin.x, cellMin.y, cellMax.x - cellMin.x,
                                            cellMax.y - cellMin.y};
       }

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "app/automation/item_rect.h"
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
 #include "app/resources.h"
@@ -37,12 +38,9 @@ void fileMenu(ViewerState& state) {
     state.fileRequests.push_back({Kind::SaveLens, {}});
   ImGui::Separator();
   if (ImGui::MenuItem("Save window screenshot", "F12")) state.windowScreenshotRequested = true;
-  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.uiRects["menu/File/Save window screenshot"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+  recordItemRect(state, "menu/File/Save window screenshot");
   if (ImGui::MenuItem("Export render...")) state.exportDialog.openRequested = true;
-  const ImVec2 exportMin = ImGui::GetItemRectMin(), exportMax = ImGui::GetItemRectMax();
-  state.uiRects["menu/File/Export render"] = {exportMin.x, exportMin.y, exportMax.x - exportMin.x,
-                                              exportMax.y - exportMin.y};
+  recordItemRect(state, "menu/File/Export render");
   if (ImGui::MenuItem("Save preview as PNG or EXR...")) {
     state.fileRequests.push_back({Kind::SaveRender, {}});
   }
@@ -105,8 +103,7 @@ float drawMainMenu(ViewerState& state) {
   float height = 0;
   if (!ImGui::BeginMainMenuBar()) return height;
   const bool fileOpen = ImGui::BeginMenu("File");
-  const ImVec2 fileMin = ImGui::GetItemRectMin(), fileMax = ImGui::GetItemRectMax();
-  state.uiRects["menu/File"] = {fileMin.x, fileMin.y, fileMax.x - fileMin.x, fileMax.y - fileMin.y};
+  recordItemRect(state, "menu/File");
   if (fileOpen) {
     fileMenu(state);
     ImGui::EndMenu();

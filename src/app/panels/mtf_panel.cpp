@@ -5,6 +5,7 @@
 
 #include "app/analysis/mtf_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/automation/item_rect.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
@@ -47,8 +48,7 @@ void drawMtfPanel(ViewerState& state, const PanelPlace& place) {
     ImGui::SetNextItemWidth(px(110));
     const char* ranges[] = {"the cutoff", "400 /mm", "200 /mm", "100 /mm"};
     ImGui::Combo("##mtf-range", &view.rangeChoice, ranges, IM_ARRAYSIZE(ranges));
-    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    state.uiRects["mtf/range"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+    recordItemRect(state, "mtf/range");
     ImGui::SameLine();
     requestMtf(view, request);  // only while the panel shows: an MTF costs ~10 ms a lens
     const auto result = latestMtf(view);

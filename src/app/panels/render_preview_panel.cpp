@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/analysis/illumination_analysis.h"
+#include "app/automation/item_rect.h"
 #include "app/drawing/vignetting_overlay.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -38,10 +39,7 @@ void drawControls(ViewerState& state) {
   }
   row.next(WrapRow::checkboxWidth(autoLabel));
   ImGui::Checkbox(autoLabel, &state.settings.autoExposure);
-  {
-    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    state.uiRects["preview/auto-exposure"] = {min.x, min.y, max.x - min.x, max.y - min.y};
-  }
+  recordItemRect(state, "preview/auto-exposure");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Auto exposure: the brightest 1%% of the picture is shown near white.\n"
@@ -69,8 +67,7 @@ void drawControls(ViewerState& state) {
     row.next(comboWidth + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("Spectral").x);
     ImGui::SetNextItemWidth(comboWidth);
     if (ImGui::Combo("Spectral", &mode, kModes, 3)) state.falloff.spectral = kValues[mode];
-    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-    state.uiRects["preview/spectral"] = {min.x, min.y, max.x - min.x, max.y - min.y};
+    recordItemRect(state, "preview/spectral");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
           "Spectral rendering: each sample traces the lens at a wavelength of its own, so the\n"
