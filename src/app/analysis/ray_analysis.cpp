@@ -6,13 +6,12 @@
 #include <numbers>
 
 #include "app/drawing/cross_section_drawing.h"
+#include "common/units.h"
 #include "optics/glass.h"
 
 namespace lenslab::app {
 
 namespace {
-
-constexpr double kMicronsPerMm = 1000.0;
 
 std::uint32_t opaqueRgba(Colour c) {
   return (std::uint32_t{c.r} << 24) | (std::uint32_t{c.g} << 16) | (std::uint32_t{c.b} << 8) |

@@ -17,6 +17,7 @@
 
 #include "cli/json_numbers.h"
 #include "common/formatted.h"
+#include "common/units.h"
 #include "optics/analysis/field_point.h"
 #include "optics/lens_system.h"
 
@@ -53,8 +54,5 @@ struct AnalysisReport {
 // Every analysis, in the order the JSON and the summary list them.
 std::span<const AnalysisReport> analysisReports();
 const AnalysisReport* findAnalysisReport(std::string_view key);
-
-// The reports' spots and fans are in micrometres, the lens in millimetres.
-inline constexpr double kMicronsPerMm = 1000.0;
 
 }  // namespace lenslab::cli
