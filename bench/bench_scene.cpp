@@ -28,9 +28,11 @@ BenchScene loadBenchScene(const std::string& path, const render::BuildOptions& o
 
 render::RenderJob previewPassJob(const BenchScene& loaded,
                                  std::shared_ptr<const optics::LensSystem> lens, int width,
-                                 int height, int coarseDivisor) {
+                                 int height, int coarseDivisor, render::SpectralMode spectral) {
   render::RenderJob job;
-  job.camera = render::makeLensCamera(*loaded.description, std::move(lens), width, height);
+  render::FalloffToggles options;
+  options.spectral = spectral;
+  job.camera = render::makeLensCamera(*loaded.description, std::move(lens), width, height, options);
   job.scene = loaded.scene;
   job.settings.samplesPerPixel = 1;
   job.settings.integrator.kind = loaded.description->integrator.kind;

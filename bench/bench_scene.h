@@ -9,6 +9,7 @@
 #include "optics/lens_system.h"
 #include "render/progressive_renderer.h"
 #include "render/scene_builder.h"
+#include "render/spectral_mode.h"
 
 namespace lenslab::bench {
 
@@ -22,9 +23,11 @@ struct BenchScene {
 BenchScene loadBenchScene(const std::string& path, const render::BuildOptions& options = {});
 
 // One 1-spp pass of `loaded` through `lens` at width x height, as the viewer's preview renders
-// it: the scene's integrator, every core, low priority, the given coarse first look.
+// it: the scene's integrator, every core, low priority, the given coarse first look, spectral as
+// `spectral` says (the viewer's default is Auto: spectral through a lens with Abbe numbers).
 render::RenderJob previewPassJob(const BenchScene& loaded,
                                  std::shared_ptr<const optics::LensSystem> lens, int width,
-                                 int height, int coarseDivisor);
+                                 int height, int coarseDivisor,
+                                 render::SpectralMode spectral = render::SpectralMode::Auto);
 
 }  // namespace lenslab::bench

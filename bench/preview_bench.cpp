@@ -6,16 +6,24 @@
 // threads at low priority on a ProgressiveRenderer that lives across jobs, a coarse look at 1/4
 // resolution, then one sample per pixel. Wall time.
 //
-// BM_PreviewFirstPass/coarse:4: edit to the first full pass (table + coarse look + pass), as the
-// viewer renders it; coarse:1 without the coarse look.
+// BM_PreviewFirstPass/coarse:4/rgb:0: edit to the first full pass (table + coarse look + pass),
+// as the viewer renders it by default (spectral: the default lens has Abbe numbers); rgb:1 the
+// same with the viewer's Spectral set to off; coarse:1 without the coarse look. Counters, medians
+// over the iterations: table_ms and coarse_ms (from the job's start to the exit-pupil table's end
+// and to the coarse look's publication), pass_ms (to the pass's), and cpu_ms, the process's CPU
+// time per iteration (all threads): it hardly depends on what else the shared machine runs, so a
+// change to the work shows in it when the wall-clock figures swing.
 // BM_PreviewTable: the exit-pupil table of the edited lens alone (2 threads).
 // BM_PreviewPass/embree:0: the 1-spp pass alone (table built before, no coarse look);
 // embree:1 the same with the scene's ray queries through Embree's BVH instead of FlatPrimitives.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <ctime>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bench_scene.h"
 #include "optics/lens_system.h"
@@ -48,9 +56,24 @@ const DefaultScene& defaultScene(bool embree = false) {
 }
 
 render::RenderJob previewJob(const DefaultScene& loaded, std::shared_ptr<const LensSystem> lens,
-                             int coarseDivisor) {
+                             int coarseDivisor,
+                             render::SpectralMode spectral = render::SpectralMode::Auto) {
   return lenslab::bench::previewPassJob(loaded, std::move(lens), kPreviewWidth, kPreviewHeight,
-                                        coarseDivisor);
+                                        coarseDivisor, spectral);
+}
+
+// The process's CPU time, all threads, in milliseconds.
+double processCpuMs() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // The edit: alternately 0.2 mm behind and in front of the scene's film distance.
@@ -61,18 +84,29 @@ std::shared_ptr<const LensSystem> editedLens(const LensSystem& lens, std::int64_
 void BM_PreviewFirstPass(benchmark::State& state) {
   const DefaultScene& loaded = defaultScene();
   if (!loaded.scene) return state.SkipWithError("cannot load scenes/default.pbrt");
+  const auto spectral = state.range(1) ? render::SpectralMode::Off : render::SpectralMode::Auto;
   render::ProgressiveRenderer renderer;
   std::int64_t iteration = 0;
+  std::vector<double> tableMs, coarseMs, passMs, cpuMs;
   for (auto _ : state) {
+    const double cpuBefore = processCpuMs();
     const auto generation = renderer.start(previewJob(loaded, editedLens(*loaded.lens, iteration++),
-                                                      static_cast<int>(state.range(0))));
+                                                      static_cast<int>(state.range(0)), spectral));
     if (!renderer.waitForCompletion(generation, 60.0)) return state.SkipWithError("no pass");
+    cpuMs.push_back(processCpuMs() - cpuBefore);
+    const auto pass = renderer.snapshot();
+    tableMs.push_back(1e3 * pass->prepareSeconds);
+    coarseMs.push_back(1e3 * pass->coarseLookSeconds);
+    passMs.push_back(1e3 * pass->renderSeconds);
   }
+  state.counters["table_ms"] = median(tableMs);
+  state.counters["coarse_ms"] = median(coarseMs);
+  state.counters["pass_ms"] = median(passMs);
+  state.counters["cpu_ms"] = median(cpuMs);
 }
 BENCHMARK(BM_PreviewFirstPass)
-    ->Arg(kCoarseDivisor)
-    ->Arg(1)
-    ->ArgName("coarse")
+    ->ArgsProduct({{kCoarseDivisor, 1}, {0, 1}})
+    ->ArgNames({"coarse", "rgb"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -248,7 +248,9 @@ void PreviewController::showEncoded(PreviewState& preview, ViewerStats& stats) {
     coarseReported_ = true;
   }
   if (!snapshot.coarse && !firstPassReported_) {
-    stats.firstPassArrived(changeId_, 1000.0 * snapshot.renderSeconds);
+    stats.firstPassArrived(changeId_,
+                           {1000.0 * snapshot.renderSeconds, 1000.0 * snapshot.prepareSeconds,
+                            1000.0 * snapshot.coarseLookSeconds});
     firstPassReported_ = true;
   }
 }

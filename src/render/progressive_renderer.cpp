@@ -473,12 +473,12 @@ std::shared_ptr<RenderSnapshot> makeSnapshot(int width, int height, const std::v
 }
 
 // The coarse first look: the first wave's sample of each divisor x divisor block's centre pixel,
-// added to `sums` (the full image's) and published as an image of one pixel per block. False
-// when cancelled.
+// added to `sums` (the full image's) and published as an image of one pixel per block at
+// `coarseLookSeconds` after the job started. False when cancelled.
 bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
                       std::vector<double>& sums, SplatImage& splats, RenderStatistics& statistics,
-                      std::uint64_t generation, Clock::time_point started,
-                      const std::function<bool()>& cancelled,
+                      std::uint64_t generation, Clock::time_point started, double prepareSeconds,
+                      double& coarseLookSeconds, const std::function<bool()>& cancelled,
                       const std::function<void(std::shared_ptr<const RenderSnapshot>)>& publish) {
   wave.pixels = WavePixels::BlockCentres;
   const int divisor = wave.blockSize;
@@ -509,6 +509,8 @@ bool renderCoarseLook(tbb::task_arena& arena, const RenderJob& job, Wave wave,
   snapshot->fullHeight = wave.height;
   snapshot->statistics = statistics;
   snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+  snapshot->prepareSeconds = prepareSeconds;
+  snapshot->coarseLookSeconds = coarseLookSeconds = snapshot->renderSeconds;
   snapshot->camera = job.camera;
   publish(std::move(snapshot));
   return true;
@@ -522,6 +524,8 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
                  std::atomic<std::uint64_t>* pixelSamplesDone = nullptr) {
   const Clock::time_point started = Clock::now();
   job.camera->prepare();  // here, on the job's thread: not on a viewer's UI thread, not in a wave
+  const double prepareSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+  double coarseLookSeconds = 0.0;
   const int width = job.camera->width();
   const int height = job.camera->height();
   Wave wave;
@@ -551,7 +555,7 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     if (index == 0 && job.settings.coarseDivisor > 1) {
       wave.blockSize = job.settings.coarseDivisor;
       if (!renderCoarseLook(arena, job, wave, sums, splats, coarseStatistics, generation, started,
-                            cancelled, publish)) {
+                            prepareSeconds, coarseLookSeconds, cancelled, publish)) {
         return;
       }
       wave.pixels = WavePixels::AllButBlockCentres;
@@ -569,6 +573,8 @@ void renderWaves(tbb::task_arena& arena, const RenderJob& job, std::uint64_t gen
     snapshot->statistics.lensPassed += coarseStatistics.lensPassed;
     snapshot->statistics.discardedSamples += coarseStatistics.discardedSamples;
     snapshot->renderSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+    snapshot->prepareSeconds = prepareSeconds;
+    snapshot->coarseLookSeconds = coarseLookSeconds;
     snapshot->camera = job.camera;
     publish(std::move(snapshot));
   }

@@ -70,6 +70,11 @@ struct RenderSnapshot {
   int fullWidth = 0;
   int fullHeight = 0;
   double renderSeconds = 0.0;
+  // Where the job's first seconds went, from its start: the camera's preparation (the exit-pupil
+  // table: the one part no wave can start before) and the coarse look's publication (0 without
+  // one). For the viewer's and the benchmarks' stage timings.
+  double prepareSeconds = 0.0;
+  double coarseLookSeconds = 0.0;
   RenderStatistics statistics;
   // The job's camera, whose rays made these pixels: a viewer checks that what it shows under a
   // generation was rendered through the lens it asked for then (the edit-storm test).

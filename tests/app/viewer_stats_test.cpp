@@ -80,14 +80,16 @@ TEST(ViewerStats, FirstPassLatencyIsMeasuredFromTheLastEditOfItsGeneration) {
   ViewerStats::Clock::time_point t{};
   stats.editSubmitted(1, t);
   stats.editSubmitted(2, t += 20ms);
-  stats.firstPassArrived(1, 3.0);  // stale generation: ignored
+  stats.firstPassArrived(1, {3.0});  // stale generation: ignored
   stats.framePresented(t += 5ms);
-  stats.firstPassArrived(2, 31.0);
+  stats.firstPassArrived(2, {31.0, 6.0, 12.0});
   stats.framePresented(t += 40ms);
   const auto summary = stats.summary();
   EXPECT_EQ(summary.edits, 1u);
   EXPECT_NEAR(summary.firstPassMsMedian, 45.0, 1e-9);
   EXPECT_NEAR(summary.firstPassRenderMsMedian, 31.0, 1e-9);  // the renderer's part of it
+  EXPECT_NEAR(summary.firstPassTableMsMedian, 6.0, 1e-9);    // and its stages
+  EXPECT_NEAR(summary.firstPassCoarseLookMsMedian, 12.0, 1e-9);
 }
 
 // The wait ends when the frame that shows the pass is on screen, not when the UI took it up:
@@ -97,7 +99,7 @@ TEST(ViewerStats, TheWaitIncludesDrawingTheFrameThatShowsThePass) {
   ViewerStats::Clock::time_point t{};
   stats.editSubmitted(3, t);
   t += 100ms;
-  stats.firstPassArrived(3, 95.0);
+  stats.firstPassArrived(3, {95.0});
   stats.framePresented(t += 30ms);  // the frame took 30 ms to draw
   EXPECT_NEAR(stats.summary().firstPassMsMedian, 130.0, 1e-9);
   stats.framePresented(t += 16ms);  // later frames change nothing
@@ -109,11 +111,11 @@ TEST(ViewerStats, AnEditInTheSameFrameSupersedesTheArrivedPass) {
   ViewerStats stats;
   ViewerStats::Clock::time_point t{};
   stats.editSubmitted(4, t);
-  stats.firstPassArrived(4, 50.0);
+  stats.firstPassArrived(4, {50.0});
   stats.editSubmitted(5, t += 10ms);
   stats.framePresented(t += 10ms);
   EXPECT_EQ(stats.summary().edits, 0u);
-  stats.firstPassArrived(5, 60.0);
+  stats.firstPassArrived(5, {60.0});
   stats.framePresented(t += 70ms);
   EXPECT_EQ(stats.summary().edits, 1u);
   EXPECT_NEAR(stats.summary().firstPassMsMedian, 80.0, 1e-9);
@@ -127,7 +129,7 @@ TEST(ViewerStats, TheCoarseFirstLookIsMeasuredSeparately) {
   stats.framePresented(t += 12ms);
   stats.firstPictureArrived(7);  // a later coarse image of the same change: not counted
   stats.framePresented(t += 5ms);
-  stats.firstPassArrived(7, 70.0);
+  stats.firstPassArrived(7, {70.0});
   stats.framePresented(t += 80ms);
   const auto summary = stats.summary();
   EXPECT_EQ(summary.pictures, 1u);
@@ -144,12 +146,12 @@ TEST(ViewerStats, TheOpeningRenderIsNotAnEdit) {
   stats.openingSubmitted(1, t);
   stats.firstPictureArrived(1);
   stats.framePresented(t += 30ms);
-  stats.firstPassArrived(1, 120.0);
+  stats.firstPassArrived(1, {120.0});
   stats.framePresented(t += 110ms);
   stats.editSubmitted(2, t += 1s);
   stats.firstPictureArrived(2);
   stats.framePresented(t += 20ms);
-  stats.firstPassArrived(2, 60.0);
+  stats.firstPassArrived(2, {60.0});
   stats.framePresented(t += 50ms);
   const auto summary = stats.summary();
   ASSERT_TRUE(summary.openingFirstPassMs.has_value());

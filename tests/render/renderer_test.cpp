@@ -259,6 +259,7 @@ class RecordingCamera final : public Camera {
     preparedOn_ = std::this_thread::get_id();
     preparedBeforeAnyRay_ = rays_ == 0;
     inner_->prepare();
+    std::this_thread::sleep_for(prepareDelay_);
   }
   bool generateRay(glm::vec2 rasterPoint, glm::vec2 lensSample, CameraRay& ray) const override {
     std::lock_guard lock(mutex_);
@@ -277,6 +278,8 @@ class RecordingCamera final : public Camera {
     std::lock_guard lock(mutex_);
     return preparedBeforeAnyRay_;
   }
+  // Makes prepare() take at least this long (a stand-in for a slow exit-pupil table).
+  void setPrepareDelay(std::chrono::milliseconds delay) { prepareDelay_ = delay; }
 
  private:
   std::shared_ptr<const Camera> inner_;
@@ -284,6 +287,7 @@ class RecordingCamera final : public Camera {
   mutable std::thread::id preparedOn_;
   mutable bool preparedBeforeAnyRay_ = false;
   mutable long rays_ = 0;
+  std::chrono::milliseconds prepareDelay_{0};
 };
 
 // The camera's one-time work (a lens's exit-pupil table, milliseconds per edit) runs on the
@@ -301,6 +305,35 @@ TEST(Renderer, PreparesTheCameraOnItsOwnThreadBeforeTheFirstRay) {
   EXPECT_NE(camera->preparedOn(), std::thread::id());
   EXPECT_NE(camera->preparedOn(), std::this_thread::get_id());
   EXPECT_TRUE(camera->preparedBeforeAnyRay());
+}
+
+// Every snapshot says where its job's first seconds went: the camera's preparation, then the
+// coarse look, then the pass (the viewer's and the benchmarks' stage timings).
+TEST(Renderer, SnapshotsTimeThePreparationAndTheCoarseLook) {
+  const auto directory = lenslab::testing::makeTestDirectory("stages");
+  RenderJob job = loadJob(writeSmallScene(directory), 1);
+  ASSERT_TRUE(job.camera && job.scene);
+  const auto camera = std::make_shared<RecordingCamera>(job.camera);
+  camera->setPrepareDelay(std::chrono::milliseconds(40));
+  job.camera = camera;
+  job.settings.coarseDivisor = 4;
+  const auto published = publishedSnapshots(job, 20.0);
+  ASSERT_TRUE(published);
+  ASSERT_EQ(published->size(), 2u);  // the coarse look, then the pass
+  const RenderSnapshot& coarse = *(*published)[0];
+  const RenderSnapshot& pass = *(*published)[1];
+  EXPECT_GE(coarse.prepareSeconds, 0.040);
+  EXPECT_EQ(pass.prepareSeconds, coarse.prepareSeconds);
+  EXPECT_EQ(coarse.coarseLookSeconds, coarse.renderSeconds);
+  EXPECT_EQ(pass.coarseLookSeconds, coarse.coarseLookSeconds);
+  EXPECT_GT(coarse.coarseLookSeconds, coarse.prepareSeconds);
+  EXPECT_GT(pass.renderSeconds, pass.coarseLookSeconds);
+  // Without a coarse look there is no time for it.
+  job.settings.coarseDivisor = 1;
+  const auto plain = renderToCompletion(job);
+  ASSERT_TRUE(plain);
+  EXPECT_EQ(plain->coarseLookSeconds, 0.0);
+  EXPECT_GE(plain->prepareSeconds, 0.040);
 }
 
 }  // namespace

@@ -94,9 +94,9 @@ void ViewerStats::firstPictureArrived(std::uint64_t change) {
   pictureArrived_ = change;
 }
 
-void ViewerStats::firstPassArrived(std::uint64_t change, double renderMs) {
+void ViewerStats::firstPassArrived(std::uint64_t change, const RenderStages& stages) {
   if (!pendingEdit_ || pendingEdit_->first != change) return;
-  passArrived_ = {change, renderMs};
+  passArrived_ = {change, stages};
 }
 
 void ViewerStats::previewShown(std::size_t nonFiniteValues, bool cameraMatches) {
@@ -121,7 +121,9 @@ void ViewerStats::framePresented(Clock::time_point now) {
       openingFirstPassMs_ = waitedMs;
     } else {
       firstPassMs_.push_back(waitedMs);
-      firstPassRenderMs_.push_back(passArrived_->second);
+      firstPassRenderMs_.push_back(passArrived_->second.renderMs);
+      firstPassPrepareMs_.push_back(passArrived_->second.prepareMs);
+      firstPassCoarseLookMs_.push_back(passArrived_->second.coarseLookMs);
     }
     pendingEdit_.reset();
   }
@@ -152,6 +154,8 @@ ViewerStats::Summary ViewerStats::summary() const {
   summary.firstPassMsMax =
       firstPassMs_.empty() ? 0 : *std::max_element(firstPassMs_.begin(), firstPassMs_.end());
   summary.firstPassRenderMsMedian = percentile(firstPassRenderMs_, 0.5);
+  summary.firstPassTableMsMedian = percentile(firstPassPrepareMs_, 0.5);
+  summary.firstPassCoarseLookMsMedian = percentile(firstPassCoarseLookMs_, 0.5);
   summary.pictures = firstPictureMs_.size();
   summary.firstPictureMsMedian = percentile(firstPictureMs_, 0.5);
   summary.firstPictureMsMax =
@@ -213,6 +217,10 @@ std::string ViewerStats::writeJson(const std::filesystem::path& path) const {
       // the pass itself).
       {"first_pass_render_ms_median", s.firstPassRenderMsMedian},
       {"first_pass_render_ms", firstPassRenderMs_},
+      // Within it, from the job's start: the exit-pupil table ready, and the coarse look
+      // published.
+      {"first_pass_table_ms_median", s.firstPassTableMsMedian},
+      {"first_pass_coarse_look_ms_median", s.firstPassCoarseLookMsMedian},
       // The coarse first look (a quarter of the preview resolution per axis).
       {"edit_to_first_picture_ms_median", s.firstPictureMsMedian},
       {"edit_to_first_picture_ms_max", s.firstPictureMsMax},

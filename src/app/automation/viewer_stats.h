@@ -57,10 +57,18 @@ class ViewerStats {
   void openingSubmitted(std::uint64_t change, Clock::time_point now);
   // The UI took up the change's coarse first look (reduced resolution): this frame shows it.
   void firstPictureArrived(std::uint64_t change);
+  // The renderer's part of a first pass, from the job's start: to the pass's publication
+  // (`renderMs`; the rest of the wait is the UI's: the frames before it took the pass up, and this
+  // one), to the end of the camera's preparation (the exit-pupil table), and to the coarse look's
+  // publication (0 without one).
+  struct RenderStages {
+    double renderMs = 0.0;
+    double prepareMs = 0.0;
+    double coarseLookMs = 0.0;
+  };
   // The UI took up the change's first complete pass at the preview resolution: this frame shows
-  // it. `renderMs`: what of the wait the renderer took, from the job's start to the pass's
-  // publication (the rest is the UI's: the frames before it took the pass up, and this one).
-  void firstPassArrived(std::uint64_t change, double renderMs);
+  // it.
+  void firstPassArrived(std::uint64_t change, const RenderStages& stages);
   // A preview image went to the screen: `nonFiniteValues` NaN or inf among its linear pixels, and
   // whether the camera it was rendered with is the one its generation's job was started with
   // (a generation too old to be remembered counts as matching).
@@ -78,6 +86,8 @@ class ViewerStats {
     double repaintedFractionMedian = 0;  // of the window, over rasterized frames
     std::size_t edits = 0;
     double firstPassMsMedian = 0, firstPassMsMax = 0, firstPassRenderMsMedian = 0;
+    double firstPassTableMsMedian = 0;       // of that, to the exit-pupil table's end
+    double firstPassCoarseLookMsMedian = 0;  // and to the coarse look's publication
     std::size_t pictures = 0;
     double firstPictureMsMedian = 0, firstPictureMsMax = 0;
     std::optional<double> openingFirstPassMs;  // from openingSubmitted to its first pass on screen
@@ -109,9 +119,10 @@ class ViewerStats {
   bool pendingIsOpening_ = false;  // pendingEdit_ is the opening's render, not an edit
   std::optional<double> openingFirstPassMs_;
   bool pictureMeasured_ = false;
-  std::optional<std::uint64_t> pictureArrived_;                  // change, awaiting its frame
-  std::optional<std::pair<std::uint64_t, double>> passArrived_;  // change, render ms
+  std::optional<std::uint64_t> pictureArrived_;                        // change, awaiting its frame
+  std::optional<std::pair<std::uint64_t, RenderStages>> passArrived_;  // change, its stages
   std::vector<double> firstPassMs_, firstPassRenderMs_, firstPictureMs_;
+  std::vector<double> firstPassPrepareMs_, firstPassCoarseLookMs_;
 };
 
 }  // namespace lenslab::app
