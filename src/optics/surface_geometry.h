@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "optics/aspheric_profile.h"
+
 namespace lenslab::optics {
 
 // One surface placed in the lens frame (film at z = 0, lens at z > 0), at one wavelength.
@@ -20,6 +22,9 @@ struct SurfaceGeometry {
   double indexFront = 1.0;  // medium on the object side (+z) of this surface
   double indexRear = 1.0;   // medium on the film side (-z)
   bool isStop = false;
+  // Conic and polynomial terms beyond the vertex curvature (aspheric_profile.h); a sphere without
+  // them keeps the closed form below.
+  AsphericProfile profile;
 };
 
 // Intersection of a ray with the surface's cap around its vertex.
@@ -34,6 +39,8 @@ struct SurfaceGeometry {
 // of the origin is the hit. Returns false if the ray misses the sphere or the cap.
 inline bool intersectSurface(const SurfaceGeometry& s, const glm::dvec3& origin,
                              const glm::dvec3& direction, double& tOut) {
+  if (!s.profile.isSphere())
+    return intersectAspheric(s.vertexZMm, s.curvaturePerMm, s.profile, origin, direction, tOut);
   const double c = s.curvaturePerMm;
   const glm::dvec3 o{origin.x, origin.y, origin.z - s.vertexZMm};
   const double b = c * glm::dot(o, direction) + direction.z;
@@ -53,8 +60,9 @@ inline bool intersectSurface(const SurfaceGeometry& s, const glm::dvec3& origin,
 }
 
 // Unit surface normal at a point p on the surface (lens frame), pointing toward +z at the vertex:
-// grad F / 2 = (c x, c y, c z + 1), whose length is exactly 1 on the sphere.
+// for the sphere grad F / 2 = (c x, c y, c z + 1), whose length is exactly 1 on it.
 inline glm::dvec3 surfaceNormal(const SurfaceGeometry& s, const glm::dvec3& p) {
+  if (!s.profile.isSphere()) return asphericNormal(s.vertexZMm, s.curvaturePerMm, s.profile, p);
   const double c = s.curvaturePerMm;
   return {c * p.x, c * p.y, c * (p.z - s.vertexZMm) + 1.0};
 }
