@@ -31,6 +31,12 @@ struct SurfaceF {
   // scene, the surface's front and rear media swapped). `disperses` when either has b != 0.
   float aRear = 1.0f, bRear = 0.0f, aFront = 1.0f, bFront = 0.0f;
   bool disperses = false;
+  // An aspheric surface (aspheric_profile.h) takes traceAspheric: 1 + k, and the terms A_i up to
+  // the highest nonzero power (0: a conic without terms).
+  bool aspheric = false;
+  float conic1 = 1.0f;
+  int highestPower = 0;
+  float coefficient[AsphericProfile::kMaxPower + 1] = {};
 };
 
 // A shaped stop, after the stop surface's own trace has put the hits in ox, oy: a pass over the
@@ -169,6 +175,132 @@ __attribute__((always_inline)) inline void traceSurface(
   }
 }
 
+// Newton steps of the float kernel for a surface with polynomial terms, from the conic's hit: the
+// scalar trace's iteration (aspheric_profile.cpp) needs 3 to 6 to reach double precision; float's
+// is reached in as many, and a fixed count keeps the loop free of branches.
+constexpr int kFloatNewtonSteps = 4;
+
+// An aspheric surface (aspheric_profile.h) in single precision: the conic's hit in closed form
+// (as traceSurface's sphere, with a = c (ux^2 + uy^2 + (1 + k) uz^2)), then, with polynomial
+// terms, Newton's method on z + S(r) = 0 from it (or from the vertex plane). A ray whose last
+// step is not below 1e-4 mm, or that ends where the sag is not real, is blocked.
+// kTop: the terms are evaluated from r^kTop down (0: a conic without terms), a count fixed at
+// compile time, so that the loops unroll and the loop over the rays vectorizes (the surface's own
+// highest power may be lower: the coefficients above it are zero); kAnyTop: from the surface's
+// own highest power, in a loop that does not vectorize (terms beyond r^10, which few lenses have:
+// unrolled to r^20 as well, this file took three times as long to compile).
+constexpr int kAnyTop = -1;
+template <int kTop, bool kRefracts, bool kPerRay = false>
+__attribute__((always_inline)) inline void traceAspheric(
+    const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
+    float* __restrict dx, float* __restrict dy, float* __restrict dz,
+    std::uint8_t* __restrict alive, std::size_t n, const float* __restrict w = nullptr) {
+  const float c = s.curvature, k1 = s.conic1, zv = s.vertexZ, semiSq = s.semiApertureSq,
+              fixedEta = s.eta;
+  const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
+  const float* __restrict coefficient = s.coefficient;
+  for (std::size_t i = 0; i < n; ++i) {
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
+    const float px = ox[i], py = oy[i], pz = oz[i] - zv;
+    const float ux = dx[i], uy = dy[i], uz = dz[i];
+    const float a = c * (ux * ux + uy * uy + k1 * uz * uz);
+    const float b = c * (px * ux + py * uy + k1 * pz * uz) + uz;
+    const float cc = c * (px * px + py * py + k1 * pz * pz) + 2.0f * pz;
+    const float disc = b * b - a * cc;
+    const float root = std::sqrt(disc > 0.0f ? disc : 0.0f);
+    const float q = b >= 0.0f ? -b - root : -b + root;
+    const float t1 = cc / q, t2 = q / a;
+    const bool ok1 = (t1 > 0.0f) & (1.0f + c * k1 * (pz + t1 * uz) >= 0.0f);
+    const bool ok2 = (t2 > 0.0f) & (1.0f + c * k1 * (pz + t2 * uz) >= 0.0f);
+    float t = ok1 & ok2 ? (t1 < t2 ? t1 : t2) : (ok1 ? t1 : t2);
+    int ok = (disc >= 0.0f) & (ok1 | ok2);
+    float slope = 0.0f;  // S'(r) at the hit, for the normal (terms only)
+    if constexpr (kTop != 0) {
+      const int top = kTop == kAnyTop ? s.highestPower : kTop;
+      t = ok ? t : -pz / uz;  // else from the vertex plane
+      float step = 0.0f, rootS = 1.0f;
+#pragma GCC unroll 4
+      for (int it = 0; it < kFloatNewtonSteps; ++it) {
+        const float x = px + t * ux, y = py + t * uy, z = pz + t * uz;
+        const float r2 = x * x + y * y, r = std::sqrt(r2);
+        rootS = 1.0f - k1 * c * c * r2;
+        const float sq = std::sqrt(rootS > 0.0f ? rootS : 0.0f);
+        float value = 0.0f, derivative = 0.0f;
+#pragma GCC unroll 10
+        for (int power = top; power >= AsphericProfile::kMinPower; --power) {
+          value = value * r + coefficient[power];
+          derivative = derivative * r + static_cast<float>(power) * coefficient[power];
+        }
+        const float sag = c * r2 / (1.0f + sq) + value * r2;
+        slope = c * r / (sq > 1e-20f ? sq : 1e-20f) + derivative * r;
+        const float drdt = r > 0.0f ? (x * ux + y * uy) / r : 0.0f;
+        step = (z + sag) / (uz + slope * drdt);
+        t -= step;
+      }
+      // The last step's size, and the sag at the point (the last iteration's, one step away).
+      ok = (std::abs(step) <= 1e-4f * (1.0f + std::abs(t))) & (rootS >= 0.0f) & (t > 0.0f);
+    }
+    const float hx = px + t * ux, hy = py + t * uy, hz = pz + t * uz;
+    ok &= hx * hx + hy * hy <= semiSq;
+    float nx = ux, ny = uy, nz = uz;
+    if constexpr (kRefracts) {
+      float mx, my, mz;
+      if constexpr (kTop != 0) {
+        const float r = std::sqrt(hx * hx + hy * hy);
+        const float along = r > 0.0f ? slope / r : 0.0f;
+        mx = along * hx;
+        my = along * hy;
+        mz = 1.0f;
+      } else {
+        mx = c * hx;
+        my = c * hy;
+        mz = c * k1 * hz + 1.0f;
+      }
+      const float invLength = 1.0f / std::sqrt(mx * mx + my * my + mz * mz);
+      mx *= invLength;
+      my *= invLength;
+      mz *= invLength;
+      float cosI = -(mx * ux + my * uy + mz * uz);
+      const float flip = cosI < 0.0f ? -1.0f : 1.0f;
+      mx *= flip;
+      my *= flip;
+      mz *= flip;
+      cosI *= flip;
+      const float k = 1.0f - eta * eta * (1.0f - cosI * cosI);
+      ok &= k >= 0.0f;
+      const float scale = eta * cosI - std::sqrt(k > 0.0f ? k : 0.0f);
+      nx = eta * ux + scale * mx;
+      ny = eta * uy + scale * my;
+      nz = eta * uz + scale * mz;
+    }
+    // (A blocked ray may carry NaN; alive says it is blocked. x - x is 0 unless x is infinite or
+    // NaN: a test that vectorizes, where std::isfinite does not.)
+    ok &= (hx - hx == 0.0f) & (hy - hy == 0.0f) & (hz - hz == 0.0f);
+    ox[i] = hx;
+    oy[i] = hy;
+    oz[i] = hz + zv;
+    dx[i] = nx;
+    dy[i] = ny;
+    dz[i] = nz;
+    alive[i] = alive[i] & static_cast<std::uint8_t>(ok);
+  }
+}
+
+// An aspheric surface's kernel for its terms up to r^kTop (kAnyTop: its own): with a wavelength per
+// ray (`w`, on a dispersive surface), refracting, or not (the stop).
+template <int kTop>
+__attribute__((always_inline)) inline void traceAsphericOf(
+    const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
+    float* __restrict dx, float* __restrict dy, float* __restrict dz,
+    std::uint8_t* __restrict alive, std::size_t n, const float* __restrict w) {
+  if (w && s.disperses)
+    traceAspheric<kTop, true, true>(s, ox, oy, oz, dx, dy, dz, alive, n, w);
+  else if (s.refracts)
+    traceAspheric<kTop, true>(s, ox, oy, oz, dx, dy, dz, alive, n);
+  else
+    traceAspheric<kTop, false>(s, ox, oy, oz, dx, dy, dz, alive, n);
+}
+
 // `invWavelengthSq`: null for the surfaces' own indices (the RGB trace, unchanged), else
 // 1 / lambda^2 of each ray (the spectral trace: dispersive surfaces take their per-ray kernel).
 __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, int count,
@@ -189,7 +321,14 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
     const float* w = invWavelengthSq ? invWavelengthSq + start : nullptr;
     for (int k = 0; k < count; ++k) {
       const SurfaceF& s = surfaces[k];
-      if (w && s.disperses) {
+      if (s.aspheric) {
+        if (s.highestPower == 0)
+          traceAsphericOf<0>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+        else if (s.highestPower <= 10)
+          traceAsphericOf<10>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+        else
+          traceAsphericOf<kAnyTop>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+      } else if (w && s.disperses) {
         if (s.flat)
           traceFlat<true, true>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
         else
@@ -312,6 +451,15 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, Ba
         eta != 1.0,
         flat,
         k == static_cast<int>(stopIndex_) && !stopTest_.isCircle() ? &stopTest_ : nullptr};
+    // A conic on a flat base is still the plane; terms are not.
+    if (s.profile.hasPolynomial() || (s.profile.conic() != 0.0 && !flat)) {
+      SurfaceF& f = list[step];
+      f.aspheric = true;
+      f.conic1 = static_cast<float>(1.0 + s.profile.conic());
+      f.highestPower = s.profile.highestPower();
+      for (int power = AsphericProfile::kMinPower; power <= f.highestPower; ++power)
+        f.coefficient[power] = static_cast<float>(s.profile.coefficient(power));
+    }
     if (invWavelengthSq) {
       // SurfaceF's "rear" is the medium the ray comes from, its "front" the one it enters.
       const CauchyCoefficients& rear = glassRear_[k];

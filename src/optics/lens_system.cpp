@@ -88,6 +88,7 @@ void LensSystem::place() {
     SurfaceGeometry& s = surfaces_[k];
     s.vertexZMm = z;
     s.curvaturePerMm = rows[k].curvaturePerMm();
+    s.profile = rows[k].isStop() ? AsphericProfile{} : rows[k].profile;
     s.semiApertureMm = 0.5 * rows[k].apertureDiameterMm;
     s.isStop = rows[k].isStop();
     s.indexRear = refractiveIndex(rows[k].mediumIndexD(), rows[k].abbeD, wavelengthNm_);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "optics/aperture_shape.h"
+#include "optics/aspheric_profile.h"
 
 namespace lenslab::optics {
 
@@ -39,6 +40,12 @@ struct Surface {
   // Abbe number of that medium, when known; empty means non-dispersive.
   std::optional<double> abbeD;
   double apertureDiameterMm = 0.0;
+  // Conic constant and polynomial terms beyond the vertex curvature (aspheric_profile.h); the
+  // sphere by default. Issue 40 is bringing them through lenslab a part at a time: today the
+  // exact traces (scalar and batch) and the exit-pupil tables follow them; the paraxial data,
+  // the Seidel sums, validation, the outline, flip and scale, and every file format do not yet,
+  // and nothing builds a lens with them outside the tests.
+  AsphericProfile profile = {};
 
   bool isStop() const { return radiusMm == 0.0; }
   bool isFlat() const { return std::isinf(radiusMm); }
