@@ -123,6 +123,25 @@ __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* _
   }
 }
 
+// Snell's law in vector form (as surface_geometry.h's refract) for unit normal m and direction
+// u: the refracted direction in n; 0 on total internal reflection. Without branches.
+__attribute__((always_inline)) inline int refractF(float mx, float my, float mz, float ux, float uy,
+                                                   float uz, float eta, float& nx, float& ny,
+                                                   float& nz) {
+  float cosI = -(mx * ux + my * uy + mz * uz);
+  const float flip = cosI < 0.0f ? -1.0f : 1.0f;
+  mx *= flip;
+  my *= flip;
+  mz *= flip;
+  cosI *= flip;
+  const float k = 1.0f - eta * eta * (1.0f - cosI * cosI);
+  const float scale = eta * cosI - std::sqrt(k > 0.0f ? k : 0.0f);
+  nx = eta * ux + scale * mx;
+  ny = eta * uy + scale * my;
+  nz = eta * uz + scale * mz;
+  return k >= 0.0f;
+}
+
 template <bool kRefracts, bool kPerRay = false>
 __attribute__((always_inline)) inline void traceSurface(
     const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
@@ -150,21 +169,8 @@ __attribute__((always_inline)) inline void traceSurface(
     // Bitwise & rather than && keeps the loop free of branches.
     int ok = (disc >= 0.0f) & (ok1 | ok2) & (hx * hx + hy * hy <= semiSq);
     float nx = ux, ny = uy, nz = uz;
-    if constexpr (kRefracts) {
-      float mx = c * hx, my = c * hy, mz = c * hz + 1.0f;
-      float cosI = -(mx * ux + my * uy + mz * uz);
-      const float flip = cosI < 0.0f ? -1.0f : 1.0f;
-      mx *= flip;
-      my *= flip;
-      mz *= flip;
-      cosI *= flip;
-      const float k = 1.0f - eta * eta * (1.0f - cosI * cosI);
-      ok &= k >= 0.0f;
-      const float scale = eta * cosI - std::sqrt(k > 0.0f ? k : 0.0f);
-      nx = eta * ux + scale * mx;
-      ny = eta * uy + scale * my;
-      nz = eta * uz + scale * mz;
-    }
+    if constexpr (kRefracts)
+      ok &= refractF(c * hx, c * hy, c * hz + 1.0f, ux, uy, uz, eta, nx, ny, nz);
     ox[i] = hx;
     oy[i] = hy;
     oz[i] = hz + zv;
@@ -258,21 +264,7 @@ __attribute__((always_inline)) inline void traceAspheric(
         mz = c * k1 * hz + 1.0f;
       }
       const float invLength = 1.0f / std::sqrt(mx * mx + my * my + mz * mz);
-      mx *= invLength;
-      my *= invLength;
-      mz *= invLength;
-      float cosI = -(mx * ux + my * uy + mz * uz);
-      const float flip = cosI < 0.0f ? -1.0f : 1.0f;
-      mx *= flip;
-      my *= flip;
-      mz *= flip;
-      cosI *= flip;
-      const float k = 1.0f - eta * eta * (1.0f - cosI * cosI);
-      ok &= k >= 0.0f;
-      const float scale = eta * cosI - std::sqrt(k > 0.0f ? k : 0.0f);
-      nx = eta * ux + scale * mx;
-      ny = eta * uy + scale * my;
-      nz = eta * uz + scale * mz;
+      ok &= refractF(mx * invLength, my * invLength, mz * invLength, ux, uy, uz, eta, nx, ny, nz);
     }
     // (A blocked ray may carry NaN; alive says it is blocked. x - x is 0 unless x is infinite or
     // NaN: a test that vectorizes, where std::isfinite does not.)
