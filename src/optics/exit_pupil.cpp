@@ -559,7 +559,8 @@ ExitPupilTable::ExitPupilTable(const LensSystem& lens, int radialBins, int threa
   radialBins_ = radialBins;
   binScale_ = radialBins - 1;
 
-  // Raw bins, cell by cell; the work is split over the threads bin by bin.
+  // Raw bins, cell by cell. (Each run of bins is measured in order by one thread, so the table
+  // does not depend on which thread took which run.)
   const int binCount = cells_ * radialBins;
   // The threads take runs of kRun neighbouring bins in turn and measure each run in order, each
   // bin from the guesses the one before it gives (measure()'s `previous`).
