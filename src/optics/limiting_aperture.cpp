@@ -33,7 +33,7 @@ std::optional<ParaxialAxialLimit> paraxialLimit(const LensSystem& lens, double o
         limiting = k;
       }
     }
-    w -= (s.indexRear - s.indexFront) * s.curvaturePerMm * y;
+    w -= (s.indexRear - s.indexFront) * s.paraxialCurvaturePerMm() * y;
   }
   if (!std::isfinite(smallestRatio) || !(smallestRatio > 0.0)) return std::nullopt;
   ParaxialAxialLimit out;

@@ -20,7 +20,7 @@ struct Matrix {
 };
 
 Matrix refraction(const SurfaceGeometry& s) {
-  return {1, 0, -(s.indexRear - s.indexFront) * s.curvaturePerMm, 1};
+  return {1, 0, -(s.indexRear - s.indexFront) * s.paraxialCurvaturePerMm(), 1};
 }
 
 // Surfaces [first, last] with the gaps between them (light going front to rear).

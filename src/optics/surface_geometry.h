@@ -25,6 +25,11 @@ struct SurfaceGeometry {
   // Conic and polynomial terms beyond the vertex curvature (aspheric_profile.h); a sphere without
   // them keeps the closed form below.
   AsphericProfile profile;
+
+  // The curvature that paraxial optics sees: the vertex curvature plus what an r^2 term adds,
+  // since S(r) = (c / 2 + A_2) r^2 + O(r^4) near the axis. The conic and the higher terms change
+  // only the r^4 and higher terms, so they leave it alone.
+  double paraxialCurvaturePerMm() const { return curvaturePerMm + 2.0 * profile.coefficient(2); }
 };
 
 // Intersection of a ray with the surface's cap around its vertex.

@@ -32,6 +32,25 @@ TEST(Paraxial, ThickSingletMatchesTheLensmakersFormula) {
   EXPECT_NEAR(fo.frontPrincipalPlaneMm, -(1.0 / power) * (n - 1.0) * d / (n * r2), 1e-9);
 }
 
+TEST(Paraxial, AnR2TermAddsToTheVertexCurvatureAndNothingElseDoes) {
+  // S(r) = c r^2 / (1 + sqrt(1 - (1 + k) c^2 r^2)) + A2 r^2 + A4 r^4 = (c / 2 + A2) r^2 + O(r^4):
+  // a front surface of radius 80 mm with A2 = (1/40 - 1/80) / 2 is, paraxially, a radius of 40 mm.
+  // The lensmaker's formula for R1 = 40 (as in the test above) gives the focal length; the conic
+  // and the r^4 term, which act only at r^4 and beyond, must not move it.
+  const double r2 = -60.0, d = 6.0, n = 1.5168;
+  const double power = (n - 1.0) * (1.0 / 40.0 - 1.0 / r2 + (n - 1.0) * d / (n * 40.0 * r2));
+  Prescription lens = testing::singlet(80.0, r2, d, n, 50.0);
+  lens.surfaces[0].profile.setCoefficient(2, (1.0 / 40.0 - 1.0 / 80.0) / 2.0);
+  const auto withA2 = LensSystem::build(lens);
+  ASSERT_TRUE(withA2.ok());
+  EXPECT_NEAR(withA2.system->firstOrder().eflMm, 1.0 / power, 1e-9);
+  lens.surfaces[0].profile.setConic(-0.7);
+  lens.surfaces[0].profile.setCoefficient(4, 2e-6);
+  const auto withMore = LensSystem::build(lens);
+  ASSERT_TRUE(withMore.ok());
+  EXPECT_NEAR(withMore.system->firstOrder().eflMm, 1.0 / power, 1e-9);
+}
+
 TEST(Paraxial, PupilsOfAStopBehindALens) {
   // A thin-ish lens with the stop 1 mm behind it: the exit pupil is the stop itself; the entrance
   // pupil is its image through the lens, magnified, behind the lens.

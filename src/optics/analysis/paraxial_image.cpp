@@ -33,7 +33,7 @@ std::optional<ParaxialImage> paraxialImage(const LensSystem& lens,
     image.filmHeightScale = exitPupil.zMm / pupilToFocusMm;
   for (const SurfaceGeometry& s : lens.surfaces())
     image.petzvalSumPerMm +=
-        s.curvaturePerMm * (s.indexRear - s.indexFront) / (s.indexFront * s.indexRear);
+        s.paraxialCurvaturePerMm() * (s.indexRear - s.indexFront) / (s.indexFront * s.indexRear);
   return image;
 }
 

@@ -13,7 +13,8 @@ std::vector<ParaxialRayAtSurface> traceParaxialRay(const std::vector<SurfaceGeom
     const SurfaceGeometry& s = surfaces[i];
     if (i > 0) h += (surfaces[i - 1].vertexZMm - s.vertexZMm) * u;  // the gap, along the light
     const double uAfter =
-        (s.indexFront * u - h * s.curvaturePerMm * (s.indexRear - s.indexFront)) / s.indexRear;
+        (s.indexFront * u - h * s.paraxialCurvaturePerMm() * (s.indexRear - s.indexFront)) /
+        s.indexRear;
     ray[i] = {h, u, uAfter};
     u = uAfter;
   }
