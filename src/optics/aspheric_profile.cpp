@@ -1,5 +1,6 @@
 #include "optics/aspheric_profile.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -53,11 +54,20 @@ void AsphericProfile::setCoefficient(int power, double value) {
 
 std::optional<double> sagMm(double curvaturePerMm, const AsphericProfile& profile,
                             double heightMm) {
-  const double c = curvaturePerMm, r2 = heightMm * heightMm;
+  // The height is a distance from the axis: the odd terms (A_3 r^3, ...) see |h| on both sides.
+  const double c = curvaturePerMm;
+  const double r = std::abs(heightMm), r2 = r * r;
+  // At the limit itself, 1 - (1 + k) c^2 r^2 can round a few ulps below 0 (realSagLimitMm's rim
+  // of 20 mm for k = 3, c = 1/40 gives -2e-16): that is the rim, not beyond it.
   const double root = 1.0 - (1.0 + profile.conic()) * c * c * r2;
-  if (!(root >= 0.0)) return std::nullopt;
-  const double conicSag = c * r2 / (1.0 + std::sqrt(root));
-  return conicSag + polynomial(profile, heightMm).value;
+  if (!(root >= -1e-12)) return std::nullopt;
+  const double conicSag = c * r2 / (1.0 + std::sqrt(std::max(root, 0.0)));
+  return conicSag + polynomial(profile, r).value;
+}
+
+double realSagLimitMm(double curvaturePerMm, const AsphericProfile& profile) {
+  const double squared = (1.0 + profile.conic()) * curvaturePerMm * curvaturePerMm;
+  return squared > 0.0 ? 1.0 / std::sqrt(squared) : std::numeric_limits<double>::infinity();
 }
 
 std::optional<double> sagSlope(double curvaturePerMm, const AsphericProfile& profile,

@@ -50,8 +50,12 @@ class AsphericProfile {
   int highestPower_ = 0;
 };
 
-// S(r) for vertex curvature c (1/mm); nullopt where the conic's square root is not real.
+// S(r) for vertex curvature c (1/mm) at the distance |heightMm| from the axis (odd terms see the
+// distance, so the profile is symmetric); nullopt where the conic's square root is not real.
 std::optional<double> sagMm(double curvaturePerMm, const AsphericProfile& profile, double heightMm);
+// The largest height at which the sag is real, 1 / sqrt((1 + k) c^2): |R| for a sphere, infinity
+// for a plane, a paraboloid or a hyperboloid (1 + k <= 0), whose sag is real at every height.
+double realSagLimitMm(double curvaturePerMm, const AsphericProfile& profile);
 // dS/dr; nullopt where S has no real value (and at the rim of its real heights, where the conic's
 // slope is infinite).
 std::optional<double> sagSlope(double curvaturePerMm, const AsphericProfile& profile,

@@ -10,18 +10,50 @@ namespace lenslab::optics {
 
 namespace {
 
-// Sag (axial displacement toward the film) of a surface at height h: c h^2 / (1 + sqrt(1 - c^2
-// h^2)), the cancellation-free form of R - sqrt(R^2 - h^2).
-double sagMm(double curvature, double h) {
-  const double root = 1.0 - curvature * curvature * h * h;
-  if (root < 0.0) return std::nan("");
-  return curvature * h * h / (1.0 + std::sqrt(root));
-}
+// Where neighbours with a conic or polynomial terms are compared for crossing: their gap is not
+// monotone in the height as two spheres' is (see validate()), so it is sampled across the aperture.
+constexpr int kCrossingSamples = 128;
 
 std::string describe(double value) {
   std::ostringstream s;
   s << value;
   return s.str();
+}
+
+// A surface's shape: its conic and terms are numbers, the stop (a plane opening) has none, and the
+// sag is real out to the clear aperture's rim. 1 - (1 + k) c^2 h^2 only falls with h, so the rim
+// decides; for a sphere that is the familiar semi-aperture <= |R|.
+void validateProfile(const Surface& s, int row, std::vector<ValidationError>& errors) {
+  const AsphericProfile& profile = s.profile;
+  if (!std::isfinite(profile.conic()))
+    errors.push_back({row, "conic constant " + describe(profile.conic()) + " is not a number"});
+  for (int power = AsphericProfile::kMinPower; power <= AsphericProfile::kMaxPower; ++power) {
+    const double a = profile.coefficient(power);
+    if (!std::isfinite(a))
+      errors.push_back({row, "aspheric coefficient A" + std::to_string(power) + " " + describe(a) +
+                                 " is not a number"});
+  }
+  if (s.isStop()) {
+    if (!profile.isSphere())
+      errors.push_back(
+          {row, "the aperture stop is a plane opening: it cannot have a conic or aspheric terms"});
+    return;
+  }
+  if (!std::isfinite(profile.conic()) || std::isnan(s.radiusMm) ||
+      (std::isfinite(s.radiusMm) && std::abs(s.radiusMm) > kMaxLengthMm))
+    return;  // already refused above
+  const double semi = 0.5 * s.apertureDiameterMm;
+  const double limit = realSagLimitMm(s.curvaturePerMm(), profile);
+  if (!(semi > limit)) return;
+  if (profile.conic() == 0.0)
+    errors.push_back({row, "semi-aperture " + describe(semi) + " mm exceeds |radius| " +
+                               describe(std::abs(s.radiusMm)) + " mm"});
+  else
+    errors.push_back(
+        {row, "conic " + describe(profile.conic()) +
+                  ": the surface has no real sag beyond height " + describe(limit) +
+                  " mm (1 - (1 + k) c^2 h^2 < 0), inside the clear aperture (semi-aperture " +
+                  describe(semi) + " mm)"});
 }
 
 }  // namespace
@@ -73,10 +105,7 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
       errors.push_back({row, "aperture diameter " + describe(s.apertureDiameterMm) +
                                  " mm is beyond " + describe(kMaxApertureDiameterMm) + " mm"});
     if (s.isStop()) ++stops;
-    if (!s.isStop() && !s.isFlat() && std::isfinite(s.radiusMm) &&
-        0.5 * s.apertureDiameterMm > std::abs(s.radiusMm))
-      errors.push_back({row, "semi-aperture " + describe(0.5 * s.apertureDiameterMm) +
-                                 " mm exceeds |radius| " + describe(std::abs(s.radiusMm)) + " mm"});
+    validateProfile(s, row, errors);
   }
   if (stops == 0) errors.push_back({-1, "the lens has no aperture stop (a row with radius 0)"});
   const ApertureShape& shape = prescription.stopShape;
@@ -100,19 +129,34 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
   }
   if (!errors.empty()) return errors;
 
-  // Edge thickness between neighbours at the smaller of their clear apertures: the axial gap plus
-  // the rear surface's sag minus the front surface's sag must not be negative, or the surfaces
-  // cross inside the clear aperture.
+  // The gap between neighbours, the axial thickness plus the rear surface's sag minus the front
+  // surface's, must not be negative anywhere inside the smaller of their clear apertures, or the
+  // surfaces cross there. For two spheres the gap is monotone in the height (the slope of a
+  // sphere's sag in h^2, c / (2 sqrt(1 - c^2 h^2)), grows with c at every height, so the sign of
+  // c_rear - c_front holds throughout), and the rim decides; a conic or polynomial terms can
+  // make it dip inside, so there it is sampled across the aperture and the deepest crossing named.
   for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
     const Surface& a = rows[i];
     const Surface& b = rows[i + 1];
-    const double h = 0.5 * std::min(a.apertureDiameterMm, b.apertureDiameterMm);
-    const double edge = a.thicknessMm + sagMm(b.curvaturePerMm(), h) - sagMm(a.curvaturePerMm(), h);
-    if (edge < -1e-9) {
+    const double rim = 0.5 * std::min(a.apertureDiameterMm, b.apertureDiameterMm);
+    const auto gapAt = [&](double h) {
+      return a.thicknessMm + sagMm(b.curvaturePerMm(), b.profile, h).value_or(0.0) -
+             sagMm(a.curvaturePerMm(), a.profile, h).value_or(0.0);
+    };
+    double worstHeight = rim, worstGap = gapAt(rim);
+    if (!a.profile.isSphere() || !b.profile.isSphere()) {
+      for (int k = 1; k < kCrossingSamples; ++k) {
+        const double h = rim * k / kCrossingSamples;
+        const double gap = gapAt(h);
+        if (gap < worstGap) worstGap = gap, worstHeight = h;
+      }
+    }
+    if (worstGap < -1e-9) {
+      const bool atRim = worstHeight == rim;
       errors.push_back({static_cast<int>(i + 1),
                         "crosses the previous surface (surface " + std::to_string(i + 1) +
-                            ") inside the clear aperture: edge thickness " + describe(edge) +
-                            " mm at height " + describe(h) + " mm"});
+                            ") inside the clear aperture: " + (atRim ? "edge thickness " : "gap ") +
+                            describe(worstGap) + " mm at height " + describe(worstHeight) + " mm"});
     }
   }
   return errors;

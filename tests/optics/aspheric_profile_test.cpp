@@ -93,6 +93,26 @@ TEST(AsphericProfile, NoSagWhereTheConicsRootIsNotReal) {
   EXPECT_FALSE(sagSlope(0.1, oblate, 5.01).has_value());
 }
 
+TEST(AsphericProfile, OddTermsSeeTheDistanceFromTheAxis) {
+  // A flat with A3 = 1e-4: at 2 mm above or below the axis the sag is 1e-4 * 8 = 8e-4 mm.
+  AsphericProfile p;
+  p.setCoefficient(3, 1e-4);
+  EXPECT_NEAR(*sagMm(0.0, p, 2.0), 8e-4, 1e-15);
+  EXPECT_NEAR(*sagMm(0.0, p, -2.0), 8e-4, 1e-15);
+}
+
+TEST(AsphericProfile, RealSagLimitIsWhereTheRootVanishes) {
+  AsphericProfile p;
+  EXPECT_DOUBLE_EQ(realSagLimitMm(1.0 / 40.0, p), 40.0);  // the sphere: |R|
+  p.setConic(3.0);                                        // (1 + 3) / 1600 = 1 / 400
+  EXPECT_DOUBLE_EQ(realSagLimitMm(1.0 / 40.0, p), 20.0);
+  EXPECT_TRUE(sagMm(1.0 / 40.0, p, 20.0).has_value());
+  EXPECT_FALSE(sagMm(1.0 / 40.0, p, 20.001).has_value());
+  p.setConic(-1.0);  // the paraboloid: every height
+  EXPECT_TRUE(std::isinf(realSagLimitMm(1.0 / 40.0, p)));
+  EXPECT_TRUE(std::isinf(realSagLimitMm(0.0, AsphericProfile{})));
+}
+
 TEST(AsphericProfile, SlopeIsTheSagsDerivative) {
   const double c = 1.0 / 30.0;
   for (const AsphericProfile& profile :

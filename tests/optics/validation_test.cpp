@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <string>
 
 #include "test_lenses.h"
@@ -44,6 +47,65 @@ TEST(Validation, SemiApertureLargerThanRadius) {
   Prescription p = goodLens();
   p.surfaces[0].radiusMm = 9.0;
   expectError(p, 0, "exceeds |radius|");
+}
+
+// An aspheric bump that crosses its neighbour at mid-height while the rims stay apart: a flat
+// front with S(h) = A4 h^4 + A6 h^6, A4 = -54 A6, peaks where S' = 0, h^2 = -2 A4 / (3 A6) = 36,
+// at S(6) = -23328 A6 = 2 mm for A6 = -2 / 23328. Behind 1 mm of glass and a flat rear the gap is
+// 1 - 2 = -1 mm at 6 mm, but 1 - S(10) = 1 + 39.4 mm at the 10 mm rim, where the old check looked.
+TEST(Validation, AnAsphericBumpCrossingInsideTheApertureIsFound) {
+  Prescription p = goodLens();
+  const double a6 = -2.0 / 23328.0;
+  p.surfaces[0].radiusMm = kFlatRadius;
+  p.surfaces[0].thicknessMm = 1.0;
+  p.surfaces[0].profile.setCoefficient(4, -54.0 * a6);
+  p.surfaces[0].profile.setCoefficient(6, a6);
+  p.surfaces[1].radiusMm = kFlatRadius;
+  expectError(p, 1, "crosses the previous surface");
+  const auto errors = validate(p);
+  ASSERT_EQ(errors.size(), 1u);
+  // The samples are 10/128 mm apart: the deepest lies within one of 6 mm, at most 0.01 mm less
+  // deep.
+  double gap = 0.0, height = 0.0;
+  const std::string& m = errors[0].message;
+  ASSERT_EQ(std::sscanf(m.c_str() + m.find("gap "), "gap %lf mm at height %lf", &gap, &height), 2)
+      << m;
+  EXPECT_NEAR(height, 6.0, 10.0 / 128.0);
+  EXPECT_NEAR(gap, -1.0, 0.01);
+  // Half as high a bump (1 mm) only touches: no error.
+  p.surfaces[0].profile.setCoefficient(4, -27.0 * a6);
+  p.surfaces[0].profile.setCoefficient(6, 0.5 * a6);
+  EXPECT_TRUE(validate(p).empty()) << validate(p).front().message;
+}
+
+TEST(Validation, AConicMustHaveARealSagAcrossTheAperture) {
+  Prescription p = goodLens();  // semi-aperture 10 mm, front R = 40 mm: c^2 = 1/1600
+  // k = 24: (1 + k) c^2 = 25/1600, so the sag is real only out to 1/sqrt(25/1600) = 8 mm.
+  p.surfaces[0].profile.setConic(24.0);
+  expectError(p, 0, "no real sag beyond height 8 mm");
+  // k = 15 reaches exactly 10 mm: the rim is still on the surface.
+  p.surfaces[0].profile.setConic(15.0);
+  EXPECT_TRUE(validate(p).empty());
+  // A paraboloid has a real sag at every height, even beyond |R|, where a sphere has none: R = 9
+  // mm against the 10 mm semi-aperture. Its sag there, h^2 / (2 R) = 5.56 mm, needs a thicker lens.
+  p.surfaces[0].radiusMm = 9.0;
+  p.surfaces[0].thicknessMm = 8.0;
+  p.surfaces[0].profile.setConic(0.0);
+  expectError(p, 0, "exceeds |radius|");
+  p.surfaces[0].profile.setConic(-1.0);
+  EXPECT_TRUE(validate(p).empty()) << validate(p).front().message;
+}
+
+TEST(Validation, AsphericTermsMustBeNumbersAndNotOnTheStop) {
+  Prescription p = goodLens();
+  p.surfaces[0].profile.setCoefficient(4, std::nan(""));
+  expectError(p, 0, "A4");
+  p = goodLens();
+  p.surfaces[0].profile.setConic(std::numeric_limits<double>::infinity());
+  expectError(p, 0, "conic constant");
+  p = goodLens();
+  p.surfaces[2].profile.setCoefficient(4, 1e-6);  // row 3 is the stop
+  expectError(p, 2, "aperture stop is a plane");
 }
 
 TEST(Validation, IndexBelowOne) {
