@@ -14,11 +14,25 @@ double semiApertureOf(const Surface& surface) {
   return std::isfinite(half) && half > 0 ? half : 0.0;
 }
 
-// A profile clamped so it never needs the square root of a negative number.
+// A profile clamped so it never needs the square root of a negative number: at most |R| for a
+// sphere, and for a conic the height where its sag stops being real.
 double usableSemiAperture(const Surface& surface) {
   const double semi = semiApertureOf(surface);
+  if (!surface.profile.isSphere()) {
+    const double limit = realSagLimitMm(surface.curvaturePerMm(), surface.profile);
+    return std::isnan(limit) ? 0.0 : std::min(semi, limit);
+  }
   const double radius = std::abs(surface.radiusMm);
   return std::isfinite(radius) && radius > 0 ? std::min(semi, radius) : semi;
+}
+
+// The surface's true sag at height y: the sphere's closed form (so spherical outlines are what
+// they always were), or the conic and its terms (aspheric_profile.h). 0 where an invalid
+// prescription gives no number, so the drawing never sees NaN.
+double surfaceSagMm(const Surface& surface, double y) {
+  if (surface.profile.isSphere()) return sphericalSagMm(surface.radiusMm, y);
+  const double sag = sagMm(surface.curvaturePerMm(), surface.profile, y).value_or(0.0);
+  return std::isfinite(sag) ? sag : 0.0;
 }
 
 }  // namespace
@@ -56,7 +70,7 @@ LensOutline computeLensOutline(const Prescription& lens, int segmentsPerSurface)
   outline.frontVertexZMm = n > 0 ? outline.vertexZMm[0] : 0.0;
 
   const auto profileZ = [&](std::size_t i, double y) {
-    return outline.vertexZMm[i] - sphericalSagMm(surfaces[i].radiusMm, y);
+    return outline.vertexZMm[i] - surfaceSagMm(surfaces[i], y);
   };
 
   for (std::size_t i = 0; i < n; ++i) {

@@ -19,9 +19,12 @@ glm::dvec3 blockedEndPoint(const SurfaceGeometry& s, const LensRay& ray,
   const glm::dvec3& o = ray.origin;
   const glm::dvec3& d = ray.direction;
   const double a = s.semiApertureMm;
-  // Sag at the rim, c a^2 / (1 + sqrt(1 - c^2 a^2)); validation keeps a <= |R|.
+  // Sag at the rim: the sphere's c a^2 / (1 + sqrt(1 - c^2 a^2)), or the conic's and its terms'
+  // (validation keeps the sag real out to the rim either way).
   const double c = s.curvaturePerMm;
-  const double sag = c * a * a / (1.0 + std::sqrt(std::max(0.0, 1.0 - c * c * a * a)));
+  const double sag = s.profile.isSphere()
+                         ? c * a * a / (1.0 + std::sqrt(std::max(0.0, 1.0 - c * c * a * a)))
+                         : sagMm(c, s.profile, a).value_or(0.0);
   const double zRim = s.vertexZMm - sag;
   const double tPlane = d.z != 0.0 ? (zRim - o.z) / d.z : -1.0;
   const bool planeAhead = std::isfinite(tPlane) && tPlane > 0.0;

@@ -69,6 +69,33 @@ TEST(LensOutline, SmallerSurfaceContinuesFlatToTheRim) {
   EXPECT_NEAR(element.front.back().yMm, 15.0, 1e-12);
 }
 
+TEST(LensOutline, AsphericSurfacesAreDrawnWithTheirTrueProfile) {
+  // A flat front with A4 = 1e-4 mm^-3: at height y its sag is 1e-4 y^4 (1 mm at the 10 mm rim),
+  // which a sphere-only outline would draw as the flat vertex plane.
+  Prescription lens;
+  lens.surfaces = {{kFlatRadius, 4.0, 1.5, std::nullopt, 20.0},
+                   {-50.0, 30.0, 1.0, std::nullopt, 20.0},
+                   {0.0, 10.0, 1.0, std::nullopt, 10.0}};
+  lens.surfaces[0].profile.setCoefficient(4, 1e-4);
+  const LensOutline outline = computeLensOutline(lens, 8);
+  ASSERT_EQ(outline.surfaceProfiles[0].size(), 9u);
+  for (const OutlinePoint& point : outline.surfaceProfiles[0]) {
+    const double y = point.yMm;
+    EXPECT_NEAR(point.zMm, outline.vertexZMm[0] - 1e-4 * y * y * y * y, 1e-12) << y;
+  }
+  ASSERT_EQ(outline.elements.size(), 1u);
+  EXPECT_NEAR(outline.elements[0].front.front().zMm, outline.vertexZMm[0] - 1.0, 1e-12);
+  // A conic whose sag is real only out to 8 mm (k = 24, R = 40: 1 / sqrt(25 / 1600)) inside a
+  // 10 mm semi-aperture: the profile stops at 8 mm, with numbers, as a sphere stops at |R|.
+  lens.surfaces[0].radiusMm = 40.0;
+  lens.surfaces[0].profile = AsphericProfile{};
+  lens.surfaces[0].profile.setConic(24.0);
+  const LensOutline clamped = computeLensOutline(lens, 8);
+  EXPECT_NEAR(clamped.surfaceProfiles[0].back().yMm, 8.0, 1e-12);
+  for (const OutlinePoint& point : clamped.surfaceProfiles[0])
+    EXPECT_TRUE(std::isfinite(point.zMm));
+}
+
 TEST(LensOutline, StopIsAGapInABar) {
   const LensOutline outline = computeLensOutline(cementedDoubletAndStop());
   ASSERT_TRUE(outline.stop.has_value());

@@ -255,6 +255,21 @@ TEST(RayPath, ClippedRaysEndAtTheRimPlaneNotOnTheExtendedSphere) {
   EXPECT_NEAR(film.points.back().x, 12.0, 1e-12);
 }
 
+TEST(RayPath, AClippedRayEndsAtAnAsphericRimPlane) {
+  // A flat front with A4 = 1e-4 mm^-3 and a 15 mm semi-aperture: its rim lies 1e-4 * 15^4 =
+  // 5.0625 mm behind the vertex, not on the vertex plane where a sphere-only rim would put it.
+  Prescription p = testing::singlet(kFlatRadius, -60.0, 8.0, 1.5, 50.0, 30.0);
+  p.surfaces[0].profile.setCoefficient(4, 1e-4);
+  const auto built = LensSystem::build(p);
+  ASSERT_TRUE(built.ok()) << built.errors.front().toString();
+  const LensSystem& lens = *built.system;
+  const auto scene = lens.traceFromScenePath({{0.0, 20.0, 100.0}, {0.0, 0.0, -1.0}});
+  ASSERT_EQ(scene.stop, RayStop::ClippedByAperture);
+  ASSERT_EQ(scene.points.size(), 2u);
+  EXPECT_NEAR(scene.points[1].z, lens.surfaces()[0].vertexZMm - 5.0625, 1e-12);
+  EXPECT_NEAR(scene.points[1].y, 20.0, 1e-12);
+}
+
 TEST(RayPath, AMissedSurfaceStillEndsTheRayAtItsRimPlane) {
   const auto built = LensSystem::build(testing::singlet(40.0, -60.0, 6.0, 1.5, 50.0, 30.0));
   ASSERT_TRUE(built.ok());
