@@ -49,7 +49,7 @@ void Viewer::askForPath(const FileRequest& request) {
   switch (request.kind) {
     case Kind::Open:
     case Kind::OpenLens:
-      fileBrowser_.show("Open lens", FileBrowser::Mode::Open, {".dat"}, lenses);
+      fileBrowser_.show("Open lens", FileBrowser::Mode::Open, {".lens", ".dat"}, lenses);
       fileBrowser_.addOption(kKeepFilmDistanceLabel, &state_.settings.keepLensFilmDistance,
                              kKeepFilmDistanceTooltip);
       break;
@@ -57,8 +57,10 @@ void Viewer::askForPath(const FileRequest& request) {
       fileBrowser_.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
       break;
     case Kind::SaveLens:
-      fileBrowser_.show("Save lens as", FileBrowser::Mode::Save, {".dat"}, here,
-                        render::nonClobberingPath(here, "lens", ".dat").filename());
+      // lenslab's own format holds everything (aspheric terms too); .dat only spheres and
+      // model glasses (optics::whyNotDat says what does not fit).
+      fileBrowser_.show("Save lens as", FileBrowser::Mode::Save, {".lens", ".dat"}, here,
+                        render::nonClobberingPath(here, "lens", ".lens").filename());
       break;
     case Kind::SaveRender:
       fileBrowser_.show("Save render as (.png or .exr)", FileBrowser::Mode::Save, {".png", ".exr"},

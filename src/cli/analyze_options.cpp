@@ -50,7 +50,7 @@ std::string knownAnalysisKeys() {
 
 AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments) {
   AnalyzeOptions options;
-  analyze.add_option("LENS", arguments.lensPath, "Lens file (.dat, pbrt format)")->required();
+  analyze.add_option("LENS", arguments.lensPath, "Lens file (.lens, or pbrt's .dat)")->required();
   analyze.add_flag("--json", arguments.json, "Print JSON instead of a readable summary");
   options.filmDistance =
       analyze

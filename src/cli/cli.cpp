@@ -39,12 +39,12 @@ struct ViewerArguments {
 };
 
 void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
-  app.add_option("--lens", arguments.lensPath, "Lens file to open (.dat)")
+  app.add_option("--lens", arguments.lensPath, "Lens file to open (.lens or .dat)")
       ->check(CLI::ExistingFile);
   app.add_option("--scene", arguments.scenePath, "Scene file to open (.pbrt)")
       ->check(CLI::ExistingFile);
   app.add_option("file", arguments.filePath,
-                 "Lens (.dat) or scene (.pbrt) to open, as --lens or --scene would")
+                 "Lens (.lens or .dat) or scene (.pbrt) to open, as --lens or --scene would")
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", arguments.screenshotPath,
                  "Draw --frames frames, save the window as this PNG, and exit");

@@ -70,7 +70,19 @@ std::string whereAgainstIris(int surface, std::size_t stopIndex) {
   return surface < static_cast<int>(stopIndex) ? "before the iris" : "after the iris";
 }
 
-nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& arguments) {
+// The profile beyond the vertex curvature: the conic constant, and each nonzero polynomial term
+// by its power ({"4": -2e-06}); {} for a sphere.
+nlohmann::json asphericCoefficientsJson(const optics::AsphericProfile& profile) {
+  nlohmann::json terms = nlohmann::json::object();
+  for (int power = optics::AsphericProfile::kMinPower; power <= profile.highestPower(); ++power) {
+    if (profile.coefficient(power) != 0.0)
+      terms[std::to_string(power)] = finiteOrNull(profile.coefficient(power));
+  }
+  return terms;
+}
+
+nlohmann::json toJson(const optics::LoadedLens& loaded, const InfoArguments& arguments) {
+  const optics::LensSystem& lens = *loaded.system;
   const optics::FirstOrderData& fo = lens.firstOrder();
   const auto realField = optics::realFieldOfViewDeg(lens, arguments.filmDiagonalMm);
   const BeamFigures beam = beamFigures(lens);
@@ -86,6 +98,8 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
          {"thickness_mm", s.thicknessMm},
          {"n_d", s.mediumIndexD()},
          {"abbe_d", s.abbeD ? nlohmann::json(*s.abbeD) : nlohmann::json(nullptr)},
+         {"conic", finiteOrNull(s.profile.conic())},
+         {"aspheric_coefficients", asphericCoefficientsJson(s.profile)},
          {"n", lens.surfaces()[i].indexRear},
          {"aperture_diameter_mm", s.apertureDiameterMm},
          {"vertex_z_mm", lens.surfaces()[i].vertexZMm}});
@@ -93,7 +107,7 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
   std::string colourWhyNot;
   const std::optional<double> colourShift =
       optics::chromaticFocalShiftFromInfinityMm(lens, &colourWhyNot);
-  return {
+  nlohmann::json out = {
       {"lens", arguments.lensPath},
       {"wavelength_nm", lens.wavelengthNm()},
       {"afocal", fo.afocal},
@@ -155,6 +169,13 @@ nlohmann::json toJson(const optics::LensSystem& lens, const InfoArguments& argum
       {"no_image_reason",
        beam.image.ok() ? nlohmann::json(nullptr) : nlohmann::json(beam.image.whyNot)},
       {"surfaces", surfaces}};
+  // What the file says of the lens (a .lens file's title, source and published focal length),
+  // only when it says it.
+  if (!loaded.file.title.empty()) out["title"] = loaded.file.title;
+  if (!loaded.file.source.empty()) out["source"] = loaded.file.source;
+  if (loaded.file.publishedEflMm)
+    out["published_efl_mm"] = finiteOrNull(*loaded.file.publishedEflMm);
+  return out;
 }
 
 void printBeam(const optics::LensSystem& lens, const BeamFigures& beam) {
@@ -189,7 +210,10 @@ void printBeam(const optics::LensSystem& lens, const BeamFigures& beam) {
     std::printf("%-34s %12s (no axial beam passes)\n", "field of view, unvignetted", "-");
 }
 
-void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
+void printText(const optics::LoadedLens& loaded, const InfoArguments& arguments) {
+  const optics::LensSystem& lens = *loaded.system;
+  if (!loaded.file.title.empty()) std::printf("%s\n", loaded.file.title.c_str());
+  if (!loaded.file.source.empty()) std::printf("source: %s\n", loaded.file.source.c_str());
   const optics::FirstOrderData& fo = lens.firstOrder();
   const BeamFigures beam = beamFigures(lens);
   auto line = [](const char* label, double value, const char* unit) {
@@ -209,6 +233,8 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
   // Said first, in focus's words: the paraxial figures below mean little for such a lens.
   if (!beam.image.ok()) std::printf("%s\n", beam.image.whyNot.c_str());
   focalLine("effective focal length (EFL)", fo.eflMm, "mm");
+  if (loaded.file.publishedEflMm)
+    line("published focal length", *loaded.file.publishedEflMm, "mm (as the source prints it)");
   focalLine("back focal length (BFL)", fo.bflMm, "mm from the rear vertex");
   focalLine("front focal length (FFL)", fo.fflMm, "mm in front of the front vertex");
   focalLine("front principal plane", fo.frontPrincipalPlaneMm, "mm from the front vertex");
@@ -260,7 +286,7 @@ void printText(const optics::LensSystem& lens, const InfoArguments& arguments) {
 void addInfoCommand(CLI::App& app, SubcommandRunner& run) {
   auto arguments = std::make_shared<InfoArguments>();
   CLI::App* info = app.add_subcommand("info", "Print a lens's first-order (paraxial) data");
-  info->add_option("LENS", arguments->lensPath, "Lens file (.dat, pbrt format)")->required();
+  info->add_option("LENS", arguments->lensPath, "Lens file (.lens, or pbrt's .dat)")->required();
   info->add_flag("--json", arguments->json, "Print JSON instead of text");
   info->add_option("--wavelength", arguments->wavelengthNm, "Wavelength in nm (default 587.56)")
       ->check(FiniteNumberBetween(200.0, 2000.0, "nm"));
@@ -269,12 +295,13 @@ void addInfoCommand(CLI::App& app, SubcommandRunner& run) {
       ->check(PositiveFiniteNumber());
   info->callback([arguments, &run] {
     run = [arguments] {
-      const auto lens = loadLensOrReport(arguments->lensPath, "info", arguments->wavelengthNm);
-      if (!lens) return 1;
+      const optics::LoadedLens loaded =
+          loadLensFileOrReport(arguments->lensPath, "info", arguments->wavelengthNm);
+      if (!loaded.ok()) return 1;
       if (arguments->json)
-        std::cout << toJson(*lens, *arguments).dump(2) << "\n";
+        std::cout << toJson(loaded, *arguments).dump(2) << "\n";
       else
-        printText(*lens, *arguments);
+        printText(loaded, *arguments);
       return 0;
     };
   });

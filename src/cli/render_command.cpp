@@ -131,7 +131,7 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
   arguments->command = command;
   command->add_option("scene", arguments->scenePath, "Scene file (.pbrt)")->required();
   command->add_option("--lens", arguments->lensPath,
-                      "Lens file (.dat) to render through. It replaces a realistic camera's lens "
+                      "Lens file (.lens or .dat) to render through. It replaces a realistic camera's lens "
                       "(keeping the scene's stop and focus). A perspective camera becomes a "
                       "realistic one at the same place: this lens at its own stop, focused at the "
                       "camera's \"focaldistance\" (default: infinity), with the Film's "

@@ -11,15 +11,13 @@
 #include <utility>
 
 #include "optics/lens_system.h"
+#include "optics/native_lens_file.h"
 
 namespace lenslab::optics {
 
 namespace {
 
 constexpr std::size_t kMaxFileBytes = 16u << 20;  // a lens file is a few hundred bytes
-// Zoom lenses, the most complex camera lenses, have some 60 surfaces; a file of thousands is not a
-// lens, and every analysis traces each ray through every surface.
-constexpr std::size_t kMaxSurfaces = 256;
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -97,9 +95,9 @@ std::size_t terminatorLength(std::string_view text, std::size_t i) {
 
 constexpr std::string_view kApertureKey = "lenslab aperture:";
 
-// Reads the spec after "# lenslab aperture:" into `shape`. Returns the column and message of a
-// malformed spec (an error); an image that cannot be used is a warning and leaves the circle.
-std::optional<std::pair<int, std::string>> readApertureLine(std::string_view spec,
+}  // namespace
+
+std::optional<std::pair<int, std::string>> readApertureSpec(std::string_view spec,
                                                             const std::string& fileName,
                                                             ApertureShape& shape,
                                                             Diagnostics& diagnostics, int line,
@@ -134,8 +132,6 @@ std::optional<std::pair<int, std::string>> readApertureLine(std::string_view spe
   shape = read;
   return std::nullopt;
 }
-
-}  // namespace
 
 int LensFile::lineOfSurface(int surface) const {
   if (rowLines.empty()) return 0;
@@ -184,7 +180,7 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
         const std::size_t specAt = at + kApertureKey.size();
         const std::string_view spec = line.substr(specAt);
         if (const auto problem =
-                readApertureLine(spec, fileName, lens.prescription.stopShape, result.diagnostics,
+                readApertureSpec(spec, fileName, lens.prescription.stopShape, result.diagnostics,
                                  lineNumber, static_cast<int>(specAt) + 1))
           return fail(lineNumber, problem->first, problem->second);
         continue;
@@ -233,9 +229,9 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
                       "missing the " +
                       kColumnNames[tokens.size()]);
     }
-    if (lens.prescription.surfaces.size() == kMaxSurfaces)
+    if (lens.prescription.surfaces.size() == kMaxLensFileSurfaces)
       return fail(lineNumber, 1,
-                  "too many surfaces: a lens file holds at most " + std::to_string(kMaxSurfaces));
+                  "too many surfaces: a lens file holds at most " + std::to_string(kMaxLensFileSurfaces));
     Surface surface;
     surface.radiusMm = values[0];
     surface.thicknessMm = values[1];
@@ -276,7 +272,7 @@ LensFileResult readLensFile(const std::filesystem::path& path) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxFileBytes) return fail("file is too large to be a lens file");
   }
-  return parseLensText(text, name);
+  return isNativeLensText(text, path) ? parseNativeLensText(text, name) : parseLensText(text, name);
 }
 
 std::string formatLensText(const Prescription& prescription,
@@ -301,12 +297,34 @@ std::string formatLensText(const Prescription& prescription,
   return out;
 }
 
-bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
-                   const std::vector<std::string>& headerComments, std::string* error) {
-  const std::string failure =
-      writeFileAtomically(path, formatLensText(prescription, headerComments));
+std::string whyNotDat(const Prescription& prescription) {
+  for (std::size_t i = 0; i < prescription.surfaces.size(); ++i) {
+    if (!prescription.surfaces[i].profile.isSphere())
+      return "surface " + std::to_string(i + 1) +
+             " has a conic or aspheric terms, which pbrt's .dat cannot hold (save as .lens)";
+  }
+  return {};
+}
+
+bool writeLensFile(const std::filesystem::path& path, const LensFile& lens, std::string* error) {
+  std::string failure;
+  if (hasNativeLensExtension(path)) {
+    failure = writeFileAtomically(path, formatNativeLensText(lens));
+  } else {
+    failure = whyNotDat(lens.prescription);
+    if (failure.empty())
+      failure = writeFileAtomically(path, formatLensText(lens.prescription, lens.headerComments));
+  }
   if (!failure.empty() && error) *error = failure;
   return failure.empty();
+}
+
+bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
+                   const std::vector<std::string>& headerComments, std::string* error) {
+  LensFile lens;
+  lens.prescription = prescription;
+  lens.headerComments = headerComments;
+  return writeLensFile(path, lens, error);
 }
 
 }  // namespace lenslab::optics

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/diagnostics.h"
@@ -25,10 +26,20 @@
 
 namespace lenslab::optics {
 
+// Zoom lenses, the most complex camera lenses, have some 60 surfaces; a file of thousands is not a
+// lens, and every analysis traces each ray through every surface. Every lens format's limit.
+inline constexpr std::size_t kMaxLensFileSurfaces = 256;
+
 struct LensFile {
   Prescription prescription;
-  // Comment lines before the first row, without the leading '#' and one following space.
+  // Comment lines before the first row, without the leading '#' and one following space; in a
+  // .lens file (native_lens_file.h), its `note` lines.
   std::vector<std::string> headerComments;
+  // What a .lens file says of its lens (a .dat has no place for them): its title, the
+  // publication its prescription comes from, and the focal length printed there (mm).
+  std::string title;
+  std::string source;
+  std::optional<double> publishedEflMm;
   // Line number (1-based) of each surface row, for error messages that point at a row.
   std::vector<int> rowLines;
   // The line of a surface's row (a 0-based index, as ValidationError::surface counts); the first
@@ -47,13 +58,31 @@ struct LensFileResult {
 // Parses lens file text; `fileName` is only used in the error messages. The prescription is
 // checked with validate() as well, so a successful result always builds a LensSystem.
 LensFileResult parseLensText(std::string_view text, const std::string& fileName);
+// Reads a lens file in any format lenslab knows: lenslab's own .lens (native_lens_file.h), told
+// by its version line or its extension, and otherwise pbrt's .dat.
 LensFileResult readLensFile(const std::filesystem::path& path);
+
+// Reads an aperture spec (aperture_shape.h's parseApertureSpec) into `shape`, loading an image
+// relative to the lens file's folder. Returns the 1-based column and message of a malformed spec
+// (an error); an image that cannot be used is a warning in `diagnostics` and leaves the shape as
+// it was. `firstColumn` is the 1-based column where `spec` starts on its line.
+std::optional<std::pair<int, std::string>> readApertureSpec(std::string_view spec,
+                                                            const std::string& fileName,
+                                                            ApertureShape& shape,
+                                                            Diagnostics& diagnostics, int line,
+                                                            int firstColumn);
 
 // Text that parseLensText reads back to the identical prescription (shortest round-trip number
 // formatting).
 std::string formatLensText(const Prescription& prescription,
                            const std::vector<std::string>& headerComments = {});
-// Returns false and sets `error` when the file cannot be written.
+// Why pbrt's .dat cannot hold this prescription ("surface 3 has a conic or aspheric terms, ..."),
+// naming the first surface that does not fit; empty when it can.
+std::string whyNotDat(const Prescription& prescription);
+// Writes atomically in the format the extension names: .lens (native_lens_file.h) or else .dat.
+// Returns false and sets `error` when the file cannot be written, or when .dat cannot hold the
+// lens (whyNotDat; nothing is written then).
+bool writeLensFile(const std::filesystem::path& path, const LensFile& lens, std::string* error);
 bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
                    const std::vector<std::string>& headerComments, std::string* error);
 

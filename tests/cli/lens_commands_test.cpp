@@ -84,6 +84,45 @@ TEST_F(LensCommands, InfoJsonHasTheFirstOrderKeys) {
   EXPECT_TRUE(json.at("surfaces").at(5).at("stop").get<bool>());
 }
 
+TEST_F(LensCommands, InfoReadsALensFileWithItsAsphericTermsAndSource) {
+  // The square-stop test's singlet as a .lens file, its front surface written as R 100 with
+  // A2 = (1/50 - 1/100) / 2: paraxially the R 50 of that test (c + 2 A2 = 1/50), so the same thick-
+  // lens EFL, 50.6757 mm. The conic and the r^4 term act beyond the paraxial region and leave it.
+  const std::string path = writeFile("asphere.lens",
+                                     "lenslab-lens 1\n"
+                                     "title Test asphere\n"
+                                     "source A hand calculation\n"
+                                     "published_efl_mm 50.68\n"
+                                     "stop thickness 2 diameter 10\n"
+                                     "surface radius 100 thickness 4 nd 1.5 diameter 20 "
+                                     "a2 0.005 conic -0.6 a4 -2e-06\n"
+                                     "surface radius -50 thickness 48 diameter 20\n");
+  const auto result = testing::runProcess(lenslab("info --json " + path), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_NEAR(json.at("efl_mm").get<double>(), 1.0 / (0.5 * (0.04 - 2.0 / 3750.0)), 1e-9);
+  EXPECT_EQ(json.at("title"), "Test asphere");
+  EXPECT_EQ(json.at("source"), "A hand calculation");
+  EXPECT_EQ(json.at("published_efl_mm").get<double>(), 50.68);
+  const auto& front = json.at("surfaces").at(1);
+  EXPECT_EQ(front.at("conic").get<double>(), -0.6);
+  EXPECT_EQ(front.at("aspheric_coefficients"),
+            nlohmann::json::parse(R"({"2": 0.005, "4": -2e-06})"));
+  const auto& rear = json.at("surfaces").at(2);
+  EXPECT_EQ(rear.at("conic").get<double>(), 0.0);
+  EXPECT_EQ(rear.at("aspheric_coefficients"), nlohmann::json::object());
+  // A .dat file has no title: the key is left out rather than given empty.
+  const std::string dat = writeFile("plain.dat", "0 2 0 10\n50 4 1.5 20\n-50 48 1 20\n");
+  const auto plain = testing::runProcess(lenslab("info --json " + dat), scratch);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("title"));
+  // The text form names the lens and its source.
+  const auto text = testing::runProcess(lenslab("info " + path), scratch);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_EQ(text.out.rfind("Test asphere\nsource: A hand calculation\n", 0), 0u) << text.out;
+  EXPECT_NE(text.out.find("published focal length"), std::string::npos) << text.out;
+}
+
 TEST_F(LensCommands, InfoTextAndWavelengthAndFilmDiagonal) {
   const auto text = testing::runProcess(lenslab("info " + lensPath("dgauss-50mm.dat")), scratch);
   ASSERT_EQ(text.exitCode, 0) << text.err;

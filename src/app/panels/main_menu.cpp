@@ -1,6 +1,8 @@
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 
 #include "app/automation/item_rect.h"
 #include "app/panels/panels.h"
@@ -59,7 +61,10 @@ void editMenu(ViewerState& state) {
 void lensMenu(ViewerState& state) {
   const std::filesystem::path library = findResourceDirectory("lenses");
   if (ImGui::BeginMenu("Library", !library.empty())) {
-    for (const auto& file : listFiles(library, ".dat")) {
+    std::vector<std::filesystem::path> files = listFiles(library, ".lens");
+    for (const auto& file : listFiles(library, ".dat")) files.push_back(file);
+    std::sort(files.begin(), files.end());
+    for (const auto& file : files) {
       if (ImGui::MenuItem(file.stem().string().c_str())) {
         state.fileRequests.push_back({FileRequest::Kind::OpenLens, file.string()});
       }
