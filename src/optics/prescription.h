@@ -42,8 +42,8 @@ struct Surface {
   double apertureDiameterMm = 0.0;
   // Conic constant and polynomial terms beyond the vertex curvature (aspheric_profile.h); the
   // sphere by default. Issue 40 is bringing them through lenslab a part at a time: today the
-  // exact traces (scalar and batch) and the exit-pupil tables follow them; the paraxial data,
-  // the Seidel sums, validation, the outline, flip and scale, and every file format do not yet,
+  // exact traces (scalar and batch), the exit-pupil tables, the paraxial data and the Seidel
+  // sums follow them; validation, the outline, flip and scale, and every file format do not yet,
   // and nothing builds a lens with them outside the tests.
   AsphericProfile profile = {};
 

@@ -66,6 +66,8 @@ TEST_F(ColourAnalyze, PlanoConvexFocalShiftFollowsTheThickLensFormula) {
   EXPECT_EQ(seidel.at("surfaces")[0].at("surface").get<int>(), 1);
   EXPECT_TRUE(seidel.at("total").contains("CL"));
   EXPECT_TRUE(seidel.at("third_order").contains("lateral_color_mm"));
+  // No aspheric surface: the list of surfaces whose odd powers the sums leave out is there, empty.
+  EXPECT_EQ(seidel.at("odd_aspheric_terms_left_out"), nlohmann::json::array());
   // A finite object moves the images and keeps the keys.
   const auto near = analyzeJson("--object-distance 1000 " + lens);
   EXPECT_LT(near.at("chromatic_focal_shift_mm").get<double>(),

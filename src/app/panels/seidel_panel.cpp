@@ -10,6 +10,7 @@
 #include "app/panels/panels.h"
 #include "app/plot/plot_widget.h"
 #include "app/viewer_state.h"
+#include "optics/analysis/seidel.h"
 
 namespace lenslab::app {
 
@@ -30,7 +31,12 @@ std::optional<PlotSpec> seidelCurrentPlot(ViewerState& state, std::string* whyNo
     *whyNot = "no glass of this lens has an Abbe number (V_d): it has no colour sums";
     return std::nullopt;
   }
-  return seidelPlot(*result, state.colour.chromaticSums);
+  PlotSpec spec = seidelPlot(*result, state.colour.chromaticSums);
+  // Odd aspheric powers are outside the sums (optics/analysis/seidel.h): an exported plot says so
+  // under its bars, as the panel does.
+  if (const std::string odd = optics::seidelOddTermsNote(*result->seidel); !odd.empty())
+    spec.note += "; " + odd;
+  return spec;
 }
 
 bool seidelSettled(const ViewerState& state) {
@@ -69,6 +75,13 @@ void drawSeidelPanel(ViewerState& state, const PanelPlace& place) {
             "the lens has no dispersion and no colour sums. Untick \"Colour sums\" for S_I..S_V.");
       } else {
         ImGui::TextDisabled("%s", spec.note.c_str());
+        if (const std::string odd = optics::seidelOddTermsNote(*result->seidel); !odd.empty()) {
+          // In the colour of the field-coverage warning (analysis_controls.cpp): the bars leave
+          // something of the lens out.
+          ImGui::PushTextWrapPos(0.0f);
+          ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "Note: %s.", odd.c_str());
+          ImGui::PopTextWrapPos();
+        }
         spec.title.clear();
         spec.note.clear();
         const PlotWidgetResult plot =

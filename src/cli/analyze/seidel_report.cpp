@@ -65,7 +65,10 @@ ReportPart seidelReport(const AnalyzeContext& context) {
       {"convention",
        "Welford, Aberrations of Optical Systems, ch. 7: S1 = -A^2 h D(u/n), S2 = -A Abar h "
        "D(u/n), S3 = -Abar^2 h D(u/n), S4 = -H^2 c D(1/n), S5 = (Abar/A)(S3 + S4), CL = A h "
-       "D(dn/n), CT = Abar h D(dn/n) with A = n(hc + u), dn = n_F - n_C; u is the slope along the "
+       "D(dn/n), CT = Abar h D(dn/n) with A = n(hc + u), dn = n_F - n_C, c the paraxial "
+       "curvature c_p = c0 + 2 A2 (c0 = 1/R); an aspheric surface adds 8 delta D(n) h^4 "
+       "(h_bar/h)^j to S1, S2, S3, S5 (j = 0, 1, 2, 3), delta = (1 + k) c0^3/8 + A4 - c_p^3/8, "
+       "odd powers left out (odd_aspheric_terms_left_out); u is the slope along the "
        "light, y toward the film point. Marginal ray to the limited entrance pupil's edge, chief "
        "ray through the stop's centre to field_height_mm on the Gaussian image. W = S1 rho^4/8 + "
        "S2 eta rho^3 cos/2 + S3 eta^2 rho^2 cos^2/2 + (S3 + S4) eta^2 rho^2/4 + S5 eta^3 rho "
@@ -81,6 +84,11 @@ ReportPart seidelReport(const AnalyzeContext& context) {
       {"surfaces", std::move(surfaces)},
       {"total", termsJson(sums->total, chromatic)},
       {"third_order", std::move(thirdOrder)}};
+  // Surfaces (from 1) whose odd-power aspheric terms the sums leave out (seidel.h): empty for
+  // every lens without them, so that a reader can rely on the key.
+  nlohmann::json oddTerms = nlohmann::json::array();
+  for (std::size_t i : sums->surfacesWithOddTerms) oddTerms.push_back(i + 1);
+  (*part.json)["odd_aspheric_terms_left_out"] = std::move(oddTerms);
 
   part.text = formatted(
       "Welford's sums (mm); marginal ray to the %.3f mm entrance pupil radius, chief ray to a "
@@ -102,6 +110,8 @@ ReportPart seidelReport(const AnalyzeContext& context) {
   if (chromatic)
     part.text += formatted("  axial colour focus (F - C) %.4f mm, lateral colour %.4f um\n",
                            tr.axialColourLongMm, 1000.0 * tr.lateralColourMm);
+  if (const std::string note = optics::seidelOddTermsNote(*sums); !note.empty())
+    part.text += "note: " + note + "\n";
   return part;
 }
 

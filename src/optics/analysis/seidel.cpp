@@ -34,7 +34,47 @@ Dispersion dispersionOf(const LensSystem& lens) {
   return out;
 }
 
+// The surface's r^4 sag coefficient beyond that of the sphere of its paraxial curvature c_p =
+// c + 2 A_2: near the axis S(r) = (c_p / 2) r^2 + ((1 + k) c^3 / 8 + A_4) r^4 + O(r^5) (the
+// conic's c r^2 / (1 + sqrt(1 - (1 + k) c^2 r^2)) = c r^2 / 2 + (1 + k) c^3 r^4 / 8 + ...), while
+// the sphere of curvature c_p has c_p^3 / 8 there. So
+//   delta = (1 + k) c^3 / 8 + A_4 - c_p^3 / 8 = k c^3 / 8 - A_2 (c_p^2 + c_p c + c^2) / 4 + A_4,
+// the second form from c_p^3 - c^3 = (c_p - c)(c_p^2 + c_p c + c^2) with c_p - c = 2 A_2: it has no
+// cancellation between large terms, and is exactly 0 for a sphere (k = A_2 = A_4 = 0), whose sums
+// therefore stay bit for bit what they were. An r^2 term thus counts twice: it is part of the
+// paraxial curvature, and, because it adds no r^4 sag of its own, the surface's r^4 sag falls
+// short of the sphere it bends to (A_2 > 0; c_p^2 + c_p c + c^2 is never negative) or exceeds it.
+double asphericR4DeparturePerMm3(const SurfaceGeometry& s) {
+  const double c = s.curvaturePerMm, cp = s.paraxialCurvaturePerMm();
+  const double a2 = s.profile.coefficient(2), a4 = s.profile.coefficient(4);
+  return s.profile.conic() * c * c * c / 8.0 - a2 * (cp * cp + cp * c + c * c) / 4.0 + a4;
+}
+
+// Odd powers (A_3 r^3, A_5 r^5, ...) are not in the third-order scheme at all: the sag, and so
+// the wavefront, gains terms in |r|^3, |r|^5, which are not polynomials in the pupil coordinates
+// x and y, and an r^3 term acts at a lower order than S_I's rho^4. The sums leave them out and
+// say which surfaces have them. (Even powers from r^6 on are fifth order and beyond, as a
+// sphere's own higher terms are: leaving them out is what third order means.)
+bool hasOddPowerTerms(const AsphericProfile& profile) {
+  for (int power = 3; power <= profile.highestPower(); power += 2)
+    if (profile.coefficient(power) != 0.0) return true;
+  return false;
+}
+
 }  // namespace
+
+std::string seidelOddTermsNote(const SeidelSums& sums) {
+  if (sums.surfacesWithOddTerms.empty()) return {};
+  std::string list;
+  for (std::size_t k = 0; k < sums.surfacesWithOddTerms.size(); ++k) {
+    if (k > 0) list += k + 1 == sums.surfacesWithOddTerms.size() ? " and " : ", ";
+    list += std::to_string(sums.surfacesWithOddTerms[k] + 1);
+  }
+  const bool one = sums.surfacesWithOddTerms.size() == 1;
+  return std::string(one ? "surface " : "surfaces ") + list + (one ? " has" : " have") +
+         " odd-power aspheric terms (r^3, r^5, ...), which third-order sums do not describe: "
+         "they are left out";
+}
 
 double seidelFieldHeightMm(const LensSystem& lens, const AnalysisSetup& setup) {
   double largest = 0.0;
@@ -148,7 +188,8 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
   out.surfaces.resize(surfaces.size());
   for (std::size_t i = 0; i < surfaces.size(); ++i) {
     const SurfaceGeometry& s = surfaces[i];
-    const double n = s.indexFront, nAfter = s.indexRear, c = s.curvaturePerMm;
+    // The spherical part sees the paraxial curvature (c + 2 A_2), as the paraxial rays do.
+    const double n = s.indexFront, nAfter = s.indexRear, c = s.paraxialCurvaturePerMm();
     const double h = marginal[i].heightMm, hBar = chief[i].heightMm;
     const double u = marginal[i].slopeBefore, uAfter = marginal[i].slopeAfter;
     const double A = n * (h * c + u);
@@ -167,6 +208,16 @@ std::optional<SeidelSums> computeSeidelSums(const LensSystem& lens,
            ABar * hBar * (2.0 * ABar * h - A * hBar) * c * (1.0 / nAfter - 1.0 / n);
     t.cl = A * h * deltaDnOverN;
     t.ct = ABar * h * deltaDnOverN;
+    // The aspheric part (seidel.h): 8 delta (n' - n) h^4 times (h_bar / h)^j for S_I, S_II, S_III
+    // and S_V, written without dividing by h, which is 0 on a surface at an intermediate image.
+    const double aspheric = 8.0 * asphericR4DeparturePerMm3(s) * (nAfter - n);
+    if (aspheric != 0.0) {
+      t.s1 += aspheric * h * h * h * h;
+      t.s2 += aspheric * h * h * h * hBar;
+      t.s3 += aspheric * h * h * hBar * hBar;
+      t.s5 += aspheric * h * hBar * hBar * hBar;
+    }
+    if (hasOddPowerTerms(s.profile)) out.surfacesWithOddTerms.push_back(i);
     out.total += t;
   }
 

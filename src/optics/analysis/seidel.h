@@ -13,6 +13,26 @@
 //           A h_bar) c Delta(1/n), which follows with u = A/n - h c and A h_bar - A_bar h = H
 //   C_L   = A h Delta(dn/n),  C_T = A_bar h Delta(dn/n),  dn = n_F - n_C of each medium.
 //
+// Aspheric surfaces (aspheric_profile.h; Welford, the same book, on aspheric surfaces): c above is
+// the paraxial curvature c_p = c + 2 A_2, and a surface whose r^4 sag coefficient departs from
+// that of the sphere of curvature c_p by
+//   delta = (1 + k) c^3 / 8 + A_4 - c_p^3 / 8
+// adds, with Delta(n) = n' - n,
+//   dS_I = 8 delta Delta(n) h^4,  dS_II = dS_I (h_bar / h),  dS_III = dS_I (h_bar / h)^2,
+//   dS_IV = 0,  dS_V = dS_I (h_bar / h)^3,  chromatic sums unchanged
+// (used as 8 delta Delta(n) h^3 h_bar and so on, without the division). Why: the extra sag
+// delta r^4 moves the surface along the light, which changes the optical path at height r by
+// (n - n') delta r^4, a pure r^4 wavefront term in the marginal ray's pupil; a ray of the field
+// meets the surface at the pupil point shifted by h_bar/h, and expanding (rho + eta h_bar/h)^4
+// gives the other terms. The sign in this file's convention (positive S_I: a positive lens's
+// undercorrection): a conic alone (delta = k c^3 / 8) gives dS_I = k c^3 h^4 Delta(n), which
+// cancels a single surface's S_I = h^4 c^3 (n - 1) / n^2 (parallel light from air into glass of
+// index n) at k = -1/n^2, the ellipsoid of eccentricity 1/n that focuses that light perfectly
+// (and, glass to air, S_I = -n^2 h^4 c^3 (n - 1) at k = -n^2, the hyperboloid).
+// Odd powers (A_3 r^3, ...) have no place in the scheme (terms in |r|^3); they are left out and
+// listed in SeidelSums::surfacesWithOddTerms. Even powers from r^6 on are of fifth and higher
+// order, as a sphere's own higher terms are.
+//
 // Conventions (Welford's): light travels from the object (the lens frame's +z) toward the film;
 // u is the paraxial slope dy/ds along the light, h the height at the surface's vertex plane, c the
 // curvature (> 0 with the centre toward the film, as SurfaceGeometry has it). y is the lens
@@ -30,6 +50,7 @@
 // and the transverse ray aberration on the Gaussian image plane is (dW/dx, dW/dy) / (n' u'),
 // u' the marginal ray's final slope. SeidelTransverse lists the classical consequences.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -82,7 +103,14 @@ struct SeidelSums {
   // Paraxial image plane from the film, along the light (positive: behind the film).
   double gaussianImageFromFilmMm = 0;
   SeidelTransverse transverse;
+  // Surfaces (indices into `surfaces`) with odd-power aspheric terms, which the sums leave out.
+  std::vector<std::size_t> surfacesWithOddTerms;
 };
+
+// "surface 3 has odd-power aspheric terms ..., which third-order sums do not describe: they are
+// left out" (surfaces counted from 1, as `info` and the viewer count), or "" when none has them:
+// the caveat the Seidel panel and `analyze` print beside the sums.
+std::string seidelOddTermsNote(const SeidelSums& sums);
 
 // The sums for `lens` (at its wavelength; the chromatic sums use n_F - n_C of each medium) with
 // the object at objectDistanceFromFilmMm (nullopt: infinity) and the chief ray scaled to
