@@ -230,8 +230,9 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
                       kColumnNames[tokens.size()]);
     }
     if (lens.prescription.surfaces.size() == kMaxLensFileSurfaces)
-      return fail(lineNumber, 1,
-                  "too many surfaces: a lens file holds at most " + std::to_string(kMaxLensFileSurfaces));
+      return fail(
+          lineNumber, 1,
+          "too many surfaces: a lens file holds at most " + std::to_string(kMaxLensFileSurfaces));
     Surface surface;
     surface.radiusMm = values[0];
     surface.thicknessMm = values[1];

@@ -41,10 +41,8 @@ struct Surface {
   std::optional<double> abbeD;
   double apertureDiameterMm = 0.0;
   // Conic constant and polynomial terms beyond the vertex curvature (aspheric_profile.h); the
-  // sphere by default. Issue 40 is bringing them through lenslab a part at a time: today the
-  // exact traces (scalar and batch), the exit-pupil tables, the paraxial data and the Seidel
-  // sums follow them; validation, the outline, flip and scale, and every file format do not yet,
-  // and nothing builds a lens with them outside the tests.
+  // sphere by default. The traces, exit-pupil tables, paraxial data (c + 2 A2), Seidel sums,
+  // validation and the outline follow them; .lens files (native_lens_file.h) hold them.
   AsphericProfile profile = {};
 
   bool isStop() const { return radiusMm == 0.0; }

@@ -1,5 +1,7 @@
-// The lens as its file reads: the text "Save lens" writes (pbrt's lens format, with lenslab's
-// V_d column), for reading the prescription as numbers and copying it into notes or slides.
+// The lens as its file reads: the text "Save lens" writes, for reading the prescription as numbers
+// and copying it into notes or slides. That is pbrt's format (with lenslab's V_d column) for a
+// lens opened from a .dat that still fits it, and lenslab's .lens otherwise (a .lens file, a new
+// lens, or one with a conic or aspheric terms, which .dat cannot hold).
 
 #include <filesystem>
 #include <string>
@@ -7,17 +9,23 @@
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "optics/lens_file.h"
+#include "optics/native_lens_file.h"
 
 namespace lenslab::app {
 
 void drawLensFilePanel(ViewerState& state, const PanelPlace& place) {
   if (beginPanel("Lens file", place)) {
     // A dozen rows format in microseconds; only the shown tab draws, so no cache is needed.
-    const std::string text =
-        optics::formatLensText(state.lens.prescription(), state.lens.document().headerComments());
+    const std::string& path = state.lens.path();
+    const bool asDat = !path.empty() && !optics::hasNativeLensExtension(path) &&
+                       optics::whyNotDat(state.lens.prescription()).empty();
+    optics::LensFile file;
+    file.prescription = state.lens.prescription();
+    file.headerComments = state.lens.document().headerComments();
+    const std::string text = asDat ? optics::formatLensText(file.prescription, file.headerComments)
+                                   : optics::formatNativeLensText(file);
     if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(text.c_str());
     ImGui::SameLine();
-    const std::string& path = state.lens.path();
     const std::string origin =
         path.empty() ? std::string("not saved yet")
                      : std::filesystem::path(path).filename().string() +
