@@ -222,9 +222,24 @@ class BadCatalog : public ::testing::Test {
 };
 
 TEST_F(BadCatalog, AGoodRowLoads) {
-  const GlassCatalogLoad good = load("G1,optical,2,sellmeier2,0 1 0.01,0.3,2.5,,,,,,,\n");
+  // A quoted field may hold a comma (and "" a quote); a blank line and CR LF endings are fine.
+  const GlassCatalogLoad good =
+      load("G1,\"a, \"\"b\"\"\",2,sellmeier2,0 1 0.01,0.3,2.5,,,,,,,\r\n\r\n");
+  for (const std::string& error : good.errors) ADD_FAILURE() << error;
   ASSERT_TRUE(good.catalog);
+  ASSERT_EQ(good.catalog->size(), 1u);
   EXPECT_EQ(good.catalog->glasses()[0].maker, "BAD");
+  EXPECT_EQ(good.catalog->glasses()[0].group, "a, \"b\"");
+  // n^2 - 1 = 1 * lambda^2 / (lambda^2 - 0.01), the formula 2 row above, at the d line.
+  const double l2 = 0.5875618 * 0.5875618;
+  EXPECT_NEAR(*good.catalog->glasses()[0].nd, std::sqrt(1.0 + l2 / (l2 - 0.01)), 1e-14);
+}
+
+TEST_F(BadCatalog, ADirectoryWithoutCataloguesIsAnError) {
+  const GlassCatalogLoad empty = loadGlassCatalog(directory_);
+  EXPECT_FALSE(empty.catalog);
+  ASSERT_EQ(empty.errors.size(), 1u);
+  EXPECT_EQ(empty.errors[0], directory_.string() + ": no glass catalogue (*.csv) there");
 }
 
 TEST_F(BadCatalog, ErrorsSayFileLineAndColumn) {
