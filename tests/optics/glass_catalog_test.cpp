@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -118,7 +119,7 @@ TEST(GlassCatalog, SchottIndicesMatchCodeV) {
                           Listed{"N-SK16", {1.617271, 1.620408, 1.627559}}}) {
     const CatalogGlass& g = glass(l.name, "schott");
     for (int i = 0; i < 3; ++i) {
-      const IndexAtWavelength n = refractiveIndexAt(g.formula, wavelengthsNm[i], g.name);
+      const IndexAtWavelength n = refractiveIndexAt(g, wavelengthsNm[i]);
       ASSERT_TRUE(n) << n.error;
       EXPECT_NEAR(*n.index, l.n[i], 7e-7) << l.name << " at " << wavelengthsNm[i] << " nm";
     }
@@ -267,6 +268,24 @@ TEST_F(BadCatalog, ErrorsSayFileLineAndColumn) {
   EXPECT_FALSE(missing.catalog);
   ASSERT_FALSE(missing.errors.empty());
   EXPECT_EQ(missing.errors[0], "bad.csv:1:1: no column \"formula\"");
+}
+
+TEST(GlassCatalog, TheDefaultCatalogueIsLoadedOnceForAllThreads) {
+  std::vector<const GlassCatalogLoad*> seen(8, nullptr);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    threads.emplace_back([&seen, i] { seen[i] = &defaultGlassCatalog(); });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (const GlassCatalogLoad* load : seen) EXPECT_EQ(load, seen[0]);
+  // The test binary is not the lenslab binary of the build tree: the `glass` resource is found
+  // only if lenslab is installed in the configured prefix. Either way the answer is definite.
+  if (seen[0]->catalog) {
+    EXPECT_EQ(seen[0]->catalog->size(), 1735u);
+  } else {
+    ASSERT_EQ(seen[0]->errors.size(), 1u);
+    EXPECT_NE(seen[0]->errors[0].find("glass catalogues"), std::string::npos);
+  }
 }
 
 TEST(GlassCatalog, MissingDirectoryIsAnError) {

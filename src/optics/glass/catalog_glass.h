@@ -31,4 +31,10 @@ struct CatalogGlass {
   int sourceLine = 0;
 };
 
+// The glass's index at lambda (nm) from its own formula; outside the formula's range an error
+// naming the glass, the wavelength and the range (dispersion_formula.h).
+inline IndexAtWavelength refractiveIndexAt(const CatalogGlass& glass, double wavelengthNm) {
+  return refractiveIndexAt(glass.formula, wavelengthNm, glass.name);
+}
+
 }  // namespace lenslab::optics

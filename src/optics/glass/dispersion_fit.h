@@ -36,8 +36,9 @@
 // rule's bound); evaluated in float as the kernel will, 7.1e-7. With K = 7 for every glass the
 // worst would be 1.8e-7. Without the lambda^2 term, K = 8 would be needed (K = 7 misses HOYA
 // FDS16-W by 4%). Tabulated materials (LZOS, most crystals), interpolated linearly between
-// measured points, have kinks no smooth series follows to 1e-6: their fit says how far it is
-// (maxErrorAbs) with `withinTolerance` false, for the caller to decide.
+// measured points, have kinks no smooth series follows to 1e-6, and LZOS's tables are not smooth
+// at 1e-4 (the K = 7 series misses their own points by 5e-5 to 3e-4): their fit says how far it
+// is (maxErrorAbs) with `withinTolerance` false, for the caller to decide.
 
 #include <array>
 #include <optional>
