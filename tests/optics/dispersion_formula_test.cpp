@@ -86,6 +86,9 @@ TEST(DispersionFormula, TableInterpolatesOnTheStraightLine) {
   EXPECT_NEAR(k8.indexAtUm(0.5), 1.521016153846, 1e-12);
   EXPECT_DOUBLE_EQ(k8.indexAtUm(0.4880), 1.52181);  // a tabulated point itself
   EXPECT_DOUBLE_EQ(k8.indexAtUm(0.5140), 1.52009);  // the last one
+  // Beyond the table: no index, even unchecked, never an extrapolation.
+  EXPECT_TRUE(std::isnan(k8.indexAtUm(0.52)));
+  EXPECT_TRUE(std::isnan(k8.indexAtUm(0.46)));
 }
 
 TEST(DispersionFormula, OutsideTheRangeIsAnErrorNamingGlassWavelengthAndRange) {

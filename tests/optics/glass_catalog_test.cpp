@@ -264,6 +264,9 @@ TEST_F(BadCatalog, ErrorsSayFileLineAndColumn) {
              "bad.csv:2:14: a quoted field is not closed on its line");
   expectOnly(load("G2,optical,tab,tabulated,0.5 1.5 0.4,0.4,0.5,,,,,,,\n"),
              "bad.csv:2:26: a table needs pairs of wavelength and index");
+  // "G2,optical,tab,tabulated,0.4 1.5 0.5 1.4," is 41 characters: lmin_um at 42.
+  expectOnly(load("G2,optical,tab,tabulated,0.4 1.5 0.5 1.4,0.3,0.5,,,,,,,\n"),
+             "bad.csv:2:42: the range 0.3-0.5 um reaches beyond the table's 0.4-0.5 um");
   const GlassCatalogLoad missing = load("", "name,group,formula_id\n");
   EXPECT_FALSE(missing.catalog);
   ASSERT_FALSE(missing.errors.empty());

@@ -47,7 +47,11 @@ double rootOfSquare(double n2) { return n2 > 0.0 ? std::sqrt(n2) : kNaN; }
 double tabulated(const std::vector<double>& c, double lambda) {
   const std::size_t points = c.size() / 2;
   if (points == 0) return kNaN;
-  if (points == 1) return lambda == c[0] ? c[1] : kNaN;
+  // Never beyond the table's ends (a range wider than the table is refused at load).
+  const double first = c[0], last = c[2 * (points - 1)];
+  if (lambda < first - kRangeSlackUm || lambda > last + kRangeSlackUm) return kNaN;
+  if (points == 1) return c[1];
+  lambda = std::clamp(lambda, first, last);
   // The first tabulated wavelength at or above lambda (clamped so that [j-1, j] is an interval).
   std::size_t j = 1;
   while (j + 1 < points && c[2 * j] < lambda) ++j;

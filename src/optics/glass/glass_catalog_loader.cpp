@@ -151,6 +151,14 @@ std::optional<CatalogGlass> readGlass(const CsvTable& table, const CsvRecord& re
         dispersionCoefficientsProblem(glass.formula.kind, glass.formula.coefficients);
     if (!problem.empty()) row.fail("coefficients", problem);
   }
+  const std::vector<double>& points = glass.formula.coefficients;
+  if (row.ok() && glass.formula.kind == DispersionFormulaKind::Tabulated &&
+      (glass.formula.minimumUm < points.front() ||
+       glass.formula.maximumUm > points[points.size() - 2])) {
+    row.fail("lmin_um", formatted("the range %g-%g um reaches beyond the table's %g-%g um",
+                                  glass.formula.minimumUm, glass.formula.maximumUm, points.front(),
+                                  points[points.size() - 2]));
+  }
   row.optionalNumber("nd");  // checked for form only: lenslab computes its own
   row.optionalNumber("vd");
   glass.catalogNd = row.optionalNumber("nd_cat");
