@@ -25,6 +25,13 @@ bool sameDirectory(const std::filesystem::path& a, const std::filesystem::path& 
 
 }  // namespace
 
+std::filesystem::path checkoutLocation(const std::string& name) {
+  // The glass catalogues are data, not a library a user browses: the checkout keeps them under
+  // data/ (with their source named there), while an install puts them beside lenses/.
+  if (name == "glass") return std::filesystem::path("data") / "glass";
+  return name;
+}
+
 ResourceSearchPlaces resourceSearchPlaces() {
   ResourceSearchPlaces places;
   places.executableDirectory = executableDirectory();
@@ -43,7 +50,7 @@ std::vector<std::filesystem::path> resourceCandidates(const std::string& name,
     candidates.push_back(exe / name);
     // The build tree keeps the data in the checkout, not beside build/lenslab.
     if (sameDirectory(exe, places.buildDirectory) && !places.sourceDirectory.empty()) {
-      candidates.push_back(places.sourceDirectory / name);
+      candidates.push_back(places.sourceDirectory / checkoutLocation(name));
     }
     if (!places.dataDirectoryFromExecutable.empty()) {
       candidates.push_back(exe / places.dataDirectoryFromExecutable / name);

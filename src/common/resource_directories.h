@@ -1,7 +1,7 @@
 #pragma once
-// Finding lenslab's bundled data directories (lenses/, scenes/) wherever the binary runs from:
-// the build tree, an install under any prefix (cmake --install --prefix P, the .deb's /usr), or
-// the prefix configured at build time. The viewer's defaults and its Library menu use this.
+// Finding lenslab's bundled data directories (lenses/, scenes/, glass/) wherever the binary runs
+// from: the build tree, an install under any prefix (cmake --install --prefix P, the .deb's /usr),
+// or the prefix configured at build time. The viewer's defaults and its Library menu use this.
 
 #include <filesystem>
 #include <string>
@@ -27,9 +27,13 @@ struct ResourceSearchPlaces {
 // This binary's places: its own directory (from /proc/self/exe) and what CMake configured.
 ResourceSearchPlaces resourceSearchPlaces();
 
+// Where the checkout keeps the resource `name`, relative to its top: `name` itself, except
+// "glass", which lives in data/glass (installed as share/lenslab/glass, beside lenses/).
+std::filesystem::path checkoutLocation(const std::string& name);
+
 // The directories that may hold `name`, in the order they are tried: beside the executable (in
-// the build tree: the source tree), <executable>/<dataDirectoryFromExecutable>/name, then
-// <installDataDirectory>/name.
+// the build tree: the source tree's checkoutLocation(name)),
+// <executable>/<dataDirectoryFromExecutable>/name, then <installDataDirectory>/name.
 std::vector<std::filesystem::path> resourceCandidates(const std::string& name,
                                                       const ResourceSearchPlaces& places);
 

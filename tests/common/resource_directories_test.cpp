@@ -42,6 +42,17 @@ TEST(ResourceDirectories, TheBuildTreeUsesTheCheckout) {
   EXPECT_EQ(findResourceDirectory("lenses", trees.places(trees.build())), lenses);
 }
 
+TEST(ResourceDirectories, TheGlassCataloguesAreUnderDataInTheCheckoutAndBesideLensesInstalled) {
+  const FakeTrees trees = makeTrees("glass");
+  makeDirectory(trees.build());
+  makeDirectory(trees.source() / "glass");  // not where the checkout keeps them
+  const fs::path checkout = makeDirectory(trees.source() / "data" / "glass");
+  EXPECT_EQ(findResourceDirectory("glass", trees.places(trees.build())), checkout);
+  const fs::path bin = makeDirectory(trees.movedPrefix() / "bin");
+  const fs::path installed = makeDirectory(trees.movedPrefix() / "share" / "lenslab" / "glass");
+  EXPECT_EQ(findResourceDirectory("glass", trees.places(bin)), installed);
+}
+
 TEST(ResourceDirectories, AnInstallUnderAnotherPrefixUsesItsOwnShareDirectory) {
   const FakeTrees trees = makeTrees("moved");
   const fs::path bin = makeDirectory(trees.movedPrefix() / "bin");

@@ -103,9 +103,13 @@ TEST_F(InstalledTree, HoldsTheBinaryTheDataAndTheDesktopFilesAndNothingElse) {
   std::set<std::string> expected = {"bin/lenslab", "share/applications/lenslab.desktop",
                                     "share/icons/hicolor/scalable/apps/lenslab.svg",
                                     "share/icons/hicolor/256x256/apps/lenslab.png"};
-  for (const std::string directory : {"lenses", "scenes"}) {
-    for (const auto& entry : fs::directory_iterator(fs::path(LENSLAB_SOURCE_DIR) / directory)) {
-      expected.insert("share/lenslab/" + directory + "/" + entry.path().filename().string());
+  // Each bundled directory of the checkout and its installed name (the glass catalogues are
+  // data/glass in the checkout).
+  for (const auto& [checkout, installed] : {std::pair<std::string, std::string>{"lenses", "lenses"},
+                                            {"scenes", "scenes"},
+                                            {"data/glass", "glass"}}) {
+    for (const auto& entry : fs::directory_iterator(fs::path(LENSLAB_SOURCE_DIR) / checkout)) {
+      expected.insert("share/lenslab/" + installed + "/" + entry.path().filename().string());
     }
   }
   EXPECT_EQ(filesUnder(prefix), expected);  // no test or benchmark executable
