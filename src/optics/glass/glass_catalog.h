@@ -24,8 +24,9 @@ struct GlassLookup {
   // Every maker with a glass of that name, in glassMakerOrder(); more than one when the name is
   // ambiguous and no maker was given: `glass` is then the first maker's.
   std::vector<std::string> makers;
-  // The not-found message: "no catalogue has a glass named \"NBK8\" (nearest: N-BK7, N-BK10,
-  // BK8)", or "SCHOTT has no glass named ..." when a maker was given.
+  // The not-found message: `no glass catalogue has a glass named "NBK8" (nearest: BK8, N-BK7,
+  // BF8)`, `OHARA's catalogue has no glass named "N-BK7" (nearest: ...)` when a maker was given,
+  // or `no glass catalogue from a maker named "Acme" (makers: SCHOTT, ...)`.
   std::string error;
   std::vector<std::string> suggestions;  // up to 3 nearest names (for the message and a GUI)
 
@@ -56,7 +57,8 @@ class GlassCatalog {
   std::vector<const CatalogGlass*> complete(std::string_view prefix, std::string_view maker = {},
                                             std::size_t limit = 20) const;
 
-  // Up to `count` names nearest `name` (edit distance between keys), nearest first.
+  // Up to `count` distinct names within half `name`'s key length (at least 1) of edits of it
+  // (Levenshtein distance between keys), nearest first, then by name.
   std::vector<std::string> nearestNames(std::string_view name, std::size_t count = 3,
                                         std::string_view maker = {}) const;
 
