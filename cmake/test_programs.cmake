@@ -26,4 +26,8 @@ function(lenslab_test_program target)
     <algorithm> <chrono> <cmath> <cstdint> <cstdio> <filesystem> <fstream> <functional>
     <limits> <map> <memory> <numbers> <optional> <random> <regex> <set> <sstream> <string>
     <thread> <vector>)
+  # A test program runs outside the trees the resource lookup knows (common/resource_directories.h):
+  # tests/support/bundled_glass.h points the glass catalogue at the checkout's copy.
+  target_compile_definitions(${target} PRIVATE
+    LENSLAB_BUNDLED_GLASS_DIR="${PROJECT_SOURCE_DIR}/data/glass")
 endfunction()

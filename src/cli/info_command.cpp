@@ -98,6 +98,9 @@ nlohmann::json toJson(const optics::LoadedLens& loaded, const InfoArguments& arg
          {"thickness_mm", s.thicknessMm},
          {"n_d", s.mediumIndexD()},
          {"abbe_d", s.abbeD ? nlohmann::json(*s.abbeD) : nlohmann::json(nullptr)},
+         // The catalogue glass by name and maker; null for a model glass (n_d, abbe_d) or air.
+         {"glass", s.glass ? nlohmann::json(s.glass->name) : nlohmann::json(nullptr)},
+         {"glass_maker", s.glass ? nlohmann::json(s.glass->maker) : nlohmann::json(nullptr)},
          {"conic", finiteOrNull(s.profile.conic())},
          {"aspheric_coefficients", asphericCoefficientsJson(s.profile)},
          {"n", lens.surfaces()[i].indexRear},

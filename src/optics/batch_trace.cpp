@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <stdexcept>
 
 #include <vector>
 
@@ -418,6 +419,10 @@ void LensSystem::traceFromSceneBatch(LensRayBatch& rays, const float* wavelength
 
 void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, BatchKernel kernel,
                             bool fromFilm) const {
+  // Per-ray indices come from the model glasses' n = a + b / lambda^2 only: a catalogue glass
+  // would be approximated, silently, so the callers check spectralTraceProblem() first.
+  if (invWavelengthSq && hasCatalogGlass_)
+    throw std::logic_error("LensSystem: " + spectralTraceProblem());
   constexpr int kMaxOnStack = 64;
   SurfaceF stackSurfaces[kMaxOnStack];
   std::vector<SurfaceF> heapSurfaces;

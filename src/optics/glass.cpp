@@ -20,8 +20,15 @@ double refractiveIndex(double nD, std::optional<double> abbeD, double wavelength
 
 bool lensHasDispersion(const Prescription& prescription) {
   for (const Surface& s : prescription.surfaces)
-    if (s.abbeD && *s.abbeD > 0.0 && s.mediumIndexD() > 1.0) return true;
+    if (s.glass || (s.abbeD && *s.abbeD > 0.0 && s.mediumIndexD() > 1.0)) return true;
   return false;
+}
+
+IndexAtWavelength mediumIndexAt(const Surface& surface, double wavelengthNm) {
+  if (surface.glass) return refractiveIndexAt(*surface.glass, wavelengthNm);
+  IndexAtWavelength out;
+  out.index = refractiveIndex(surface.mediumIndexD(), surface.abbeD, wavelengthNm);
+  return out;
 }
 
 }  // namespace lenslab::optics

@@ -1,6 +1,7 @@
 #pragma once
-// Refractive index as a function of wavelength for glasses given by n_d and V_d: the one glass
-// model of lenslab (the analyses, `lenslab info --wavelength`, the spectral render).
+// Refractive index as a function of wavelength for model glasses, given by n_d and V_d (the
+// analyses, `lenslab info --wavelength`, the spectral render); catalogue glasses follow their
+// makers' formulas (glass/catalog_glass.h), and mediumIndexAt below picks the one a surface has.
 //
 // Model: Cauchy's dispersion formula cut to its first two terms, n(lambda) = A + B / lambda^2
 // (A.-L. Cauchy, "Memoire sur la dispersion de la lumiere", Prague, 1836; the two-term form is the
@@ -36,8 +37,13 @@ CauchyCoefficients cauchyCoefficients(double nD, std::optional<double> abbeD);
 // cauchyCoefficients(nD, abbeD).at(wavelengthNm).
 double refractiveIndex(double nD, std::optional<double> abbeD, double wavelengthNm);
 
-// True when some medium of the lens has an Abbe number (and an index above 1): only then does
-// its focus depend on the wavelength.
+// True when some medium of the lens is a catalogue glass or has an Abbe number (and an index
+// above 1): only then does its focus depend on the wavelength.
 bool lensHasDispersion(const Prescription& prescription);
+
+// The index of the medium after `surface` at lambda (nm): its catalogue glass's own formula, or
+// the model glass's fit above. A catalogue glass has none outside its formula's range: the result
+// then says why ("N-BK7: 250 nm is outside its dispersion formula's range, 300-2500 nm").
+IndexAtWavelength mediumIndexAt(const Surface& surface, double wavelengthNm);
 
 }  // namespace lenslab::optics

@@ -300,9 +300,13 @@ std::string formatLensText(const Prescription& prescription,
 
 std::string whyNotDat(const Prescription& prescription) {
   for (std::size_t i = 0; i < prescription.surfaces.size(); ++i) {
-    if (!prescription.surfaces[i].profile.isSphere())
+    const Surface& s = prescription.surfaces[i];
+    if (!s.profile.isSphere())
       return "surface " + std::to_string(i + 1) +
              " has a conic or aspheric terms, which pbrt's .dat cannot hold (save as .lens)";
+    if (s.glass)
+      return "surface " + std::to_string(i + 1) + "'s glass " + s.glass->name +
+             " is a catalogue glass, and pbrt's .dat holds only n_d and V_d (save as .lens)";
   }
   return {};
 }

@@ -94,15 +94,18 @@ void LensSystem::place() {
     s.profile = rows[k].isStop() ? AsphericProfile{} : rows[k].profile;
     s.semiApertureMm = 0.5 * rows[k].apertureDiameterMm;
     s.isStop = rows[k].isStop();
-    s.indexRear = refractiveIndex(rows[k].mediumIndexD(), rows[k].abbeD, wavelengthNm_);
+    // build() and withWavelength() have checked that every catalogue glass covers the wavelength.
+    s.indexRear = mediumIndexAt(rows[k], wavelengthNm_).index.value_or(rows[k].mediumIndexD());
   }
   for (std::size_t k = 0; k < rows.size(); ++k)
     surfaces_[k].indexFront = k == 0 ? 1.0 : surfaces_[k - 1].indexRear;
   glassRear_.resize(rows.size());
   disperses_ = false;
+  hasCatalogGlass_ = false;
   for (std::size_t k = 0; k < rows.size(); ++k) {
     glassRear_[k] = cauchyCoefficients(rows[k].mediumIndexD(), rows[k].abbeD);
-    disperses_ = disperses_ || glassRear_[k].bNm2 != 0.0;
+    disperses_ = disperses_ || glassRear_[k].bNm2 != 0.0 || rows[k].glass;
+    hasCatalogGlass_ = hasCatalogGlass_ || rows[k].glass;
   }
   firstOrder_ = computeFirstOrder(surfaces_, stopIndex_, wavelengthNm_);
   clipRadiusSqMm2_.resize(surfaces_.size());
@@ -119,11 +122,25 @@ void LensSystem::place() {
   stopTest_ = StopShapeTest(prescription_.stopShape, stopRadiusMm);
 }
 
+std::vector<ValidationError> LensSystem::wavelengthProblems(const Prescription& prescription,
+                                                            double wavelengthNm) {
+  std::vector<ValidationError> errors;
+  if (!(std::isfinite(wavelengthNm) && wavelengthNm > 0.0)) {
+    errors.push_back({-1, "wavelength must be a positive number of nanometres"});
+    return errors;
+  }
+  for (std::size_t k = 0; k < prescription.surfaces.size(); ++k) {
+    const IndexAtWavelength n = mediumIndexAt(prescription.surfaces[k], wavelengthNm);
+    if (!n) errors.push_back({static_cast<int>(k), n.error});
+  }
+  return errors;
+}
+
 BuildResult LensSystem::build(const Prescription& prescription, double wavelengthNm) {
   BuildResult result;
   result.errors = validate(prescription);
-  if (!(std::isfinite(wavelengthNm) && wavelengthNm > 0.0))
-    result.errors.push_back({-1, "wavelength must be a positive number of nanometres"});
+  if (!result.errors.empty()) return result;
+  result.errors = wavelengthProblems(prescription, wavelengthNm);
   if (!result.errors.empty()) return result;
   result.system = std::make_shared<LensSystem>(Private{}, prescription, wavelengthNm);
   return result;
@@ -147,7 +164,7 @@ std::shared_ptr<const LensSystem> LensSystem::withStopDiameter(double stopDiamet
 }
 
 std::shared_ptr<const LensSystem> LensSystem::withWavelength(double wavelengthNm) const {
-  if (!(std::isfinite(wavelengthNm) && wavelengthNm > 0.0)) return nullptr;
+  if (!wavelengthProblems(prescription_, wavelengthNm).empty()) return nullptr;
   return std::make_shared<LensSystem>(Private{}, prescription_, wavelengthNm, clipping_);
 }
 
@@ -175,9 +192,23 @@ std::shared_ptr<const LensSystem> LensSystem::withCircumscribedStop() const {
   return std::make_shared<LensSystem>(Private{}, std::move(p), wavelengthNm_, clipping_);
 }
 
-FirstOrderData LensSystem::firstOrderAt(double wavelengthNm) const {
+std::optional<FirstOrderData> LensSystem::firstOrderAt(double wavelengthNm) const {
   if (wavelengthNm == wavelengthNm_) return firstOrder_;
-  return withWavelength(wavelengthNm)->firstOrder();
+  const auto atWavelength = withWavelength(wavelengthNm);
+  if (!atWavelength) return std::nullopt;
+  return atWavelength->firstOrder();
+}
+
+std::string LensSystem::spectralTraceProblem() const {
+  if (!hasCatalogGlass_) return {};
+  for (std::size_t k = 0; k < prescription_.surfaces.size(); ++k) {
+    if (const auto& glass = prescription_.surfaces[k].glass) {
+      return "surface " + std::to_string(k + 1) + "'s glass " + glass->name +
+             " is a catalogue glass, which the spectral render's batch trace does not follow yet "
+             "(issue 40): rendering in RGB";
+    }
+  }
+  return {};
 }
 
 template <bool kRecord>

@@ -229,7 +229,17 @@ class LensSystem {
 
   // First-order (paraxial) data at the system's wavelength, or at another one.
   const FirstOrderData& firstOrder() const { return firstOrder_; }
-  FirstOrderData firstOrderAt(double wavelengthNm) const;
+  // Empty at a wavelength where the lens cannot be built (outside a catalogue glass's range).
+  std::optional<FirstOrderData> firstOrderAt(double wavelengthNm) const;
+  // Why the spectral batch trace (per-ray wavelengths) cannot follow this lens, empty when it
+  // can: it evaluates model glasses' n(lambda) only, so a lens with a catalogue glass renders in
+  // RGB (render/spectral_mode.h), and traceFromFilmBatch/traceFromSceneBatch with wavelengths
+  // refuse it (std::logic_error) rather than approximate its glass.
+  std::string spectralTraceProblem() const;
+  // What stops the lens being built at a wavelength: not a positive number, or outside a
+  // catalogue glass's range (an error at its row). build() and withWavelength() check it.
+  static std::vector<ValidationError> wavelengthProblems(const Prescription& prescription,
+                                                         double wavelengthNm);
 
   LensSystem(const LensSystem&) = delete;
   LensSystem& operator=(const LensSystem&) = delete;
@@ -266,6 +276,7 @@ class LensSystem {
   StopShapeTest stopTest_;
   // The Cauchy fit of the medium after surface k (glass.h), for the spectral trace.
   std::vector<CauchyCoefficients> glassRear_;
+  bool hasCatalogGlass_ = false;  // some medium is a catalogue glass (spectralTraceProblem)
   bool disperses_ = false;
 
   mutable std::once_flag pupilOnce_;

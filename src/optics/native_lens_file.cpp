@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "optics/glass/glass_catalog.h"
+#include "optics/glass/glass_catalog_loader.h"
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
@@ -67,7 +69,7 @@ std::vector<TextLine> splitTextLines(std::string_view text) {
 }
 
 // What a value may be, for its checks and its message.
-enum class ValueKind { Radius, Length, Diameter, Index, Abbe, Conic, Coefficient, Focal };
+enum class ValueKind { Radius, Length, Diameter, Index, Abbe, Conic, Coefficient, Focal, Name };
 
 // Parses a number token; an error message, or empty.
 std::string parseNamedValue(std::string_view text, std::string_view name, ValueKind kind,
@@ -119,6 +121,7 @@ std::string parseNamedValue(std::string_view text, std::string_view name, ValueK
       break;
     case ValueKind::Conic:
     case ValueKind::Coefficient:
+    case ValueKind::Name:
       break;  // any finite number
   }
   return message.str();
@@ -137,6 +140,8 @@ std::optional<SurfaceKey> surfaceKey(std::string_view name, int& power) {
   if (name == "nd") return SurfaceKey{ValueKind::Index, true};
   if (name == "vd") return SurfaceKey{ValueKind::Abbe, true};
   if (name == "conic") return SurfaceKey{ValueKind::Conic, false};
+  if (name == "glass") return SurfaceKey{ValueKind::Name, true};
+  if (name == "maker") return SurfaceKey{ValueKind::Name, true};
   if (name.size() >= 2 && name.size() <= 3 && name.front() == 'a') {
     int p = 0;
     const auto [stop, error] = std::from_chars(name.data() + 1, name.data() + name.size(), p);
@@ -149,7 +154,8 @@ std::optional<SurfaceKey> surfaceKey(std::string_view name, int& power) {
   return std::nullopt;
 }
 
-constexpr const char* kSurfaceKeyNames = "radius, thickness, diameter, nd, vd, conic, a2 ... a20";
+constexpr const char* kSurfaceKeyNames =
+    "radius, thickness, diameter, glass, maker, nd, vd, conic, a2 ... a20";
 
 // Shortest text that from_chars reads back to the same double; inf for infinity.
 std::string exactNumber(double value) {
@@ -302,14 +308,16 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
                     "unknown surface property '" + std::string(name.text) + "' (expected " +
                         kSurfaceKeyNames + ")");
       if (isStop && !property->onStop)
-        return fail(line.lineNumber, name.column,
-                    "the stop is a plane opening: it takes thickness, diameter, nd and vd, not '" +
-                        std::string(name.text) + "'");
+        return fail(
+            line.lineNumber, name.column,
+            "the stop is a plane opening: it takes thickness, diameter and a medium, not '" +
+                std::string(name.text) + "'");
       if (!given.emplace(std::string(name.text), name.column).second)
         return fail(line.lineNumber, name.column, "'" + std::string(name.text) + "' given twice");
       if (k + 1 >= tokens.size())
         return fail(line.lineNumber, name.column + static_cast<int>(name.text.size()) + 1,
                     "'" + std::string(name.text) + "' needs a value");
+      if (property->kind == ValueKind::Name) continue;  // read below, once the row is known
       double value = 0.0;
       const std::string error =
           parseNamedValue(tokens[k + 1].text, name.text, property->kind, value);
@@ -334,8 +342,48 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
       return fail(line.lineNumber, given.at("radius"),
                   "radius 0 is not a surface (write 'stop' for the aperture stop, or inf for a "
                   "flat surface)");
+    if (given.count("glass") && (given.count("nd") || given.count("vd")))
+      return fail(line.lineNumber, given.count("nd") ? given.at("nd") : given.at("vd"),
+                  "a medium is a catalogue glass or n_d and V_d, not both (the glass's own are "
+                  "used)");
+    if (given.count("maker") && !given.count("glass"))
+      return fail(line.lineNumber, given.at("maker"), "'maker' without 'glass'");
     if (given.count("vd") && !given.count("nd"))
       return fail(line.lineNumber, given.at("vd"), "'vd' without 'nd' (the medium's n_d)");
+    if (given.count("glass")) {
+      // The words after 'glass' and 'maker' (their values are the next words).
+      const auto valueOf = [&](const char* name) {
+        const int column = given.at(name);
+        for (std::size_t k = 1; k + 1 < tokens.size(); k += 2)
+          if (tokens[k].column == column) return tokens[k + 1];
+        return Word{};
+      };
+      const Word glassName = valueOf("glass");
+      const Word maker = given.count("maker") ? valueOf("maker") : Word{};
+      const GlassCatalogLoad& catalogues = defaultGlassCatalog();
+      if (!catalogues.catalog)
+        return fail(line.lineNumber, glassName.column,
+                    "cannot look up glass '" + std::string(glassName.text) + "': " +
+                        (catalogues.errors.empty() ? std::string("no catalogue")
+                                                   : catalogues.errors.front()));
+      const GlassLookup found = catalogues.catalog->lookup(glassName.text, maker.text);
+      if (!found)
+        return fail(line.lineNumber, given.count("maker") ? maker.column : glassName.column,
+                    found.error);
+      if (found.ambiguous() && !given.count("maker"))
+        result.diagnostics.note({fileName, line.lineNumber, glassName.column},
+                                found.choiceNote() + " (write 'maker' to choose)");
+      // The glass lives in the catalogue: the pointer shares the catalogue's ownership.
+      setCatalogGlass(surface,
+                      std::shared_ptr<const CatalogGlass>(catalogues.catalog, found.glass));
+      if (!surface.glass->nd)
+        return fail(line.lineNumber, glassName.column,
+                    "glass " + surface.glass->name + " (" + surface.glass->maker +
+                        ") has no index in the visible: its formula covers " +
+                        exactNumber(surface.glass->formula.minimumUm * 1000.0) + "-" +
+                        exactNumber(surface.glass->formula.maximumUm * 1000.0) +
+                        " nm, not the F, d and C lines (486-656 nm) lenslab's analyses use");
+    }
     lens.prescription.surfaces.push_back(surface);
     lens.rowLines.push_back(line.lineNumber);
   }
@@ -372,10 +420,15 @@ std::string formatNativeLensText(const LensFile& lens) {
       out += "surface radius " + exactNumber(s.radiusMm);
     }
     out += " thickness " + exactNumber(s.thicknessMm);
-    // Air (n 1, or pbrt's 0) is the default and not written.
-    if (s.abbeD || (s.indexD != 0.0 && s.indexD != 1.0))
-      out += " nd " + exactNumber(s.mediumIndexD());
-    if (s.abbeD) out += " vd " + exactNumber(*s.abbeD);
+    // A catalogue glass by name and maker; a model glass by its numbers. Air (n 1, or pbrt's 0)
+    // is the default and not written.
+    if (s.glass) {
+      out += " glass " + s.glass->name + " maker " + s.glass->maker;
+    } else {
+      if (s.abbeD || (s.indexD != 0.0 && s.indexD != 1.0))
+        out += " nd " + exactNumber(s.mediumIndexD());
+      if (s.abbeD) out += " vd " + exactNumber(*s.abbeD);
+    }
     out += " diameter " + exactNumber(s.apertureDiameterMm);
     if (s.profile.conic() != 0.0) out += " conic " + exactNumber(s.profile.conic());
     for (int power = AsphericProfile::kMinPower; power <= s.profile.highestPower(); ++power) {

@@ -11,12 +11,15 @@
 //   aperture blades 6 curvature 0.5                  the stop's shape (aperture_shape.h)
 //   surface radius 58.95 thickness 7.52 nd 1.67 vd 47.2 diameter 50.4
 //   stop thickness 3 diameter 30
-//   surface radius -25 thickness 36.77 diameter 20 conic -0.5 a4 -2.1e-06 a6 3.3e-09
+//   surface radius -25 thickness 3 glass N-BK7 maker SCHOTT diameter 20 conic -0.5 a4 -2.1e-06
+//   surface radius 80 thickness 36.77 diameter 20
 //
 // One surface per row, front to rear; each row is `surface` or `stop`, then name-value pairs in
 // any order. `radius` (inf for a flat surface), `thickness` (to the next surface; the last row's
-// is the film distance) and `diameter` (the clear aperture) are required; `nd` and `vd` give the
-// medium after the surface (air without them); `conic` and `a2` ... `a20` the profile
+// is the film distance) and `diameter` (the clear aperture) are required; the medium after the
+// surface is a catalogue glass (`glass NAME`, with `maker` to choose among catalogues; the
+// bundled catalogues, glass/glass_catalog_loader.h) or a model glass (`nd`, `vd`), and air
+// without either; `conic` and `a2` ... `a20` give the profile
 // (aspheric_profile.h). `#` starts a comment at the beginning of a line or after a row's pairs.
 // Numbers are written in their shortest form that reads back exactly. Every problem is an error
 // at its file:line:column; a file from a newer lenslab (version above 1) says so.

@@ -1,5 +1,7 @@
 #include "optics/prescription.h"
 
+#include <utility>
+
 namespace lenslab::optics {
 
 std::optional<std::size_t> Prescription::stopIndex() const {
@@ -10,6 +12,14 @@ std::optional<std::size_t> Prescription::stopIndex() const {
     stop = i;
   }
   return stop;
+}
+
+void setCatalogGlass(Surface& surface, std::shared_ptr<const CatalogGlass> glass) {
+  if (glass && glass->nd && glass->vd) {
+    surface.indexD = *glass->nd;
+    surface.abbeD = *glass->vd;
+  }
+  surface.glass = std::move(glass);
 }
 
 }  // namespace lenslab::optics

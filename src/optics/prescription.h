@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "optics/aperture_shape.h"
 #include "optics/aspheric_profile.h"
+#include "optics/glass/catalog_glass.h"
 
 namespace lenslab::optics {
 
@@ -44,6 +46,12 @@ struct Surface {
   // sphere by default. The traces, exit-pupil tables, paraxial data (c + 2 A2), Seidel sums,
   // validation and the outline follow them; .lens files (native_lens_file.h) hold them.
   AsphericProfile profile = {};
+  // The catalogue glass of the medium after this surface (glass/catalog_glass.h), shared with the
+  // catalogue it came from; null for a model glass, which indexD and abbeD alone describe. With a
+  // glass, indexD and abbeD hold its n_d and V_d from its own formula (what the paraxial data at d,
+  // the table and a .dat export see: setCatalogGlass keeps them so), and the index at any other
+  // wavelength comes from its formula, within its range only (glass.h's mediumIndexAt).
+  std::shared_ptr<const CatalogGlass> glass = nullptr;
 
   bool isStop() const { return radiusMm == 0.0; }
   bool isFlat() const { return std::isinf(radiusMm); }
@@ -52,6 +60,12 @@ struct Surface {
   // The index with pbrt's "0 means air" resolved.
   double mediumIndexD() const { return indexD == 0.0 ? 1.0 : indexD; }
 };
+
+// Makes `glass` the medium after `surface`, with its n_d and V_d in indexD and abbeD; a glass
+// without them (an infrared material, whose formula does not reach the visible) leaves indexD
+// as it was, and validate() refuses it. Null makes the medium a model glass again, keeping the
+// numbers.
+void setCatalogGlass(Surface& surface, std::shared_ptr<const CatalogGlass> glass);
 
 struct Prescription {
   std::vector<Surface> surfaces;

@@ -56,6 +56,28 @@ void validateProfile(const Surface& s, int row, std::vector<ValidationError>& er
                   describe(semi) + " mm)"});
 }
 
+// A catalogue glass must reach the visible lines the analyses use (F, d, C), which is when its
+// catalogue entry has n_d and V_d; and the row's n_d and V_d must be that glass's, as
+// setCatalogGlass leaves them (an edit of the number alone would otherwise contradict the name).
+void validateCatalogGlass(const Surface& s, int row, std::vector<ValidationError>& errors) {
+  if (!s.glass) return;
+  const CatalogGlass& g = *s.glass;
+  const std::string name = g.name + (g.maker.empty() ? "" : " (" + g.maker + ")");
+  if (!g.nd || !g.vd) {
+    errors.push_back(
+        {row, "glass " + name + " has no index in the visible: its formula covers " +
+                  describe(g.formula.minimumUm * 1000.0) + "-" +
+                  describe(g.formula.maximumUm * 1000.0) +
+                  " nm, not the F, d and C lines (486-656 nm) lenslab's analyses use"});
+    return;
+  }
+  if (s.indexD != *g.nd || s.abbeD != g.vd)
+    errors.push_back({row, "n_d " + describe(s.indexD) + " and V_d " +
+                               (s.abbeD ? describe(*s.abbeD) : std::string("none")) +
+                               " are not those of glass " + name + " (" + describe(*g.nd) + ", " +
+                               describe(*g.vd) + ")"});
+}
+
 }  // namespace
 
 std::string ValidationError::toString() const {
@@ -106,6 +128,7 @@ std::vector<ValidationError> validate(const Prescription& prescription) {
                                  " mm is beyond " + describe(kMaxApertureDiameterMm) + " mm"});
     if (s.isStop()) ++stops;
     validateProfile(s, row, errors);
+    validateCatalogGlass(s, row, errors);
   }
   if (stops == 0) errors.push_back({-1, "the lens has no aperture stop (a row with radius 0)"});
   const ApertureShape& shape = prescription.stopShape;

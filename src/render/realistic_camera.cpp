@@ -192,7 +192,7 @@ bool RealisticCamera::generateRay(glm::vec2 raster, glm::vec2 lensSample, Camera
 
 bool RealisticCamera::readsWavelengths() const {
   // (generateRays weighs the wavelengths, tracing them back, when this holds.)
-  return spectral_ && lens_->disperses();
+  return spectral_ && lens_->disperses() && lens_->spectralTraceProblem().empty();
 }
 
 void RealisticCamera::generateRays(std::size_t count, const glm::vec2* rasterPoints,

@@ -12,7 +12,10 @@ namespace lenslab::render {
 
 enum class SpectralMode { Off, On, Auto };
 
+// A lens whose glass the spectral trace cannot follow (a catalogue glass today:
+// LensSystem::spectralTraceProblem says which) renders in RGB in every mode.
 inline bool rendersSpectrally(SpectralMode mode, const optics::LensSystem& lens) {
+  if (!lens.spectralTraceProblem().empty()) return false;
   return mode == SpectralMode::On || (mode == SpectralMode::Auto && lens.disperses());
 }
 

@@ -93,8 +93,8 @@ TEST(Dispersion, BlueFocalLengthIsShorterForAPositiveSinglet) {
   p.surfaces[0].abbeD = 64.2;
   const auto built = LensSystem::build(p);
   ASSERT_TRUE(built.ok());
-  const double blue = built.system->firstOrderAt(kWavelengthFNm).eflMm;
-  const double red = built.system->firstOrderAt(kWavelengthCNm).eflMm;
+  const double blue = built.system->firstOrderAt(kWavelengthFNm)->eflMm;
+  const double red = built.system->firstOrderAt(kWavelengthCNm)->eflMm;
   EXPECT_LT(blue, red);
   // Longitudinal chromatic aberration of a thin lens: f_C - f_F ~ f / V.
   EXPECT_NEAR(red - blue, built.system->firstOrder().eflMm / 64.2, 0.05);

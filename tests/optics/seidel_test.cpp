@@ -203,8 +203,8 @@ TEST(SeidelSums, AxialColourPredictsTheParaxialFocusShiftBetweenFAndC) {
   ASSERT_TRUE(lens);
   const auto sums = computeSeidelSums(*lens, std::nullopt, 1.0);
   ASSERT_TRUE(sums);
-  const double bflF = lens->firstOrderAt(kWavelengthFNm).bflMm;
-  const double bflC = lens->firstOrderAt(kWavelengthCNm).bflMm;
+  const double bflF = lens->firstOrderAt(kWavelengthFNm)->bflMm;
+  const double bflC = lens->firstOrderAt(kWavelengthCNm)->bflMm;
   EXPECT_LT(bflF - bflC, 0.0);  // blue focuses nearer the lens
   EXPECT_NEAR(sums->transverse.axialColourLongMm, bflF - bflC, 0.03 * std::abs(bflF - bflC));
 }

@@ -16,11 +16,14 @@
 #include <vector>
 
 #include "optics/lens_system.h"
+#include "optics/native_lens_file.h"
 #include "render/landing_filter.h"
 #include "render/realistic_camera.h"
 #include "render/spectral_film.h"
+#include "render/spectral_mode.h"
 #include "render_support.h"
 #include "scene_files.h"
+#include "support/bundled_glass.h"
 #include "support/run_process.h"
 
 namespace lenslab::render {
@@ -75,6 +78,29 @@ std::vector<double> blockMeans(const RenderSnapshot& image, int block, int c) {
     }
   }
   return out;
+}
+
+TEST(SpectralRender, ALensWithACatalogueGlassRendersInRgbInEveryMode) {
+  // The spectral batch trace follows model glasses only (optics::LensSystem::
+  // spectralTraceProblem): a catalogue glass is never approximated, the render is RGB.
+  const optics::LensFileResult file = optics::parseNativeLensText(
+      "lenslab-lens 1\n"
+      "surface radius 50 thickness 5 glass N-BK7 diameter 20\n"
+      "surface radius -50 thickness 1 diameter 20\n"
+      "stop thickness 45 diameter 10\n",
+      "bk7.lens");
+  ASSERT_TRUE(file.ok()) << file.diagnostics.formatAll();
+  const auto lens = optics::LensSystem::build(file.lens->prescription);
+  ASSERT_TRUE(lens.ok());
+  ASSERT_TRUE(lens.system->disperses());
+  for (SpectralMode mode : {SpectralMode::On, SpectralMode::Auto, SpectralMode::Off})
+    EXPECT_FALSE(rendersSpectrally(mode, *lens.system)) << toString(mode);
+  // The same numbers as a model glass (n_d, V_d) render spectrally.
+  optics::Prescription model = file.lens->prescription;
+  optics::setCatalogGlass(model.surfaces[0], nullptr);
+  const auto modelLens = optics::LensSystem::build(model);
+  ASSERT_TRUE(modelLens.ok());
+  EXPECT_TRUE(rendersSpectrally(SpectralMode::Auto, *modelLens.system));
 }
 
 TEST(SpectralRender, WithoutDispersionItIsTheRgbRenderWithinNoise) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -238,6 +239,10 @@ GlassCatalogLoad loadGlassCatalog(const std::filesystem::path& directory) {
 const GlassCatalogLoad& defaultGlassCatalog() {
   // A function-local static: initialised once, by the first caller, while others wait.
   static const GlassCatalogLoad load = [] {
+    // LENSLAB_GLASS_DIR names another directory of catalogues (a maker's newer files, or the
+    // checkout's data/glass for a test program, which runs outside the tree the lookup knows).
+    const char* override = std::getenv("LENSLAB_GLASS_DIR");
+    if (override && *override) return loadGlassCatalog(override);
     const std::filesystem::path directory = findResourceDirectory("glass");
     if (directory.empty()) {
       GlassCatalogLoad missing;

@@ -26,8 +26,9 @@ std::vector<CatalogGlass> parseGlassCsv(std::string_view text, const std::string
 // Every *.csv in `directory` (not its subdirectories), in name order.
 GlassCatalogLoad loadGlassCatalog(const std::filesystem::path& directory);
 
-// The bundled catalogues (the `glass` resource directory, common/resource_directories.h), loaded
-// once on first use from any thread. An install without them gives a load with an error.
+// The bundled catalogues (the `glass` resource directory, common/resource_directories.h), or the
+// directory the environment variable LENSLAB_GLASS_DIR names, loaded once on first use from any
+// thread. An install without them gives a load with an error.
 const GlassCatalogLoad& defaultGlassCatalog();
 
 }  // namespace lenslab::optics
