@@ -100,7 +100,8 @@ bool sameSurface(const optics::Surface& a, const optics::Surface& b) {
   const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
   return same(a.radiusMm, b.radiusMm) && same(a.thicknessMm, b.thicknessMm) &&
          same(a.indexD, b.indexD) && same(a.apertureDiameterMm, b.apertureDiameterMm) &&
-         a.abbeD.has_value() == b.abbeD.has_value() && (!a.abbeD || same(*a.abbeD, *b.abbeD));
+         a.abbeD.has_value() == b.abbeD.has_value() && (!a.abbeD || same(*a.abbeD, *b.abbeD)) &&
+         a.profile == b.profile;
 }
 
 }  // namespace
@@ -263,6 +264,29 @@ bool LensDocument::redo() {
   return true;
 }
 
+optics::AsphericProfile mirroredProfile(const optics::AsphericProfile& profile) {
+  // Turned front to back the surface is z -> -z, so its sag S(r) becomes -S(r). The conic term
+  // c r^2 / (1 + sqrt(1 - (1 + k) c^2 r^2)) is odd in c (the root sees only c^2): negating c
+  // negates it with k unchanged. Each polynomial term A_i r^i must change sign itself.
+  optics::AsphericProfile result = profile;
+  for (int power = optics::AsphericProfile::kMinPower; power <= optics::AsphericProfile::kMaxPower;
+       ++power) {
+    result.setCoefficient(power, -profile.coefficient(power));
+  }
+  return result;
+}
+
+optics::AsphericProfile scaledProfile(const optics::AsphericProfile& profile, double factor) {
+  // The scaled surface is the old one magnified: S'(s r) = s S(r). With c' = c / s the conic
+  // term satisfies this for the same k; A'_i (s r)^i = s A_i r^i needs A'_i = A_i s^(1 - i).
+  optics::AsphericProfile result = profile;
+  for (int power = optics::AsphericProfile::kMinPower; power <= optics::AsphericProfile::kMaxPower;
+       ++power) {
+    result.setCoefficient(power, profile.coefficient(power) * std::pow(factor, 1 - power));
+  }
+  return result;
+}
+
 optics::Prescription flipped(const optics::Prescription& lens) {
   // Reversing the order swaps which medium follows each surface and the sign of every radius
   // (a centre of curvature toward the film is now toward the object). The gap after new surface
@@ -282,6 +306,7 @@ optics::Prescription flipped(const optics::Prescription& lens) {
     // -0 and -inf the table and the saved file would show.
     surface.radiusMm =
         old[i].isStop() || old[i].isFlat() ? std::abs(old[i].radiusMm) : -old[i].radiusMm;
+    surface.profile = mirroredProfile(old[i].profile);
     if (i > 0) {
       surface.thicknessMm = old[i - 1].thicknessMm;
       surface.indexD = old[i - 1].indexD;
@@ -301,6 +326,7 @@ optics::Prescription scaled(const optics::Prescription& lens, double factor) {
     surface.radiusMm *= factor;
     surface.thicknessMm *= factor;
     surface.apertureDiameterMm *= factor;
+    surface.profile = scaledProfile(surface.profile, factor);
   }
   return result;
 }

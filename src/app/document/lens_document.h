@@ -41,7 +41,8 @@ struct MoveSurface {
 };
 struct FlipLens {};
 struct ScaleLens {
-  double factor;  // every length (radii, thicknesses, apertures, film distance)
+  // every length (radii, thicknesses, apertures, film distance; the aspheric terms as lengths do)
+  double factor;
 };
 struct SetFilmDistance {
   double mm;
@@ -140,5 +141,9 @@ class LensDocument {
 // Pure transformations, also used by the commands.
 optics::Prescription flipped(const optics::Prescription& lens);
 optics::Prescription scaled(const optics::Prescription& lens, double factor);
+// A surface's conic and polynomial terms seen from its other side (every A_i negated, k kept: the
+// radius's sign flips with them), and magnified by `factor` (A_i * factor^(1 - i), k kept).
+optics::AsphericProfile mirroredProfile(const optics::AsphericProfile& profile);
+optics::AsphericProfile scaledProfile(const optics::AsphericProfile& profile, double factor);
 
 }  // namespace lenslab::app

@@ -1,0 +1,99 @@
+// Flipping and scaling a lens with aspheric surfaces (issue 40), against hand-derived terms and
+// against the sag itself (optics::sagMm), which the transformations must mirror and magnify.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/document/lens_document.h"
+#include "optics/aspheric_profile.h"
+
+namespace lenslab::app {
+namespace {
+
+// A singlet whose front surface carries a conic, an A2 (which changes the vertex power), an odd
+// A3 (as some patents write) and even A4, A6.
+optics::Prescription asphericSinglet() {
+  optics::Prescription lens;
+  lens.surfaces = {{40.0, 5.0, 1.6, 58.0, 20.0}, {-120.0, 45.0, 1.0, std::nullopt, 20.0}};
+  optics::AsphericProfile& front = lens.surfaces[0].profile;
+  front.setConic(-0.5);
+  front.setCoefficient(2, 1e-3);
+  front.setCoefficient(3, 1e-5);
+  front.setCoefficient(4, -2e-6);
+  front.setCoefficient(6, 3e-9);
+  return lens;
+}
+
+double sagAt(const optics::Surface& surface, double heightMm) {
+  return *optics::sagMm(1.0 / surface.radiusMm, surface.profile, heightMm);
+}
+
+TEST(AsphericFlip, NegatesEveryTermAndKeepsTheConic) {
+  const optics::Prescription flippedLens = flipped(asphericSinglet());
+  // Old surface 1 is new surface 2, seen from behind.
+  const optics::Surface& back = flippedLens.surfaces[1];
+  EXPECT_DOUBLE_EQ(back.radiusMm, -40.0);
+  EXPECT_DOUBLE_EQ(back.profile.conic(), -0.5);
+  EXPECT_DOUBLE_EQ(back.profile.coefficient(2), -1e-3);
+  EXPECT_DOUBLE_EQ(back.profile.coefficient(3), -1e-5);
+  EXPECT_DOUBLE_EQ(back.profile.coefficient(4), 2e-6);
+  EXPECT_DOUBLE_EQ(back.profile.coefficient(6), -3e-9);
+  EXPECT_EQ(back.profile.highestPower(), 6);
+  EXPECT_TRUE(flippedLens.surfaces[0].profile.isSphere());
+}
+
+TEST(AsphericFlip, MirrorsTheSag) {
+  // z -> -z: the flipped surface's sag is the original's negated, at every height.
+  const optics::Prescription lens = asphericSinglet();
+  const optics::Prescription flippedLens = flipped(lens);
+  for (double h = 0.0; h <= 10.0; h += 0.5) {
+    EXPECT_NEAR(sagAt(flippedLens.surfaces[1], h), -sagAt(lens.surfaces[0], h), 1e-12) << h;
+  }
+}
+
+TEST(AsphericFlip, TwiceGivesTheLensBack) {
+  const optics::Prescription lens = asphericSinglet();
+  const optics::Prescription twice = flipped(flipped(lens));
+  for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
+    EXPECT_TRUE(twice.surfaces[i].profile == lens.surfaces[i].profile) << i;
+  }
+}
+
+TEST(AsphericScale, ScalesEachTermByItsPowerOfTheFactor) {
+  // A_i -> A_i s^(1 - i) for s = 2, by hand: A2 1e-3 / 2, A3 1e-5 / 4, A4 -2e-6 / 8,
+  // A6 3e-9 / 32; k unchanged.
+  const optics::Prescription doubled = scaled(asphericSinglet(), 2.0);
+  const optics::Surface& front = doubled.surfaces[0];
+  EXPECT_DOUBLE_EQ(front.radiusMm, 80.0);
+  EXPECT_DOUBLE_EQ(front.profile.conic(), -0.5);
+  EXPECT_DOUBLE_EQ(front.profile.coefficient(2), 5e-4);
+  EXPECT_DOUBLE_EQ(front.profile.coefficient(3), 2.5e-6);
+  EXPECT_DOUBLE_EQ(front.profile.coefficient(4), -2.5e-7);
+  EXPECT_DOUBLE_EQ(front.profile.coefficient(6), 9.375e-11);
+}
+
+TEST(AsphericScale, MagnifiesTheSag) {
+  // The scaled surface is the original magnified: its sag at s h is s times the original's at h.
+  const optics::Prescription lens = asphericSinglet();
+  for (const double s : {0.5, 2.0, 3.7}) {
+    const optics::Prescription bigger = scaled(lens, s);
+    for (double h = 0.0; h <= 10.0; h += 0.5) {
+      EXPECT_NEAR(sagAt(bigger.surfaces[0], s * h), s * sagAt(lens.surfaces[0], h), 1e-12 * s)
+          << "s " << s << " h " << h;
+    }
+  }
+}
+
+TEST(AsphericScale, ByTheFactorThenItsInverseGivesTheLensBack) {
+  const optics::Prescription lens = asphericSinglet();
+  const optics::Prescription back = scaled(scaled(lens, 3.7), 1.0 / 3.7);
+  for (int power = 2; power <= 20; ++power) {
+    const double original = lens.surfaces[0].profile.coefficient(power);
+    EXPECT_NEAR(back.surfaces[0].profile.coefficient(power), original, 1e-14 * std::abs(original))
+        << power;
+  }
+}
+
+}  // namespace
+}  // namespace lenslab::app
