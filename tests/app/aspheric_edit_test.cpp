@@ -95,5 +95,43 @@ TEST(AsphericScale, ByTheFactorThenItsInverseGivesTheLensBack) {
   }
 }
 
+TEST(AsphericDocument, EachTermIsAnUndoStepAndMarksTheLensModified) {
+  LensDocument document(asphericSinglet(), "singlet.dat");
+  ASSERT_FALSE(document.apply(SetSurfaceField{1, SurfaceField::Conic, -1.0}));
+  ASSERT_FALSE(document.apply(SetAsphericTerm{1, 8, 1e-12}));
+  EXPECT_TRUE(document.modified());
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[1].profile.coefficient(8), 1e-12);
+  ASSERT_TRUE(document.undo());
+  EXPECT_EQ(document.prescription().surfaces[1].profile.coefficient(8), 0.0);
+  EXPECT_DOUBLE_EQ(document.prescription().surfaces[1].profile.conic(), -1.0);
+  ASSERT_TRUE(document.undo());
+  EXPECT_TRUE(document.prescription().surfaces[1].profile.isSphere());
+  EXPECT_FALSE(document.modified());
+}
+
+TEST(AsphericDocument, RefusesTermsThatAreNoShape) {
+  LensDocument document(asphericSinglet(), "singlet.dat");
+  const auto refused = [&](const EditCommand& command) {
+    const auto why = document.apply(command);
+    return why ? *why : std::string("accepted");
+  };
+  EXPECT_EQ(refused(SetAsphericTerm{0, 1, 1e-3}), "there is no term A1 (the powers are 2 to 20)");
+  EXPECT_EQ(refused(SetAsphericTerm{0, 21, 1e-3}), "there is no term A21 (the powers are 2 to 20)");
+  EXPECT_EQ(refused(SetAsphericTerm{0, 4, std::nan("")}),
+            "surface 1: an aspheric term must be a finite number");
+  EXPECT_EQ(refused(SetSurfaceField{0, SurfaceField::Conic, INFINITY}),
+            "surface 1: an aspheric term must be a finite number");
+  EXPECT_EQ(refused(SetAsphericTerm{5, 4, 1e-6}),
+            "surface 6 does not exist (the lens has 2 surfaces)");
+  EXPECT_FALSE(document.canUndo());
+  // The stop has no shape; making a surface the stop takes its shape away.
+  ASSERT_FALSE(document.apply(MakeStop{0}));
+  EXPECT_TRUE(document.prescription().surfaces[0].profile.isSphere());
+  EXPECT_NE(refused(SetAsphericTerm{0, 4, 1e-6}).find("surface 1 is the aperture stop"),
+            std::string::npos);
+  EXPECT_NE(refused(SetSurfaceField{0, SurfaceField::Conic, -1.0}).find("aperture stop"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace lenslab::app

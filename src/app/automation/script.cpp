@@ -171,8 +171,13 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "redo") return editAndWait(command, host, Redo{});
   if (verb == "set") {
     if (a[0] == "surface") {
-      const auto field = *surfaceFieldFromName(a[2]);
       const std::size_t surface = static_cast<std::size_t>(*parseInteger(a[1]) - 1);
+      if (const auto power = script_words::asphericTermPower(a[2])) {
+        return editAndWait(command, host,
+                           SetAsphericTerm{surface, static_cast<int>(*power),
+                                           *script_words::parseProfileValue(a[3])});
+      }
+      const auto field = *surfaceFieldFromName(a[2]);
       return editAndWait(command, host,
                          SetSurfaceField{surface, field, *parseSurfaceValue(field, a[3])});
     }

@@ -4,7 +4,9 @@
 // as in the lens table.
 //
 //   load-lens FILE              load-scene FILE             save-lens FILE
-//   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
+//   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears;
+//                                conic K, and aP VALUE for the aspheric term A_P r^P, P 2..20,
+//                                in mm^(1-P): "set surface 3 a4 -2e-6"; not on the stop)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
 //   set aperture circle|blades N [curvature C] [rotation D]|image FILE|image-mirrored FILE
 //                               (the stop's shape, as the lens file's aperture line; N 3..32;

@@ -35,6 +35,8 @@ double fieldValue(const optics::Surface& surface, SurfaceField field) {
       return surface.abbeD.value_or(std::nan(""));
     case SurfaceField::ApertureDiameterMm:
       return surface.apertureDiameterMm;
+    case SurfaceField::Conic:
+      return surface.profile.conic();
   }
   return 0;
 }
