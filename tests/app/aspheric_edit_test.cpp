@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "app/analysis/asphere_departure.h"
 #include "app/document/lens_document.h"
 #include "optics/aspheric_profile.h"
 
@@ -131,6 +132,36 @@ TEST(AsphericDocument, RefusesTermsThatAreNoShape) {
             std::string::npos);
   EXPECT_NE(refused(SetSurfaceField{0, SurfaceField::Conic, -1.0}).find("aperture stop"),
             std::string::npos);
+}
+
+// The departure plot's numbers, by hand: a paraboloid (k = -1) of R 50 mm departs from its sphere
+// by r^2 / 2R - (R - sqrt(R^2 - r^2)): at r = 10 mm, 1 - (50 - sqrt(2400)) = -0.0102051443 mm.
+TEST(AsphereDeparture, OfAParaboloidFromItsSphere) {
+  optics::Surface surface{50.0, 5.0, 1.5, std::nullopt, 20.0};
+  surface.profile.setConic(-1.0);
+  EXPECT_NEAR(asphereDepartureMm(surface, 10.0), 1.0 - (50.0 - std::sqrt(2400.0)), 1e-13);
+  EXPECT_EQ(asphereDepartureMm(surface, 0.0), 0.0);
+  // Past its radius the sphere has no sag: no departure either (a gap, never a number).
+  EXPECT_TRUE(std::isnan(asphereDepartureMm(surface, 60.0)));
+}
+
+TEST(AsphereDeparture, PlotIsInMicronsUnderATenthOfAMillimetre) {
+  // A flat plate with A4 = -2e-6 mm^-3 (a Schmidt plate's kind): -2e-6 r^4, -20 um at r = 10 mm.
+  optics::Surface plate{optics::kFlatRadius, 5.0, 1.5, std::nullopt, 20.0};
+  plate.profile.setCoefficient(4, -2e-6);
+  const PlotSpec spec = asphereDeparturePlot(plate, 3, 11);
+  EXPECT_EQ(spec.y.label, "departure (um)");
+  EXPECT_EQ(spec.x.label, "height from the axis (mm)");
+  ASSERT_EQ(spec.series.size(), 1u);
+  ASSERT_EQ(spec.series[0].x.size(), 11u);
+  EXPECT_DOUBLE_EQ(spec.series[0].x.back(), 10.0);
+  EXPECT_NEAR(spec.series[0].y.back(), -20.0, 1e-12);
+  EXPECT_NEAR(spec.series[0].y[5], -2e-6 * 625.0 * 1000.0, 1e-12);  // r = 5 mm: -1.25 um
+  // Ten times the term: -0.2 mm at the rim, in mm.
+  plate.profile.setCoefficient(4, -2e-5);
+  const PlotSpec deeper = asphereDeparturePlot(plate, 3, 11);
+  EXPECT_EQ(deeper.y.label, "departure (mm)");
+  EXPECT_NEAR(deeper.series[0].y.back(), -0.2, 1e-15);
 }
 
 }  // namespace

@@ -264,6 +264,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "drop") return check(host.drop(a[0]));
   if (verb == "show-panel") return check(host.showPanel(a[0]));
+  if (verb == "asphere-editor") {
+    if (a[0] == "close") return check(host.showAsphereEditor(std::nullopt));
+    return check(host.showAsphereEditor(static_cast<std::size_t>(*parseInteger(a[0]) - 1)));
+  }
   if (verb == "export-plot") {
     const ScriptHost::PlotExport attempt = host.exportPlot(a[0], a[1]);
     return attempt.ready ? check(attempt.error) : false;

@@ -61,6 +61,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"open-dialog", {1, 1}},
       {"dialog-choose", {1, 1}},
       {"show-panel", {1, 1}},
+      {"asphere-editor", {1, 1}},
       {"export-plot", {2, 2}},
       {"export-cross-section", {1, 4}},
       // Pictures for slides (issue 20).
@@ -266,6 +267,14 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     return problemAt(command, kLineStart, message.str());
   }
   if (command.verb == "set") return checkSet(command);
+  if (command.verb == "asphere-editor" && command.arguments[0] != "close") {
+    const auto surface = parseInteger(command.arguments[0]);
+    if (!surface || *surface < 1) {
+      return problemAt(
+          command, 0,
+          "'" + command.arguments[0] + "' is not a surface number (1, 2, ...) or close");
+    }
+  }
   if (command.verb == "load-lens" && count == 2 && command.arguments[1] != "keep-film-distance") {
     return problemAt(command, 1,
                      "unknown option '" + command.arguments[1] + "' (expected keep-film-distance)");
