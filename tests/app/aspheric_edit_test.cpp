@@ -8,6 +8,7 @@
 #include "app/analysis/asphere_departure.h"
 #include "app/document/lens_document.h"
 #include "optics/aspheric_profile.h"
+#include "optics/lens_system.h"
 
 namespace lenslab::app {
 namespace {
@@ -59,6 +60,28 @@ TEST(AsphericFlip, TwiceGivesTheLensBack) {
   for (std::size_t i = 0; i < lens.surfaces.size(); ++i) {
     EXPECT_TRUE(twice.surfaces[i].profile == lens.surfaces[i].profile) << i;
   }
+}
+
+// The paraxial power follows the vertex curvature c + 2 A2 (the lead's paraxial data): a flip
+// that left A2's sign alone would change the EFL; one that turns the surface keeps it, and a
+// scale by s scales it by s.
+TEST(AsphericFlip, KeepsTheFocalLengthOfALensWhoseA2AddsPower) {
+  // A stop 2 mm before the singlet.
+  optics::Prescription lens = asphericSinglet();
+  lens.surfaces.insert(lens.surfaces.begin(), optics::Surface{0.0, 2.0, 1.0, std::nullopt, 10.0});
+  optics::Prescription sphere = lens;
+  sphere.surfaces[1].profile = {};
+  const auto efl = [](const optics::Prescription& prescription) {
+    const auto built = optics::LensSystem::build(prescription);
+    EXPECT_TRUE(built.ok());
+    return built.ok() ? built.system->firstOrder().eflMm : std::nan("");
+  };
+  const double original = efl(lens);
+  // A2 = 1e-3 adds 2e-3 / mm of curvature to 1/40: the EFL must show it, or the test shows
+  // nothing.
+  ASSERT_GT(std::abs(original - efl(sphere)), 1.0);
+  EXPECT_NEAR(efl(flipped(lens)), original, 1e-9 * original);
+  EXPECT_NEAR(efl(scaled(lens, 2.0)), 2.0 * original, 1e-9 * original);
 }
 
 TEST(AsphericScale, ScalesEachTermByItsPowerOfTheFactor) {
