@@ -2,7 +2,7 @@
 // How aspheric a surface is, as a student reads it off a plot: the sag of the surface minus the
 // sag of its base sphere (the sphere of the same vertex radius), from the axis to the rim of its
 // clear aperture. A conic or polynomial terms show as a curve leaving zero; a sphere is the zero
-// line. Drawn by the lens table's asphere editor (panels/asphere_editor.cpp).
+// line. Drawn by the lens table's asphere editor (dialogs/asphere_editor.cpp).
 
 #include <cstddef>
 
