@@ -63,6 +63,9 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
 // the zero line, its row is marked "1*"), and undo takes it back.
 TEST(XdotoolInput, TypingAnA4IntoTheAsphereEditorBendsItsDeparturePlot) {
   const auto scratch = testing::makeTestDirectory("xdotool-asphere");
+  // The pointer away from where the editor opens: over the plot, its hover readout (a line and
+  // text in the curve's colour) would count as curve.
+  testing::runProcess("xdotool mousemove 0 790", scratch);
   std::ofstream(scratch / "commands.script") << "wait-frames 3\n"
                                                 "asphere-editor 1\n"
                                                 "wait-frames 3\n"

@@ -87,26 +87,29 @@ void termLabel(int term) {
   }
 }
 
-void drawTerms(ViewerState& state, std::size_t row, const optics::AsphericProfile& profile) {
-  // Even powers on the left, odd on the right: the even ones are the usual; odd ones appear in
-  // some makers' patents.
+// The terms A_first .. A_last in rows of an even power (left) and the odd one after it (right):
+// the even ones are the usual; odd ones appear in some makers' patents. The conic leads the
+// first table.
+void termTable(ViewerState& state, std::size_t row, const optics::AsphericProfile& profile,
+               const char* id, int firstEven, int last, bool withConic) {
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg;
-  if (!ImGui::BeginTable("terms", 4, flags)) return;
+  if (!ImGui::BeginTable(id, 4, flags)) return;
   const float labelWidth = ImGui::CalcTextSize("A20").x;
   ImGui::TableSetupColumn("even", ImGuiTableColumnFlags_WidthFixed, labelWidth);
   ImGui::TableSetupColumn("even value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   ImGui::TableSetupColumn("odd", ImGuiTableColumnFlags_WidthFixed, labelWidth);
   ImGui::TableSetupColumn("odd value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  ImGui::TableNextRow();
-  ImGui::TableSetColumnIndex(0);
-  termLabel(kConicTerm);
-  ImGui::TableSetColumnIndex(1);
-  termField(state, row, kConicTerm, profile.conic());
-  for (int even = optics::AsphericProfile::kMinPower; even <= optics::AsphericProfile::kMaxPower;
-       even += 2) {
+  if (withConic) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    termLabel(kConicTerm);
+    ImGui::TableSetColumnIndex(1);
+    termField(state, row, kConicTerm, profile.conic());
+  }
+  for (int even = firstEven; even <= last; even += 2) {
     ImGui::TableNextRow();
     for (const int power : {even, even + 1}) {
-      if (power > optics::AsphericProfile::kMaxPower) break;
+      if (power > last) break;
       ImGui::TableSetColumnIndex(power == even ? 0 : 2);
       termLabel(power);
       ImGui::TableSetColumnIndex(power == even ? 1 : 3);
@@ -114,6 +117,21 @@ void drawTerms(ViewerState& state, std::size_t row, const optics::AsphericProfil
     }
   }
   ImGui::EndTable();
+}
+
+// Up to A11 always; A12..A20 folded, unless the surface uses one, so that the plot keeps its
+// room in a small window (most molded aspheres stop at A10 or A12).
+constexpr int kLastUnfoldedPower = 11;
+
+void drawTerms(ViewerState& state, std::size_t row, const optics::AsphericProfile& profile) {
+  termTable(state, row, profile, "terms", optics::AsphericProfile::kMinPower, kLastUnfoldedPower,
+            true);
+  if (profile.highestPower() > kLastUnfoldedPower) ImGui::SetNextItemOpen(true);
+  if (ImGui::TreeNode("A12 to A20")) {
+    termTable(state, row, profile, "higher terms", kLastUnfoldedPower + 1,
+              optics::AsphericProfile::kMaxPower, false);
+    ImGui::TreePop();
+  }
 }
 
 }  // namespace

@@ -309,8 +309,13 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
       for (int column = 0; column < kValueColumns; ++column) {
         ImGui::TableSetColumnIndex(column + 1);
         const SurfaceField field = kColumnFields[column];
-        // The stop is a hole: no conic to show or type.
-        if (field == SurfaceField::Conic && surface.isStop()) continue;
+        // The stop is a hole: no conic to show or type, only a dash saying so.
+        if (field == SurfaceField::Conic && surface.isStop()) {
+          ImGui::TextDisabled("-");
+          recordItemRect(state, "lens-table/" + std::to_string(row + 1) + "/conic");
+          if (ImGui::IsItemHovered()) ImGui::SetTooltip("The stop has no shape");
+          continue;
+        }
         valueCell(state, row, field, fieldValue(surface, field));
         if (hasProblem) problemTooltip(state, static_cast<int>(row));
       }
