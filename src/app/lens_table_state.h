@@ -24,6 +24,11 @@ struct LensTableState {
   // those shown cut, with the cut mark (drawing/value_text.h).
   int cellsCutOff = 0;
   int cellsShortened = 0;
+  // The asphere editor (dialogs/asphere_editor.cpp): the surface it edits (0-based; -1 closed),
+  // and the term being typed into (0 the conic, else the power) with its text.
+  int asphereEditorRow = -1;
+  int asphereEditingTerm = -1;
+  char asphereEditText[64] = {};
 };
 
 }  // namespace lenslab::app

@@ -105,6 +105,7 @@ void Viewer::drawFrame() {
   drawSplitters(state_, width, height);
   drawDockAreas(state_);
   drawAboutWindow(state_);
+  drawAsphereEditor(state_);
   drawExportCrossSectionDialog(state_);
   state_.frameHadOverlay |= state_.showExportCrossSection;  // over the canvas, as the browser
   const auto [filmWidth, filmHeight] = filmSize();
@@ -189,6 +190,23 @@ void Viewer::findDamage() {
   damage_ = frameDamage_.compare(*ImGui::GetDrawData(), width, height,
                                  newPreview ? std::span(&preview, 1) : std::span<ImTextureID>());
   if (window_.takeRefreshRequest()) damage_ = {PixelRect{0, 0, width, height}};
+}
+
+std::optional<std::string> Viewer::showAsphereEditor(std::optional<std::size_t> surface) {
+  if (!surface) {
+    state_.lensTable.asphereEditorRow = -1;
+    return std::nullopt;
+  }
+  const auto& surfaces = state_.lens.prescription().surfaces;
+  if (*surface >= surfaces.size()) {
+    return "surface " + std::to_string(*surface + 1) + " does not exist (the lens has " +
+           std::to_string(surfaces.size()) + " surfaces)";
+  }
+  if (surfaces[*surface].isStop()) {
+    return "surface " + std::to_string(*surface + 1) + " is the aperture stop: it has no shape";
+  }
+  state_.lensTable.asphereEditorRow = static_cast<int>(*surface);
+  return std::nullopt;
 }
 
 std::optional<std::string> Viewer::showPanel(const std::string& id) {

@@ -105,6 +105,7 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> checkWindow() override;
   void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
   std::optional<std::string> showPanel(const std::string& id) override;
+  std::optional<std::string> showAsphereEditor(std::optional<std::size_t> surface) override;
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
   void setColourFans(bool on) override { state_.fanSettings.colourFans = on; }
   void centreCrossSection(double zMm, double yMm) override {

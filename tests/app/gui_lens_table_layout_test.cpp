@@ -19,7 +19,7 @@ const std::string kSource = LENSLAB_SOURCE_DIR;
 // wide-22mm.dat has 13 surfaces, the most of the bundled lenses.
 const std::string kThirteenSurfaces = kSource + "/lenses/wide-22mm.dat";
 constexpr int kRows = 13;
-const char* const kColumns[] = {"radius", "thickness", "n_d", "V_d", "aperture", "stop"};
+const char* const kColumns[] = {"radius", "conic", "thickness", "n_d", "V_d", "aperture", "stop"};
 // Dear ImGui's dark style (imgui 1.86 StyleColorsDark): CheckMark.
 constexpr testing::Rgb kCheckMark{66, 150, 250};
 

@@ -125,9 +125,12 @@ TEST_F(MouseDriven, DraggingTheFilmPlaneChangesTheFilmDistanceInOneUndoStep) {
   EXPECT_NEAR(moved.x - before.x, kDragPx, 2);
   // In the screenshot, the film's line is in its new place and no longer in the old one (where
   // only the rays converging on it cross).
-  const WidgetPoint bottom = pointIn(ui1_, "cross-section/film", 0.5, 1.0);
-  EXPECT_GT(rowsWithColourNear(after_, moved.x, moved.y + 2, bottom.y - 2, kFilmColour), 0.95);
-  EXPECT_LT(rowsWithColourNear(after_, before.x, moved.y + 2, bottom.y - 2, kFilmColour), 0.5);
+  // Its upper 40%: the off-axis fans converge below the axis, and the axial bundle, out of focus
+  // by the drag (40 px are more millimetres the narrower the canvas, as since the lens table's k
+  // column), crosses the film about the axis.
+  const WidgetPoint aboveAxis = pointIn(ui1_, "cross-section/film", 0.5, 0.4);
+  EXPECT_GT(rowsWithColourNear(after_, moved.x, moved.y + 2, aboveAxis.y - 2, kFilmColour), 0.95);
+  EXPECT_LT(rowsWithColourNear(after_, before.x, moved.y + 2, aboveAxis.y - 2, kFilmColour), 0.5);
   // The whole drag is one edit: one Ctrl+Z restores the film distance it started from, and
   // Ctrl+Shift+Z brings the drag back. (Ctrl is held over a frame or more on each side of the
   // key, so that the frame with the key sees it.)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -130,6 +131,73 @@ TEST_F(ScriptedViewer, AnEditChangesTheCrossSectionAndUndoRestoresIt) {
   // The lens occupies a good part of the canvas, so a changed radius and film move many pixels.
   EXPECT_GT(testing::countDifferentPixels(before, edited), 500u);
   EXPECT_EQ(testing::countDifferentPixels(before, undone), 0u);
+}
+
+// Issue 40: a conic and an A4 set by the script show in the table (the k column, and "1*" for an
+// aspheric surface), the asphere editor plots the surface's departure from its sphere, and two
+// undos give the table back as it was.
+TEST_F(ScriptedViewer, AsphericTermsShowInTheTableAndTheAsphereEditor) {
+  const auto result = runScript(
+      "wait-frames 3\n"
+      "screenshot before.png\n"
+      "dump-ui before.json\n"
+      "set surface 1 conic -0.5\n"
+      "set surface 1 a4 -2e-6\n"
+      "wait-frames 2\n"
+      "screenshot aspheric.png\n"
+      "asphere-editor 1\n"
+      "wait-frames 3\n"
+      "screenshot editor.png\n"
+      "dump-ui editor.json\n"
+      "asphere-editor close\n"
+      "undo\n"
+      "undo\n"
+      "wait-frames 2\n"
+      "screenshot undone.png\n"
+      "dump-ui undone.json\n"
+      "quit\n",
+      // The pointer away from the editor's plot, whose hover readout would count as curve.
+      "xdotool mousemove 0 790 >/dev/null 2>&1; ");
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto before = image("before.png"), aspheric = image("aspheric.png"),
+             editor = image("editor.png"), undone = image("undone.png");
+  ASSERT_TRUE(before.valid() && aspheric.valid() && editor.valid() && undone.valid());
+  // Pixels that differ between two screenshots inside a widget's rectangle of the dump.
+  const auto differingIn = [](const nlohmann::json& box, const testing::PngImage& a,
+                              const testing::PngImage& b) {
+    EXPECT_TRUE(box.is_object()) << box;
+    std::size_t count = 0;
+    const int x0 = box.value("x", 0), y0 = box.value("y", 0);
+    for (int y = y0; y < y0 + box.value("height", 0) && y < a.height; ++y) {
+      for (int x = x0; x < x0 + box.value("width", 0) && x < a.width; ++x) {
+        count += a.at(x, y).maxDifference(b.at(x, y)) > 24;
+      }
+    }
+    return count;
+  };
+  const nlohmann::json widgets = json("before.json")["widgets"];
+  const auto& conicCell = widgets["lens-table/1/conic"];
+  const auto& number = widgets["lens-table/1/number"];
+  // "0" became "-0.5" in the k column, "1" became "1*".
+  EXPECT_GT(differingIn(conicCell, before, aspheric), 10u);
+  EXPECT_GT(differingIn(number, before, aspheric), 3u);
+  // Undone, both cells are as they were, pixel for pixel, and the editor is gone.
+  EXPECT_EQ(differingIn(conicCell, before, undone), 0u);
+  EXPECT_EQ(differingIn(number, before, undone), 0u);
+  EXPECT_FALSE(json("undone.json")["widgets"].contains("asphere-editor"));
+
+  // The editor's plot: the departure curve (drawn in its light blue) climbs across many pixel
+  // rows, where a sphere's would be one flat line at zero.
+  const auto plot = json("editor.json")["widgets"]["asphere-editor/plot"];
+  ASSERT_TRUE(plot.is_object()) << json("editor.json")["widgets"];
+  const testing::Rgb curveColour{0x4f, 0xc3, 0xf7};
+  std::set<int> curveRows;
+  for (int y = plot.value("y", 0); y < plot.value("y", 0) + plot.value("height", 0); ++y) {
+    for (int x = plot.value("x", 0); x < plot.value("x", 0) + plot.value("width", 0); ++x) {
+      if (editor.at(x, y).maxDifference(curveColour) <= 40) curveRows.insert(y);
+    }
+  }
+  EXPECT_GT(curveRows.size(), 40u) << "the departure curve spans too few rows";
 }
 
 TEST_F(ScriptedViewer, AnEditChangesThePreviewAndUndoRestoresIt) {

@@ -59,6 +59,65 @@ TEST(XdotoolInput, TypingARadiusIntoTheTableChangesTheDrawing) {
   EXPECT_EQ(saved.compare(row, 4, "24.5"), 0) << saved;
 }
 
+// Issue 40: typing a term into the asphere editor changes the surface (its departure plot leaves
+// the zero line, its row is marked "1*"), and undo takes it back.
+TEST(XdotoolInput, TypingAnA4IntoTheAsphereEditorBendsItsDeparturePlot) {
+  const auto scratch = testing::makeTestDirectory("xdotool-asphere");
+  // The pointer away from where the editor opens: over the plot, its hover readout (a line and
+  // text in the curve's colour) would count as curve.
+  testing::runProcess("xdotool mousemove 0 790", scratch);
+  std::ofstream(scratch / "commands.script") << "wait-frames 3\n"
+                                                "asphere-editor 1\n"
+                                                "wait-frames 3\n"
+                                                "screenshot sphere.png\n"
+                                                "dump-ui ui.json\n"
+                                                "wait-until-file go\n"
+                                                "wait-frames 5\n"
+                                                "screenshot typed.png\n"
+                                                "undo\n"
+                                                "wait-frames 3\n"
+                                                "screenshot undone.png\n"
+                                                "quit\n";
+  testing::BackgroundProcess viewer("cd '" + scratch.string() + "' && exec '" + LENSLAB_BINARY +
+                                    "' --size 1280x800 --script commands.script 2>stderr.txt");
+  ASSERT_TRUE(waitForFile(scratch / "ui.json", std::chrono::seconds(30)));
+  const nlohmann::json ui = readJson(scratch / "ui.json");
+  ASSERT_TRUE(ui["widgets"].contains("asphere-editor/a4")) << ui.dump();
+  const std::string input = testing::kFocusViewerWindow + "xdotool mousemove --window $W " +
+                            centreOf(ui, "asphere-editor/a4") +
+                            " && sleep 0.2 && xdotool click 1 && sleep 0.3 && "
+                            // (the minus as a key: xdotool would read "-2e-6" as an option)
+                            "xdotool key minus && xdotool type --delay 30 '2e-6' && "
+                            "sleep 0.1 && xdotool key Return";
+  const auto typed = testing::runProcess(input, scratch);
+  ASSERT_EQ(typed.exitCode, 0) << typed.err;
+  std::ofstream(scratch / "go") << "go";
+  const auto exitCode = viewer.wait(std::chrono::seconds(60));
+  ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
+  EXPECT_EQ(*exitCode, 0) << testing::readWholeFile(scratch / "stderr.txt");
+
+  // The pixel rows of the plot's box that hold the curve's light blue: one or two for a sphere's
+  // zero line, dozens for a curve that falls away toward the rim.
+  const auto& plot = ui["widgets"]["asphere-editor/plot"];
+  const auto curveRows = [&](const char* name) {
+    const auto image = testing::PngImage::load(scratch / name);
+    EXPECT_TRUE(image.valid()) << name;
+    std::size_t rows = 0;
+    const int x0 = plot.value("x", 0), y0 = plot.value("y", 0);
+    for (int y = y0; image.valid() && y < y0 + plot.value("height", 0); ++y) {
+      bool found = false;
+      for (int x = x0; x < x0 + plot.value("width", 0) && !found; ++x) {
+        found = image.at(x, y).maxDifference({0x4f, 0xc3, 0xf7}) <= 40;
+      }
+      rows += found;
+    }
+    return rows;
+  };
+  EXPECT_LE(curveRows("sphere.png"), 3u);
+  EXPECT_GT(curveRows("typed.png"), 40u);
+  EXPECT_LE(curveRows("undone.png"), 3u);
+}
+
 TEST(XdotoolInput, CtrlOAndCtrlSOpenTheFileBrowserAndTheTitleMarksChanges) {
   const auto scratch = testing::makeTestDirectory("xdotool-keys");
   std::ofstream(scratch / "commands.script") << "wait-frames 3\n"

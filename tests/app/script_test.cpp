@@ -410,6 +410,67 @@ TEST(ScriptRun, RadiusInfMakesAFlatSurface) {
   }
 }
 
+// Issue 40: a conic and an aspheric term, each one undo step, as the table's cells are.
+TEST(ScriptRun, ConicAndAsphericTermsAreSetAndUndoneOneAtATime) {
+  const ParsedScript script = parseScript(
+      "set surface 1 conic -0.5\nset surface 1 a4 -2e-6\nset surface 1 a3 1.5e-5\nundo\n", "t");
+  ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+  FakeHost host;
+  ScriptRunner runner(script.commands);
+  while (host.frame(runner)) {
+  }
+  EXPECT_FALSE(runner.failed()) << (host.errors.empty() ? "" : host.errors[0]);
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"set conic of surface 1 to -0.5",
+                                                  "set A4 of surface 1 to -2e-06",
+                                                  "set A3 of surface 1 to 1.5e-05", "undo"}));
+  const optics::AsphericProfile& profile = host.prescription().surfaces[0].profile;
+  EXPECT_DOUBLE_EQ(profile.conic(), -0.5);
+  EXPECT_DOUBLE_EQ(profile.coefficient(4), -2e-6);
+  EXPECT_EQ(profile.coefficient(3), 0.0);  // undone
+  EXPECT_EQ(profile.highestPower(), 4);
+}
+
+TEST(ScriptParse, BadAsphericTermsAreErrorsAtTheirLine) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"set surface 1 a1 1e-3\n",
+       "t:1:15: error: there is no aspheric term 'a1' (expected a2 to a20)"},
+      {"set surface 1 a21 1e-3\n", "t:1:15: error: there is no aspheric term 'a21'"},
+      {"set surface 1 a4 nan\n", "t:1:18: error: 'nan' is not a finite number"},
+      {"set surface 1 a4 none\n", "t:1:18: error: 'none' is not a finite number"},
+      {"set surface 1 conic none\n", "t:1:21: error: 'none' is not a finite number"},
+      {"set surface 1 conic inf\n", "t:1:21: error: 'inf' is not a finite number"},
+      {"set surface 1 ax 1\n", "t:1:15: error: unknown field 'ax'"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const ParsedScript parsed = parseScript(text, "t");
+    ASSERT_EQ(parsed.diagnostics.all().size(), 1u) << text;
+    EXPECT_NE(parsed.diagnostics.formatAll().find(expected), std::string::npos)
+        << parsed.diagnostics.formatAll();
+  }
+}
+
+// The stop is a hole: no shape to make aspheric. A surface that does not exist has none either.
+// Both fail the script at their line, when the document refuses them.
+TEST(ScriptRun, AsphericTermsOnTheStopOrOnNoSurfaceFailAtTheirLine) {
+  for (const auto& [text, expected] :
+       {std::pair<const char*, const char*>{
+            "make-stop 2\nset surface 2 a4 1e-6\n",
+            "t:2:5: error: set: surface 2 is the aperture stop: it has no shape to make aspheric"},
+        {"make-stop 2\nset surface 2 conic -1\n",
+         "t:2:5: error: set: surface 2 is the aperture stop"},
+        {"set surface 9 a4 1e-6\n", "t:1:5: error: set: surface 9 does not exist"}}) {
+    const ParsedScript script = parseScript(text, "t");
+    ASSERT_TRUE(script.diagnostics.empty()) << script.diagnostics.formatAll();
+    FakeHost host;
+    ScriptRunner runner(script.commands);
+    while (host.frame(runner)) {
+    }
+    EXPECT_TRUE(runner.failed()) << text;
+    ASSERT_EQ(host.errors.size(), 1u) << text;
+    EXPECT_NE(host.errors[0].find(expected), std::string::npos) << host.errors[0];
+  }
+}
+
 TEST(ScriptRun, AbbeNoneClearsTheAbbeNumber) {
   const ParsedScript script = parseScript("set surface 1 abbe 60\nset surface 1 abbe none\n", "t");
   ASSERT_TRUE(script.diagnostics.empty());

@@ -14,7 +14,8 @@ double EditStorm::uniform(double low, double high) {
 }
 
 EditCommand EditStorm::next() {
-  const double kind = uniform(0.0, 100.0);
+  // 0..100 the edits of a spherical lens; 100..110 a conic or an aspheric term (issue 40).
+  const double kind = uniform(0.0, 110.0);
   const auto surface = std::uniform_int_distribution<std::size_t>(0, kSurfacesNamed - 1)(random_);
   const double odd = uniform(0.0, 1.0);  // picks the absurd value of a field now and then
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -53,6 +54,22 @@ EditCommand EditStorm::next() {
   if (kind < 93) return ScaleLens{uniform(0.5, 2.0)};
   if (kind < 95) return MakeStop{surface};
   if (kind < 97) return DeleteSurface{surface};
+  if (kind >= 105) {
+    // A term worth a few hundredths of a millimetre at 10 mm from the axis, as real aspheres'
+    // are; now and then one whose term overflows a double long before the rim (1e30 r^20), or
+    // one on the stop (refused), or a power there is none of (refused).
+    const int power = std::uniform_int_distribution<int>(odd < 0.05 ? 0 : 2, 20)(random_);
+    const double sign = uniform(0.0, 1.0) < 0.5 ? -1.0 : 1.0;
+    const double value =
+        odd < 0.1 ? sign * 1e30 : sign * uniform(0.01, 0.05) / std::pow(10.0, power);
+    return SetAsphericTerm{surface, power, value};
+  }
+  if (kind >= 100) {
+    // Conics: ellipsoids, paraboloids and hyperboloids; now and then one so steep that its sag
+    // has no real value inside the aperture.
+    const double conic = odd < 0.1 ? uniform(50.0, 1e4) : uniform(-4.0, 1.0);
+    return SetSurfaceField{surface, SurfaceField::Conic, conic};
+  }
   optics::Surface inserted;
   inserted.radiusMm = uniform(-150.0, 150.0);
   inserted.thicknessMm = uniform(-1.0, 12.0);

@@ -171,8 +171,13 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "redo") return editAndWait(command, host, Redo{});
   if (verb == "set") {
     if (a[0] == "surface") {
-      const auto field = *surfaceFieldFromName(a[2]);
       const std::size_t surface = static_cast<std::size_t>(*parseInteger(a[1]) - 1);
+      if (const auto power = script_words::asphericTermPower(a[2])) {
+        return editAndWait(command, host,
+                           SetAsphericTerm{surface, static_cast<int>(*power),
+                                           *script_words::parseProfileValue(a[3])});
+      }
+      const auto field = *surfaceFieldFromName(a[2]);
       return editAndWait(command, host,
                          SetSurfaceField{surface, field, *parseSurfaceValue(field, a[3])});
     }
@@ -259,6 +264,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "drop") return check(host.drop(a[0]));
   if (verb == "show-panel") return check(host.showPanel(a[0]));
+  if (verb == "asphere-editor") {
+    if (a[0] == "close") return check(host.showAsphereEditor(std::nullopt));
+    return check(host.showAsphereEditor(static_cast<std::size_t>(*parseInteger(a[0]) - 1)));
+  }
   if (verb == "export-plot") {
     const ScriptHost::PlotExport attempt = host.exportPlot(a[0], a[1]);
     return attempt.ready ? check(attempt.error) : false;

@@ -4,7 +4,9 @@
 // as in the lens table.
 //
 //   load-lens FILE              load-scene FILE             save-lens FILE
-//   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears)
+//   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears;
+//                                conic K, and aP VALUE for the aspheric term A_P r^P, P 2..20,
+//                                in mm^(1-P): "set surface 3 a4 -2e-6"; not on the stop)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
 //   set aperture circle|blades N [curvature C] [rotation D]|image FILE|image-mirrored FILE
 //                               (the stop's shape, as the lens file's aperture line; N 3..32;
@@ -15,6 +17,8 @@
 //   zoom-cross-section FACTOR   (about the canvas centre)
 //   centre-cross-section Z Y    (puts the lens-frame point Z, Y mm at the canvas centre: the film
 //                                is at Z 0, the lens toward +Z)
+//   asphere-editor N|close      (opens the lens table's asphere editor on surface N, as its
+//                                Asphere... button does, or closes it)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
 //   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI:
@@ -183,6 +187,10 @@ class ScriptHost {
   virtual std::optional<std::string> exportOutcome(std::uint64_t /*ticket*/) const { return ""; }
   virtual std::optional<std::string> showPanel(const std::string& id) {
     return "there is no panel " + id + " here";
+  }
+  // Opens the lens table's asphere editor on a surface (0-based), or closes it (nullopt).
+  virtual std::optional<std::string> showAsphereEditor(std::optional<std::size_t> surface) {
+    return surface ? "there is no asphere editor here" : std::optional<std::string>();
   }
   virtual void showBlockedRays(bool /*show*/) {}
   virtual void setColourFans(bool /*on*/) {}

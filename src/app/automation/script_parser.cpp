@@ -21,8 +21,10 @@
 
 namespace lenslab::app {
 
+using script_words::asphericTermPower;
 using script_words::parseInteger;
 using script_words::parseNumber;
+using script_words::parseProfileValue;
 using script_words::parseSurfaceValue;
 
 namespace {
@@ -59,6 +61,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"open-dialog", {1, 1}},
       {"dialog-choose", {1, 1}},
       {"show-panel", {1, 1}},
+      {"asphere-editor", {1, 1}},
       {"export-plot", {2, 2}},
       {"export-cross-section", {1, 4}},
       // Pictures for slides (issue 20).
@@ -148,11 +151,26 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     const auto index = parseInteger(a[1]);
     if (!index || *index < 1)
       return problemAt(command, 1, "'" + a[1] + "' is not a surface number (1, 2, ...)");
+    // An aspheric term, "a4": its power must be one the profile has, its value a finite number.
+    if (const auto power = asphericTermPower(a[2])) {
+      if (*power < optics::AsphericProfile::kMinPower ||
+          *power > optics::AsphericProfile::kMaxPower) {
+        return problemAt(command, 2,
+                         "there is no aspheric term '" + a[2] + "' (expected a2 to a20)");
+      }
+      if (!parseProfileValue(a[3])) {
+        return problemAt(command, 3, "'" + a[3] + "' is not a finite number");
+      }
+      return std::nullopt;
+    }
     const auto field = surfaceFieldFromName(a[2]);
     if (!field) {
-      return problemAt(
-          command, 2,
-          "unknown field '" + a[2] + "' (expected radius, thickness, n, abbe or aperture)");
+      return problemAt(command, 2,
+                       "unknown field '" + a[2] +
+                           "' (expected radius, thickness, n, abbe, aperture, conic or a2 to a20)");
+    }
+    if (*field == SurfaceField::Conic && !parseProfileValue(a[3])) {
+      return problemAt(command, 3, "'" + a[3] + "' is not a finite number");
     }
     if (!parseSurfaceValue(*field, a[3])) {
       const char* expected = *field == SurfaceField::RadiusMm ? " (or inf for a flat surface)" : "";
@@ -249,6 +267,14 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     return problemAt(command, kLineStart, message.str());
   }
   if (command.verb == "set") return checkSet(command);
+  if (command.verb == "asphere-editor" && command.arguments[0] != "close") {
+    const auto surface = parseInteger(command.arguments[0]);
+    if (!surface || *surface < 1) {
+      return problemAt(
+          command, 0,
+          "'" + command.arguments[0] + "' is not a surface number (1, 2, ...) or close");
+    }
+  }
   if (command.verb == "load-lens" && count == 2 && command.arguments[1] != "keep-film-distance") {
     return problemAt(command, 1,
                      "unknown option '" + command.arguments[1] + "' (expected keep-film-distance)");

@@ -32,4 +32,15 @@ std::optional<long> parseInteger(const std::string& text) {
   return value;
 }
 
+std::optional<long> asphericTermPower(const std::string& word) {
+  if (word.size() < 2 || word[0] != 'a') return std::nullopt;
+  return parseInteger(word.substr(1));
+}
+
+std::optional<double> parseProfileValue(const std::string& text) {
+  const auto value = parseNumber(text);
+  if (!value || !std::isfinite(*value)) return std::nullopt;
+  return value;
+}
+
 }  // namespace lenslab::app::script_words

@@ -15,5 +15,10 @@ std::optional<double> parseNumber(const std::string& text);
 // the lens file write it). No other setting has a meaning for infinity.
 std::optional<double> parseSurfaceValue(SurfaceField field, const std::string& text);
 std::optional<long> parseInteger(const std::string& text);
+// The power P of an aspheric term's name "aP" ("a4": 4), whatever its value (the caller says
+// which powers there are); nothing for any other word ("abbe", "aperture", "a", "ax").
+std::optional<long> asphericTermPower(const std::string& word);
+// An aspheric term's or a conic's value: a finite number (not "none": there is no "no term").
+std::optional<double> parseProfileValue(const std::string& text);
 
 }  // namespace lenslab::app::script_words

@@ -26,9 +26,24 @@ double& fieldOf(optics::Surface& surface, SurfaceField field, double& scratch) {
     case SurfaceField::ApertureDiameterMm:
       return surface.apertureDiameterMm;
     case SurfaceField::AbbeD:
+    case SurfaceField::Conic:
       break;
   }
   return scratch;
+}
+
+// Why a conic or a polynomial term cannot be set on this surface to this value, if it cannot.
+std::optional<std::string> profileRefusal(const optics::Surface& surface, std::size_t index,
+                                          double value) {
+  const std::string where = "surface " + std::to_string(index + 1);
+  if (surface.isStop()) {
+    return where +
+           " is the aperture stop: it has no shape to make aspheric (give it a radius first)";
+  }
+  // The traces, the validation and the table take the terms as numbers: NaN or infinity would
+  // reach a picture (a huge but finite term is a shape, flagged by validation if it is absurd).
+  if (!std::isfinite(value)) return where + ": an aspheric term must be a finite number";
+  return std::nullopt;
 }
 
 std::string surfaceOutOfRange(std::size_t surface, std::size_t count) {
@@ -45,6 +60,7 @@ std::optional<SurfaceField> surfaceFieldFromName(const std::string& name) {
   if (name == "n" || name == "nd") return SurfaceField::IndexD;
   if (name == "abbe" || name == "vd") return SurfaceField::AbbeD;
   if (name == "aperture") return SurfaceField::ApertureDiameterMm;
+  if (name == "conic" || name == "k") return SurfaceField::Conic;
   return std::nullopt;
 }
 
@@ -60,6 +76,8 @@ const char* surfaceFieldName(SurfaceField field) {
       return "V_d";
     case SurfaceField::ApertureDiameterMm:
       return "aperture";
+    case SurfaceField::Conic:
+      return "conic";
   }
   return "?";
 }
@@ -71,6 +89,9 @@ std::string describe(const EditCommand& command) {
           [&](const SetSurfaceField& c) {
             text << "set " << surfaceFieldName(c.field) << " of surface " << c.surface + 1 << " to "
                  << c.value;
+          },
+          [&](const SetAsphericTerm& c) {
+            text << "set A" << c.power << " of surface " << c.surface + 1 << " to " << c.value;
           },
           [&](const MakeStop& c) { text << "make surface " << c.surface + 1 << " the stop"; },
           [&](const InsertSurface& c) { text << "insert a surface at " << c.before + 1; },
@@ -100,7 +121,8 @@ bool sameSurface(const optics::Surface& a, const optics::Surface& b) {
   const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
   return same(a.radiusMm, b.radiusMm) && same(a.thicknessMm, b.thicknessMm) &&
          same(a.indexD, b.indexD) && same(a.apertureDiameterMm, b.apertureDiameterMm) &&
-         a.abbeD.has_value() == b.abbeD.has_value() && (!a.abbeD || same(*a.abbeD, *b.abbeD));
+         a.abbeD.has_value() == b.abbeD.has_value() && (!a.abbeD || same(*a.abbeD, *b.abbeD)) &&
+         a.profile == b.profile;
 }
 
 }  // namespace
@@ -162,12 +184,30 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
               surface.abbeD = std::isnan(c.value) ? std::nullopt : std::optional(c.value);
               return;
             }
+            if (c.field == SurfaceField::Conic) {
+              if ((refusal = profileRefusal(surface, c.surface, c.value))) return;
+              return surface.profile.setConic(c.value);
+            }
             double scratch = 0;
             fieldOf(surface, c.field, scratch) = c.value;
+            // A radius of 0 makes the surface the stop, a hole of no shape.
+            if (surface.isStop()) surface.profile = {};
+          },
+          [&](const SetAsphericTerm& c) {
+            if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
+            if (c.power < optics::AsphericProfile::kMinPower ||
+                c.power > optics::AsphericProfile::kMaxPower) {
+              return void(refusal = "there is no term A" + std::to_string(c.power) +
+                                    " (the powers are 2 to 20)");
+            }
+            optics::Surface& surface = surfaces[c.surface];
+            if ((refusal = profileRefusal(surface, c.surface, c.value))) return;
+            surface.profile.setCoefficient(c.power, c.value);
           },
           [&](const MakeStop& c) {
             if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
             surfaces[c.surface].radiusMm = 0.0;
+            surfaces[c.surface].profile = {};  // the stop is a hole, of no shape
             surfaces[c.surface].indexD = 1.0;
             surfaces[c.surface].abbeD.reset();
           },
@@ -263,6 +303,29 @@ bool LensDocument::redo() {
   return true;
 }
 
+optics::AsphericProfile mirroredProfile(const optics::AsphericProfile& profile) {
+  // Turned front to back the surface is z -> -z, so its sag S(r) becomes -S(r). The conic term
+  // c r^2 / (1 + sqrt(1 - (1 + k) c^2 r^2)) is odd in c (the root sees only c^2): negating c
+  // negates it with k unchanged. Each polynomial term A_i r^i must change sign itself.
+  optics::AsphericProfile result = profile;
+  for (int power = optics::AsphericProfile::kMinPower; power <= optics::AsphericProfile::kMaxPower;
+       ++power) {
+    result.setCoefficient(power, -profile.coefficient(power));
+  }
+  return result;
+}
+
+optics::AsphericProfile scaledProfile(const optics::AsphericProfile& profile, double factor) {
+  // The scaled surface is the old one magnified: S'(s r) = s S(r). With c' = c / s the conic
+  // term satisfies this for the same k; A'_i (s r)^i = s A_i r^i needs A'_i = A_i s^(1 - i).
+  optics::AsphericProfile result = profile;
+  for (int power = optics::AsphericProfile::kMinPower; power <= optics::AsphericProfile::kMaxPower;
+       ++power) {
+    result.setCoefficient(power, profile.coefficient(power) * std::pow(factor, 1 - power));
+  }
+  return result;
+}
+
 optics::Prescription flipped(const optics::Prescription& lens) {
   // Reversing the order swaps which medium follows each surface and the sign of every radius
   // (a centre of curvature toward the film is now toward the object). The gap after new surface
@@ -282,6 +345,7 @@ optics::Prescription flipped(const optics::Prescription& lens) {
     // -0 and -inf the table and the saved file would show.
     surface.radiusMm =
         old[i].isStop() || old[i].isFlat() ? std::abs(old[i].radiusMm) : -old[i].radiusMm;
+    surface.profile = mirroredProfile(old[i].profile);
     if (i > 0) {
       surface.thicknessMm = old[i - 1].thicknessMm;
       surface.indexD = old[i - 1].indexD;
@@ -301,6 +365,7 @@ optics::Prescription scaled(const optics::Prescription& lens, double factor) {
     surface.radiusMm *= factor;
     surface.thicknessMm *= factor;
     surface.apertureDiameterMm *= factor;
+    surface.profile = scaledProfile(surface.profile, factor);
   }
   return result;
 }

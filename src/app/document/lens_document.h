@@ -15,9 +15,11 @@
 
 namespace lenslab::app {
 
-enum class SurfaceField { RadiusMm, ThicknessMm, IndexD, AbbeD, ApertureDiameterMm };
+// Conic: the conic constant k of the surface's profile (optics/aspheric_profile.h; 0 a sphere).
+enum class SurfaceField { RadiusMm, ThicknessMm, IndexD, AbbeD, ApertureDiameterMm, Conic };
 
-// Parses "radius", "thickness", "n", "nd", "abbe", "vd", "aperture"; nullopt otherwise.
+// Parses "radius", "thickness", "n", "nd", "abbe", "vd", "aperture", "conic", "k"; nullopt
+// otherwise.
 std::optional<SurfaceField> surfaceFieldFromName(const std::string& name);
 const char* surfaceFieldName(SurfaceField field);
 
@@ -25,6 +27,14 @@ struct SetSurfaceField {
   std::size_t surface;
   SurfaceField field;
   double value;  // for AbbeD, NaN clears it (non-dispersive)
+};
+// A_power r^power of the surface's profile, in mm^(1 - power). The stop has no shape to carry
+// one, a power outside AsphericProfile's range has no term, and a non-finite value is no term
+// either: the document refuses them (as it refuses a conic on the stop, or a non-finite one).
+struct SetAsphericTerm {
+  std::size_t surface;
+  int power;
+  double value;
 };
 struct MakeStop {
   std::size_t surface;  // becomes the aperture stop (radius 0, air after it)
@@ -41,7 +51,8 @@ struct MoveSurface {
 };
 struct FlipLens {};
 struct ScaleLens {
-  double factor;  // every length (radii, thicknesses, apertures, film distance)
+  // every length (radii, thicknesses, apertures, film distance; the aspheric terms as lengths do)
+  double factor;
 };
 struct SetFilmDistance {
   double mm;
@@ -66,9 +77,9 @@ struct ReplaceLens {
 struct Undo {};
 struct Redo {};
 
-using EditCommand = std::variant<SetSurfaceField, MakeStop, InsertSurface, DeleteSurface,
-                                 MoveSurface, FlipLens, ScaleLens, SetFilmDistance, SetStopDiameter,
-                                 SetStopShape, ReplaceLens, Undo, Redo>;
+using EditCommand = std::variant<SetSurfaceField, SetAsphericTerm, MakeStop, InsertSurface,
+                                 DeleteSurface, MoveSurface, FlipLens, ScaleLens, SetFilmDistance,
+                                 SetStopDiameter, SetStopShape, ReplaceLens, Undo, Redo>;
 
 // What a command does, in words, for the log and the Edit menu ("set radius of surface 3").
 std::string describe(const EditCommand& command);
@@ -140,5 +151,9 @@ class LensDocument {
 // Pure transformations, also used by the commands.
 optics::Prescription flipped(const optics::Prescription& lens);
 optics::Prescription scaled(const optics::Prescription& lens, double factor);
+// A surface's conic and polynomial terms seen from its other side (every A_i negated, k kept: the
+// radius's sign flips with them), and magnified by `factor` (A_i * factor^(1 - i), k kept).
+optics::AsphericProfile mirroredProfile(const optics::AsphericProfile& profile);
+optics::AsphericProfile scaledProfile(const optics::AsphericProfile& profile, double factor);
 
 }  // namespace lenslab::app

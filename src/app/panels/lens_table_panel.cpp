@@ -35,6 +35,8 @@ double fieldValue(const optics::Surface& surface, SurfaceField field) {
       return surface.abbeD.value_or(std::nan(""));
     case SurfaceField::ApertureDiameterMm:
       return surface.apertureDiameterMm;
+    case SurfaceField::Conic:
+      return surface.profile.conic();
   }
   return 0;
 }
@@ -163,15 +165,33 @@ void drawToolbar(ViewerState& state) {
   ImGui::SameLine();
   if (ImGui::Button("Flip")) state.lens.issue(FlipLens{});
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reverse the lens front to back");
+  ImGui::SameLine();
+  // The stop is a hole: it has no shape to make aspheric.
+  ImGui::BeginDisabled(!hasSelection || surfaces[row].isStop());
+  if (ImGui::Button("Asphere...")) state.lensTable.asphereEditorRow = static_cast<int>(row);
+  recordItemRect(state, "lens-table/asphere-button");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip(
+        "The selected surface's conic and polynomial terms, with a plot of its "
+        "departure from the sphere");
+  }
 }
 
 // Each value column is at least as wide as the shortest text its cells fall back to (three
 // significant digits, and a sign for the radius: fittingText), so that 3.76 never reads "3.";
 // the columns share out any width beyond in proportion to those (the radius, the widest, gets
 // the most digits).
-constexpr const char* kNames[] = {"Radius", "Thick.", "n_d", "V_d", "Aper."};
-// (Air gaps under a millimetre are common: "0.818" is as short as a thickness gets.)
-constexpr const char* kNarrowestValues[] = {"-14.5", "0.818", "1.67", "64.2", "25.2"};
+// The conic constant k beside the radius it shapes, as patents list them.
+constexpr int kValueColumns = 6;
+constexpr SurfaceField kColumnFields[kValueColumns] = {
+    SurfaceField::RadiusMm, SurfaceField::Conic, SurfaceField::ThicknessMm,
+    SurfaceField::IndexD,   SurfaceField::AbbeD, SurfaceField::ApertureDiameterMm};
+constexpr const char* kNames[kValueColumns] = {"Radius", "k", "Thick.", "n_d", "V_d", "Aper."};
+// (Air gaps under a millimetre are common: "0.818" is as short as a thickness gets; a conic is
+// mostly 0 or a negative number of one digit before the point.)
+constexpr const char* kNarrowestValues[kValueColumns] = {"-14.5", "-0.5", "0.818",
+                                                         "1.67",  "64.2", "25.2"};
 constexpr float kFixedColumnWidth = 34.0f;  // the row number and the stop check box, at scale 1
 
 float narrowestColumnWidth(int column) {
@@ -184,10 +204,12 @@ float narrowestColumnWidth(int column) {
 float tableMinWidth() {
   const ImGuiStyle& style = ImGui::GetStyle();
   float valuesWidth = 0.0f;
-  for (int column = 0; column < 5; ++column) valuesWidth += narrowestColumnWidth(column);
-  // The two fixed columns with their cell padding, and the eight borders (a pixel each, and a
+  for (int column = 0; column < kValueColumns; ++column) {
+    valuesWidth += narrowestColumnWidth(column);
+  }
+  // The two fixed columns with their cell padding, and the nine borders (a pixel each, and a
   // pixel of rounding per column).
-  return valuesWidth + 2.0f * (px(kFixedColumnWidth) + 2.0f * style.CellPadding.x) + 16.0f;
+  return valuesWidth + 2.0f * (px(kFixedColumnWidth) + 2.0f * style.CellPadding.x) + 18.0f;
 }
 
 }  // namespace
@@ -238,12 +260,12 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   }
   const float fixedColumnWidth = px(kFixedColumnWidth);
   const float innerWidth = sideways ? minWidth : 0.0f;
-  if (ImGui::BeginTable("surfaces", 7, tableFlags, outerSize, innerWidth)) {
+  if (ImGui::BeginTable("surfaces", kValueColumns + 2, tableFlags, outerSize, innerWidth)) {
     state.lensTable.cellsCutOff = 0;
     state.lensTable.cellsShortened = 0;
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
-    for (int column = 0; column < 5; ++column) {
+    for (int column = 0; column < kValueColumns; ++column) {
       ImGui::TableSetupColumn(kNames[column], ImGuiTableColumnFlags_WidthStretch,
                               narrowestColumnWidth(column));
     }
@@ -263,20 +285,41 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
         ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, kSelectedRow);
       }
       ImGui::TableSetColumnIndex(0);
-      const std::string number = (hasProblem ? "! " : "") + std::to_string(row + 1);
+      // An aspheric surface is marked "*" beside its number, as patents mark them.
+      const bool aspheric = !surface.profile.isSphere();
+      const std::string number =
+          (hasProblem ? "! " : "") + std::to_string(row + 1) + (aspheric ? "*" : "");
       if (ImGui::Selectable(number.c_str(), state.lensTable.selectedRow == static_cast<int>(row))) {
         state.lensTable.selectedRow = static_cast<int>(row);
       }
-      if (hasProblem) problemTooltip(state, static_cast<int>(row));
-      const SurfaceField fields[] = {SurfaceField::RadiusMm, SurfaceField::ThicknessMm,
-                                     SurfaceField::IndexD, SurfaceField::AbbeD,
-                                     SurfaceField::ApertureDiameterMm};
-      for (int column = 0; column < 5; ++column) {
+      recordItemRect(state, "lens-table/" + std::to_string(row + 1) + "/number");
+      if (hasProblem) {
+        problemTooltip(state, static_cast<int>(row));
+      } else if (aspheric && ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("Aspheric: Asphere... (or a right click) shows its terms");
+      }
+      // A right click on the number opens the row's asphere editor, as the toolbar's button.
+      if (!surface.isStop() && ImGui::BeginPopupContextItem("row-menu")) {
+        state.lensTable.selectedRow = static_cast<int>(row);
+        if (ImGui::MenuItem("Asphere...")) {
+          state.lensTable.asphereEditorRow = static_cast<int>(row);
+        }
+        ImGui::EndPopup();
+      }
+      for (int column = 0; column < kValueColumns; ++column) {
         ImGui::TableSetColumnIndex(column + 1);
-        valueCell(state, row, fields[column], fieldValue(surface, fields[column]));
+        const SurfaceField field = kColumnFields[column];
+        // The stop is a hole: no conic to show or type, only a dash saying so.
+        if (field == SurfaceField::Conic && surface.isStop()) {
+          ImGui::TextDisabled("-");
+          recordItemRect(state, "lens-table/" + std::to_string(row + 1) + "/conic");
+          if (ImGui::IsItemHovered()) ImGui::SetTooltip("The stop has no shape");
+          continue;
+        }
+        valueCell(state, row, field, fieldValue(surface, field));
         if (hasProblem) problemTooltip(state, static_cast<int>(row));
       }
-      ImGui::TableSetColumnIndex(6);
+      ImGui::TableSetColumnIndex(kValueColumns + 1);
       bool isStop = surface.isStop();
       // The cell's extent (its clip rectangle) and the checkbox, for the HiDPI layout test.
       const ImVec2 cellMin = ImGui::GetWindowDrawList()->GetClipRectMin();

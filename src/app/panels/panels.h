@@ -55,6 +55,11 @@ void drawAnalysisConditions(ViewerState& state, const char* plotId, const optics
 // keeps it at least that wide where the window allows).
 float lensTablePanelMinWidth();
 
+// The lens table's asphere editor, a window of its own over the others while it is open
+// (state.lensTable.asphereEditorRow): the conic, every A_i, and a plot of the departure from the
+// base sphere.
+void drawAsphereEditor(ViewerState& state);
+
 // The lens's first-order data, focus and aperture controls (inside the lens panel).
 void drawFirstOrderSection(ViewerState& state);
 
