@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+
+#include "optics/lens_system.h"
 
 namespace lenslab::app {
 namespace {
@@ -28,6 +31,33 @@ TEST(LensDocument, EditUndoRedo) {
   ASSERT_TRUE(document.redo());
   EXPECT_DOUBLE_EQ(document.prescription().surfaces[0].radiusMm, 42.0);
   EXPECT_FALSE(document.redo());
+}
+
+// A catalogue glass is the medium after its row: flipping carries it with the medium, and typing
+// an n_d or V_d makes it a model glass of the numbers (the name would contradict them).
+TEST(LensDocument, ACatalogueGlassMovesWithItsMediumAndATypedIndexReplacesIt) {
+  auto glass = std::make_shared<optics::CatalogGlass>();
+  glass->name = "N-BK7";
+  glass->maker = "SCHOTT";
+  glass->nd = 1.5168;
+  glass->vd = 64.17;
+  optics::Prescription lens = triplet();
+  optics::setCatalogGlass(lens.surfaces[3], glass);  // the rear element's glass
+  const optics::Prescription flippedLens = flipped(lens);
+  // Row 3's medium lies between rows 3 and 4; flipped, between rows 0 and 1: row 0's medium.
+  EXPECT_EQ(flippedLens.surfaces[0].glass, glass);
+  for (std::size_t i = 1; i < flippedLens.surfaces.size(); ++i)
+    EXPECT_FALSE(flippedLens.surfaces[i].glass) << i;
+  EXPECT_EQ(flipped(flippedLens).surfaces[3].glass, glass);
+
+  LensDocument document(lens);
+  ASSERT_FALSE(document.apply(SetSurfaceField{3, SurfaceField::IndexD, 1.52}));
+  EXPECT_FALSE(document.prescription().surfaces[3].glass);
+  EXPECT_EQ(document.prescription().surfaces[3].indexD, 1.52);
+  EXPECT_EQ(document.prescription().surfaces[3].abbeD, 64.17);  // the glass's V_d, kept
+  EXPECT_TRUE(optics::validate(document.prescription()).empty());
+  ASSERT_TRUE(document.undo());
+  EXPECT_EQ(document.prescription().surfaces[3].glass, glass);
 }
 
 TEST(LensDocument, DragStepsWithOneMergeKeyAreOneUndoStep) {

@@ -122,7 +122,7 @@ bool sameSurface(const optics::Surface& a, const optics::Surface& b) {
   return same(a.radiusMm, b.radiusMm) && same(a.thicknessMm, b.thicknessMm) &&
          same(a.indexD, b.indexD) && same(a.apertureDiameterMm, b.apertureDiameterMm) &&
          a.abbeD.has_value() == b.abbeD.has_value() && (!a.abbeD || same(*a.abbeD, *b.abbeD)) &&
-         a.profile == b.profile;
+         a.profile == b.profile && a.glass == b.glass;
 }
 
 }  // namespace
@@ -180,6 +180,10 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
           [&](const SetSurfaceField& c) {
             if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
             optics::Surface& surface = surfaces[c.surface];
+            // A typed n_d or V_d makes a catalogue glass a model glass of the numbers: the name
+            // would otherwise contradict them (validation refuses that).
+            if (c.field == SurfaceField::IndexD || c.field == SurfaceField::AbbeD)
+              optics::setCatalogGlass(surface, nullptr);
             if (c.field == SurfaceField::AbbeD) {
               surface.abbeD = std::isnan(c.value) ? std::nullopt : std::optional(c.value);
               return;
@@ -210,6 +214,7 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
             surfaces[c.surface].profile = {};  // the stop is a hole, of no shape
             surfaces[c.surface].indexD = 1.0;
             surfaces[c.surface].abbeD.reset();
+            surfaces[c.surface].glass = nullptr;
           },
           [&](const InsertSurface& c) {
             if (c.before > count) return void(refusal = surfaceOutOfRange(c.before, count));
@@ -350,10 +355,12 @@ optics::Prescription flipped(const optics::Prescription& lens) {
       surface.thicknessMm = old[i - 1].thicknessMm;
       surface.indexD = old[i - 1].indexD;
       surface.abbeD = old[i - 1].abbeD;
+      surface.glass = old[i - 1].glass;
     } else {
       surface.thicknessMm = n > 0 ? old[n - 1].thicknessMm : 0.0;
       surface.indexD = 1.0;
       surface.abbeD.reset();
+      surface.glass = nullptr;
     }
   }
   return result;
