@@ -185,6 +185,22 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(
       std::move(pinhole), glm::vec3(viewDirection), falloff.cos4);
 }
 
+namespace {
+
+// A spectral render asked of a lens whose glass the spectral trace cannot follow yet (a catalogue
+// glass: optics::LensSystem::spectralTraceProblem) renders in RGB; the note says so, at the lens
+// file, rather than leave the user to wonder where the colour fringes went.
+void noteRgbInsteadOfSpectral(const std::shared_ptr<const Camera>& camera,
+                              const std::filesystem::path& lensPath, SpectralMode mode,
+                              Diagnostics& diagnostics) {
+  const auto* lensCamera = dynamic_cast<const RealisticCamera*>(camera.get());
+  if (mode == SpectralMode::Off || !lensCamera) return;
+  const std::string why = lensCamera->lens().spectralTraceProblem();
+  if (!why.empty()) diagnostics.note({lensPath.string(), 0, 0}, why);
+}
+
+}  // namespace
+
 std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
                                          const CameraOverrides& overrides,
                                          Diagnostics& diagnostics) {
@@ -193,12 +209,17 @@ std::shared_ptr<const Camera> makeCamera(const SceneDescription& scene,
   const int height = overrides.height.value_or(scene.film.yResolution);
   if (camera.type == "realistic") {
     auto lens = realisticLens(scene, overrides, diagnostics);
-    return lens ? makeLensCamera(scene, std::move(lens), width, height, overrides.falloff)
-                : nullptr;
+    if (!lens) return nullptr;
+    auto made = makeLensCamera(scene, std::move(lens), width, height, overrides.falloff);
+    noteRgbInsteadOfSpectral(made, overrides.lensPath.value_or(camera.lensPath),
+                             overrides.falloff.spectral, diagnostics);
+    return made;
   }
   if (overrides.lensPath) {
-    return makeLensInsteadOfPinhole(scene, *overrides.lensPath, width, height, overrides.falloff,
-                                    diagnostics);
+    auto made = makeLensInsteadOfPinhole(scene, *overrides.lensPath, width, height,
+                                         overrides.falloff, diagnostics);
+    noteRgbInsteadOfSpectral(made, *overrides.lensPath, overrides.falloff.spectral, diagnostics);
+    return made;
   }
   return std::make_shared<PerspectiveCamera>(
       camera.cameraFromWorld, camera.fovDegrees, width, height, camera.lensRadius,

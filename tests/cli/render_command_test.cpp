@@ -112,6 +112,29 @@ TEST_F(RenderCommand, LensOptionReplacesTheCamerasLens) {
   EXPECT_NE(withoutLens.err.find("nope.dat"), std::string::npos) << withoutLens.err;
 }
 
+TEST_F(RenderCommand, ASpectralRenderOfACatalogueGlassSaysItRendersInRgb) {
+  // The spectral batch trace follows model glasses only: asked for spectral, a lens naming a
+  // catalogue glass renders in RGB, and a note at the lens file says why.
+  std::ofstream(scratch / "bk7.lens") << "lenslab-lens 1\n"
+                                         "surface radius 50 thickness 5 glass N-BK7 diameter 20\n"
+                                         "surface radius -50 thickness 1 diameter 20\n"
+                                         "stop thickness 45 diameter 10\n";
+  const std::string render = "render '" + (scratch / "scene.pbrt").string() + "' --spp 1 --lens '" +
+                             (scratch / "bk7.lens").string() + "' --out '" +
+                             (scratch / "bk7.png").string() + "' --stats-json '" +
+                             (scratch / "bk7.json").string() + "' --spectral ";
+  const auto on = testing::runProcess(lenslab(render + "on"), scratch);
+  ASSERT_EQ(on.exitCode, 0) << on.err;
+  EXPECT_NE(on.err.find("bk7.lens: note: surface 1's glass N-BK7 is a catalogue glass"),
+            std::string::npos)
+      << on.err;
+  EXPECT_FALSE(
+      nlohmann::json::parse(testing::readWholeFile(scratch / "bk7.json"))["spectral"].get<bool>());
+  const auto off = testing::runProcess(lenslab(render + "off"), scratch);
+  ASSERT_EQ(off.exitCode, 0) << off.err;
+  EXPECT_EQ(off.err.find("catalogue glass"), std::string::npos) << off.err;  // nothing to say
+}
+
 TEST_F(RenderCommand, LensOptionPutsTheLensInPlaceOfAPinhole) {
   // A perspective scene with --lens is seen through the lens (documented in --help), not
   // silently rendered through the pinhole.
