@@ -27,34 +27,17 @@ using lenslab::optics::LensRay;
 using lenslab::optics::LensRayBatch;
 using lenslab::optics::LensSystem;
 
-// "dgauss-50mm-aspheric": issue 40's benchmark lens, the bundled double-Gauss with four of its
-// surfaces given conics and r^4..r^10 terms (the same as batch_trace_test.cpp's).
-constexpr const char* kAsphericDoubleGauss = "dgauss-50mm-aspheric";
+// "dgauss-50mm-aspheric.lens": issue 40's benchmark lens, the bundled double-Gauss with four of
+// its surfaces given conics and r^4..r^10 terms (tests/optics/lenses/, as batch_trace_test.cpp
+// reads it).
+constexpr const char* kAsphericDoubleGauss = "dgauss-50mm-aspheric.lens";
 
 std::shared_ptr<const LensSystem> loadBundled(const std::string& name) {
-  const bool aspheric = name == kAsphericDoubleGauss;
-  const auto file = lenslab::optics::readLensFile(std::string(LENSLAB_SOURCE_DIR) + "/lenses/" +
-                                                  (aspheric ? "dgauss-50mm.dat" : name));
+  const std::string directory = name == kAsphericDoubleGauss ? "/tests/optics/lenses/" : "/lenses/";
+  const auto file =
+      lenslab::optics::readLensFile(std::string(LENSLAB_SOURCE_DIR) + directory + name);
   if (!file.ok()) return nullptr;
-  lenslab::optics::Prescription prescription = file.lens->prescription;
-  if (aspheric) {
-    const struct {
-      std::size_t row;
-      double conic, a4, a6, a8, a10;
-    } aspheres[] = {{0, -0.4, -1.5e-6, 2e-9, -1e-12, 5e-16},
-                    {3, 0.8, 4e-6, -3e-9, 2e-12, 0.0},
-                    {6, -1.2, 3e-6, 5e-9, 0.0, -2e-15},
-                    {10, 0.0, -2e-6, 1e-9, -3e-13, 0.0}};
-    for (const auto& a : aspheres) {
-      lenslab::optics::AsphericProfile& profile = prescription.surfaces.at(a.row).profile;
-      profile.setConic(a.conic);
-      profile.setCoefficient(4, a.a4);
-      profile.setCoefficient(6, a.a6);
-      profile.setCoefficient(8, a.a8);
-      profile.setCoefficient(10, a.a10);
-    }
-  }
-  return LensSystem::build(prescription).system;
+  return LensSystem::build(file.lens->prescription).system;
 }
 
 struct CameraSamples {

@@ -15,6 +15,8 @@ namespace lenslab::optics::testing {
 
 inline std::filesystem::path referenceLensDir() { return LENSLAB_REFERENCE_LENS_DIR; }
 inline std::filesystem::path bundledLensDir() { return LENSLAB_BUNDLED_LENS_DIR; }
+// Lenses made for the tests (and benchmarks), not for users: tests/optics/lenses/.
+inline std::filesystem::path testLensDir() { return LENSLAB_TEST_LENS_DIR; }
 
 inline Prescription loadPrescription(const std::filesystem::path& path) {
   const LensFileResult file = readLensFile(path);
