@@ -97,6 +97,13 @@ constexpr std::string_view kApertureKey = "lenslab aperture:";
 
 }  // namespace
 
+std::string_view withoutByteOrderMark(std::string_view text) {
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
+    text.remove_prefix(kByteOrderMark.size());
+  return text;
+}
+
 std::optional<std::pair<int, std::string>> readApertureSpec(std::string_view spec,
                                                             const std::string& fileName,
                                                             ApertureShape& shape,
@@ -141,10 +148,7 @@ int LensFile::lineOfSurface(int surface) const {
 
 LensFileResult parseLensText(std::string_view text, const std::string& fileName) {
   LensFileResult result;
-  // A UTF-8 byte-order mark (some Windows editors write one) is not part of the first line.
-  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
-    text.remove_prefix(kByteOrderMark.size());
+  text = withoutByteOrderMark(text);
   auto fail = [&](int line, int column, std::string message) {
     result.diagnostics.error({fileName, line, column}, std::move(message));
     return result;

@@ -62,6 +62,10 @@ LensFileResult parseLensText(std::string_view text, const std::string& fileName)
 // by its version line or its extension, and otherwise pbrt's .dat.
 LensFileResult readLensFile(const std::filesystem::path& path);
 
+// The text without a leading UTF-8 byte-order mark (some Windows editors write one; it is not
+// part of the first line).
+std::string_view withoutByteOrderMark(std::string_view text);
+
 // Reads an aperture spec (aperture_shape.h's parseApertureSpec) into `shape`, loading an image
 // relative to the lens file's folder. Returns the 1-based column and message of a malformed spec
 // (an error); an image that cannot be used is a warning in `diagnostics` and leaves the shape as

@@ -184,9 +184,7 @@ bool hasNativeLensExtension(const std::filesystem::path& path) {
 
 bool isNativeLensText(std::string_view text, const std::filesystem::path& path) {
   if (hasNativeLensExtension(path)) return true;
-  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
-    text.remove_prefix(kByteOrderMark.size());
+  text = withoutByteOrderMark(text);
   for (const TextLine& line : splitTextLines(text)) {
     const std::string_view content = trimmedText(line.text);
     if (content.empty() || content.front() == '#') continue;
@@ -198,9 +196,7 @@ bool isNativeLensText(std::string_view text, const std::filesystem::path& path) 
 
 LensFileResult parseNativeLensText(std::string_view text, const std::string& fileName) {
   LensFileResult result;
-  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
-    text.remove_prefix(kByteOrderMark.size());
+  text = withoutByteOrderMark(text);
   auto fail = [&](int line, int column, const std::string& message) {
     result.diagnostics.error({fileName, line, column}, message);
     return result;
