@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "common/diagnostics.h"
+#include "optics/design_conditions.h"
 #include "optics/prescription.h"
 
 namespace lenslab::optics {
@@ -40,6 +41,8 @@ struct LensFile {
   std::string title;
   std::string source;
   std::optional<double> publishedEflMm;
+  // The wavelengths, fields and aperture the lens was designed for, when the file states them.
+  DesignConditions design;
   // Line number (1-based) of each surface row, for error messages that point at a row.
   std::vector<int> rowLines;
   // The line of a surface's row (a 0-based index, as ValidationError::surface counts); the first
