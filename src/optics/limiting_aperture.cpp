@@ -10,7 +10,7 @@ namespace lenslab::optics {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 // The paraxial marginal ray in (y, w = n u) coordinates, as paraxial.cpp traces it: refraction
 // w' = w - (n' - n) c y, a gap of thickness d in index n: y' = y + (d / n) w. Unit height at the
@@ -20,7 +20,7 @@ std::optional<ParaxialAxialLimit> paraxialLimit(const LensSystem& lens, double o
   const double nObject = surfaces.front().indexFront;
   const double w0 = std::isinf(objectFromFront) ? 0.0 : nObject / objectFromFront;
   double y = 1.0, w = w0;
-  double smallestRatio = kInfinity;
+  double smallestRatio = kUnbounded;
   std::size_t limiting = 0;
   for (std::size_t k = 0; k < surfaces.size(); ++k) {
     const SurfaceGeometry& s = surfaces[k];
@@ -44,7 +44,7 @@ std::optional<ParaxialAxialLimit> paraxialLimit(const LensSystem& lens, double o
   const double heightOnPupil = pupil.atInfinity ? 1.0 : 1.0 + (w0 / nObject) * pupil.positionMm;
   out.entrancePupilDiameterMm = 2.0 * smallestRatio * std::abs(heightOnPupil);
   const double slope = std::abs(w) * smallestRatio;  // n' |u'| of the limited ray
-  out.workingFNumber = slope > 0.0 && std::isfinite(slope) ? 1.0 / (2.0 * slope) : kInfinity;
+  out.workingFNumber = slope > 0.0 && std::isfinite(slope) ? 1.0 / (2.0 * slope) : kUnbounded;
   return out;
 }
 
@@ -131,7 +131,7 @@ LimitingAperture findLimitingAperture(const LensSystem& lens, double objectFromF
   const glm::dvec3& d = exit->direction;
   const double sinU = std::sqrt(d.x * d.x + d.y * d.y) / glm::length(d);
   const double nImage = lens.surfaces().back().indexRear;
-  beam.workingFNumber = sinU > 0.0 ? 1.0 / (2.0 * nImage * sinU) : kInfinity;
+  beam.workingFNumber = sinU > 0.0 ? 1.0 / (2.0 * nImage * sinU) : kUnbounded;
   out.real = beam;
   return out;
 }
