@@ -161,7 +161,8 @@ struct ZmxReader {
   int primaryLine = 0;
   std::vector<ZmxSurface> surfaces;
   bool notedCoating = false;
-  bool lastNoteFull = false;  // OpticStudio cuts long notes into 200-character NOTE lines
+  int stopLine = 0, stopSurface = 0;  // the first STOP
+  bool lastNoteFull = false;          // OpticStudio cuts long notes into 200-character NOTE lines
 
   void error(int line, int column, std::string message) {
     diagnostics.error({fileName, line, column}, std::move(message));
@@ -221,21 +222,27 @@ void ZmxReader::readTopLevel(const ZmxLine& line) {
   } else if (key == "NAME") {
     lens.title = std::string(zmxRestAfter(line.text, keyWord));
   } else if (key == "NOTE") {
-    // "NOTE 0 text": the number is the note's kind; the text may be cut into pieces.
-    std::string_view text;
-    if (line.words.size() >= 2) text = zmxRestAfter(line.text, line.words[1]);
-    if (!text.empty()) {
-      if (lastNoteFull && !lens.headerComments.empty())
-        lens.headerComments.back() += std::string(text);
-      else
-        lens.headerComments.emplace_back(text);
-    }
-    // The full piece's length, with the text's own blanks (zmxRestAfter trims them).
+    // "NOTE 0 text": the number is the note's kind. OpticStudio cuts a long note into pieces of
+    // 200 characters, one NOTE line each, cutting words and dropping no blank: a full piece is
+    // continued by the next NOTE line, blanks and all.
     const std::size_t start =
         line.words.size() >= 2
             ? static_cast<std::size_t>(line.words[1].column) + line.words[1].text.size()
             : line.text.size();
-    lastNoteFull = line.text.size() >= start + 200;
+    std::string_view piece = start < line.text.size() ? line.text.substr(start) : "";
+    const bool continuing = lastNoteFull && !lens.headerComments.empty();
+    const bool full = piece.size() >= 200;
+    if (!continuing)
+      while (!piece.empty() && (piece.front() == ' ' || piece.front() == '\t'))
+        piece.remove_prefix(1);
+    if (!full)
+      while (!piece.empty() && (piece.back() == ' ' || piece.back() == '\t'))
+        piece.remove_suffix(1);
+    if (continuing)
+      lens.headerComments.back() += std::string(piece);
+    else if (!piece.empty())
+      lens.headerComments.emplace_back(piece);
+    lastNoteFull = full && (continuing || !piece.empty());
     return;
   } else if (key == "UNIT") {
     if (line.words.size() < 2) {
@@ -380,7 +387,14 @@ void ZmxReader::readSurfaceLine(const ZmxLine& line, ZmxSurface& surface) {
       }
     }
   } else if (key == "STOP") {
+    if (stopLine > 0 && stopSurface != surface.number)
+      error(line.number, keyWord.column,
+            "a second STOP, on SURF " + std::to_string(surface.number) + " (the first is SURF " +
+                std::to_string(stopSurface) + ", line " + std::to_string(stopLine) +
+                "): a lens has one aperture stop");
     surface.stop = true;
+    stopLine = line.number;
+    stopSurface = surface.number;
   } else if (key == "GLAS") {
     if (line.words.size() < 2) return;  // no name: air
     surface.glass = std::string(line.words[1].text);
@@ -876,6 +890,8 @@ LensFileResult parseZemaxText(std::string_view text, const std::string& fileName
     }
     if (key != "NOTE") reader.lastNoteFull = false;
   }
+  for (std::string& note : reader.lens.headerComments)
+    while (!note.empty() && (note.back() == ' ' || note.back() == '\t')) note.pop_back();
   if (lastLine == 0) {
     reader.error(1, 1, "empty file: no lens");
     return LensFileResult{std::nullopt, reader.diagnostics};

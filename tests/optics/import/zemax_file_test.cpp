@@ -110,6 +110,11 @@ TEST(ZemaxFile, ThorlabsLatin1AsphereAt780nm) {
   const FirstOrderData first = firstOrderAtPrimary(lens);
   EXPECT_NEAR(first.eflMm, 14.9956, 5e-4);  // Thorlabs AL1815-C: 15 mm at 780 nm
   EXPECT_NEAR(first.bflMm, 11.5063, 5e-4);
+  // The note OpticStudio cut after 200 characters ("...TECHSUPPORT@THORL" + "ABS.COM") is whole.
+  ASSERT_FALSE(lens.headerComments.empty());
+  EXPECT_EQ(lens.headerComments[0].substr(0, 26), "FOR INFORMATION ONLY, NOT ");
+  EXPECT_EQ(lens.headerComments[0].size(), 207u) << lens.headerComments[0];
+  EXPECT_NE(lens.headerComments[0].find("TECHSUPPORT@THORLABS.COM"), std::string::npos);
 }
 
 TEST(ZemaxFile, EdmundAchromatPairWithLegacyBk7) {
@@ -351,6 +356,9 @@ TEST(ZemaxFile, OtherSurfaceTypesAndFileDamage) {
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 1, "empty file"));
   result = parseZemaxText("MODE NSC\n" + head + "SURF 2\n", "t.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 1, "sequential"));
+  result = parseZemaxText(head + "SURF 2\n  STOP\n  DIAM 5\nSURF 3\n", "t.zmx");
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7,
+                            "a second STOP, on SURF 2 (the first is SURF 1, line 4)"));
   result =
       parseZemaxText(head + "SURF 2\n  GLAS NOSUCHGLASS 0 0 1.5 40\n  DIAM 5\nSURF 3\n", "t.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7, "\"NOSUCHGLASS\""));
