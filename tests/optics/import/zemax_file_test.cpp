@@ -204,6 +204,46 @@ TEST(ZemaxFile, PlaceholderGlassNumbersAreNotIndices) {
   EXPECT_EQ(design.aperture->value, 2.1);
 }
 
+TEST(ZemaxFile, CatalogueOrderAndNames) {
+  // SF11 is in SCHOTT and HIKARI: the file's GCAT order decides, either way round.
+  LensFileResult result = parseZemaxText(
+      "GCAT HIKARI SCHOTT\nSURF 0\n  DISZ INFINITY\nSURF 1\n  STOP\n  DIAM 5\nSURF 2\n"
+      "  CURV 0.02\n  DISZ 4\n  GLAS SF11 0 0 1.5 40\n  DIAM 6\nSURF 3\n  CURV -0.02\n"
+      "  DISZ 48\n  DIAM 6\nSURF 4\n",
+      "singlet.zmx");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  EXPECT_EQ(result.lens->prescription.surfaces[1].glass->maker, "HIKARI");
+  EXPECT_TRUE(
+      hasDiagnostic(result, Severity::Note, 10, "SF11 is in HIKARI, SCHOTT; using HIKARI's"));
+  // No GCAT: lenslab's maker order (SCHOTT first), said so.
+  result = parseZemaxText(
+      "SURF 0\n  DISZ INFINITY\nSURF 1\n  STOP\n  DIAM 5\nSURF 2\n  CURV 0.02\n  DISZ 4\n"
+      "  GLAS SF11\n  DIAM 6\nSURF 3\n  CURV -0.02\n  DISZ 48\n  DIAM 6\nSURF 4\n",
+      "singlet.zmx");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  EXPECT_EQ(result.lens->prescription.surfaces[1].glass->maker, "SCHOTT");
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Note, 9, "the file has no GCAT"));
+  // SUMITA_AUG2011 is OpticStudio's name of Sumita's catalogue: K-FK5 is found in it, silently.
+  result = parseZemaxText(
+      "GCAT SUMITA_AUG2011\nSURF 0\n  DISZ INFINITY\nSURF 1\n  STOP\n  DIAM 5\nSURF 2\n"
+      "  CURV 0.02\n  DISZ 4\n  GLAS K-FK5 0 0 1.5 40\n  DIAM 6\nSURF 3\n  CURV -0.02\n"
+      "  DISZ 48\n  DIAM 6\nSURF 4\n",
+      "singlet.zmx");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  EXPECT_EQ(result.lens->prescription.surfaces[1].glass->maker, "SUMITA");
+  EXPECT_TRUE(result.diagnostics.empty()) << result.diagnostics.formatAll();
+  // A glass outside the file's catalogues is used with a warning naming its maker.
+  result = parseZemaxText(
+      "GCAT SCHOTT\nSURF 0\n  DISZ INFINITY\nSURF 1\n  STOP\n  DIAM 5\nSURF 2\n"
+      "  CURV 0.02\n  DISZ 4\n  GLAS S-LAH64\n  DIAM 6\nSURF 3\n  CURV -0.02\n"
+      "  DISZ 48\n  DIAM 6\nSURF 4\n",
+      "singlet.zmx");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Warning, 10,
+                            "glass S-LAH64 is not in the file's catalogues (GCAT SCHOTT)"));
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Warning, 10, "using S-LAH64 (OHARA"));
+}
+
 TEST(ZemaxFile, InchFileIsTheSameLensIn25Point4TimesTheMillimetres) {
   const std::string name = "optiland/zemax/circular_aperture_example_without_aperture.zmx";
   const std::string text = referenceText(name);
