@@ -815,7 +815,15 @@ void ZmxReader::build() {
                     ? std::atan(std::hypot(std::tan(x * kDegree), std::tan(y * kDegree))) / kDegree
                     : std::hypot(x, y);
       }
-      design.fields.values.push_back(fieldType == 0 ? value : value * s);
+      const double field = fieldType == 0 ? value : value * s;
+      if (fieldType == 0 ? !(std::abs(field) < 90.0) : !(std::abs(field) <= kMaxLengthMm)) {
+        std::ostringstream message;
+        message << "field " << i + 1 << " (" << field << (fieldType == 0 ? " degrees" : " mm")
+                << ") is beyond any real lens's field";
+        error(fieldLine, 1, message.str());
+        return;
+      }
+      design.fields.values.push_back(field);
     }
     if (radial)
       note(fieldLine, 1,
@@ -825,6 +833,16 @@ void ZmxReader::build() {
   if (aperture) {
     DesignAperture a = *aperture;
     if (a.kind == ApertureKind::EntrancePupilDiameterMm) a.value *= s;
+    const double limit =
+        a.kind == ApertureKind::EntrancePupilDiameterMm ? kMaxApertureDiameterMm : 1000.0;
+    if (!(a.value <= limit)) {
+      std::ostringstream message;
+      message << (a.kind == ApertureKind::EntrancePupilDiameterMm ? "the entrance pupil diameter "
+                                                                  : "the f-number ")
+              << a.value << " is beyond any real lens (at most " << limit << ")";
+      error(apertureLine, 1, message.str());
+      return;
+    }
     design.aperture = a;
   }
 }
@@ -867,9 +885,16 @@ LensFileResult parseZemaxText(std::string_view text, const std::string& fileName
     if (line.words.empty()) continue;
     const std::string key = zmxUpper(line.words.front().text);
     if (key == "SURF") {
-      const std::optional<int> number =
-          reader.count(line, 1, "surface number", 0, static_cast<int>(kMaxLensFileSurfaces) + 1);
+      const std::optional<int> number = reader.count(line, 1, "surface number", 0, 1'000'000);
       if (!number) return LensFileResult{std::nullopt, reader.diagnostics};
+      // SURF 0 is the object and the last the image: 256 surfaces between them at most.
+      if (*number > static_cast<int>(kMaxLensFileSurfaces) + 1) {
+        reader.error(lineNumber, line.words[1].column,
+                     "too many surfaces: a lens file holds at most " +
+                         std::to_string(kMaxLensFileSurfaces) +
+                         " between the object and the image");
+        return LensFileResult{std::nullopt, reader.diagnostics};
+      }
       ZmxSurface surface;
       surface.number = *number;
       surface.line = lineNumber;

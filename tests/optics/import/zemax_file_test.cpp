@@ -392,6 +392,12 @@ TEST(ZemaxFile, OtherSurfaceTypesAndFileDamage) {
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7, "a surface type lenslab cannot model"));
   result = parseZemaxText(head + "SURF 2\n  DISZ 1e400\nSURF 3\n", "t.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7, "not a finite number"));
+  result = parseZemaxText("SURF 0\nSURF 1\nSURF 258\n", "t.zmx");
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 3, "too many surfaces"));
+  result = parseZemaxText("YFLN 0 95\nFTYP 0 0 2 0\n" + head + "SURF 2\n", "t.zmx");
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 1, "field 2 (95 degrees)"));
+  result = parseZemaxText("UNIT METER\nENPD 500\n" + head + "SURF 2\n", "t.zmx");
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 2, "entrance pupil diameter 500000"));
   result = parseZemaxText("", "empty.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 1, "empty file"));
   result = parseZemaxText("MODE NSC\n" + head + "SURF 2\n", "t.zmx");
