@@ -79,12 +79,16 @@ DecodedText encDecodeUtf16(std::string_view bytes, bool bigEndian) {
   DecodedText result;
   result.encoding = bigEndian ? TextEncoding::Utf16Be : TextEncoding::Utf16Le;
   const char* name = bigEndian ? "UTF-16 BE" : "UTF-16 LE";
-  if (bytes.size() % 2 != 0)
-    return encFailure(std::move(result),
+  if (bytes.size() % 2 != 0) {
+    // Cut short: the text up to the last whole unit decodes, and the error stands where it ends.
+    DecodedText whole = encDecodeUtf16(bytes.substr(0, bytes.size() - 1), bigEndian);
+    if (!whole.ok()) return whole;
+    return encFailure(std::move(whole),
                       std::string("the file is ") + name + " (by its byte-order mark) but has an " +
                           "odd number of bytes (" + std::to_string(bytes.size()) +
                           "): it is cut short or damaged",
                       bytes.size() - 1);
+  }
   result.text.reserve(bytes.size() / 2);
   const auto unit = [&](std::size_t at) {
     const auto b0 = static_cast<unsigned char>(bytes[at]);

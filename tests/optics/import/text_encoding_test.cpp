@@ -46,6 +46,10 @@ TEST(TextEncoding, Utf16WithAnOddByteCountIsAnError) {
   const DecodedText decoded = decodeText(kUtf16Le.substr(0, kUtf16Le.size() - 1));
   EXPECT_FALSE(decoded.ok());
   EXPECT_NE(decoded.error.find("odd number of bytes (15)"), std::string::npos) << decoded.error;
+  // Where the text stops: after "SURF Ø", the half of the line feed being cut.
+  EXPECT_EQ(decoded.errorLine, 1);
+  EXPECT_EQ(decoded.errorColumn, 7);
+  EXPECT_EQ(decoded.errorByteOffset, 14u);
   EXPECT_TRUE(decoded.text.empty());
 }
 
