@@ -310,31 +310,48 @@ TEST(ZemaxFile, Utf16BigEndianReadsAsTheLittleEndianFile) {
   EXPECT_EQ(b.lens->rowLines, a.lens->rowLines);
 }
 
-TEST(ZemaxFile, AsciiWithLineFeedsAndAFloatingStop) {
-  // Written by a program: ASCII, LF, no mark; FLOA (the stop's size is the aperture). Its other
-  // surfaces have no DIAM: until the importers derive clear apertures (clear_apertures.h), such a
-  // file is read to the last step and refused there, at those surfaces only.
-  const std::string name = "optiland/zemax/lens_floa.zmx";
+TEST(ZemaxFile, AsciiTripletWithoutDiametersGetsThemDerived) {
+  // Written by a program: ASCII, LF, no mark, and no DIAM at all; the clear apertures come from
+  // the design (ENPD 8.33, fields to 12 degrees). The GLAS lines carry n_d values that are not the
+  // catalogue's (N-SK16 1.62070 for 1.62041): the catalogue's count. Focal length by hand with
+  // the makers' n_d (nd_cat): N-SK16 1.62041, N-SF2 1.64769, N-LAK9 1.691; the stop (SURF 5) is
+  // a flat surface in air.
+  const std::string name = "optiland/zemax/lens1.zmx";
   const std::string bytes = readBytes(kReference / name);
   ASSERT_EQ(decodeText(bytes).encoding, TextEncoding::Ascii);
   ASSERT_EQ(bytes.find('\r'), std::string::npos);
   const LensFileResult result = readReference(name);
-  if (!result.ok()) {
-    int errors = 0;
-    for (const Diagnostic& d : result.diagnostics.all())
-      if (d.severity == Severity::Error) {
-        ++errors;
-        EXPECT_NE(d.message.find("has no clear aperture in the file"), std::string::npos)
-            << d.format();
-      }
-    EXPECT_EQ(errors, 2) << result.diagnostics.formatAll();
-    return;
-  }
-  ASSERT_TRUE(result.lens->design.aperture);
-  EXPECT_EQ(result.lens->design.aperture->kind, ApertureKind::StopDiameter);
-  const std::optional<std::size_t> stop = result.lens->prescription.stopIndex();
-  ASSERT_TRUE(stop);
-  EXPECT_EQ(result.lens->prescription.surfaces[*stop].apertureDiameterMm, 17.0);  // DIAM 8.5
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  const LensFile& lens = *result.lens;
+  const std::vector<double> c = {
+      0.08038721978664398, -0.0055170138366520405, -0.08089042454957962, 0.09821353852748871, 0.0,
+      0.03927339240908623, -0.08959288895130157};
+  const std::vector<double> t = {5.514017105102539,  2.6377501487731934, 1.017357349395752,
+                                 0.7544687986373901, 1.6761058568954468, 1.6096280813217163};
+  const std::vector<double> n = {1.62041, 1.0, 1.64769, 1.0, 1.0, 1.691, 1.0};
+  const FirstOrderData first = firstOrderAtPrimary(lens);
+  EXPECT_NEAR(first.eflMm, eflByHand(c, t, n), 1e-3);
+  // The stop sized for the stated entrance pupil: f-number EFL / 8.3333.
+  ASSERT_TRUE(lens.design.aperture);
+  EXPECT_EQ(lens.design.aperture->kind, ApertureKind::EntrancePupilDiameterMm);
+  EXPECT_NEAR(first.entrancePupil.diameterMm, 8.333333969116211, 1e-6);
+  EXPECT_EQ(lens.design.wavelengths.primaryIndex, 1);
+  EXPECT_EQ(lens.design.fields.values,
+            (std::vector<double>{0.0, 8.485281610363037, 12.000000333930423}));
+  for (const Surface& surface : lens.prescription.surfaces)
+    EXPECT_GT(surface.apertureDiameterMm, 0.0);
+}
+
+TEST(ZemaxFile, FloatingStopTooLargeForItsLensIsRefused) {
+  // FLOA: the stop's DIAM 8.5 is the aperture. 10 mm behind a biconvex lens of radius 20, a 17 mm
+  // beam would need rays beyond the lens's own radius: the derivation of the other surfaces'
+  // diameters says so, at the first surface.
+  const std::string name = "optiland/zemax/lens_floa.zmx";
+  const LensFileResult result = readReference(name);
+  EXPECT_FALSE(result.ok());
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Error, lineContaining(referenceText(name), "SURF 1"),
+                            "does not pass the lens"))
+      << result.diagnostics.formatAll();
 }
 
 TEST(ZemaxFile, CutUtf16FileIsAnError) {
@@ -412,12 +429,14 @@ TEST(ZemaxFile, OtherSurfaceTypesAndFileDamage) {
 
 TEST(ZemaxFile, FiniteObjectIsANote) {
   const std::string text =
-      "SURF 0\n  DISZ 250\nSURF 1\n  STOP\n  DIAM 5\n  DISZ 2\nSURF 2\n  CURV 0.02\n"
+      "FLOA\nSURF 0\n  DISZ 250\nSURF 1\n  STOP\n  DIAM 5\n  DISZ 2\nSURF 2\n  CURV 0.02\n"
       "  GLAS ___BLANK 1 0 1.5 60\n  DISZ 3\n  DIAM 6\nSURF 3\n  CURV -0.02\n  DISZ 50\n"
       "  DIAM 6\nSURF 4\n";
   const LensFileResult result = parseZemaxText(text, "near.zmx");
   ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
-  EXPECT_TRUE(hasDiagnostic(result, Severity::Note, 2, "finite distance, 250 mm"));
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Note, 3, "finite distance, 250 mm"));
+  ASSERT_TRUE(result.lens->design.aperture);  // FLOA: the stop's own size
+  EXPECT_EQ(result.lens->design.aperture->kind, ApertureKind::StopDiameter);
   // The stop is a flat surface in air: lenslab's stop row itself.
   EXPECT_TRUE(result.lens->prescription.surfaces[0].isStop());
   EXPECT_EQ(result.lens->prescription.surfaces.size(), 3u);
