@@ -684,10 +684,12 @@ void ZmxReader::build() {
         continue;
       }
     }
-    surface.profile.setConic(z.conic);
+    // A flat surface's sag is 0 whatever its conic constant: it is kept only on a curved one.
+    if (z.curvature != 0.0) surface.profile.setConic(z.conic);
     if (z.type == "EVENASPH") {
       for (const auto& [index, value] : z.parameters) {
         if (index < 1 || index > 8) {
+          if (value == 0.0) continue;  // an unused parameter, as other surface types write them
           error(z.parameterLines.at(index), 1,
                 "EVENASPH has PARM 1 to 8 (the r^2 to r^16 terms), not PARM " +
                     std::to_string(index));

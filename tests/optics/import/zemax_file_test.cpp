@@ -409,6 +409,12 @@ TEST(ZemaxFile, OtherSurfaceTypesAndFileDamage) {
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7, "a surface type lenslab cannot model"));
   result = parseZemaxText(head + "SURF 2\n  DISZ 1e400\nSURF 3\n", "t.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7, "not a finite number"));
+  result = parseZemaxText(head +
+                              "SURF 2\n  TYPE EVENASPH\n  PARM 0 0\n  PARM 9 1e-20\n  DIAM 5\n"
+                              "SURF 3\n",
+                          "t.zmx");
+  EXPECT_FALSE(hasDiagnostic(result, Severity::Error, 8, "PARM"));  // PARM 0 0: unused
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 9, "EVENASPH has PARM 1 to 8"));
   result = parseZemaxText("SURF 0\nSURF 1\nSURF 258\n", "t.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 3, "too many surfaces"));
   result = parseZemaxText("YFLN 0 95\nFTYP 0 0 2 0\n" + head + "SURF 2\n", "t.zmx");
