@@ -154,7 +154,7 @@ struct ZmxReader {
   int fieldTypeLine = 0;
   std::optional<int> fieldCount, wavelengthCount;
   std::vector<double> xFields, yFields;
-  int fieldLine = 0;
+  int fieldLine = 0, xFieldLine = 0;
   std::map<int, double> wavelengthsUm;  // WAVM n
   std::map<int, int> wavelengthLines;
   std::optional<int> primaryWavelength;
@@ -287,6 +287,7 @@ void ZmxReader::readTopLevel(const ZmxLine& line) {
     if (line.words.size() > 4) wavelengthCount = count(line, 4, "number of wavelengths", 0, 1000);
   } else if (key == "XFLN" || key == "YFLN") {
     std::vector<double>& values = key == "XFLN" ? xFields : yFields;
+    if (key == "XFLN") xFieldLine = line.number;
     values.clear();
     for (std::size_t i = 1; i < line.words.size(); ++i)
       if (const std::optional<double> value = number(line, i, "field value"))
@@ -828,7 +829,7 @@ void ZmxReader::build() {
       design.fields.values.push_back(field);
     }
     if (radial)
-      note(fieldLine, 1,
+      note(xFieldLine, 1,
            "fields off the y axis (XFLN) are read as their distance from the axis: the lens is "
            "rotationally symmetric");
   }

@@ -115,6 +115,9 @@ TEST(ZemaxFile, ThorlabsLatin1AsphereAt780nm) {
   EXPECT_EQ(lens.headerComments[0].substr(0, 26), "FOR INFORMATION ONLY, NOT ");
   EXPECT_EQ(lens.headerComments[0].size(), 207u) << lens.headerComments[0];
   EXPECT_NE(lens.headerComments[0].find("TECHSUPPORT@THORLABS.COM"), std::string::npos);
+  // Coatings are ignored, with one note at the first.
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Note, lineContaining(referenceText(name), "  COAT "),
+                            "coatings (COAT THORC, and any others) are ignored"));
 }
 
 TEST(ZemaxFile, EdmundAchromatPairWithLegacyBk7) {
@@ -431,6 +434,32 @@ TEST(ZemaxFile, OtherSurfaceTypesAndFileDamage) {
   result =
       parseZemaxText(head + "SURF 2\n  GLAS NOSUCHGLASS 0 0 1.5 40\n  DIAM 5\nSURF 3\n", "t.zmx");
   EXPECT_TRUE(hasDiagnostic(result, Severity::Error, 7, "\"NOSUCHGLASS\""));
+}
+
+TEST(ZemaxFile, FieldsOffTheYAxisAreTheirDistanceFromIt) {
+  const std::string lens =
+      "SURF 0\n  DISZ INFINITY\nSURF 1\n  STOP\n  DIAM 5\n  DISZ 2\nSURF 2\n  CURV 0.02\n"
+      "  GLAS ___BLANK 1 0 1.5 60\n  DISZ 3\n  DIAM 6\nSURF 3\n  CURV -0.02\n  DISZ 50\n"
+      "  DIAM 6\nSURF 4\n  CURV -0.01\nMNUM 3 1\n";
+  // Object heights (FTYP 1) in inches: (3, 4) is 5 in from the axis, 127 mm.
+  LensFileResult result =
+      parseZemaxText("UNIT IN\nFTYP 1 0 2 0\nXFLN 0 3\nYFLN 0 4\n" + lens, "xy.zmx");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  EXPECT_EQ(result.lens->design.fields.kind, FieldKind::ObjectHeightMm);
+  ASSERT_EQ(result.lens->design.fields.values.size(), 2u);
+  EXPECT_NEAR(result.lens->design.fields.values[1], 127.0, 1e-12);
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Note, 3, "read as their distance from the axis"));
+  // Angles: the angle whose tangent is the tangents' length.
+  result = parseZemaxText("FTYP 0 0 2 0\nXFLN 0 3\nYFLN 0 4\n" + lens, "xy.zmx");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  const double degree = std::acos(-1.0) / 180.0;
+  EXPECT_NEAR(result.lens->design.fields.values[1],
+              std::atan(std::hypot(std::tan(3 * degree), std::tan(4 * degree))) / degree, 1e-12);
+  // The image surface's curvature (lenslab's film is flat) and the configurations are warnings.
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Warning, 19,
+                            "the image surface is curved (radius "
+                            "-100 mm)"));
+  EXPECT_TRUE(hasDiagnostic(result, Severity::Warning, 21, "the file has 3 configurations"));
 }
 
 TEST(ZemaxFile, FiniteObjectIsANote) {
