@@ -41,6 +41,9 @@ struct PlotAxis {
   std::string label;  // with its unit: "image height (mm)"
   // Fixed ends; unset ends follow the data (with round ticks).
   std::optional<double> min, max;
+  // Larger values to the left (x axis only): a glass map draws V_d falling to the right, as
+  // every maker's does.
+  bool reversed = false;
 };
 
 struct PlotSpec {
@@ -60,6 +63,9 @@ struct PlotSpec {
   // vertical grid lines.
   std::vector<std::string> categories;
   bool legend = true;  // false: none (small multiples, whose panel names the series beside them)
+  // false: the live plot shows no readout of its own under the mouse (the glass map names the
+  // glass there instead).
+  bool readout = true;
 };
 
 // Plots side by side under one title, with one legend under them, outside every axes' box: what
