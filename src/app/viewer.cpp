@@ -108,7 +108,10 @@ void Viewer::drawFrame() {
   drawDockAreas(state_);
   drawAboutWindow(state_);
   drawAsphereEditor(state_);
+  // The glass map's 1,700 points and its hover lookup, timed on their own (docs/viewer.md).
+  if (state_.frameStages) state_.frameStages->mark("dialogs");
   drawGlassMapWindow(state_);
+  if (state_.frameStages) state_.frameStages->mark("glass_map");
   drawExportCrossSectionDialog(state_);
   state_.frameHadOverlay |= state_.showExportCrossSection;  // over the canvas, as the browser
   const auto [filmWidth, filmHeight] = filmSize();

@@ -58,6 +58,7 @@ PlotSpec GlassMap::plot(const std::set<std::string>& hidden) const {
   for (std::size_t m = 0; m < makers_.size(); ++m) {
     series[m].name = makers_[m];
     series[m].points = true;
+    series[m].pointScale = 1.6f;
     series[m].rgba = glassMakerColour(m);
   }
   for (const Point& point : points_) {

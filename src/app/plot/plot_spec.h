@@ -32,6 +32,9 @@ struct PlotSeries {
   // A scatter (a spot diagram's rays): a small dot at each point and no line; no hover readout.
   // A plot with a points series writes its CSV one point a row (series, x, y).
   bool points = false;
+  // A points series' dot radius as a multiple of the usual (a glass map's 1,700 glasses read
+  // better as larger dots than a spot diagram's thousands of rays).
+  float pointScale = 1.0f;
   // A guide, not data (a field's position marked on a curve): drawn and in the legend, left out
   // of the CSV and the hover readout.
   bool guide = false;

@@ -101,7 +101,7 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
     if (series.points) {
-      const float radius = std::max(1.5f, 0.12f * fontPx);
+      const float radius = std::max(1.5f, 0.12f * fontPx) * series.pointScale;
       for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
         if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
           draw->AddCircleFilled({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])},
