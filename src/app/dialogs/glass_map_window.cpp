@@ -59,29 +59,39 @@ void drawMakerFilter(ViewerState& state, const GlassMap& map) {
   }
 }
 
-// Labels that do not cover each other: a label that would overlap one already placed moves down
-// a line (up, at the bottom of the box); it stays inside the box.
+// Labels that cover neither each other nor the marks: a label goes right of its mark, else left
+// of it, else a line lower or higher (then two, ...), inside the box; the marks are placed first.
 struct PlacedLabels {
-  std::vector<Rect> rects;
-  Rect place(Rect wanted, const Rect& box, float lineHeight) {
-    wanted.x = std::clamp(wanted.x, box.x + 2.0f,
-                          std::max(box.x + 2.0f, box.right() - wanted.width - 2.0f));
-    wanted.y = std::clamp(wanted.y, box.y + 2.0f,
-                          std::max(box.y + 2.0f, box.bottom() - wanted.height - 2.0f));
-    const auto overlaps = [&](const Rect& r) {
-      return std::any_of(rects.begin(), rects.end(), [&](const Rect& o) {
-        return r.x < o.right() && o.x < r.right() && r.y < o.bottom() && o.y < r.bottom();
-      });
+  std::vector<Rect> taken;
+  bool free(const Rect& r) const {
+    return std::none_of(taken.begin(), taken.end(), [&](const Rect& o) {
+      return r.x < o.right() && o.x < r.right() && r.y < o.bottom() && o.y < r.bottom();
+    });
+  }
+  Rect place(ImVec2 mark, float markRadius, ImVec2 text, const Rect& box) {
+    const float width = text.x + 6.0f, height = text.y + 2.0f;
+    const auto inside = [&](float x, float y) {
+      return Rect{std::clamp(x, box.x + 2.0f, std::max(box.x + 2.0f, box.right() - width - 2.0f)),
+                  std::clamp(y, box.y + 2.0f, std::max(box.y + 2.0f, box.bottom() - height - 2.0f)),
+                  width, height};
     };
-    Rect tried = wanted;
-    for (int step = 1; overlaps(tried) && step < 12; ++step) {
-      const float shift =
-          lineHeight * static_cast<float>((step + 1) / 2) * (step % 2 ? 1.0f : -1.0f);
-      tried = wanted;
-      tried.y = std::clamp(wanted.y + shift, box.y + 2.0f, box.bottom() - wanted.height - 2.0f);
+    const float right = mark.x + markRadius + 3.0f, left = mark.x - markRadius - 3.0f - width;
+    const float middle = mark.y - 0.5f * height;
+    Rect chosen = inside(right, middle);
+    for (int step = 0; step < 16; ++step) {
+      const float shift = height * static_cast<float>((step + 1) / 2) * (step % 2 ? 1.0f : -1.0f);
+      const Rect onRight = inside(right, middle + shift), onLeft = inside(left, middle + shift);
+      if (free(onRight)) {
+        chosen = onRight;
+        break;
+      }
+      if (free(onLeft)) {
+        chosen = onLeft;
+        break;
+      }
     }
-    rects.push_back(tried);
-    return tried;
+    taken.push_back(chosen);
+    return chosen;
   }
 };
 
@@ -93,9 +103,13 @@ void drawLensMarks(const ViewerState& state, const PlotFrame& frame) {
   const float r = 0.45f * frame.fontPx;
   const ImU32 white = IM_COL32(255, 255, 255, 255);
   const ImU32 shadow = IM_COL32(0, 0, 0, 200);
+  const std::vector<LensGlassMark> marks = lensGlassMarks(state.lens.prescription());
   PlacedLabels labels;
-  for (const LensGlassMark& mark : lensGlassMarks(state.lens.prescription())) {
+  std::vector<ImVec2> places;
+  for (const LensGlassMark& mark : marks) {
     const ImVec2 at{frame.toScreenX(mark.vd), frame.toScreenY(mark.nd)};
+    places.push_back(at);
+    labels.taken.push_back({at.x - r - 2.0f, at.y - r - 2.0f, 2.0f * r + 4.0f, 2.0f * r + 4.0f});
     if (mark.catalogue) {
       draw->AddCircle(at, r + 1.0f, shadow, 16, 3.5f);
       draw->AddCircle(at, r, white, 16, 2.0f);
@@ -103,13 +117,13 @@ void drawLensMarks(const ViewerState& state, const PlotFrame& frame) {
       draw->AddLine({at.x - r, at.y - r}, {at.x + r, at.y + r}, white, 2.0f);
       draw->AddLine({at.x - r, at.y + r}, {at.x + r, at.y - r}, white, 2.0f);
     }
-    const ImVec2 size = ImGui::CalcTextSize(mark.label.c_str());
+  }
+  for (std::size_t i = 0; i < marks.size(); ++i) {
     const Rect placed =
-        labels.place({at.x + r + 3.0f, at.y - 0.5f * size.y - 1.0f, size.x + 6.0f, size.y + 2.0f},
-                     box, size.y + 2.0f);
+        labels.place(places[i], r, ImGui::CalcTextSize(marks[i].label.c_str()), box);
     draw->AddRectFilled({placed.x, placed.y}, {placed.right(), placed.bottom()},
                         IM_COL32(20, 22, 26, 210), 3.0f);
-    draw->AddText({placed.x + 3.0f, placed.y + 1.0f}, white, mark.label.c_str());
+    draw->AddText({placed.x + 3.0f, placed.y + 1.0f}, white, marks[i].label.c_str());
   }
   draw->PopClipRect();
 }
