@@ -45,8 +45,9 @@ GlassMap::GlassMap(std::shared_ptr<const optics::GlassCatalog> catalog)
 
 PlotSpec GlassMap::plot(const std::set<std::string>& hidden) const {
   PlotSpec spec;
-  spec.x.label = "Abbe number V_d";
-  spec.y.label = "refractive index n_d";
+  // Both numbers have no unit: the axes say what they are, at which lines.
+  spec.x.label = "Abbe number V_d = (n_d - 1) / (n_F - n_C)";
+  spec.y.label = "refractive index n_d (at 587.6 nm)";
   spec.x.min = kGlassMapVdRight;
   spec.x.max = kGlassMapVdLeft;
   spec.x.reversed = true;
