@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "optics/glass/catalog_glass.h"
+
 namespace lenslab::app {
 
 // A validation problem as the table shows it: the row (0-based surface, -1 for the whole lens).
@@ -27,6 +29,18 @@ struct LensTableState {
   // The asphere editor (dialogs/asphere_editor.cpp): the surface it edits (0-based; -1 closed),
   // and the term being typed into (0 the conic, else the power) with its text.
   int asphereEditorRow = -1;
+  // The glass cell being typed into (panels/glass_cell.cpp): its row (-1 none) and text, the
+  // catalogue's completions of that text shown under it, the one Up/Down or the mouse
+  // highlights (-1: the text as typed) and the one clicked (applied as the field lets go).
+  int glassEditingRow = -1;
+  char glassText[64] = {};
+  std::vector<const optics::CatalogGlass*> glassCompletions;
+  int glassHighlight = -1;
+  int glassPicked = -1;
+  // The last glass typed: why it was refused, or which maker's a name in several catalogues is;
+  // shown under the table until the next glass is typed.
+  std::string glassMessage;
+  bool glassMessageIsError = false;
   int asphereEditingTerm = -1;
   char asphereEditText[64] = {};
 };

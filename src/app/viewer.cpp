@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include <string>
 #include <utility>
 
+#include "app/document/glass_choice.h"
 #include "app/panels/panels.h"
 #include "app/platform/screenshot.h"
 #include "app/platform/ui_scale.h"
@@ -106,6 +108,10 @@ void Viewer::drawFrame() {
   drawDockAreas(state_);
   drawAboutWindow(state_);
   drawAsphereEditor(state_);
+  // The glass map's 1,700 points and its hover lookup, timed on their own (docs/viewer.md).
+  if (state_.frameStages) state_.frameStages->mark("dialogs");
+  drawGlassMapWindow(state_);
+  if (state_.frameStages) state_.frameStages->mark("glass_map");
   drawExportCrossSectionDialog(state_);
   state_.frameHadOverlay |= state_.showExportCrossSection;  // over the canvas, as the browser
   const auto [filmWidth, filmHeight] = filmSize();
@@ -207,6 +213,32 @@ std::optional<std::string> Viewer::showAsphereEditor(std::optional<std::size_t> 
   }
   state_.lensTable.asphereEditorRow = static_cast<int>(*surface);
   return std::nullopt;
+}
+
+std::optional<std::string> Viewer::showGlassMap(bool open) {
+  state_.glassMap.open = open;
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::showGlassMaker(const std::string& maker, bool shown) {
+  // The catalogue's spelling (upper case), whatever case the script wrote.
+  for (const std::string& known : glassMakers()) {
+    if (known.size() != maker.size() ||
+        !std::equal(known.begin(), known.end(), maker.begin(), [](char a, char b) {
+          return std::toupper(static_cast<unsigned char>(a)) ==
+                 std::toupper(static_cast<unsigned char>(b));
+        }))
+      continue;
+    if (shown) {
+      state_.glassMap.hiddenMakers.erase(known);
+    } else {
+      state_.glassMap.hiddenMakers.insert(known);
+    }
+    return std::nullopt;
+  }
+  std::string makers;
+  for (const std::string& known : glassMakers()) makers += (makers.empty() ? "" : ", ") + known;
+  return "no glass catalogue from a maker named \"" + maker + "\" (makers: " + makers + ")";
 }
 
 std::optional<std::string> Viewer::showPanel(const std::string& id) {

@@ -106,6 +106,8 @@ class Viewer final : public ScriptHost {
   void zoomCrossSection(double factor) override { state_.pendingZoomFactor *= factor; }
   std::optional<std::string> showPanel(const std::string& id) override;
   std::optional<std::string> showAsphereEditor(std::optional<std::size_t> surface) override;
+  std::optional<std::string> showGlassMap(bool open) override;
+  std::optional<std::string> showGlassMaker(const std::string& maker, bool shown) override;
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
   void setColourFans(bool on) override { state_.fanSettings.colourFans = on; }
   void centreCrossSection(double zMm, double yMm) override {

@@ -12,6 +12,7 @@
 
 #include "app/analysis/colour_analysis.h"
 #include "app/analysis/distortion_analysis.h"
+#include "app/analysis/glass_map.h"
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/lens_figures.h"
 #include "app/analysis/measured_falloff.h"
@@ -151,6 +152,7 @@ struct ViewerState {
   // resolution until it is released.
   bool dragging = false;
   LensTableState lensTable;
+  GlassMapState glassMap;            // Lens > Glass map... (dialogs/glass_map_window.cpp)
   float lensPanelScrollMaxY = 0.0f;  // how far the lens panel scrolls (dump-ui: reachability)
   CrossSectionView crossSectionView;
   bool crossSectionNeedsFit = true;

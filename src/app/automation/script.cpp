@@ -4,6 +4,7 @@
 #include "app/analysis/analysis_setup.h"
 #include "app/automation/script_words.h"
 #include "app/document/aperture_image.h"
+#include "app/document/glass_choice.h"
 #include "app/render_export.h"
 
 #include <algorithm>
@@ -172,6 +173,19 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "set") {
     if (a[0] == "surface") {
       const std::size_t surface = static_cast<std::size_t>(*parseInteger(a[1]) - 1);
+      if (a[2] == "glass") {
+        // Looked up once, when first run (the command then waits for its edit).
+        if (!awaitedCommand_) {
+          const GlassChoice choice = chooseGlass(a[3], a.size() == 6 ? a[5] : std::string());
+          if (!choice.glass) {
+            fail(host, command, "surface " + a[1] + ": " + choice.error);
+            return true;
+          }
+          if (!choice.note.empty()) host.reportInfo(choice.note + " (add 'maker M' to choose)");
+          return editAndWait(command, host, SetSurfaceGlass{surface, choice.glass});
+        }
+        return waitForCommand(command, host);
+      }
       if (const auto power = script_words::asphericTermPower(a[2])) {
         return editAndWait(command, host,
                            SetAsphericTerm{surface, static_cast<int>(*power),
@@ -267,6 +281,10 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   if (verb == "asphere-editor") {
     if (a[0] == "close") return check(host.showAsphereEditor(std::nullopt));
     return check(host.showAsphereEditor(static_cast<std::size_t>(*parseInteger(a[0]) - 1)));
+  }
+  if (verb == "glass-map") {
+    if (a[0] == "maker") return check(host.showGlassMaker(a[1], a[2] == "on"));
+    return check(host.showGlassMap(a[0] == "open"));
   }
   if (verb == "export-plot") {
     const ScriptHost::PlotExport attempt = host.exportPlot(a[0], a[1]);

@@ -7,6 +7,10 @@
 //   set surface N FIELD VALUE   (FIELD: radius thickness n abbe aperture; abbe none clears;
 //                                conic K, and aP VALUE for the aspheric term A_P r^P, P 2..20,
 //                                in mm^(1-P): "set surface 3 a4 -2e-6"; not on the stop)
+//   set surface N glass NAME [maker M]   (the medium after surface N becomes the catalogue
+//                                glass NAME, of maker M when given; matched without case, hyphens
+//                                or spaces; an unknown name fails with the nearest names, and a
+//                                name in several catalogues logs which maker's it uses)
 //   set film-distance MM        set stop-diameter MM        set exposure STOPS
 //   set aperture circle|blades N [curvature C] [rotation D]|image FILE|image-mirrored FILE
 //                               (the stop's shape, as the lens file's aperture line; N 3..32;
@@ -19,6 +23,8 @@
 //                                is at Z 0, the lens toward +Z)
 //   asphere-editor N|close      (opens the lens table's asphere editor on surface N, as its
 //                                Asphere... button does, or closes it)
+//   glass-map open|close        (Lens > Glass map...: the catalogues' Abbe diagram)
+//   glass-map maker M on|off    (shows or hides maker M's glasses on it, as its check boxes)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
 //   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI:
@@ -191,6 +197,13 @@ class ScriptHost {
   // Opens the lens table's asphere editor on a surface (0-based), or closes it (nullopt).
   virtual std::optional<std::string> showAsphereEditor(std::optional<std::size_t> surface) {
     return surface ? "there is no asphere editor here" : std::optional<std::string>();
+  }
+  // Opens or closes the glass map (Lens > Glass map...); shows or hides a maker's glasses on it.
+  virtual std::optional<std::string> showGlassMap(bool open) {
+    return open ? "there is no glass map here" : std::optional<std::string>();
+  }
+  virtual std::optional<std::string> showGlassMaker(const std::string& maker, bool /*shown*/) {
+    return "there is no glass map to show " + maker + " on";
   }
   virtual void showBlockedRays(bool /*show*/) {}
   virtual void setColourFans(bool /*on*/) {}

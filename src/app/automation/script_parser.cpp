@@ -62,6 +62,7 @@ const std::map<std::string, VerbShape>& verbs() {
       {"dialog-choose", {1, 1}},
       {"show-panel", {1, 1}},
       {"asphere-editor", {1, 1}},
+      {"glass-map", {1, 3}},  // open | close | maker M on|off
       {"export-plot", {2, 2}},
       {"export-cross-section", {1, 4}},
       // Pictures for slides (issue 20).
@@ -144,6 +145,16 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     if (!parseNumber(a[i])) return problemAt(command, i, "'" + a[i] + "' is not a number");
     return std::nullopt;
   };
+  if (a[0] == "surface" && a.size() >= 3 && a[2] == "glass") {
+    // set surface N glass NAME [maker M]: the name is looked up when the command runs (an
+    // unknown one fails the script there, with the nearest names).
+    if (a.size() != 4 && !(a.size() == 6 && a[4] == "maker"))
+      return problemAt(command, 0, "expected: set surface N glass NAME [maker M]");
+    const auto index = parseInteger(a[1]);
+    if (!index || *index < 1)
+      return problemAt(command, 1, "'" + a[1] + "' is not a surface number (1, 2, ...)");
+    return std::nullopt;
+  }
   if (a[0] == "surface") {
     if (a.size() != 4) {
       return problemAt(command, 0, "expected: set surface N FIELD VALUE");
@@ -167,7 +178,8 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
     if (!field) {
       return problemAt(command, 2,
                        "unknown field '" + a[2] +
-                           "' (expected radius, thickness, n, abbe, aperture, conic or a2 to a20)");
+                           "' (expected radius, thickness, n, abbe, aperture, conic, glass or a2 "
+                           "to a20)");
     }
     if (*field == SurfaceField::Conic && !parseProfileValue(a[3])) {
       return problemAt(command, 3, "'" + a[3] + "' is not a finite number");
@@ -274,6 +286,13 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
           command, 0,
           "'" + command.arguments[0] + "' is not a surface number (1, 2, ...) or close");
     }
+  }
+  if (command.verb == "glass-map") {
+    const auto& a = command.arguments;
+    const bool openOrClose = count == 1 && (a[0] == "open" || a[0] == "close");
+    const bool filter = count == 3 && a[0] == "maker" && (a[2] == "on" || a[2] == "off");
+    if (!openOrClose && !filter)
+      return problemAt(command, 0, "expected: glass-map open|close, or glass-map maker M on|off");
   }
   if (command.verb == "load-lens" && count == 2 && command.arguments[1] != "keep-film-distance") {
     return problemAt(command, 1,

@@ -126,6 +126,34 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"rims", traced.lens->apertureClipping() == optics::ApertureClipping::EveryRim},
         {"rays", traced.bundle.rays.size()}};
   }
+  // Each surface's medium (issue 40's glass cell and glass map): the catalogue glass and its
+  // maker, or null for a model glass, with the n_d and V_d the lens traces.
+  nlohmann::json media = nlohmann::json::array();
+  for (const optics::Surface& surface : lens.surfaces) {
+    media.push_back({{"glass", surface.glass ? nlohmann::json(surface.glass->name) : nullptr},
+                     {"maker", surface.glass ? nlohmann::json(surface.glass->maker) : nullptr},
+                     {"n_d", surface.indexD},
+                     {"v_d", surface.abbeD ? nlohmann::json(*surface.abbeD) : nullptr}});
+  }
+  about["media"] = media;
+  about["glass_message"] = state.lensTable.glassMessage;
+  // The glass cell's completion list as shown ("N-SF6 SCHOTT"), top first.
+  nlohmann::json completions = nlohmann::json::array();
+  for (const optics::CatalogGlass* glass : state.lensTable.glassCompletions)
+    completions.push_back(glass->name + " " + glass->maker);
+  about["glass_completions"] = completions;
+  about["selected_row"] = state.lensTable.selectedRow + 1;
+  // The glass map's axes as drawn (widgets' glass-map/plot is the box they span), what it shows
+  // and the glass under the mouse.
+  about["glass_map"] = {{"open", state.glassMap.open},
+                        {"v_d_left", kGlassMapVdLeft},
+                        {"v_d_right", kGlassMapVdRight},
+                        {"n_d_bottom", kGlassMapNdBottom},
+                        {"n_d_top", kGlassMapNdTop},
+                        {"points_shown", state.glassMap.pointsShown},
+                        {"hidden_makers", state.glassMap.hiddenMakers},
+                        {"hovered", state.glassMap.hovered},
+                        {"message", state.glassMap.message}};
   // The vignetting teaching's switches (issue 21) and what the illumination plot notes.
   about["spectral"] = render::toString(state.falloff.spectral);
   about["vignetting"] = {{"cos4", state.falloff.cos4},

@@ -46,6 +46,13 @@ std::optional<std::string> profileRefusal(const optics::Surface& surface, std::s
   return std::nullopt;
 }
 
+// "7000-14000 nm": a formula's valid range, in the nanometres the viewer speaks.
+std::string formatRangeNm(const optics::CatalogGlass& glass) {
+  std::ostringstream text;
+  text << glass.formula.minimumUm * 1000.0 << "-" << glass.formula.maximumUm * 1000.0 << " nm";
+  return text.str();
+}
+
 std::string surfaceOutOfRange(std::size_t surface, std::size_t count) {
   std::ostringstream message;
   message << "surface " << surface + 1 << " does not exist (the lens has " << count << " surfaces)";
@@ -92,6 +99,10 @@ std::string describe(const EditCommand& command) {
           },
           [&](const SetAsphericTerm& c) {
             text << "set A" << c.power << " of surface " << c.surface + 1 << " to " << c.value;
+          },
+          [&](const SetSurfaceGlass& c) {
+            text << "set glass of surface " << c.surface + 1 << " to "
+                 << (c.glass ? c.glass->name + " (" + c.glass->maker + ")" : std::string("none"));
           },
           [&](const MakeStop& c) { text << "make surface " << c.surface + 1 << " the stop"; },
           [&](const InsertSurface& c) { text << "insert a surface at " << c.before + 1; },
@@ -207,6 +218,20 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
             optics::Surface& surface = surfaces[c.surface];
             if ((refusal = profileRefusal(surface, c.surface, c.value))) return;
             surface.profile.setCoefficient(c.power, c.value);
+          },
+          [&](const SetSurfaceGlass& c) {
+            if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));
+            const std::string where = "surface " + std::to_string(c.surface + 1);
+            if (!c.glass) return void(refusal = where + ": no glass given");
+            if (surfaces[c.surface].isStop())
+              return void(refusal = where + " is the aperture stop: air follows it, not glass");
+            // An infrared material's formula does not reach the d line: it has no n_d to trace
+            // the visible with, and the lens must not take a made-up one.
+            if (!c.glass->nd || !c.glass->vd)
+              return void(refusal = where + ": glass " + c.glass->name + " (" + c.glass->maker +
+                                    ") has no index in the visible (its formula covers " +
+                                    formatRangeNm(*c.glass) + ")");
+            optics::setCatalogGlass(surfaces[c.surface], c.glass);
           },
           [&](const MakeStop& c) {
             if (c.surface >= count) return void(refusal = surfaceOutOfRange(c.surface, count));

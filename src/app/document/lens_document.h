@@ -6,6 +6,7 @@
 // and applies them in one place.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -35,6 +36,14 @@ struct SetAsphericTerm {
   std::size_t surface;
   int power;
   double value;
+};
+// The medium after the surface becomes a catalogue glass, with its n_d and V_d (setCatalogGlass).
+// The doors find the glass by name first (glass_choice.h), so that an unknown name is refused
+// there with the nearest names; the document refuses the stop (a hole in air), no glass, and a
+// glass with no index in the visible (an infrared material), keeping the lens as it was.
+struct SetSurfaceGlass {
+  std::size_t surface;
+  std::shared_ptr<const optics::CatalogGlass> glass;
 };
 struct MakeStop {
   std::size_t surface;  // becomes the aperture stop (radius 0, air after it)
@@ -77,9 +86,10 @@ struct ReplaceLens {
 struct Undo {};
 struct Redo {};
 
-using EditCommand = std::variant<SetSurfaceField, SetAsphericTerm, MakeStop, InsertSurface,
-                                 DeleteSurface, MoveSurface, FlipLens, ScaleLens, SetFilmDistance,
-                                 SetStopDiameter, SetStopShape, ReplaceLens, Undo, Redo>;
+using EditCommand =
+    std::variant<SetSurfaceField, SetAsphericTerm, SetSurfaceGlass, MakeStop, InsertSurface,
+                 DeleteSurface, MoveSurface, FlipLens, ScaleLens, SetFilmDistance, SetStopDiameter,
+                 SetStopShape, ReplaceLens, Undo, Redo>;
 
 // What a command does, in words, for the log and the Edit menu ("set radius of surface 3").
 std::string describe(const EditCommand& command);

@@ -69,6 +69,12 @@ void paint(ImDrawList* draw, const CrossSectionDrawing& drawing, const CrossSect
     const float width = px(line.widthPx);
     points.clear();
     for (const auto& point : line.points) points.push_back(toCanvas(point));
+    // The film plane is vertical: its line on a pixel column's centre, so that it is drawn solid
+    // white at any view (between two columns it came out as two grey ones, which the screenshot
+    // test, looking for the film's white, could miss when the layout moved by a fraction of a
+    // pixel).
+    if (line.part == DrawingPart::Film)
+      for (CanvasPoint& p : points) p.x = std::floor(p.x) + 0.5;
     if (line.closed && !points.empty()) points.push_back(points.front());
     if (line.dashed) {
       for (std::size_t i = 0; i + 1 < points.size(); ++i) {

@@ -10,6 +10,7 @@
 
 #include "app/automation/item_rect.h"
 #include "app/drawing/value_text.h"
+#include "app/panels/glass_cell.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
@@ -193,6 +194,21 @@ constexpr const char* kNames[kValueColumns] = {"Radius", "k", "Thick.", "n_d", "
 constexpr const char* kNarrowestValues[kValueColumns] = {"-14.5", "-0.5", "0.818",
                                                          "1.67",  "64.2", "25.2"};
 constexpr float kFixedColumnWidth = 34.0f;  // the row number and the stop check box, at scale 1
+// The glass column (glass_cell.h) stands before n_d and V_d, which a catalogue glass sets: the
+// medium's name, then its numbers.
+constexpr int kGlassBeforeColumn = 3;
+// The table's column of value column `column`, and of the glass.
+constexpr int tableColumn(int column) {
+  return 1 + column + (column >= kGlassBeforeColumn ? 1 : 0);
+}
+constexpr int kGlassTableColumn = 1 + kGlassBeforeColumn;
+constexpr int kTableColumns = kValueColumns + 3;  // the number, the values, the glass, the stop
+
+float glassColumnWidth() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize(kNarrowestGlassName).x +
+         2.0f * (style.FramePadding.x + style.CellPadding.x);
+}
 
 float narrowestColumnWidth(int column) {
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -207,9 +223,10 @@ float tableMinWidth() {
   for (int column = 0; column < kValueColumns; ++column) {
     valuesWidth += narrowestColumnWidth(column);
   }
-  // The two fixed columns with their cell padding, and the nine borders (a pixel each, and a
+  valuesWidth += glassColumnWidth();
+  // The two fixed columns with their cell padding, and the ten borders (a pixel each, and a
   // pixel of rounding per column).
-  return valuesWidth + 2.0f * (px(kFixedColumnWidth) + 2.0f * style.CellPadding.x) + 18.0f;
+  return valuesWidth + 2.0f * (px(kFixedColumnWidth) + 2.0f * style.CellPadding.x) + 20.0f;
 }
 
 }  // namespace
@@ -260,12 +277,15 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   }
   const float fixedColumnWidth = px(kFixedColumnWidth);
   const float innerWidth = sideways ? minWidth : 0.0f;
-  if (ImGui::BeginTable("surfaces", kValueColumns + 2, tableFlags, outerSize, innerWidth)) {
+  if (ImGui::BeginTable("surfaces", kTableColumns, tableFlags, outerSize, innerWidth)) {
     state.lensTable.cellsCutOff = 0;
     state.lensTable.cellsShortened = 0;
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, fixedColumnWidth);
     for (int column = 0; column < kValueColumns; ++column) {
+      if (column == kGlassBeforeColumn) {
+        ImGui::TableSetupColumn("Glass", ImGuiTableColumnFlags_WidthStretch, glassColumnWidth());
+      }
       ImGui::TableSetupColumn(kNames[column], ImGuiTableColumnFlags_WidthStretch,
                               narrowestColumnWidth(column));
     }
@@ -306,8 +326,11 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
         }
         ImGui::EndPopup();
       }
+      ImGui::TableSetColumnIndex(kGlassTableColumn);
+      glassCell(state, row);
+      if (hasProblem) problemTooltip(state, static_cast<int>(row));
       for (int column = 0; column < kValueColumns; ++column) {
-        ImGui::TableSetColumnIndex(column + 1);
+        ImGui::TableSetColumnIndex(tableColumn(column));
         const SurfaceField field = kColumnFields[column];
         // The stop is a hole: no conic to show or type, only a dash saying so.
         if (field == SurfaceField::Conic && surface.isStop()) {
@@ -319,7 +342,7 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
         valueCell(state, row, field, fieldValue(surface, field));
         if (hasProblem) problemTooltip(state, static_cast<int>(row));
       }
-      ImGui::TableSetColumnIndex(kValueColumns + 1);
+      ImGui::TableSetColumnIndex(kTableColumns - 1);
       bool isStop = surface.isStop();
       // The cell's extent (its clip rectangle) and the checkbox, for the HiDPI layout test.
       const ImVec2 cellMin = ImGui::GetWindowDrawList()->GetClipRectMin();
@@ -348,6 +371,13 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
         problem.surface >= 0 ? "surface " + std::to_string(problem.surface + 1) + ": " : "";
     ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.45f, 1.0f), "%s%s", where.c_str(),
                        problem.message.c_str());
+  }
+  // The last glass typed: refused (red), or which maker's catalogue it came from.
+  if (!state.lensTable.glassMessage.empty()) {
+    const ImVec4 colour = state.lensTable.glassMessageIsError ? ImVec4(1.0f, 0.5f, 0.45f, 1.0f)
+                                                              : ImVec4(1.0f, 0.8f, 0.35f, 1.0f);
+    ImGui::TextColored(colour, "%s", state.lensTable.glassMessage.c_str());
+    recordItemRect(state, "lens-table/glass-message");
   }
   ImGui::PopTextWrapPos();
   ImGui::Separator();

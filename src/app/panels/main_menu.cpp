@@ -73,6 +73,7 @@ void lensMenu(ViewerState& state) {
   }
   ImGui::Separator();
   if (ImGui::MenuItem("Flip front to back")) state.lens.issue(FlipLens{});
+  ImGui::MenuItem("Glass map...", nullptr, &state.glassMap.open);
   if (ImGui::BeginMenu("Scale to focal length")) {
     ImGui::SetNextItemWidth(px(120));
     ImGui::InputDouble("mm##efl", &state.lensTable.scaleTargetEflMm, 0, 0, "%.2f");

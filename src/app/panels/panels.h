@@ -59,6 +59,9 @@ float lensTablePanelMinWidth();
 // (state.lensTable.asphereEditorRow): the conic, every A_i, and a plot of the departure from the
 // base sphere.
 void drawAsphereEditor(ViewerState& state);
+// Lens > Glass map...: the catalogues' Abbe diagram, a window of its own while
+// state.glassMap.open (dialogs/glass_map_window.cpp).
+void drawGlassMapWindow(ViewerState& state);
 
 // The lens's first-order data, focus and aperture controls (inside the lens panel).
 void drawFirstOrderSection(ViewerState& state);

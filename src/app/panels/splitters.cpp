@@ -38,6 +38,8 @@ void drawSplitters(ViewerState& state, float windowWidth, float /*windowHeight*/
   state.uiRects["layout/right-splitter"] = layout.rightSplitter;
   state.uiRects["layout/upper"] = layout.crossSection;
   state.uiRects["layout/bottom"] = layout.log;
+  state.uiRects["layout/lens-table"] = layout.lensTable;
+  state.uiRects["layout/preview"] = layout.renderPreview;
   const float usableHeight =
       layout.lensTable.height + layout.bottomSplitter.height + layout.log.height;
   if (windowWidth > 0) {

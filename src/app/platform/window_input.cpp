@@ -2,6 +2,10 @@
 // system nothing (window.h says why). The GLFW backend of ImGui 1.86 still handles keys,
 // characters, the wheel and focus events through its own callbacks, which chain to these.
 
+// glad before GLFW, as in every file of the viewer: a unity build that puts a file including
+// glad after this one would otherwise see GL's own header first and stop.
+#include <glad/gl.h>
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 

@@ -7,7 +7,8 @@ namespace lenslab::app {
 
 float PlotFrame::toScreenX(double x) const {
   const double span = xTicks.max - xTicks.min;
-  return area.x + static_cast<float>((x - xTicks.min) / (span > 0 ? span : 1.0) * area.width);
+  const double fraction = (x - xTicks.min) / (span > 0 ? span : 1.0);
+  return area.x + static_cast<float>((xReversed ? 1.0 - fraction : fraction) * area.width);
 }
 
 float PlotFrame::toScreenY(double y) const {
@@ -17,7 +18,8 @@ float PlotFrame::toScreenY(double y) const {
 }
 
 double PlotFrame::fromScreenX(float px) const {
-  return xTicks.min + (px - area.x) / std::max(1.0f, area.width) * (xTicks.max - xTicks.min);
+  const double fraction = (px - area.x) / std::max(1.0f, area.width);
+  return xTicks.min + (xReversed ? 1.0 - fraction : fraction) * (xTicks.max - xTicks.min);
 }
 
 double PlotFrame::fromScreenY(float px) const {
@@ -194,6 +196,7 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
     frame.yTicks = spacedTicks(cy - halfY, cy + halfY, a.height, 2.5f * line, cy - halfY,
                                cy + halfY, lineTall, 0.2f * line);
   }
+  frame.xReversed = spec.x.reversed && spec.categories.empty();
   frame.bars = layoutBars(spec, frame);
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;

@@ -35,6 +35,7 @@ struct PlotFrame {
   float xTickLabelY = 0.0f;
   Rect legend;                // empty when there is one series or no room
   std::vector<PlotBar> bars;  // every bar of the Bars series, clipped to nothing
+  bool xReversed = false;     // xTicks.max at the box's left (PlotAxis::reversed)
 
   float toScreenX(double x) const;
   float toScreenY(double y) const;

@@ -104,7 +104,7 @@ void addPlot(SlidePicture& picture, const PlotSpec& spec, const PlotFrame& frame
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
     if (series.points) {
-      const double radius = std::max(1.5, 0.12 * fontPx);
+      const double radius = std::max(1.5, 0.12 * fontPx) * series.pointScale;
       for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
         if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
         const CanvasPoint centre{frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])};

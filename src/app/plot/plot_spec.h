@@ -32,6 +32,9 @@ struct PlotSeries {
   // A scatter (a spot diagram's rays): a small dot at each point and no line; no hover readout.
   // A plot with a points series writes its CSV one point a row (series, x, y).
   bool points = false;
+  // A points series' dot radius as a multiple of the usual (a glass map's 1,700 glasses read
+  // better as larger dots than a spot diagram's thousands of rays).
+  float pointScale = 1.0f;
   // A guide, not data (a field's position marked on a curve): drawn and in the legend, left out
   // of the CSV and the hover readout.
   bool guide = false;
@@ -41,6 +44,9 @@ struct PlotAxis {
   std::string label;  // with its unit: "image height (mm)"
   // Fixed ends; unset ends follow the data (with round ticks).
   std::optional<double> min, max;
+  // Larger values to the left (x axis only): a glass map draws V_d falling to the right, as
+  // every maker's does.
+  bool reversed = false;
 };
 
 struct PlotSpec {
@@ -60,6 +66,9 @@ struct PlotSpec {
   // vertical grid lines.
   std::vector<std::string> categories;
   bool legend = true;  // false: none (small multiples, whose panel names the series beside them)
+  // false: the live plot shows no readout of its own under the mouse (the glass map names the
+  // glass there instead).
+  bool readout = true;
 };
 
 // Plots side by side under one title, with one legend under them, outside every axes' box: what

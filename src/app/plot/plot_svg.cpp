@@ -99,7 +99,7 @@ void writePlot(std::ostringstream& svg, const PlotSpec& spec, const PlotFrame& f
       // One group of dots; r in the page's pixels, as the live widget's.
       svg << "<g class=\"points\" data-name=\"" << svgEscaped(series.name) << "\" fill=\""
           << inkOnWhite(series.rgba) << "\" stroke=\"none\">\n";
-      const std::string radius = svgNumber(std::max(1.5f, 0.12f * fontPx));
+      const std::string radius = svgNumber(std::max(1.5f, 0.12f * fontPx) * series.pointScale);
       for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
         if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
           svg << "<circle cx=\"" << svgNumber(frame.toScreenX(series.x[i])) << "\" cy=\""

@@ -52,7 +52,7 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   size.x = std::max(size.x, 60.0f);
   size.y = std::max(size.y, 60.0f);
-  ImGui::InvisibleButton(id, size);
+  const bool clicked = ImGui::InvisibleButton(id, size);
   const bool hovered = ImGui::IsItemHovered();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float fontPx = ImGui::GetFontSize();
@@ -101,7 +101,7 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
   for (const PlotSeries& series : spec.series) {
     if (series.kind == PlotSeriesKind::Bars) continue;
     if (series.points) {
-      const float radius = std::max(1.5f, 0.12f * fontPx);
+      const float radius = std::max(1.5f, 0.12f * fontPx) * series.pointScale;
       for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i)
         if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
           draw->AddCircleFilled({frame.toScreenX(series.x[i]), frame.toScreenY(series.y[i])},
@@ -142,11 +142,17 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
 
   PlotWidgetResult result;
   result.area = area;
+  result.frame = frame;
+  result.clicked = clicked;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   if (hovered && mouse.x >= area.x && mouse.x <= area.right() && mouse.y >= area.y &&
       mouse.y <= area.bottom()) {
     const double x = frame.fromScreenX(mouse.x);
     result.hoverX = x;
+    if (!spec.readout) {
+      draw->PopClipRect();
+      return result;
+    }
     const bool scatter = std::any_of(spec.series.begin(), spec.series.end(),
                                      [](const PlotSeries& series) { return series.points; });
     if (scatter) {

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/layout.h"
+#include "app/plot/plot_layout.h"
 #include "app/plot/plot_spec.h"
 
 namespace lenslab::app {
@@ -15,6 +16,8 @@ namespace lenslab::app {
 struct PlotWidgetResult {
   Rect area;                     // the axes' box on screen
   std::optional<double> hoverX;  // the x under the mouse, when it is over the box
+  PlotFrame frame;               // the layout drawn: its mapping between values and pixels
+  bool clicked = false;          // the plot was clicked (left button) this frame
 };
 
 // Takes `size` pixels at the cursor (an invisible item named `id`).
