@@ -10,6 +10,7 @@
 #include <sstream>
 #include <utility>
 
+#include "optics/import/codev_file.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
 
@@ -277,6 +278,7 @@ LensFileResult readLensFile(const std::filesystem::path& path) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxFileBytes) return fail("file is too large to be a lens file");
   }
+  if (hasCodeVExtension(path)) return parseCodeVText(text, name);
   return isNativeLensText(text, path) ? parseNativeLensText(text, name) : parseLensText(text, name);
 }
 
