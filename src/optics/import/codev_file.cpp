@@ -1084,8 +1084,8 @@ bool hasCodeVExtension(const std::filesystem::path& path) {
   return upperCase(path.extension().string()) == ".SEQ";
 }
 
-LensFileResult parseCodeVText(std::string_view text, const std::string& fileName) {
-  Diagnostics diagnostics;
+std::optional<LensFile> readCodeVLens(std::string_view text, const std::string& fileName,
+                                      Diagnostics& diagnostics) {
   text = withoutByteOrderMark(text);
   SeqLexer lexer(text, fileName, diagnostics);
   SeqReader reader(fileName, diagnostics);
@@ -1106,16 +1106,23 @@ LensFileResult parseCodeVText(std::string_view text, const std::string& fileName
                      "no closing GO: the lens is read to the end of the file");
   }
   LensFile lens = reader.finish(std::move(lexer.leadingComments()));
-  if (lens.prescription.surfaces.empty()) {
-    if (!diagnostics.hasErrors())
-      diagnostics.error({fileName, std::max(lexer.lineNumber(), 1), 1},
-                        text.empty() ? "empty file: no lens surfaces"
-                                     : "no lens surfaces (S lines between SO and SI)");
+  if (lens.prescription.surfaces.empty() && !diagnostics.hasErrors())
+    diagnostics.error({fileName, std::max(lexer.lineNumber(), 1), 1},
+                      text.empty() ? "empty file: no lens surfaces"
+                                   : "no lens surfaces (S lines between SO and SI)");
+  if (diagnostics.hasErrors()) return std::nullopt;
+  return lens;
+}
+
+LensFileResult parseCodeVText(std::string_view text, const std::string& fileName) {
+  Diagnostics diagnostics;
+  std::optional<LensFile> lens = readCodeVLens(text, fileName, diagnostics);
+  if (!lens) {
     LensFileResult result;
     result.diagnostics = std::move(diagnostics);
     return result;
   }
-  return finishImportedLens(std::move(lens), std::move(diagnostics), fileName);
+  return finishImportedLens(std::move(*lens), std::move(diagnostics), fileName);
 }
 
 }  // namespace lenslab::optics

@@ -13,6 +13,7 @@
 // a note where a user should know.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -26,5 +27,11 @@ bool hasCodeVExtension(const std::filesystem::path& path);
 // Reads a CODE V sequence; `fileName` is only used in the messages. Surfaces without a CIR carry
 // no clear aperture until finishImportedLens sizes them from the lens's design conditions.
 LensFileResult parseCodeVText(std::string_view text, const std::string& fileName);
+
+// The lens as the sequence gives it, before finishImportedLens: surfaces without a CIR still have
+// diameter 0, and nothing is validated. Empty when the text has errors (in `diagnostics`, with
+// the notes and warnings). parseCodeVText is this and finishImportedLens.
+std::optional<LensFile> readCodeVLens(std::string_view text, const std::string& fileName,
+                                      Diagnostics& diagnostics);
 
 }  // namespace lenslab::optics
