@@ -46,16 +46,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const optics::DesignConditions& design = lens.design;
   for (double nm : design.wavelengths.nanometres)
     fuzz::check(std::isfinite(nm) && nm > 0.0, "design wavelengths are finite and positive");
-  fuzz::check(design.wavelengths.empty() ||
-                  (design.wavelengths.primaryIndex >= 0 &&
-                   design.wavelengths.primaryIndex <
-                       static_cast<int>(design.wavelengths.nanometres.size())),
-              "the reference wavelength is one of them");
+  fuzz::check(
+      design.wavelengths.empty() || (design.wavelengths.primaryIndex >= 0 &&
+                                     design.wavelengths.primaryIndex <
+                                         static_cast<int>(design.wavelengths.nanometres.size())),
+      "the reference wavelength is one of them");
   for (double value : design.fields.values)
     fuzz::check(std::isfinite(value), "design fields are finite");
-  fuzz::check(!design.aperture || (std::isfinite(design.aperture->value) &&
-                                   design.aperture->value > 0.0),
-              "the design aperture is finite and positive");
+  fuzz::check(
+      !design.aperture || (std::isfinite(design.aperture->value) && design.aperture->value > 0.0),
+      "the design aperture is finite and positive");
 
   const optics::LensFileResult again =
       optics::parseNativeLensText(optics::formatNativeLensText(lens), "written.lens");
