@@ -407,7 +407,8 @@ TEST(CodeVFile, TheLensesLenslabCanModelOpenWithDerivedClearApertures) {
             : result.lens->design.wavelengths.nanometres[static_cast<std::size_t>(
                   result.lens->design.wavelengths.primaryIndex)];
     const FirstOrderData first = firstOrderAt(result.lens->prescription, wavelength);
-    // The Edmund achromats' stop is their CIR (24 and 0.5 mm), a little under the EPD stated.
+    // The Edmund achromats' stop is their CIR (24 and 0.5 mm), under the EPD the files state (25
+    // and 1 mm): the lens's rim limits the beam.
     if (c.kind == ApertureKind::ImageFNumber)
       EXPECT_NEAR(first.fNumber, c.value, 1e-6);
     else
