@@ -485,6 +485,7 @@ std::optional<SeqMedium> SeqReader::medium(const SeqWord& word) {
   GlassLookup found;
   const std::size_t underscore = text.rfind('_');
   bool makerGiven = false;
+  std::string lookedUpName = text, lookedUpMaker;
   if (underscore != std::string::npos && underscore > 0 && underscore + 1 < text.size()) {
     const std::string name = text.substr(0, underscore);
     const std::string maker = upperCase(text.substr(underscore + 1));
@@ -492,6 +493,8 @@ std::optional<SeqMedium> SeqReader::medium(const SeqWord& word) {
     if (std::find(makers.begin(), makers.end(), maker) != makers.end()) {
       found = catalog.lookup(name, maker);
       makerGiven = true;
+      lookedUpName = name;
+      lookedUpMaker = maker;
     } else {
       found = catalog.lookup(text);  // an underscore inside a name
       if (!found) {
@@ -510,7 +513,19 @@ std::optional<SeqMedium> SeqReader::medium(const SeqWord& word) {
     found = catalog.lookup(text);
   }
   if (!found) {
-    error(word, found.error);
+    // Older files name Schott's and Ohara's glasses without the N- or S- their current ones
+    // carry (BK7 for N-BK7): said, never substituted, since the two differ in index.
+    std::string message = found.error;
+    for (const char* prefix : {"N-", "S-"}) {
+      const GlassLookup current = catalog.lookup(prefix + lookedUpName, lookedUpMaker);
+      if (current) {
+        message += "; " + current.glass->name + " (" + current.glass->maker +
+                   ") is in the catalogue, but lenslab does not take one glass for another: "
+                   "write it if it is meant";
+        break;
+      }
+    }
+    error(word, message);
     return std::nullopt;
   }
   if (found.ambiguous() && !makerGiven)
