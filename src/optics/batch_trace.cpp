@@ -42,10 +42,10 @@ struct SurfaceF {
   // scene, the surface's front and rear media swapped). `disperses` when either has b != 0.
   float aRear = 1.0f, bRear = 0.0f, aFront = 1.0f, bFront = 0.0f;
   bool disperses = false;
-  // The same for a lens with a catalogue glass: each side's series in x = 2^18 / lambda^2
-  // (glass/dispersion_fit.h), c[0..7] then the lambda^2 term; a model glass's is its Cauchy fit
-  // in that form, air's c[0] = 1.
-  float seriesRear[kSeriesTerms] = {}, seriesFront[kSeriesTerms] = {};
+  // The same for a lens with a catalogue glass: the slots of the media the ray comes from and
+  // enters in the per-block table of indices (traceAll), each medium's series evaluated once per
+  // ray there rather than at each of its two surfaces.
+  int mediumFrom = 0, mediumTo = 0;
   // An aspheric surface (aspheric_profile.h) takes traceAspheric: 1 + k, and the terms A_i up to
   // the highest nonzero power (0: a conic without terms).
   bool aspheric = false;
@@ -92,33 +92,21 @@ __attribute__((always_inline)) inline void applyStopShape(const StopShapeTest& s
 }
 
 // The ratio of indices a ray meets at a surface: the surface's own (kFixedIndex), or the one at
-// the ray's wavelength: from w = 1 / lambda^2 (nm^-2) and the model glasses' a + b w
-// (kCauchyIndex), or from w = x = 2^18 / lambda^2 and each side's series by Horner's rule, as
-// KernelDispersion::atFloat evaluates it (kSeriesIndex). One division per ray and surface (two
-// for the series). The coefficients are passed as locals, or pointers, read before the loop,
-// which GCC needs to vectorize it.
+// the ray's wavelength: from w = 1 / lambda^2 (nm^-2) and the model glasses' a + b w, one
+// division per ray and surface (kCauchyIndex), or w itself, the ratio traceAll worked out per ray
+// from its table of indices (kSeriesIndex). The coefficients are passed as locals read before the
+// loop, which GCC needs to vectorize it.
 template <int kPerRay>
 __attribute__((always_inline)) inline float etaOf(float fixedEta, float aRear, float bRear,
-                                                  float aFront, float bFront,
-                                                  const float* __restrict seriesRear,
-                                                  const float* __restrict seriesFront, float w) {
+                                                  float aFront, float bFront, float w) {
   if constexpr (kPerRay == kSeriesIndex) {
     (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)fixedEta;
-    constexpr int top = KernelDispersion::kMaxDegree;
-    float rear = seriesRear[top], front = seriesFront[top];
-#pragma GCC unroll 8
-    for (int k = top - 1; k >= 0; --k) {
-      rear = seriesRear[k] + w * rear;
-      front = seriesFront[k] + w * front;
-    }
-    const float y = 1.0f / w;
-    return (rear + seriesRear[top + 1] * y) / (front + seriesFront[top + 1] * y);
+    return w;
   } else if constexpr (kPerRay == kCauchyIndex) {
-    (void)seriesRear, (void)seriesFront, (void)fixedEta;
+    (void)fixedEta;
     return (aRear + bRear * w) / (aFront + bFront * w);
   } else {
-    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)seriesRear, (void)seriesFront;
-    (void)w;
+    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)w;
     return fixedEta;
   }
 }
@@ -133,11 +121,8 @@ __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* _
                                                      const float* __restrict w = nullptr) {
   const float zv = s.vertexZ, semiSq = s.semiApertureSq, fixedEta = s.eta;
   const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
-  const float* __restrict seriesRear = s.seriesRear;
-  const float* __restrict seriesFront = s.seriesFront;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, seriesRear,
-                                     seriesFront, kPerRay ? w[i] : 0.0f);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float uz = dz[i];
     const float t = (zv - oz[i]) / uz;
     const float hx = ox[i] + t * dx[i], hy = oy[i] + t * dy[i];
@@ -186,11 +171,8 @@ __attribute__((always_inline)) inline void traceSurface(
   const float c = s.curvature, radius = s.radius, zv = s.vertexZ, semiSq = s.semiApertureSq,
               fixedEta = s.eta;
   const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
-  const float* __restrict seriesRear = s.seriesRear;
-  const float* __restrict seriesFront = s.seriesFront;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, seriesRear,
-                                     seriesFront, kPerRay ? w[i] : 0.0f);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
     const float b = c * (px * ux + py * uy + pz * uz) + uz;
@@ -244,12 +226,9 @@ __attribute__((always_inline)) inline void traceAspheric(
   const float c = s.curvature, k1 = s.conic1, zv = s.vertexZ, semiSq = s.semiApertureSq,
               fixedEta = s.eta;
   const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
-  const float* __restrict seriesRear = s.seriesRear;
-  const float* __restrict seriesFront = s.seriesFront;
   const float* __restrict coefficient = s.coefficient;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, seriesRear,
-                                     seriesFront, kPerRay ? w[i] : 0.0f);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
     const float a = c * (ux * ux + uy * uy + k1 * uz * uz);
@@ -339,15 +318,48 @@ __attribute__((always_inline)) inline void traceAsphericOf(
     traceAspheric<kTop, false>(s, ox, oy, oz, dx, dy, dz, alive, n);
 }
 
+// Each medium's index for a block of rays, from x = 2^18 / lambda^2 by Horner's rule as
+// KernelDispersion::atFloat evaluates it: `series` holds `media` series of kSeriesTerms floats
+// (c[0..7], then the lambda^2 term), `index` gets media rows of kBlock.
+constexpr std::size_t kBlock = 256;
+__attribute__((always_inline)) inline void indicesOfBlock(const float* __restrict series, int media,
+                                                          const float* __restrict x, std::size_t m,
+                                                          float* __restrict index) {
+  float y[kBlock];
+  for (std::size_t i = 0; i < m; ++i) y[i] = 1.0f / x[i];
+  constexpr int top = KernelDispersion::kMaxDegree;
+  for (int medium = 0; medium < media; ++medium) {
+    const float* __restrict c = series + medium * kSeriesTerms;
+    float* __restrict out = index + static_cast<std::size_t>(medium) * kBlock;
+    const float c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3], c4 = c[4], c5 = c[5], c6 = c[6],
+                c7 = c[7], cLambda2 = c[top + 1];
+    for (std::size_t i = 0; i < m; ++i) {
+      const float xi = x[i];
+      float n = c7;
+      n = c6 + xi * n;
+      n = c5 + xi * n;
+      n = c4 + xi * n;
+      n = c3 + xi * n;
+      n = c2 + xi * n;
+      n = c1 + xi * n;
+      n = c0 + xi * n;
+      out[i] = n + cLambda2 * y[i];
+    }
+  }
+}
+
 // `invWavelengthSq`: null for the surfaces' own indices (the RGB trace, unchanged), else each
 // ray's 1 / lambda^2 (the spectral trace: dispersive surfaces take their per-ray kernel), or, with
-// `series`, its x = 2^18 / lambda^2 for the surfaces' series.
+// `series` (media x kSeriesTerms floats, see indicesOfBlock), its x = 2^18 / lambda^2.
 __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, int count,
                                                     LensRayBatch& rays,
-                                                    const float* invWavelengthSq, bool series) {
+                                                    const float* invWavelengthSq,
+                                                    const float* series, int media) {
   const std::size_t n = rays.size();
   // Blocks keep the working set in L1 while all surfaces are applied.
-  constexpr std::size_t kBlock = 256;
+  thread_local std::vector<float> indexTable;
+  if (series) indexTable.resize(static_cast<std::size_t>(media) * kBlock);
+  float etaOfRay[kBlock];
   for (std::size_t start = 0; start < n; start += kBlock) {
     const std::size_t m = n - start < kBlock ? n - start : kBlock;
     float* ox = rays.ox.data() + start;
@@ -358,15 +370,23 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
     float* dz = rays.dz.data() + start;
     std::uint8_t* alive = rays.alive.data() + start;
     const float* w = invWavelengthSq ? invWavelengthSq + start : nullptr;
+    if (series) indicesOfBlock(series, media, w, m, indexTable.data());
     for (int k = 0; k < count; ++k) {
       const SurfaceF& s = surfaces[k];
+      if (series && s.disperses) {
+        // This surface's ratio for each ray, handed to its kernel in place of w.
+        const float* __restrict from = indexTable.data() + s.mediumFrom * kBlock;
+        const float* __restrict to = indexTable.data() + s.mediumTo * kBlock;
+        for (std::size_t i = 0; i < m; ++i) etaOfRay[i] = from[i] / to[i];
+        w = etaOfRay;
+      }
       if (s.aspheric) {
         if (s.highestPower == 0)
-          traceAsphericOf<0>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series);
+          traceAsphericOf<0>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series != nullptr);
         else if (s.highestPower <= 10)
-          traceAsphericOf<10>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series);
+          traceAsphericOf<10>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series != nullptr);
         else
-          traceAsphericOf<kAnyTop>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series);
+          traceAsphericOf<kAnyTop>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series != nullptr);
       } else if (w && s.disperses && series) {
         if (s.flat)
           traceFlat<true, kSeriesIndex>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
@@ -394,19 +414,20 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
 
 __attribute__((target("avx2,fma"))) void traceAvx2(const SurfaceF* surfaces, int count,
                                                    LensRayBatch& rays, const float* w,
-                                                   bool series) {
-  traceAll(surfaces, count, rays, w, series);
+                                                   const float* series, int media) {
+  traceAll(surfaces, count, rays, w, series, media);
 }
 
 // 16 lanes. GCC keeps 256-bit vectors for AVX-512 targets unless told otherwise.
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma,prefer-vector-width=512"))) void
-traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w, bool series) {
-  traceAll(surfaces, count, rays, w, series);
+traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w,
+            const float* series, int media) {
+  traceAll(surfaces, count, rays, w, series, media);
 }
 
 void tracePortable(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w,
-                   bool series) {
-  traceAll(surfaces, count, rays, w, series);
+                   const float* series, int media) {
+  traceAll(surfaces, count, rays, w, series, media);
 }
 
 bool cpuHasAvx512() {
@@ -475,11 +496,20 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, Ba
   // glass, from every medium's series (glass/dispersion_fit.h), which holds to 1e-6 only where
   // spectralTraceProblem() is empty: the callers check it first.
   const bool series = invWavelengthSq && hasCatalogGlass_;
-  const std::vector<KernelDispersion>* media = nullptr;
+  // Slot 0 is the air in front of the lens, slot k + 1 the medium after surface k.
+  thread_local std::vector<float> seriesOfMedia;
   if (series) {
     if (const std::string problem = spectralTraceProblem(); !problem.empty())
       throw std::logic_error("LensSystem: " + problem);
-    media = &kernelDispersions();
+    const std::vector<KernelDispersion>& media = kernelDispersions();
+    seriesOfMedia.assign((media.size() + 1) * kSeriesTerms, 0.0f);
+    seriesOfMedia[0] = 1.0f;  // air
+    for (std::size_t k = 0; k < media.size(); ++k) {
+      float* out = seriesOfMedia.data() + (k + 1) * kSeriesTerms;
+      for (int term = 0; term <= KernelDispersion::kMaxDegree; ++term)
+        out[term] = static_cast<float>(media[k].c[static_cast<std::size_t>(term)]);
+      out[kSeriesTerms - 1] = static_cast<float>(media[k].cLambda2);
+    }
     // x = 2^18 / lambda^2 = 2^18 w: exact in float, a power of two.
     thread_local std::vector<float> x;
     x.resize(rays.size());
@@ -535,32 +565,26 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, Ba
       f.bFront = static_cast<float>(into.bNm2);
       f.disperses = rear.bNm2 != 0.0 || front.bNm2 != 0.0;
       if (series) {
-        const KernelDispersion air = modelGlassKernelDispersion(CauchyCoefficients{});
-        const KernelDispersion& rearSeries = (*media)[k];
-        const KernelDispersion& frontSeries = k == 0 ? air : (*media)[k - 1];
-        const KernelDispersion& fromSeries = fromFilm ? rearSeries : frontSeries;
-        const KernelDispersion& intoSeries = fromFilm ? frontSeries : rearSeries;
-        for (int term = 0; term <= KernelDispersion::kMaxDegree; ++term) {
-          f.seriesRear[term] = static_cast<float>(fromSeries.c[static_cast<std::size_t>(term)]);
-          f.seriesFront[term] = static_cast<float>(intoSeries.c[static_cast<std::size_t>(term)]);
-        }
-        f.seriesRear[kSeriesTerms - 1] = static_cast<float>(fromSeries.cLambda2);
-        f.seriesFront[kSeriesTerms - 1] = static_cast<float>(intoSeries.cLambda2);
-        auto constant = [](const KernelDispersion& d) {
-          return d.cLambda2 == 0.0 &&
-                 std::all_of(d.c.begin() + 1, d.c.end(), [](double term) { return term == 0.0; });
+        const int rearSlot = k + 1, frontSlot = k;
+        f.mediumFrom = fromFilm ? rearSlot : frontSlot;
+        f.mediumTo = fromFilm ? frontSlot : rearSlot;
+        auto constant = [&](int slot) {
+          const float* c = seriesOfMedia.data() + static_cast<std::size_t>(slot) * kSeriesTerms;
+          return std::all_of(c + 1, c + kSeriesTerms, [](float term) { return term == 0.0f; });
         };
-        f.disperses = !constant(rearSeries) || !constant(frontSeries);
+        f.disperses = !constant(rearSlot) || !constant(frontSlot);
       }
     }
   }
   if (!batchKernelAvailable(kernel) || kernel == BatchKernel::Auto) kernel = autoBatchKernel();
+  const float* seriesTable = series ? seriesOfMedia.data() : nullptr;
+  const int media = series ? count + 1 : 0;
   if (kernel == BatchKernel::Avx512)
-    traceAvx512(list, count, rays, invWavelengthSq, series);
+    traceAvx512(list, count, rays, invWavelengthSq, seriesTable, media);
   else if (kernel == BatchKernel::Avx2)
-    traceAvx2(list, count, rays, invWavelengthSq, series);
+    traceAvx2(list, count, rays, invWavelengthSq, seriesTable, media);
   else
-    tracePortable(list, count, rays, invWavelengthSq, series);
+    tracePortable(list, count, rays, invWavelengthSq, seriesTable, media);
 }
 
 }  // namespace lenslab::optics
