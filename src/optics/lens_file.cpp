@@ -10,6 +10,7 @@
 #include <sstream>
 #include <utility>
 
+#include "optics/import/patent_table.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
 
@@ -277,7 +278,10 @@ LensFileResult readLensFile(const std::filesystem::path& path) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxFileBytes) return fail("file is too large to be a lens file");
   }
-  return isNativeLensText(text, path) ? parseNativeLensText(text, name) : parseLensText(text, name);
+  if (isNativeLensText(text, path)) return parseNativeLensText(text, name);
+  // A patent's numerical example saved as text (import/patent_table.h).
+  if (isPatentTablePath(name)) return parsePatentTableText(text, name);
+  return parseLensText(text, name);
 }
 
 std::string formatLensText(const Prescription& prescription,
