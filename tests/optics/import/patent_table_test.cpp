@@ -332,6 +332,32 @@ TEST(PatentTableConventions, NikonKappaWithItsFormulaIsKPlusOne) {
   EXPECT_DOUBLE_EQ(r.table.aspheres[0].conic, 0.4 - 1.0);
 }
 
+TEST(PatentTableConventions, LetteredCoefficientsTakeTheFormulasPowers) {
+  // Older Japanese examples start at B for h⁴ (A being the h² term they leave out); the formula
+  // printed with the data says so, and the letters it does not show continue its series.
+  const std::string text =
+      "Surface r d nd vd\n1* 50 5 1.5168 64.2\n2 -200 2\n3(Stop) INF 3\n4 -80 40\n\n"
+      "Aspherical coefficients\nX = (h\xC2\xB2/R)/[1+{1-(1+K)(h/R)\xC2\xB2}^1/2] + Bh\xE2\x81\xB4 "
+      "+ "
+      "Ch\xE2\x81\xB6\n1: K = -1 B = 1.5E-05 C = -2E-08 D = 3E-11 E = 4E-14\n";
+  const PatentTableResult r = readPatentTable(text, "letters.txt");
+  ASSERT_EQ(r.table.aspheres.size(), 1u) << errors(r.lens);
+  const PatentAsphere& a = r.table.aspheres[0];
+  EXPECT_DOUBLE_EQ(a.conic, -1.0);
+  EXPECT_DOUBLE_EQ(term(a, 4), 1.5e-5);
+  EXPECT_DOUBLE_EQ(term(a, 6), -2e-8);
+  EXPECT_DOUBLE_EQ(term(a, 8), 3e-11);
+  EXPECT_DOUBLE_EQ(term(a, 10), 4e-14);
+  // Without a formula, CODE V's order: A is h⁴.
+  const PatentTableResult plain = readPatentTable(
+      "Surface r d nd vd\n1* 50 5 1.5168 64.2\n2 -200 2\n3(Stop) INF 3\n4 -80 40\n\n"
+      "Aspherical coefficients\nR1: k = 0, A = 1.5E-05, B = -2E-08\n",
+      "codev.txt");
+  ASSERT_EQ(plain.table.aspheres.size(), 1u) << errors(plain.lens);
+  EXPECT_DOUBLE_EQ(term(plain.table.aspheres[0], 4), 1.5e-5);
+  EXPECT_DOUBLE_EQ(term(plain.table.aspheres[0], 6), -2e-8);
+}
+
 TEST(PatentTableConventions, HeaderValues) {
   const PatentTableResult r = readPatentTable(
       "f = 51.6  F-number = 2.8  \xCF\x89 = 20.5  Image height 21.6  BF = 38.2\n"
