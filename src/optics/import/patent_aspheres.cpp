@@ -233,7 +233,7 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
     if (stop < line.text.size())
       diagnostics.error({fileName, line.number, line.columnAt(stop)},
                         "cannot read '" + trimmed(line.text.substr(stop, 24)) +
-                            "' as an aspheric coefficient (K = …, A4 = …)");
+                            "' as an aspheric coefficient (K = ..., A4 = ...)");
     if (pairs.empty()) return;
     if (raw.empty()) {
       diagnostics.error({fileName, line.number, line.columnAt(pairs.front().keyAt)},
@@ -290,7 +290,7 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
       } else {
         diagnostics.error(where, "'" + p.key +
                                      "' is not an aspheric coefficient this reader "
-                                     "knows (K, \xCE\xBA, A4…A20, C3…C20, or A, B, C…)");
+                                     "knows (K, kappa, A4...A20, C3...C20, or A, B, C...)");
         continue;
       }
       if (power < AsphericProfile::kMinPower || power > AsphericProfile::kMaxPower) {
@@ -304,18 +304,15 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
   }
   if (usedKappa) {
     if (formula.nikonKappa) {
-      conventions.push_back("\xCE\xBA = k + 1 (the sag formula on line " +
-                            std::to_string(formula.line) +
-                            " writes 1 \xE2\x88\x92 \xCE\xBA h\xC2\xB2/R\xC2\xB2)");
+      conventions.push_back("kappa = k + 1 (the sag formula on line " +
+                            std::to_string(formula.line) + " writes 1 - kappa h^2/R^2)");
     } else {
-      conventions.push_back(
-          "\xCE\xBA read as the conic constant k (no sag formula says otherwise)");
+      conventions.push_back("kappa read as the conic constant k (no sag formula says otherwise)");
       if (!aspheres.empty())
-        diagnostics.note(
-            {fileName, aspheres.front().line, 1},
-            "\xCE\xBA is read as the conic constant k (0 = sphere); Nikon's formula "
-            "writes 1 \xE2\x88\x92 \xCE\xBA y\xC2\xB2/r\xC2\xB2 (\xCE\xBA = k + 1): paste "
-            "that formula with the data if the text comes from such a patent");
+        diagnostics.note({fileName, aspheres.front().line, 1},
+                         "kappa is read as the conic constant k (0 = sphere); Nikon's formula "
+                         "writes 1 - kappa y^2/r^2 (kappa = k + 1): paste "
+                         "that formula with the data if the text comes from such a patent");
     }
   } else if (!raw.empty()) {
     conventions.push_back("K is the conic constant k (0 = sphere)");
@@ -334,8 +331,8 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
                             " (no sag formula in the text: CODE V's order assumed)");
       if (!aspheres.empty())
         diagnostics.note({fileName, aspheres.front().line, 1},
-                         "no sag formula in the text: the lettered coefficients A, B, C, D… are "
-                         "read as the r^4, r^6, r^8, r^10… terms");
+                         "no sag formula in the text: the lettered coefficients A, B, C, D... are "
+                         "read as the r^4, r^6, r^8, r^10... terms");
     }
   }
 }
@@ -392,10 +389,10 @@ const char* headerKeyName(HeaderKey key) {
     case HeaderKey::FNumber:
       return "Fno";
     case HeaderKey::HalfField:
-      return "\xCF\x89";
+      return "w";
     case HeaderKey::FullField:
     case HeaderKey::AngleOfView:
-      return "2\xCF\x89";
+      return "2w";
     case HeaderKey::ImageHeight:
     case HeaderKey::FullImageHeight:
       return "image height";

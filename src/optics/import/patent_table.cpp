@@ -28,7 +28,7 @@ const char* patentColumnLabel(PatentColumn column) {
     case PatentColumn::IndexD:
       return "n_d";
     case PatentColumn::AbbeD:
-      return "\xCE\xBD_d";
+      return "V_d";
     case PatentColumn::Ignored:
       return "ignored";
   }
@@ -540,7 +540,7 @@ bool PatentReader::fillRow(const FoldedLine& line, const PatentRowCells& cells,
   const auto radius = number(PatentColumn::Radius, "r");
   const auto thickness = number(PatentColumn::Thickness, "d");
   const auto index = number(PatentColumn::IndexD, "n_d");
-  const auto abbe = number(PatentColumn::AbbeD, "\xCE\xBD_d");
+  const auto abbe = number(PatentColumn::AbbeD, "V_d");
   if (!ok) return false;
   if (!radius) {
     error(line, cells.missingAt,
@@ -562,14 +562,14 @@ bool PatentReader::fillRow(const FoldedLine& line, const PatentRowCells& cells,
                 patentOriginalSpan(line,
                                    cells.byMeaning[patentMeaningIndex(PatentColumn::IndexD)]->begin,
                                    cells.byMeaning[patentMeaningIndex(PatentColumn::IndexD)]->end) +
-                " but no \xCE\xBD_d");
+                " but no V_d");
       return false;
     }
     row.indexD = index;
     row.abbeD = abbe;
   } else if (abbe && !index) {
     error(line, cells.byMeaning[patentMeaningIndex(PatentColumn::AbbeD)]->begin,
-          "surface " + std::to_string(row.surfaceNumber) + " gives \xCE\xBD_d but no n_d");
+          "surface " + std::to_string(row.surfaceNumber) + " gives V_d but no n_d");
     return false;
   }
   return true;
@@ -613,9 +613,7 @@ void PatentReader::readEquationRows(std::size_t firstLine) {
       while (q < text.size() && text[q] == ' ') ++q;
       if (lettersEnd == keyBegin || q >= text.size() || text[q] != '=') {
         if (first) break;
-        error(line, keyBegin,
-              "expected KEY = value here (R1 = …  D1 = …  N1 = …  \xCE\xBD"
-              "1 = …)");
+        error(line, keyBegin, "expected KEY = value here (R1 = ...  D1 = ...  N1 = ...  V1 = ...)");
         isRow = false;
         break;
       }
@@ -673,8 +671,7 @@ PatentTableResult PatentReader::read() {
   if (!findColumnLayout() && !findEquationLayout() && !findHeadlessLayout()) {
     diagnostics_.error({fileName_, 1, 1},
                        "no surface table found: expected a heading row naming the columns (r, "
-                       "d, nd, \xCE\xBD"
-                       "d) or rows written R1 = …  D1 = …");
+                       "d, nd, vd) or rows written R1 = ...  D1 = ...");
   }
   if (!diagnostics_.hasErrors() && table_.rows.empty())
     diagnostics_.error({fileName_, table_.headingLine, 1},

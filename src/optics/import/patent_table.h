@@ -31,7 +31,8 @@ namespace lenslab::optics {
 
 // What a column of the table holds.
 enum class PatentColumn { Ignored, Surface, Radius, Thickness, IndexD, AbbeD };
-// "surface", "r", "d", "n_d", "ν_d", "ignored" (the dialog's combo labels).
+// "surface", "r", "d", "n_d", "V_d", "ignored" (the dialog's combo labels; ASCII, as the
+// viewer's font has no Greek).
 const char* patentColumnLabel(PatentColumn column);
 inline constexpr PatentColumn kPatentColumns[] = {PatentColumn::Surface,   PatentColumn::Radius,
                                                   PatentColumn::Thickness, PatentColumn::IndexD,
