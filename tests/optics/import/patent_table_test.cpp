@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "optics/lens_system.h"
+
 namespace lenslab::optics {
 namespace {
 
@@ -204,6 +206,83 @@ TEST(PatentTable, CanonTabsReadAsPublished) {
   EXPECT_NEAR(yNuEfl(t.rows), 49.57, 49.57 * kEflTolerance);
 }
 
+// --- The four texts open as lenses (their clear apertures derived from the stated f-number) ---
+
+struct OpenedLens {
+  double eflMm = 0.0;
+  double fNumber = 0.0;
+  std::size_t stopIndex = 0;
+};
+
+// Builds the lens the reader made and gives its paraxial EFL and f-number (lenslab's first-order
+// data of the built lens at the d line).
+std::optional<OpenedLens> openAsLens(const std::string& text, const std::string& name) {
+  const PatentTableResult r = readPatentTable(text, name);
+  EXPECT_TRUE(r.lens.ok()) << errors(r.lens);
+  if (!r.lens.ok()) return std::nullopt;
+  const BuildResult built = LensSystem::build(r.lens.lens->prescription);
+  EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().message);
+  if (!built.ok()) return std::nullopt;
+  const FirstOrderData& first = built.system->firstOrder();
+  return OpenedLens{first.eflMm, first.fNumber, *r.lens.lens->prescription.stopIndex()};
+}
+
+// The published focal lengths (the README's, in each file's header) and f-numbers, and the
+// stop's row in lenslab's prescription (0-based).
+TEST(PatentTableLenses, TheFourTextsOpenAtTheirPublishedFocalLengthAndFNumber) {
+  struct Published {
+    const char* file;
+    double eflMm, fNumber;
+    std::size_t stopRow;
+  };
+  const Published kPublished[] = {
+      {"jp-style-sony-55.txt", 53.61, 1.86, 6},
+      {"us-style-sigma-35.txt", 33.72, 1.46, 14},
+      {"d-exponent-nikon-z50.txt", 51.6, 1.85, 11},
+  };
+  for (const Published& p : kPublished) {
+    SCOPED_TRACE(p.file);
+    const auto lens = openAsLens(readText(p.file), p.file);
+    ASSERT_TRUE(lens);
+    EXPECT_NEAR(lens->eflMm, p.eflMm, p.eflMm * kEflTolerance);
+    EXPECT_NEAR(lens->fNumber, p.fNumber, 1e-9);
+    EXPECT_EQ(lens->stopIndex, p.stopRow);
+  }
+}
+
+TEST(PatentTableLenses, CanonTextStatesNoFNumberAndIsRefusedAtItsStop) {
+  const PatentTableResult r = readPatentTable(readText("x10-tabs-canon-rf50.txt"), "canon.txt");
+  ASSERT_FALSE(r.lens.ok());
+  // The stop's row is line 10; the derivation names it.
+  EXPECT_NE(errors(r.lens).find("canon.txt:10:1: error:"), std::string::npos) << errors(r.lens);
+  EXPECT_NE(errors(r.lens).find("f-number"), std::string::npos) << errors(r.lens);
+  // With SOURCES.md's published F/1.85 added to its header, it opens at 49.57 mm and f/1.85.
+  const auto lens =
+      openAsLens("Fno 1.85\n" + readText("x10-tabs-canon-rf50.txt"), "canon-with-fno.txt");
+  ASSERT_TRUE(lens);
+  EXPECT_NEAR(lens->eflMm, 49.57, 49.57 * kEflTolerance);
+  EXPECT_NEAR(lens->fNumber, 1.85, 1e-9);
+  EXPECT_EQ(lens->stopIndex, 5u);
+}
+
+TEST(PatentTableLenses, ReadLensFileOpensTxtInAnyCase) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "lenslab-patent-txt";
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"sony.txt", "sony.TXT", "sony.Txt"}) {
+    std::ofstream(dir / name, std::ios::binary) << readText("jp-style-sony-55.txt");
+    const LensFileResult r = readLensFile(dir / name);
+    ASSERT_TRUE(r.ok()) << name << "\n" << errors(r);
+    EXPECT_EQ(r.lens->prescription.surfaces.size(), 15u);
+    ASSERT_TRUE(r.lens->publishedEflMm);
+    EXPECT_DOUBLE_EQ(*r.lens->publishedEflMm, 53.61);
+    ASSERT_TRUE(r.lens->design.aperture);
+    EXPECT_EQ(r.lens->design.aperture->kind, ApertureKind::ImageFNumber);
+    EXPECT_DOUBLE_EQ(r.lens->design.aperture->value, 1.86);
+    EXPECT_EQ(r.lens->rowLines.front(), 7);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 // --- Conventions, in small inline texts ---
 
 // A two-element lens (a thin achromat-like pair and a stop), written in each convention; the
@@ -278,6 +357,16 @@ TEST(PatentTableConventions, StopOnARefractingSurfaceBecomesAStopRowAtItsVertex)
   ASSERT_EQ(r.table.rows.size(), 2u) << errors(r.lens);
   EXPECT_TRUE(r.table.rows[1].stop);
   EXPECT_DOUBLE_EQ(r.table.rows[1].radiusMm, -200.0);
+  // The lens keeps the refracting surface and gains a stop row at its vertex (behind it: the
+  // surface bulges toward the film), with the row's line.
+  ASSERT_TRUE(r.lens.ok()) << errors(r.lens);
+  const std::vector<Surface>& s = r.lens.lens->prescription.surfaces;
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_DOUBLE_EQ(s[1].radiusMm, -200.0);
+  EXPECT_EQ(s[1].thicknessMm, 0.0);
+  EXPECT_TRUE(s[2].isStop());
+  EXPECT_DOUBLE_EQ(s[2].thicknessMm, 45.0);
+  EXPECT_EQ(r.lens.lens->rowLines, (std::vector<int>{3, 4, 4}));
 }
 
 TEST(PatentTableConventions, ExponentNotations) {
