@@ -95,7 +95,9 @@ bool intersectAspheric(double vertexZMm, double curvaturePerMm, const AsphericPr
     if (disc >= 0.0) {
       const double q = -(b + std::copysign(std::sqrt(disc), b));
       auto consider = [&](double t) {
-        if (t > 0.0 && t < conicT && 1.0 + c * k1 * (o.z + t * d.z) >= 0.0) conicT = t;
+        if (t >= -kTouchingSurfaceToleranceMm && t < conicT &&
+            1.0 + c * k1 * (o.z + t * d.z) >= 0.0)
+          conicT = t;
       };
       if (q != 0.0) consider(cc / q);
       if (a != 0.0) consider(q / a);
@@ -103,7 +105,7 @@ bool intersectAspheric(double vertexZMm, double curvaturePerMm, const AsphericPr
   }
   if (!profile.hasPolynomial()) {
     if (std::isinf(conicT)) return false;
-    tOut = conicT;
+    tOut = std::max(conicT, 0.0);
     return true;
   }
   // Newton on G(t) = z(t) + S(r(t)) from the conic's hit, or else the vertex plane's.
@@ -126,7 +128,8 @@ bool intersectAspheric(double vertexZMm, double curvaturePerMm, const AsphericPr
     t -= step;
     if (!std::isfinite(t)) return false;
     if (std::abs(step) <= kNewtonTolerance * (1.0 + std::abs(t))) {
-      if (!(t > 0.0)) return false;
+      if (!(t >= -kTouchingSurfaceToleranceMm)) return false;
+      t = std::max(t, 0.0);
       const glm::dvec3 hit = o + t * d;
       if (!sagMm(c, profile, std::hypot(hit.x, hit.y))) return false;
       tOut = t;

@@ -25,6 +25,12 @@
 
 namespace lenslab::optics {
 
+// Surfaces may touch: a stop row at a surface's vertex (a file's stop on a refracting surface,
+// import/stop_on_surface.h), or zero air between two rows. A ray leaving one at the touching point
+// meets the other at t = 0, which rounding can put a hair behind its origin. Hits that close behind
+// count, at t = 0; no other ray has a root there, since a ray starts on the previous surface.
+inline constexpr double kTouchingSurfaceToleranceMm = 1e-9;
+
 class AsphericProfile {
  public:
   static constexpr int kMinPower = 2;

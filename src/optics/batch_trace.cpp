@@ -22,6 +22,10 @@ namespace lenslab::optics {
 
 namespace {
 
+// kTouchingSurfaceToleranceMm in single precision, where a hit's z carries some 1e-5 mm of
+// rounding at a lens's distances from the film (a plane's hit takes its z exactly).
+constexpr float kTouchingSurfaceToleranceF = 1e-4f;
+
 struct SurfaceF {
   float vertexZ, curvature, radius, semiApertureSq, eta;
   bool refracts, flat;
@@ -106,7 +110,7 @@ __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* _
     const float uz = dz[i];
     const float t = (zv - oz[i]) / uz;
     const float hx = ox[i] + t * dx[i], hy = oy[i] + t * dy[i];
-    int ok = (t > 0.0f) & (hx * hx + hy * hy <= semiSq);
+    int ok = (t >= -kTouchingSurfaceToleranceF) & (hx * hx + hy * hy <= semiSq);
     ox[i] = hx;
     oy[i] = hy;
     oz[i] = zv;
@@ -163,8 +167,8 @@ __attribute__((always_inline)) inline void traceSurface(
     // Both roots (q / c = q R; flat surfaces take traceFlat); keep the nearest
     // one in front of the origin on the vertex-side cap (1 + c z > 0).
     const float t1 = cc / q, t2 = q * radius;
-    const bool ok1 = (t1 > 0.0f) & (1.0f + c * (pz + t1 * uz) > 0.0f);
-    const bool ok2 = (t2 > 0.0f) & (1.0f + c * (pz + t2 * uz) > 0.0f);
+    const bool ok1 = (t1 >= -kTouchingSurfaceToleranceF) & (1.0f + c * (pz + t1 * uz) > 0.0f);
+    const bool ok2 = (t2 >= -kTouchingSurfaceToleranceF) & (1.0f + c * (pz + t2 * uz) > 0.0f);
     const float t = ok1 & ok2 ? (t1 < t2 ? t1 : t2) : (ok1 ? t1 : t2);
     const float hx = px + t * ux, hy = py + t * uy, hz = pz + t * uz;
     // Bitwise & rather than && keeps the loop free of branches.
@@ -218,8 +222,8 @@ __attribute__((always_inline)) inline void traceAspheric(
     const float root = std::sqrt(disc > 0.0f ? disc : 0.0f);
     const float q = b >= 0.0f ? -b - root : -b + root;
     const float t1 = cc / q, t2 = q / a;
-    const bool ok1 = (t1 > 0.0f) & (1.0f + c * k1 * (pz + t1 * uz) >= 0.0f);
-    const bool ok2 = (t2 > 0.0f) & (1.0f + c * k1 * (pz + t2 * uz) >= 0.0f);
+    const bool ok1 = (t1 >= -kTouchingSurfaceToleranceF) & (1.0f + c * k1 * (pz + t1 * uz) >= 0.0f);
+    const bool ok2 = (t2 >= -kTouchingSurfaceToleranceF) & (1.0f + c * k1 * (pz + t2 * uz) >= 0.0f);
     float t = ok1 & ok2 ? (t1 < t2 ? t1 : t2) : (ok1 ? t1 : t2);
     int ok = (disc >= 0.0f) & (ok1 | ok2);
     float slope = 0.0f;  // S'(r) at the hit, for the normal (terms only)
@@ -246,7 +250,8 @@ __attribute__((always_inline)) inline void traceAspheric(
         t -= step;
       }
       // The last step's size, and the sag at the point (the last iteration's, one step away).
-      ok = (std::abs(step) <= 1e-4f * (1.0f + std::abs(t))) & (rootS >= 0.0f) & (t > 0.0f);
+      ok = (std::abs(step) <= 1e-4f * (1.0f + std::abs(t))) & (rootS >= 0.0f) &
+           (t >= -kTouchingSurfaceToleranceF);
     }
     const float hx = px + t * ux, hy = py + t * uy, hz = pz + t * uz;
     ok &= hx * hx + hy * hy <= semiSq;

@@ -194,6 +194,109 @@ bool isNativeLensText(std::string_view text, const std::filesystem::path& path) 
   return false;
 }
 
+namespace {
+
+// The field kinds' and aperture kinds' words in a .lens file.
+constexpr std::pair<FieldKind, std::string_view> kFieldKindWords[] = {
+    {FieldKind::ObjectAngleDeg, "angle_deg"},
+    {FieldKind::ObjectHeightMm, "object_height_mm"},
+    {FieldKind::ParaxialImageHeightMm, "image_height_mm"},
+    {FieldKind::RealImageHeightMm, "real_image_height_mm"},
+};
+constexpr std::pair<ApertureKind, std::string_view> kApertureKindWords[] = {
+    {ApertureKind::ImageFNumber, "f_number"},
+    {ApertureKind::EntrancePupilDiameterMm, "epd_mm"},
+    {ApertureKind::StopDiameter, "stop"},
+};
+
+// A number of a design line (finite; positive where `positive`); the column and message of a bad
+// one.
+std::optional<std::pair<int, std::string>> designNumber(const Word& word, bool positive,
+                                                        double& value) {
+  const char* end = word.text.data() + word.text.size();
+  const auto [stop, error] = std::from_chars(word.text.data(), end, value);
+  if (error != std::errc() || stop != end || !std::isfinite(value))
+    return std::pair{word.column, "'" + std::string(word.text) + "' is not a finite number"};
+  if (positive && !(value > 0.0))
+    return std::pair{word.column, "'" + std::string(word.text) + "' must be above 0"};
+  if (std::abs(value) > kMaxLengthMm)
+    return std::pair{word.column, "'" + std::string(word.text) + "' is beyond any real lens"};
+  return std::nullopt;
+}
+
+// design_wavelengths_nm W... [primary W] | design_fields KIND V... | design_aperture KIND [V]
+std::optional<std::pair<int, std::string>> readDesignLine(const std::vector<Word>& tokens,
+                                                          DesignConditions& design) {
+  const Word& key = tokens.front();
+  const int afterKey = key.column + static_cast<int>(key.text.size()) + 1;
+  if (key.text == "design_wavelengths_nm") {
+    std::optional<double> primary;
+    for (std::size_t k = 1; k < tokens.size(); ++k) {
+      if (tokens[k].text == "primary") {
+        if (k + 2 != tokens.size())
+          return std::pair{tokens[k].column, std::string("'primary' takes one wavelength, last")};
+        double value = 0.0;
+        if (auto bad = designNumber(tokens[k + 1], true, value)) return bad;
+        primary = value;
+        break;
+      }
+      double value = 0.0;
+      if (auto bad = designNumber(tokens[k], true, value)) return bad;
+      design.wavelengths.nanometres.push_back(value);
+    }
+    if (design.wavelengths.nanometres.empty())
+      return std::pair{afterKey, std::string("'design_wavelengths_nm' needs wavelengths (nm)")};
+    if (primary) {
+      const auto& list = design.wavelengths.nanometres;
+      const auto found = std::find(list.begin(), list.end(), *primary);
+      if (found == list.end())
+        return std::pair{tokens.back().column,
+                         std::string("the primary wavelength is not one of the wavelengths")};
+      design.wavelengths.primaryIndex = static_cast<int>(found - list.begin());
+    }
+    return std::nullopt;
+  }
+  if (key.text == "design_fields") {
+    const auto kind = tokens.size() < 2
+                          ? std::end(kFieldKindWords)
+                          : std::find_if(std::begin(kFieldKindWords), std::end(kFieldKindWords),
+                                         [&](const auto& w) { return w.second == tokens[1].text; });
+    if (kind == std::end(kFieldKindWords))
+      return std::pair{tokens.size() < 2 ? afterKey : tokens[1].column,
+                       std::string("expected a field kind: angle_deg, object_height_mm, "
+                                   "image_height_mm or real_image_height_mm")};
+    design.fields.kind = kind->first;
+    for (std::size_t k = 2; k < tokens.size(); ++k) {
+      double value = 0.0;
+      if (auto bad = designNumber(tokens[k], false, value)) return bad;
+      design.fields.values.push_back(value);
+    }
+    if (design.fields.values.empty())
+      return std::pair{afterKey, std::string("'design_fields' needs a kind and its values")};
+    return std::nullopt;
+  }
+  const auto kind = tokens.size() < 2
+                        ? std::end(kApertureKindWords)
+                        : std::find_if(std::begin(kApertureKindWords), std::end(kApertureKindWords),
+                                       [&](const auto& w) { return w.second == tokens[1].text; });
+  if (kind == std::end(kApertureKindWords))
+    return std::pair{tokens.size() < 2 ? afterKey : tokens[1].column,
+                     std::string("expected an aperture kind: f_number, epd_mm or stop")};
+  DesignAperture aperture{kind->first, 0.0};
+  const std::size_t wanted = kind->first == ApertureKind::StopDiameter ? 2 : 3;
+  if (tokens.size() != wanted)
+    return std::pair{tokens.size() > wanted ? tokens[wanted].column : afterKey,
+                     std::string(kind->first == ApertureKind::StopDiameter
+                                     ? "'design_aperture stop' takes no value"
+                                     : "'design_aperture' takes a kind and one value")};
+  if (wanted == 3)
+    if (auto bad = designNumber(tokens[2], true, aperture.value)) return bad;
+  design.aperture = aperture;
+  return std::nullopt;
+}
+
+}  // namespace
+
 LensFileResult parseNativeLensText(std::string_view text, const std::string& fileName) {
   LensFileResult result;
   text = withoutByteOrderMark(text);
@@ -244,8 +347,9 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
     }
 
     const bool isText = key.text == "title" || key.text == "source" || key.text == "note";
-    const bool once =
-        isText ? key.text != "note" : key.text == "published_efl_mm" || key.text == "aperture";
+    const bool once = isText ? key.text != "note"
+                             : key.text == "published_efl_mm" || key.text == "aperture" ||
+                                   key.text.starts_with("design_");
     if (once) {
       const auto [at, inserted] = onceKeys.emplace(std::string(key.text), line.lineNumber);
       if (!inserted)
@@ -282,11 +386,17 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
         return fail(line.lineNumber, problem->first, problem->second);
       continue;
     }
+    if (key.text == "design_wavelengths_nm" || key.text == "design_fields" ||
+        key.text == "design_aperture") {
+      if (const auto problem = readDesignLine(tokens, lens.design))
+        return fail(line.lineNumber, problem->first, problem->second);
+      continue;
+    }
     if (key.text != "surface" && key.text != "stop")
       return fail(line.lineNumber, key.column,
                   "unknown key '" + std::string(key.text) +
-                      "' (expected title, source, published_efl_mm, note, aperture, surface or "
-                      "stop)");
+                      "' (expected title, source, published_efl_mm, note, aperture, "
+                      "design_wavelengths_nm, design_fields, design_aperture, surface or stop)");
 
     const bool isStop = key.text == "stop";
     if (lens.prescription.surfaces.size() == kMaxLensFileSurfaces)
@@ -409,6 +519,29 @@ std::string formatNativeLensText(const LensFile& lens) {
     out += text.empty() ? "note\n" : "note " + text + "\n";
   }
   if (!p.stopShape.isCircle()) out += "aperture " + p.stopShape.spec() + "\n";
+  const DesignConditions& design = lens.design;
+  if (!design.wavelengths.empty()) {
+    out += "design_wavelengths_nm";
+    for (double nm : design.wavelengths.nanometres) out += " " + exactNumber(nm);
+    out += " primary " +
+           exactNumber(design.wavelengths.nanometres.at(static_cast<std::size_t>(
+               std::clamp(design.wavelengths.primaryIndex, 0,
+                          static_cast<int>(design.wavelengths.nanometres.size()) - 1)))) +
+           "\n";
+  }
+  if (!design.fields.empty()) {
+    for (const auto& [kind, word] : kFieldKindWords)
+      if (kind == design.fields.kind) out += "design_fields " + std::string(word);
+    for (double value : design.fields.values) out += " " + exactNumber(value);
+    out += "\n";
+  }
+  if (design.aperture) {
+    for (const auto& [kind, word] : kApertureKindWords)
+      if (kind == design.aperture->kind) out += "design_aperture " + std::string(word);
+    if (design.aperture->kind != ApertureKind::StopDiameter)
+      out += " " + exactNumber(design.aperture->value);
+    out += "\n";
+  }
   for (const Surface& s : p.surfaces) {
     if (s.isStop()) {
       out += "stop";

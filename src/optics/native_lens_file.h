@@ -1,7 +1,7 @@
 #pragma once
 // lenslab's own lens format, `.lens`: human-readable text that holds everything a lens in
 // lenslab has, which pbrt's .dat (lens_file.h) cannot: conics and aspheric terms, a title, the
-// publication a prescription comes from. docs/lens-format.md is its reference; in short:
+// publication a prescription comes from. docs/file-formats.md is its reference; in short:
 //
 //   lenslab-lens 1                                   the version line, first
 //   title Double-Gauss 50 mm f/2                     text keys take the rest of the line
@@ -9,6 +9,9 @@
 //   published_efl_mm 50.2
 //   note Stop moved 1 mm toward the front.           repeatable, in order
 //   aperture blades 6 curvature 0.5                  the stop's shape (aperture_shape.h)
+//   design_wavelengths_nm 486.13 587.56 656.27 primary 587.56   the design conditions
+//   design_fields angle_deg 0 14 20                  (design_conditions.h), each at most once
+//   design_aperture f_number 2
 //   surface radius 58.95 thickness 7.52 nd 1.67 vd 47.2 diameter 50.4
 //   stop thickness 3 diameter 30
 //   surface radius -25 thickness 3 glass N-BK7 maker SCHOTT diameter 20 conic -0.5 a4 -2.1e-06
@@ -45,7 +48,7 @@ bool isNativeLensText(std::string_view text, const std::filesystem::path& path);
 // Parses .lens text; `fileName` is used in the messages. Validated as parseLensText is.
 LensFileResult parseNativeLensText(std::string_view text, const std::string& fileName);
 // Text that parseNativeLensText reads back to an identical LensFile (prescription, title,
-// source, published focal length, notes).
+// source, published focal length, notes, design conditions).
 std::string formatNativeLensText(const LensFile& lens);
 
 }  // namespace lenslab::optics

@@ -2,6 +2,7 @@
 // One refracting surface (or the stop) placed in the lens frame, and the exact ray/surface
 // operations on it, shared by the scalar traces, the focus search and the exit-pupil table.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -55,12 +56,13 @@ inline bool intersectSurface(const SurfaceGeometry& s, const glm::dvec3& origin,
   const double q = -(b + std::copysign(std::sqrt(disc), b));
   double best = std::numeric_limits<double>::infinity();
   auto consider = [&](double t) {
-    if (t > 0.0 && t < best && 1.0 + c * (o.z + t * direction.z) > 0.0) best = t;
+    if (t >= -kTouchingSurfaceToleranceMm && t < best && 1.0 + c * (o.z + t * direction.z) > 0.0)
+      best = t;
   };
   if (q != 0.0) consider(cc / q);
   if (c != 0.0) consider(q / c);
   if (std::isinf(best)) return false;
-  tOut = best;
+  tOut = std::max(best, 0.0);
   return true;
 }
 

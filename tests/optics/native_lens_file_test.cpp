@@ -188,3 +188,51 @@ TEST(NativeLensFile, TheLoaderTellsTheFormatsApartAndTheWriterRefusesWhatDatCann
 
 }  // namespace
 }  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+const std::string kStop = "stop thickness 50 diameter 10\n";
+
+TEST(NativeLensFile, DesignConditionsReadAndReadBackExactly) {
+  const std::string text =
+      "lenslab-lens 1\n"
+      "design_wavelengths_nm 656.2725 587.5618 486.1327 primary 587.5618\n"
+      "design_fields real_image_height_mm 0 8 13.6\n"
+      "design_aperture f_number 2.1\n" +
+      kStop;
+  const LensFileResult r = parse(text);
+  ASSERT_TRUE(r.ok()) << firstError(r);
+  const DesignConditions& design = r.lens->design;
+  EXPECT_EQ(design.wavelengths.nanometres, (std::vector<double>{656.2725, 587.5618, 486.1327}));
+  EXPECT_EQ(design.wavelengths.primaryIndex, 1);
+  EXPECT_EQ(design.fields.kind, FieldKind::RealImageHeightMm);
+  EXPECT_EQ(design.fields.values, (std::vector<double>{0.0, 8.0, 13.6}));
+  ASSERT_TRUE(design.aperture);
+  EXPECT_EQ(design.aperture->kind, ApertureKind::ImageFNumber);
+  EXPECT_EQ(design.aperture->value, 2.1);
+  EXPECT_EQ(formatNativeLensText(*r.lens), text);
+
+  for (const std::string line : {"design_fields angle_deg 0 20\n", "design_aperture epd_mm 12.5\n",
+                                 "design_aperture stop\n"}) {
+    const std::string other = "lenslab-lens 1\n" + line + kStop;
+    const LensFileResult again = parse(other);
+    ASSERT_TRUE(again.ok()) << firstError(again);
+    EXPECT_EQ(formatNativeLensText(*again.lens), other);
+  }
+}
+
+TEST(NativeLensFile, RefusesMalformedDesignConditionsAtTheirColumn) {
+  expectError("lenslab-lens 1\ndesign_fields degrees 0 20\n" + kStop, 2, 15, "field kind");
+  expectError("lenslab-lens 1\ndesign_fields angle_deg 0 x\n" + kStop, 2, 27, "not a finite");
+  expectError("lenslab-lens 1\ndesign_wavelengths_nm 486 -587\n" + kStop, 2, 27, "above 0");
+  expectError("lenslab-lens 1\ndesign_wavelengths_nm 486 587 primary 550\n" + kStop, 2, 39,
+              "not one of");
+  expectError("lenslab-lens 1\ndesign_aperture f_number\n" + kStop, 2, 17, "one value");
+  expectError("lenslab-lens 1\ndesign_aperture stop 4\n" + kStop, 2, 22, "takes no value");
+  expectError("lenslab-lens 1\ndesign_aperture f_number 2\ndesign_aperture f_number 3\n" + kStop, 3,
+              1, "a second");
+}
+
+}  // namespace
+}  // namespace lenslab::optics

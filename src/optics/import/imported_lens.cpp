@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "optics/import/clear_apertures.h"
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {

@@ -1,8 +1,9 @@
 #pragma once
 // The last step every importer (.zmx, .seq, a patent's table) shares: a lens read from another
 // program's file becomes a LensFile only when lenslab can build it. Surfaces whose file gives no
-// clear aperture carry apertureDiameterMm 0 until this step; then the whole prescription is
-// validated, each problem reported at its surface's line.
+// clear aperture carry apertureDiameterMm 0 until this step, which sizes them from the design's
+// aperture and field (clear_apertures.h); then the whole prescription is validated, each problem
+// reported at its surface's line.
 
 #include <string>
 

@@ -42,8 +42,8 @@ std::size_t insertStopAtSurface(LensFile& lens, std::size_t surface, double stop
   rows.insert(rows.begin() + static_cast<std::ptrdiff_t>(stopIndex), std::move(stop));
   if (surface < lens.rowLines.size()) {
     const int line = lens.rowLines[surface];
-    lens.rowLines.insert(lens.rowLines.begin() + static_cast<std::ptrdiff_t>(
-                                                     std::min(stopIndex, lens.rowLines.size())),
+    lens.rowLines.insert(lens.rowLines.begin() +
+                             static_cast<std::ptrdiff_t>(std::min(stopIndex, lens.rowLines.size())),
                          line);
   }
   return stopIndex;

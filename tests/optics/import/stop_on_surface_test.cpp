@@ -79,3 +79,66 @@ TEST(StopOnSurface, ConcaveBackSurfaceGetsTheStopInFrontInsideTheGlass) {
 
 }  // namespace
 }  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+// Rays from the scene, parallel to the axis, at heights across the stop: every one passes the
+// stop and the surface it touches, in the scalar trace and in each batch kernel (from the film,
+// back along the same paths). Before touching surfaces counted, the axial ray met the convex
+// surface at t = 0 and was lost, and the flat carrier lost its rays to rounding.
+void expectEveryRayThroughTheStopPasses(const LensFile& lens) {
+  const BuildResult built = LensSystem::build(lens.prescription);
+  ASSERT_TRUE(built.ok()) << built.errors.front().message;
+  const LensSystem& system = *built.system;
+  const double stopRadiusMm = 0.5 * system.stopDiameterMm();
+  std::vector<LensRay> exits;
+  for (double fraction : {0.0, 0.3, 0.6, 0.9}) {
+    const LensRay in{{0.0, fraction * stopRadiusMm, system.frontVertexZ() + 10.0},
+                     {0.0, 0.0, -1.0}};
+    const std::optional<LensRay> out = system.traceFromScene(in);
+    ASSERT_TRUE(out) << "the scene ray at " << fraction << " of the stop's radius is blocked";
+    exits.push_back(*out);
+  }
+  for (LensSystem::BatchKernel kernel :
+       {LensSystem::BatchKernel::Portable, LensSystem::BatchKernel::Avx2,
+        LensSystem::BatchKernel::Avx512}) {
+    if (!LensSystem::batchKernelAvailable(kernel)) continue;
+    LensRayBatch rays;
+    rays.resize(exits.size());
+    for (std::size_t i = 0; i < exits.size(); ++i) {
+      // Back from the film along the exit ray, toward the scene.
+      const glm::dvec3 start = exits[i].origin + exits[i].direction * 20.0;
+      rays.ox[i] = static_cast<float>(start.x);
+      rays.oy[i] = static_cast<float>(start.y);
+      rays.oz[i] = static_cast<float>(start.z);
+      rays.dx[i] = static_cast<float>(-exits[i].direction.x);
+      rays.dy[i] = static_cast<float>(-exits[i].direction.y);
+      rays.dz[i] = static_cast<float>(-exits[i].direction.z);
+    }
+    system.traceFromFilmBatch(rays, kernel);
+    for (std::size_t i = 0; i < exits.size(); ++i)
+      EXPECT_EQ(rays.alive[i], 1) << "batch kernel " << static_cast<int>(kernel) << ", ray " << i;
+  }
+}
+
+TEST(StopOnSurface, RaysPassAStopTouchingAConvexSurfaceAtItsVertex) {
+  LensFile lens = singlet(40.0, -60.0);
+  insertStopAtSurface(lens, 0, 16.0);
+  expectEveryRayThroughTheStopPasses(lens);
+}
+
+TEST(StopOnSurface, RaysPassAStopOnAFlatSurface) {
+  LensFile lens = singlet(kFlatRadius, -50.0);
+  insertStopAtSurface(lens, 0, 12.0);
+  expectEveryRayThroughTheStopPasses(lens);
+}
+
+TEST(StopOnSurface, RaysPassAStopBehindASurfaceBulgingRearward) {
+  LensFile lens = singlet(60.0, -50.0);
+  insertStopAtSurface(lens, 1, 12.0);
+  expectEveryRayThroughTheStopPasses(lens);
+}
+
+}  // namespace
+}  // namespace lenslab::optics
