@@ -53,7 +53,8 @@ class PasteTable : public ::testing::Test {
 // columns, and Open opens an f/4 lens.
 constexpr const char* kTable =
     "Example 1   f = 98.2   Fno = 4.0   2\xCF\x89 = 20\n"
-    "No  Gap  Rad.  nd  \xCE\xBD" "d\n"
+    "No  Gap  Rad.  nd  \xCE\xBD"
+    "d\n"
     "1   5    50    1.5168  64.2\n"
     "2   2    -200\n"
     "3(Stop) 3 \xE2\x88\x9E\n"

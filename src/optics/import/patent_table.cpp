@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "optics/import/clear_apertures.h"
 #include "optics/import/imported_lens.h"
 #include "optics/import/patent_text.h"
 #include "optics/import/stop_on_surface.h"
@@ -409,15 +410,22 @@ void PatentReader::readColumnRows(std::size_t firstLine,
       label = patentReadLabel(cells[at].text);
       if (label.kind == PatentLabel::NotALabel) break;
     } else {
+      // No surface column: a row starts with its r, or with a stop's label (STO, S) that is
+      // then no column.
       std::string first = cells.front().text;
-      if (patentReadLabel(first).kind == PatentLabel::Image)
-        label.kind = PatentLabel::Image;
-      else if (!readWholeNumber(first) && first != "*" &&
-               !readWholeNumber(first.substr(
-                   first.front() == '*' ? 1 : 0,
-                   first.size() - (first.back() == '*' ? 1 : 0) - (first.front() == '*' ? 1 : 0))))
+      const PatentLabel::Kind kind = patentReadLabel(first).kind;
+      if (kind == PatentLabel::Image || kind == PatentLabel::Stop) {
+        label.kind = kind;
+        if (kind == PatentLabel::Stop) cells.erase(cells.begin());
+        if (cells.empty()) break;
+      } else if (!readWholeNumber(first) && first != "*" &&
+                 !readWholeNumber(first.substr(first.front() == '*' ? 1 : 0,
+                                               first.size() - (first.back() == '*' ? 1 : 0) -
+                                                   (first.front() == '*' ? 1 : 0)))) {
         break;
-      label.kind = PatentLabel::Surface;
+      } else {
+        label.kind = PatentLabel::Surface;
+      }
     }
     tableLine_[li] = true;
     if (label.kind == PatentLabel::Image) {
@@ -833,6 +841,16 @@ void PatentReader::buildLens() {
   // n_d and ν_d are d-line data, ν_d defined by F and C: the design wavelengths they imply.
   lens.design.wavelengths.nanometres = {587.5618, 486.1327, 656.2725};
   lens.design.wavelengths.primaryIndex = 0;
+  // A table gives no clear apertures: they come from the design's f-number and field
+  // (clear_apertures.h). finishImportedLens is meant to do this for every importer; doing it here
+  // keeps a table's errors at its own rows, and finishImportedLens then finds nothing to size.
+  if (needsClearApertures(lens.prescription)) {
+    const ClearApertureDerivation derived = deriveClearApertures(lens.prescription, lens.design);
+    for (const ValidationError& e : derived.errors)
+      diagnostics_.error({fileName_, lens.lineOfSurface(e.surface), 1}, e.toString());
+    for (const std::string& note : derived.notes)
+      diagnostics_.note({fileName_, lens.lineOfSurface(-1), 1}, note);
+  }
   lens_ = finishImportedLens(std::move(lens), diagnostics_, fileName_);
 }
 
