@@ -5,9 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "optics/lens_system.h"
+#include "optics/limiting_aperture.h"
 
 namespace lenslab::optics {
 namespace {
@@ -211,6 +213,8 @@ TEST(PatentTable, CanonTabsReadAsPublished) {
 struct OpenedLens {
   double eflMm = 0.0;
   double fNumber = 0.0;
+  double limitedFNumber = 0.0;  // EFL over the limited entrance pupil: what the viewer shows
+  bool stopLimits = false;
   std::size_t stopIndex = 0;
 };
 
@@ -224,7 +228,11 @@ std::optional<OpenedLens> openAsLens(const std::string& text, const std::string&
   EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().message);
   if (!built.ok()) return std::nullopt;
   const FirstOrderData& first = built.system->firstOrder();
-  return OpenedLens{first.eflMm, first.fNumber, *r.lens.lens->prescription.stopIndex()};
+  const auto limit = findParaxialAxialLimit(*built.system, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(limit);
+  if (!limit) return std::nullopt;
+  return OpenedLens{first.eflMm, first.fNumber, limit->workingFNumber, limit->isStop,
+                    *r.lens.lens->prescription.stopIndex()};
 }
 
 // The published focal lengths (the README's, in each file's header) and f-numbers, and the
@@ -246,6 +254,9 @@ TEST(PatentTableLenses, TheFourTextsOpenAtTheirPublishedFocalLengthAndFNumber) {
     ASSERT_TRUE(lens);
     EXPECT_NEAR(lens->eflMm, p.eflMm, p.eflMm * kEflTolerance);
     EXPECT_NEAR(lens->fNumber, p.fNumber, 1e-6);
+    // No other rim cuts the paraxial beam first: the f-number the viewer shows is the stated one.
+    EXPECT_NEAR(lens->limitedFNumber, p.fNumber, 1e-6);
+    EXPECT_TRUE(lens->stopLimits);
     EXPECT_EQ(lens->stopIndex, p.stopRow);
   }
 }
@@ -262,6 +273,7 @@ TEST(PatentTableLenses, CanonTextStatesNoFNumberAndIsRefusedAtItsStop) {
   ASSERT_TRUE(lens);
   EXPECT_NEAR(lens->eflMm, 49.57, 49.57 * kEflTolerance);
   EXPECT_NEAR(lens->fNumber, 1.85, 1e-6);
+  EXPECT_NEAR(lens->limitedFNumber, 1.85, 1e-6);
   EXPECT_EQ(lens->stopIndex, 5u);
 }
 
