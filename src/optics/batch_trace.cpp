@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "optics/glass.h"
+#include "optics/glass/dispersion_fit.h"
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
@@ -25,6 +26,11 @@ namespace {
 // kTouchingSurfaceToleranceMm in single precision, where a hit's z carries some 1e-5 mm of
 // rounding at a lens's distances from the film (a plane's hit takes its z exactly).
 constexpr float kTouchingSurfaceToleranceF = 1e-4f;
+
+// How a surface's ratio of indices is found: its own (the RGB trace), per ray from the model
+// glasses' n = a + b / lambda^2, or per ray from each side's series (a catalogue glass).
+constexpr int kFixedIndex = 0, kCauchyIndex = 1, kSeriesIndex = 2;
+constexpr int kSeriesTerms = KernelDispersion::kMaxDegree + 2;
 
 struct SurfaceF {
   float vertexZ, curvature, radius, semiApertureSq, eta;
@@ -36,6 +42,10 @@ struct SurfaceF {
   // scene, the surface's front and rear media swapped). `disperses` when either has b != 0.
   float aRear = 1.0f, bRear = 0.0f, aFront = 1.0f, bFront = 0.0f;
   bool disperses = false;
+  // The same for a lens with a catalogue glass: each side's series in x = 2^18 / lambda^2
+  // (glass/dispersion_fit.h), c[0..7] then the lambda^2 term; a model glass's is its Cauchy fit
+  // in that form, air's c[0] = 1.
+  float seriesRear[kSeriesTerms] = {}, seriesFront[kSeriesTerms] = {};
   // An aspheric surface (aspheric_profile.h) takes traceAspheric: 1 + k, and the terms A_i up to
   // the highest nonzero power (0: a conic without terms).
   bool aspheric = false;
@@ -81,22 +91,40 @@ __attribute__((always_inline)) inline void applyStopShape(const StopShapeTest& s
   }
 }
 
-// The ratio of indices a ray meets at a surface: the surface's own, or (kPerRay) the one at the
-// ray's wavelength, given as w = 1 / lambda^2 (nm^-2): one division per ray and surface. The
-// coefficients are passed as locals read before the loop, which GCC needs to vectorize it.
-template <bool kPerRay>
+// The ratio of indices a ray meets at a surface: the surface's own (kFixedIndex), or the one at
+// the ray's wavelength: from w = 1 / lambda^2 (nm^-2) and the model glasses' a + b w
+// (kCauchyIndex), or from w = x = 2^18 / lambda^2 and each side's series by Horner's rule, as
+// KernelDispersion::atFloat evaluates it (kSeriesIndex). One division per ray and surface (two
+// for the series). The coefficients are passed as locals, or pointers, read before the loop,
+// which GCC needs to vectorize it.
+template <int kPerRay>
 __attribute__((always_inline)) inline float etaOf(float fixedEta, float aRear, float bRear,
-                                                  float aFront, float bFront, float w) {
-  if constexpr (kPerRay) {
+                                                  float aFront, float bFront,
+                                                  const float* __restrict seriesRear,
+                                                  const float* __restrict seriesFront, float w) {
+  if constexpr (kPerRay == kSeriesIndex) {
+    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)fixedEta;
+    constexpr int top = KernelDispersion::kMaxDegree;
+    float rear = seriesRear[top], front = seriesFront[top];
+#pragma GCC unroll 8
+    for (int k = top - 1; k >= 0; --k) {
+      rear = seriesRear[k] + w * rear;
+      front = seriesFront[k] + w * front;
+    }
+    const float y = 1.0f / w;
+    return (rear + seriesRear[top + 1] * y) / (front + seriesFront[top + 1] * y);
+  } else if constexpr (kPerRay == kCauchyIndex) {
+    (void)seriesRear, (void)seriesFront, (void)fixedEta;
     return (aRear + bRear * w) / (aFront + bFront * w);
   } else {
-    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)w;
+    (void)aRear, (void)bRear, (void)aFront, (void)bFront, (void)seriesRear, (void)seriesFront;
+    (void)w;
     return fixedEta;
   }
 }
 
 // A plane z = vertexZ (the stop, flat refracting surfaces): one division, no square root.
-template <bool kRefracts, bool kPerRay = false>
+template <bool kRefracts, int kPerRay = kFixedIndex>
 __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* __restrict ox,
                                                      float* __restrict oy, float* __restrict oz,
                                                      float* __restrict dx, float* __restrict dy,
@@ -105,8 +133,11 @@ __attribute__((always_inline)) inline void traceFlat(const SurfaceF& s, float* _
                                                      const float* __restrict w = nullptr) {
   const float zv = s.vertexZ, semiSq = s.semiApertureSq, fixedEta = s.eta;
   const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
+  const float* __restrict seriesRear = s.seriesRear;
+  const float* __restrict seriesFront = s.seriesFront;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, seriesRear,
+                                     seriesFront, kPerRay ? w[i] : 0.0f);
     const float uz = dz[i];
     const float t = (zv - oz[i]) / uz;
     const float hx = ox[i] + t * dx[i], hy = oy[i] + t * dy[i];
@@ -147,7 +178,7 @@ __attribute__((always_inline)) inline int refractF(float mx, float my, float mz,
   return k >= 0.0f;
 }
 
-template <bool kRefracts, bool kPerRay = false>
+template <bool kRefracts, int kPerRay = kFixedIndex>
 __attribute__((always_inline)) inline void traceSurface(
     const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
     float* __restrict dx, float* __restrict dy, float* __restrict dz,
@@ -155,8 +186,11 @@ __attribute__((always_inline)) inline void traceSurface(
   const float c = s.curvature, radius = s.radius, zv = s.vertexZ, semiSq = s.semiApertureSq,
               fixedEta = s.eta;
   const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
+  const float* __restrict seriesRear = s.seriesRear;
+  const float* __restrict seriesFront = s.seriesFront;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, seriesRear,
+                                     seriesFront, kPerRay ? w[i] : 0.0f);
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
     const float b = c * (px * ux + py * uy + pz * uz) + uz;
@@ -202,7 +236,7 @@ constexpr int kFloatNewtonSteps = 4;
 // own highest power, in a loop that does not vectorize (terms beyond r^10, which few lenses have:
 // unrolled to r^20 as well, this file took three times as long to compile).
 constexpr int kAnyTop = -1;
-template <int kTop, bool kRefracts, bool kPerRay = false>
+template <int kTop, bool kRefracts, int kPerRay = kFixedIndex>
 __attribute__((always_inline)) inline void traceAspheric(
     const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
     float* __restrict dx, float* __restrict dy, float* __restrict dz,
@@ -210,9 +244,12 @@ __attribute__((always_inline)) inline void traceAspheric(
   const float c = s.curvature, k1 = s.conic1, zv = s.vertexZ, semiSq = s.semiApertureSq,
               fixedEta = s.eta;
   const float aRear = s.aRear, bRear = s.bRear, aFront = s.aFront, bFront = s.bFront;
+  const float* __restrict seriesRear = s.seriesRear;
+  const float* __restrict seriesFront = s.seriesFront;
   const float* __restrict coefficient = s.coefficient;
   for (std::size_t i = 0; i < n; ++i) {
-    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, kPerRay ? w[i] : 0.0f);
+    const float eta = etaOf<kPerRay>(fixedEta, aRear, bRear, aFront, bFront, seriesRear,
+                                     seriesFront, kPerRay ? w[i] : 0.0f);
     const float px = ox[i], py = oy[i], pz = oz[i] - zv;
     const float ux = dx[i], uy = dy[i], uz = dz[i];
     const float a = c * (ux * ux + uy * uy + k1 * uz * uz);
@@ -291,20 +328,23 @@ template <int kTop>
 __attribute__((always_inline)) inline void traceAsphericOf(
     const SurfaceF& s, float* __restrict ox, float* __restrict oy, float* __restrict oz,
     float* __restrict dx, float* __restrict dy, float* __restrict dz,
-    std::uint8_t* __restrict alive, std::size_t n, const float* __restrict w) {
-  if (w && s.disperses)
-    traceAspheric<kTop, true, true>(s, ox, oy, oz, dx, dy, dz, alive, n, w);
+    std::uint8_t* __restrict alive, std::size_t n, const float* __restrict w, bool series) {
+  if (w && s.disperses && series)
+    traceAspheric<kTop, true, kSeriesIndex>(s, ox, oy, oz, dx, dy, dz, alive, n, w);
+  else if (w && s.disperses)
+    traceAspheric<kTop, true, kCauchyIndex>(s, ox, oy, oz, dx, dy, dz, alive, n, w);
   else if (s.refracts)
     traceAspheric<kTop, true>(s, ox, oy, oz, dx, dy, dz, alive, n);
   else
     traceAspheric<kTop, false>(s, ox, oy, oz, dx, dy, dz, alive, n);
 }
 
-// `invWavelengthSq`: null for the surfaces' own indices (the RGB trace, unchanged), else
-// 1 / lambda^2 of each ray (the spectral trace: dispersive surfaces take their per-ray kernel).
+// `invWavelengthSq`: null for the surfaces' own indices (the RGB trace, unchanged), else each
+// ray's 1 / lambda^2 (the spectral trace: dispersive surfaces take their per-ray kernel), or, with
+// `series`, its x = 2^18 / lambda^2 for the surfaces' series.
 __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, int count,
                                                     LensRayBatch& rays,
-                                                    const float* invWavelengthSq) {
+                                                    const float* invWavelengthSq, bool series) {
   const std::size_t n = rays.size();
   // Blocks keep the working set in L1 while all surfaces are applied.
   constexpr std::size_t kBlock = 256;
@@ -322,16 +362,21 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
       const SurfaceF& s = surfaces[k];
       if (s.aspheric) {
         if (s.highestPower == 0)
-          traceAsphericOf<0>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+          traceAsphericOf<0>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series);
         else if (s.highestPower <= 10)
-          traceAsphericOf<10>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+          traceAsphericOf<10>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series);
         else
-          traceAsphericOf<kAnyTop>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+          traceAsphericOf<kAnyTop>(s, ox, oy, oz, dx, dy, dz, alive, m, w, series);
+      } else if (w && s.disperses && series) {
+        if (s.flat)
+          traceFlat<true, kSeriesIndex>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+        else
+          traceSurface<true, kSeriesIndex>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
       } else if (w && s.disperses) {
         if (s.flat)
-          traceFlat<true, true>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+          traceFlat<true, kCauchyIndex>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
         else
-          traceSurface<true, true>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
+          traceSurface<true, kCauchyIndex>(s, ox, oy, oz, dx, dy, dz, alive, m, w);
       } else if (s.flat) {
         if (s.refracts)
           traceFlat<true>(s, ox, oy, oz, dx, dy, dz, alive, m);
@@ -348,18 +393,20 @@ __attribute__((always_inline)) inline void traceAll(const SurfaceF* surfaces, in
 }
 
 __attribute__((target("avx2,fma"))) void traceAvx2(const SurfaceF* surfaces, int count,
-                                                   LensRayBatch& rays, const float* w) {
-  traceAll(surfaces, count, rays, w);
+                                                   LensRayBatch& rays, const float* w,
+                                                   bool series) {
+  traceAll(surfaces, count, rays, w, series);
 }
 
 // 16 lanes. GCC keeps 256-bit vectors for AVX-512 targets unless told otherwise.
 __attribute__((target("avx512f,avx512vl,avx512bw,avx512dq,fma,prefer-vector-width=512"))) void
-traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w) {
-  traceAll(surfaces, count, rays, w);
+traceAvx512(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w, bool series) {
+  traceAll(surfaces, count, rays, w, series);
 }
 
-void tracePortable(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w) {
-  traceAll(surfaces, count, rays, w);
+void tracePortable(const SurfaceF* surfaces, int count, LensRayBatch& rays, const float* w,
+                   bool series) {
+  traceAll(surfaces, count, rays, w, series);
 }
 
 bool cpuHasAvx512() {
@@ -424,10 +471,22 @@ void LensSystem::traceFromSceneBatch(LensRayBatch& rays, const float* wavelength
 
 void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, BatchKernel kernel,
                             bool fromFilm) const {
-  // Per-ray indices come from the model glasses' n = a + b / lambda^2 only: a catalogue glass
-  // would be approximated, silently, so the callers check spectralTraceProblem() first.
-  if (invWavelengthSq && hasCatalogGlass_)
-    throw std::logic_error("LensSystem: " + spectralTraceProblem());
+  // Per-ray indices come from the model glasses' n = a + b / lambda^2, or, with a catalogue
+  // glass, from every medium's series (glass/dispersion_fit.h), which holds to 1e-6 only where
+  // spectralTraceProblem() is empty: the callers check it first.
+  const bool series = invWavelengthSq && hasCatalogGlass_;
+  const std::vector<KernelDispersion>* media = nullptr;
+  if (series) {
+    if (const std::string problem = spectralTraceProblem(); !problem.empty())
+      throw std::logic_error("LensSystem: " + problem);
+    media = &kernelDispersions();
+    // x = 2^18 / lambda^2 = 2^18 w: exact in float, a power of two.
+    thread_local std::vector<float> x;
+    x.resize(rays.size());
+    const float scale = static_cast<float>(KernelDispersion::kReferenceWavelengthSqNm2);
+    for (std::size_t i = 0; i < rays.size(); ++i) x[i] = scale * invWavelengthSq[i];
+    invWavelengthSq = x.data();
+  }
   constexpr int kMaxOnStack = 64;
   SurfaceF stackSurfaces[kMaxOnStack];
   std::vector<SurfaceF> heapSurfaces;
@@ -475,15 +534,33 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, Ba
       f.aFront = static_cast<float>(into.a);
       f.bFront = static_cast<float>(into.bNm2);
       f.disperses = rear.bNm2 != 0.0 || front.bNm2 != 0.0;
+      if (series) {
+        const KernelDispersion air = modelGlassKernelDispersion(CauchyCoefficients{});
+        const KernelDispersion& rearSeries = (*media)[k];
+        const KernelDispersion& frontSeries = k == 0 ? air : (*media)[k - 1];
+        const KernelDispersion& fromSeries = fromFilm ? rearSeries : frontSeries;
+        const KernelDispersion& intoSeries = fromFilm ? frontSeries : rearSeries;
+        for (int term = 0; term <= KernelDispersion::kMaxDegree; ++term) {
+          f.seriesRear[term] = static_cast<float>(fromSeries.c[static_cast<std::size_t>(term)]);
+          f.seriesFront[term] = static_cast<float>(intoSeries.c[static_cast<std::size_t>(term)]);
+        }
+        f.seriesRear[kSeriesTerms - 1] = static_cast<float>(fromSeries.cLambda2);
+        f.seriesFront[kSeriesTerms - 1] = static_cast<float>(intoSeries.cLambda2);
+        auto constant = [](const KernelDispersion& d) {
+          return d.cLambda2 == 0.0 &&
+                 std::all_of(d.c.begin() + 1, d.c.end(), [](double term) { return term == 0.0; });
+        };
+        f.disperses = !constant(rearSeries) || !constant(frontSeries);
+      }
     }
   }
   if (!batchKernelAvailable(kernel) || kernel == BatchKernel::Auto) kernel = autoBatchKernel();
   if (kernel == BatchKernel::Avx512)
-    traceAvx512(list, count, rays, invWavelengthSq);
+    traceAvx512(list, count, rays, invWavelengthSq, series);
   else if (kernel == BatchKernel::Avx2)
-    traceAvx2(list, count, rays, invWavelengthSq);
+    traceAvx2(list, count, rays, invWavelengthSq, series);
   else
-    tracePortable(list, count, rays, invWavelengthSq);
+    tracePortable(list, count, rays, invWavelengthSq, series);
 }
 
 }  // namespace lenslab::optics

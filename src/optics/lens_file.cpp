@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "optics/import/patent_table.h"
+#include "optics/import/zemax_file.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
 
@@ -278,6 +279,7 @@ LensFileResult readLensFile(const std::filesystem::path& path) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxFileBytes) return fail("file is too large to be a lens file");
   }
+  if (hasZemaxExtension(path)) return parseZemaxBytes(text, name);
   if (isNativeLensText(text, path)) return parseNativeLensText(text, name);
   // A patent's numerical example saved as text (import/patent_table.h).
   if (isPatentTablePath(name)) return parsePatentTableText(text, name);

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <sstream>
 
 #include "optics/exit_pupil.h"
 #include "optics/glass.h"
+#include "optics/glass/kernel_dispersion_cache.h"
 
 namespace lenslab::optics {
 
@@ -199,16 +201,40 @@ std::optional<FirstOrderData> LensSystem::firstOrderAt(double wavelengthNm) cons
   return atWavelength->firstOrder();
 }
 
+const std::vector<KernelDispersion>& LensSystem::kernelDispersions() const {
+  std::call_once(seriesOnce_, [this] {
+    const std::vector<Surface>& rows = prescription_.surfaces;
+    seriesRear_.resize(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const std::shared_ptr<const CatalogGlass>& glass = rows[k].glass;
+      if (!glass) {
+        seriesRear_[k] = modelGlassKernelDispersion(glassRear_[k]);
+        continue;
+      }
+      const std::optional<KernelDispersion> fit = cachedKernelDispersion(glass);
+      const std::string which = "surface " + std::to_string(k + 1) + "'s glass " + glass->name +
+                                " (" + glass->maker + ")";
+      std::ostringstream problem;
+      if (!fit || fit->fromNm > kSpectralMinNm || fit->toNm < kSpectralMaxNm) {
+        problem << which << ": its formula covers " << glass->formula.minimumUm * 1000.0 << "-"
+                << glass->formula.maximumUm * 1000.0 << " nm, not all of the spectral render's "
+                << kSpectralMinNm << "-" << kSpectralMaxNm << " nm: rendering in RGB";
+      } else if (!fit->withinTolerance) {
+        problem << which << " is a measured table that no series the spectral batch trace "
+                << "evaluates follows to 1e-6 (the closest misses it by " << fit->maxErrorAbs
+                << "): rendering in RGB";
+      }
+      if (seriesProblem_.empty()) seriesProblem_ = problem.str();
+      if (fit) seriesRear_[k] = *fit;
+    }
+  });
+  return seriesRear_;
+}
+
 std::string LensSystem::spectralTraceProblem() const {
   if (!hasCatalogGlass_) return {};
-  for (std::size_t k = 0; k < prescription_.surfaces.size(); ++k) {
-    if (const auto& glass = prescription_.surfaces[k].glass) {
-      return "surface " + std::to_string(k + 1) + "'s glass " + glass->name +
-             " is a catalogue glass, which the spectral render's batch trace does not follow yet "
-             "(issue 40): rendering in RGB";
-    }
-  }
-  return {};
+  kernelDispersions();
+  return seriesProblem_;
 }
 
 template <bool kRecord>

@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "optics/glass.h"
+#include "optics/glass/dispersion_fit.h"
 #include "optics/paraxial.h"
 #include "optics/prescription.h"
 #include "optics/surface_geometry.h"
@@ -232,9 +233,11 @@ class LensSystem {
   // Empty at a wavelength where the lens cannot be built (outside a catalogue glass's range).
   std::optional<FirstOrderData> firstOrderAt(double wavelengthNm) const;
   // Why the spectral batch trace (per-ray wavelengths) cannot follow this lens, empty when it
-  // can: it evaluates model glasses' n(lambda) only, so a lens with a catalogue glass renders in
-  // RGB (render/spectral_mode.h), and traceFromFilmBatch/traceFromSceneBatch with wavelengths
-  // refuse it (std::logic_error) rather than approximate its glass.
+  // can. It evaluates a model glass's n(lambda) as the scalar traces do, and a catalogue glass's
+  // by a series fitted to its formula within 1e-6 over 380-780 nm (glass/dispersion_fit.h); a
+  // glass whose formula does not cover that range, or a tabulated one no series follows to 1e-6,
+  // makes the lens render in RGB (render/spectral_mode.h), and traceFromFilmBatch/
+  // traceFromSceneBatch with wavelengths refuse it (std::logic_error) rather than extrapolate.
   std::string spectralTraceProblem() const;
   // What stops the lens being built at a wavelength: not a positive number, or outside a
   // catalogue glass's range (an error at its row). build() and withWavelength() check it.
@@ -278,6 +281,13 @@ class LensSystem {
   std::vector<CauchyCoefficients> glassRear_;
   bool hasCatalogGlass_ = false;  // some medium is a catalogue glass (spectralTraceProblem)
   bool disperses_ = false;
+  // With a catalogue glass, the series of the medium after each surface (glass/dispersion_fit.h)
+  // that the spectral batch trace evaluates per ray, and why it cannot (a glass whose formula
+  // does not cover 380-780 nm, or whose table no series follows to 1e-6); built on first use.
+  const std::vector<KernelDispersion>& kernelDispersions() const;
+  mutable std::once_flag seriesOnce_;
+  mutable std::vector<KernelDispersion> seriesRear_;
+  mutable std::string seriesProblem_;
 
   mutable std::once_flag pupilOnce_;
   mutable std::unique_ptr<ExitPupilTable> pupil_;

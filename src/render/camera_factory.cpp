@@ -187,9 +187,10 @@ std::shared_ptr<const Camera> makeMatchingPinholeCamera(
 
 namespace {
 
-// A spectral render asked of a lens whose glass the spectral trace cannot follow yet (a catalogue
-// glass: optics::LensSystem::spectralTraceProblem) renders in RGB; the note says so, at the lens
-// file, rather than leave the user to wonder where the colour fringes went.
+// A spectral render asked of a lens whose glass the spectral trace cannot follow (a catalogue
+// glass whose formula stops short of 380-780 nm, or a measured table no series follows:
+// optics::LensSystem::spectralTraceProblem) renders in RGB; the note says so, at the lens file,
+// rather than leave the user to wonder where the colour fringes went.
 void noteRgbInsteadOfSpectral(const std::shared_ptr<const Camera>& camera,
                               const std::filesystem::path& lensPath, SpectralMode mode,
                               Diagnostics& diagnostics) {

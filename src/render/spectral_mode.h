@@ -12,8 +12,9 @@ namespace lenslab::render {
 
 enum class SpectralMode { Off, On, Auto };
 
-// A lens whose glass the spectral trace cannot follow (a catalogue glass today:
-// LensSystem::spectralTraceProblem says which) renders in RGB in every mode.
+// A lens whose glass the spectral trace cannot follow (a catalogue glass whose formula does not
+// cover 380-780 nm, or a measured table: LensSystem::spectralTraceProblem says which) renders in
+// RGB in every mode.
 inline bool rendersSpectrally(SpectralMode mode, const optics::LensSystem& lens) {
   if (!lens.spectralTraceProblem().empty()) return false;
   return mode == SpectralMode::On || (mode == SpectralMode::Auto && lens.disperses());

@@ -112,27 +112,44 @@ TEST_F(RenderCommand, LensOptionReplacesTheCamerasLens) {
   EXPECT_NE(withoutLens.err.find("nope.dat"), std::string::npos) << withoutLens.err;
 }
 
-TEST_F(RenderCommand, ASpectralRenderOfACatalogueGlassSaysItRendersInRgb) {
-  // The spectral batch trace follows model glasses only: asked for spectral, a lens naming a
-  // catalogue glass renders in RGB, and a note at the lens file says why.
-  std::ofstream(scratch / "bk7.lens") << "lenslab-lens 1\n"
-                                         "surface radius 50 thickness 5 glass N-BK7 diameter 20\n"
-                                         "surface radius -50 thickness 1 diameter 20\n"
-                                         "stop thickness 45 diameter 10\n";
-  const std::string render = "render '" + (scratch / "scene.pbrt").string() + "' --spp 1 --lens '" +
-                             (scratch / "bk7.lens").string() + "' --out '" +
-                             (scratch / "bk7.png").string() + "' --stats-json '" +
-                             (scratch / "bk7.json").string() + "' --spectral ";
-  const auto on = testing::runProcess(lenslab(render + "on"), scratch);
-  ASSERT_EQ(on.exitCode, 0) << on.err;
-  EXPECT_NE(on.err.find("bk7.lens: note: surface 1's glass N-BK7 is a catalogue glass"),
+TEST_F(RenderCommand, ACatalogueGlassRendersSpectrallyAndOneThatFallsShortSaysItRendersInRgb) {
+  // The spectral batch trace follows N-BK7 by its formula; CDGM's formulas end at 706.5 nm, so a
+  // lens of H-LAK67 asked for spectral renders in RGB, and a note at the lens file says why.
+  auto writeSinglet = [&](const std::string& name, const std::string& glass) {
+    std::ofstream(scratch / name) << "lenslab-lens 1\n"
+                                     "surface radius 50 thickness 5 glass "
+                                  << glass
+                                  << " diameter 20\n"
+                                     "surface radius -50 thickness 1 diameter 20\n"
+                                     "stop thickness 45 diameter 10\n";
+  };
+  writeSinglet("bk7.lens", "N-BK7");
+  writeSinglet("cdgm.lens", "H-LAK67 maker CDGM");
+  auto render = [&](const std::string& lens, const std::string& mode) {
+    return testing::runProcess(
+        lenslab("render '" + (scratch / "scene.pbrt").string() + "' --spp 1 --lens '" +
+                (scratch / lens).string() + "' --out '" + (scratch / "out.png").string() +
+                "' --stats-json '" + (scratch / "out.json").string() + "' --spectral " + mode),
+        scratch);
+  };
+  auto renderedSpectrally = [&] {
+    return nlohmann::json::parse(testing::readWholeFile(scratch / "out.json"))["spectral"]
+        .get<bool>();
+  };
+  const auto bk7 = render("bk7.lens", "on");
+  ASSERT_EQ(bk7.exitCode, 0) << bk7.err;
+  EXPECT_EQ(bk7.err.find("RGB"), std::string::npos) << bk7.err;
+  EXPECT_TRUE(renderedSpectrally());
+  const auto cdgm = render("cdgm.lens", "on");
+  ASSERT_EQ(cdgm.exitCode, 0) << cdgm.err;
+  EXPECT_NE(cdgm.err.find("cdgm.lens: note: surface 1's glass H-LAK67 (CDGM): its formula covers "
+                          "365-706.5 nm"),
             std::string::npos)
-      << on.err;
-  EXPECT_FALSE(
-      nlohmann::json::parse(testing::readWholeFile(scratch / "bk7.json"))["spectral"].get<bool>());
-  const auto off = testing::runProcess(lenslab(render + "off"), scratch);
+      << cdgm.err;
+  EXPECT_FALSE(renderedSpectrally());
+  const auto off = render("cdgm.lens", "off");
   ASSERT_EQ(off.exitCode, 0) << off.err;
-  EXPECT_EQ(off.err.find("catalogue glass"), std::string::npos) << off.err;  // nothing to say
+  EXPECT_EQ(off.err.find("H-LAK67"), std::string::npos) << off.err;  // nothing to say
 }
 
 TEST_F(RenderCommand, LensOptionPutsTheLensInPlaceOfAPinhole) {

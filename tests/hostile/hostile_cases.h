@@ -136,7 +136,8 @@ inline std::vector<HostileCase> buildCases(const std::filesystem::path& director
   const fs::path source = fs::path(LENSLAB_SOURCE_DIR) / "tests" / "hostile";
   for (const auto& entry : fs::directory_iterator(source)) {
     const fs::path path = entry.path();
-    if (path.extension() != ".pbrt" && path.extension() != ".dat") continue;
+    if (path.extension() != ".pbrt" && path.extension() != ".dat" && path.extension() != ".zmx")
+      continue;
     fs::copy_file(path, directory / path.filename(), fs::copy_options::overwrite_existing);
     cases.push_back(committedCase(directory / path.filename()));
   }
@@ -198,6 +199,25 @@ inline std::vector<HostileCase> buildCases(const std::filesystem::path& director
     cases.push_back({directory / name, false, std::move(expect), std::move(at), "", ""});
   };
   lens("garbage.dat", binaryGarbage(4096), "binary file", "");
+  // OpticStudio files (import/zemax_file.h): UTF-16 cut to an odd number of bytes (the error
+  // stands where the text stops: line 3, after "SUR" and half of "F"), an empty
+  // file, and 100,000 surfaces.
+  std::string utf16 = "\xFF\xFE";
+  for (const char c : std::string("SURF 0\r\n  DISZ INFINITY\r\nSURF 1\r\n")) {
+    utf16 += c;
+    utf16 += '\0';
+  }
+  utf16.resize(utf16.size() - 9);  // "SURF 1\r\n" less 4 units and a half
+  lens("utf16-odd-byte-count.zmx", utf16, "odd number of bytes", "3:4");
+  lens("empty.zmx", "", "empty file", "1:1");
+  std::string surfaces;
+  for (int i = 0; i < 100'000; ++i) {
+    surfaces += "SURF ";
+    surfaces += std::to_string(i);
+    surfaces += "\n  CURV 0.01\n  DISZ 1\n  DIAM 5\n";
+  }
+  lens("hundred-thousand-surfaces.zmx", surfaces, "too many surfaces",
+       std::to_string(258 * 4 + 1) + ":6");
   lens("ten-megabyte-line.dat", std::string(10'000'000, 'x') + "\n" + lensText,
        "(10000000 characters)", "1:1");
   lens("three-million-numbers.dat", "29.475" + threeMillion + "\n" + lensText,

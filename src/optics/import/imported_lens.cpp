@@ -12,7 +12,16 @@ LensFileResult finishImportedLens(LensFile lens, Diagnostics diagnostics,
   LensFileResult result;
   result.diagnostics = std::move(diagnostics);
   if (result.diagnostics.hasErrors()) return result;
-  // A surface the file gave no clear aperture cannot be traced: lenslab does not guess one.
+  // Surfaces the file gave no clear aperture are sized from the design's aperture and field
+  // (clear_apertures.h), as imported_lens.h says.
+  if (needsClearApertures(lens.prescription)) {
+    const ClearApertureDerivation derived = deriveClearApertures(lens.prescription, lens.design);
+    for (const ValidationError& e : derived.errors)
+      result.diagnostics.error({fileName, lens.lineOfSurface(e.surface), 1}, e.toString());
+    for (const std::string& note : derived.notes) result.diagnostics.note({fileName, 0, 0}, note);
+    if (result.diagnostics.hasErrors()) return result;
+  }
+  // A surface still without a clear aperture cannot be traced: lenslab does not guess one.
   for (std::size_t i = 0; i < lens.prescription.surfaces.size(); ++i)
     if (!(lens.prescription.surfaces[i].apertureDiameterMm > 0.0))
       result.diagnostics.error(

@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <map>
 
-#include "optics/import/clear_apertures.h"
 #include "optics/import/imported_lens.h"
 #include "optics/import/patent_text.h"
 #include "optics/import/stop_on_surface.h"
@@ -841,16 +840,8 @@ void PatentReader::buildLens() {
   // n_d and ν_d are d-line data, ν_d defined by F and C: the design wavelengths they imply.
   lens.design.wavelengths.nanometres = {587.5618, 486.1327, 656.2725};
   lens.design.wavelengths.primaryIndex = 0;
-  // A table gives no clear apertures: they come from the design's f-number and field
-  // (clear_apertures.h). finishImportedLens is meant to do this for every importer; doing it here
-  // keeps a table's errors at its own rows, and finishImportedLens then finds nothing to size.
-  if (needsClearApertures(lens.prescription)) {
-    const ClearApertureDerivation derived = deriveClearApertures(lens.prescription, lens.design);
-    for (const ValidationError& e : derived.errors)
-      diagnostics_.error({fileName_, lens.lineOfSurface(e.surface), 1}, e.toString());
-    for (const std::string& note : derived.notes)
-      diagnostics_.note({fileName_, lens.lineOfSurface(-1), 1}, note);
-  }
+  // A table gives no clear apertures: finishImportedLens derives them from the design's
+  // f-number and field (clear_apertures.h).
   lens_ = finishImportedLens(std::move(lens), diagnostics_, fileName_);
 }
 
