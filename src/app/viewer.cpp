@@ -49,7 +49,7 @@ void Viewer::handleShortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   // ImGui 1.86 indexes keys by the backend's key codes (GLFW's here).
   constexpr int kKeyF12 = GLFW_KEY_F12, kKeyQ = GLFW_KEY_Q, kKeyZ = GLFW_KEY_Z, kKeyY = GLFW_KEY_Y,
-                kKeyO = GLFW_KEY_O, kKeyS = GLFW_KEY_S;
+                kKeyO = GLFW_KEY_O, kKeyS = GLFW_KEY_S, kKeyV = GLFW_KEY_V;
   using Kind = FileRequest::Kind;
   if (ImGui::IsKeyPressed(kKeyF12, false)) state_.windowScreenshotRequested = true;
   if (io.KeyCtrl && ImGui::IsKeyPressed(kKeyQ, false)) state_.quitRequested = true;
@@ -59,6 +59,12 @@ void Viewer::handleShortcuts() {
   }
   if (io.KeyCtrl && !io.KeyShift && ImGui::IsKeyPressed(kKeyS, false)) {
     state_.fileRequests.push_back({Kind::SaveLens, {}});
+  }
+  // Edit > Paste lens table...: the clipboard's text in the paste window (outside a text field,
+  // whose Ctrl+Shift+V is its own).
+  if (io.KeyCtrl && io.KeyShift && !io.WantTextInput && ImGui::IsKeyPressed(kKeyV, false)) {
+    const char* clip = ImGui::GetClipboardText();
+    showPasteTable(state_.pasteTable, clip ? clip : "", "pasted table");
   }
   // Inside a text field, Ctrl+Z belongs to the field.
   if (io.KeyCtrl && !io.WantTextInput) {
@@ -114,6 +120,11 @@ void Viewer::drawFrame() {
   if (state_.frameStages) state_.frameStages->mark("glass_map");
   drawExportCrossSectionDialog(state_);
   state_.frameHadOverlay |= state_.showExportCrossSection;  // over the canvas, as the browser
+  drawPasteTableDialog(state_);
+  state_.frameHadOverlay |= state_.pasteTable.open;
+  if (std::exchange(state_.pasteTable.openRequested, false)) {
+    if (const auto error = openPastedTable().error) state_.log.error(*error);
+  }
   const auto [filmWidth, filmHeight] = filmSize();
   drawExportRenderDialog(state_, filmWidth, filmHeight);
   if (const auto chosen = fileBrowser_.draw(); chosen && browserPurpose_) {

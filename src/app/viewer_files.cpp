@@ -2,10 +2,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 
 #include "app/analysis/analysis_plots.h"
+#include "app/automation/script_words.h"
 #include "app/drawing/svg_export.h"
 #include "app/platform/screenshot.h"
 #include "app/platform/ui_scale.h"
@@ -181,10 +184,56 @@ std::string Viewer::saveWindowScreenshotToDefault() {
 
 ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSession,
                                         bool keepFilmDistance) {
-  optics::LoadedLens loaded = optics::loadLens(path);
+  return openLoadedLens(optics::loadLens(path), path, path, startsSession, keepFilmDistance);
+}
+
+ScriptHost::Issued Viewer::openPastedTable() {
+  PasteTableState& paste = state_.pasteTable;
+  const optics::PatentTableResult& read = pastedTableRead(paste);
+  optics::LoadedLens loaded;
+  loaded.diagnostics = read.lens.diagnostics;
+  if (read.lens.ok()) {
+    loaded.file = *read.lens.lens;
+    optics::BuildResult built = optics::LensSystem::build(loaded.file.prescription);
+    for (const optics::ValidationError& error : built.errors)
+      loaded.diagnostics.error({paste.sourceName, loaded.file.lineOfSurface(error.surface), 1},
+                               error.toString());
+    loaded.system = std::move(built.system);
+  }
+  ScriptHost::Issued issued = openLoadedLens(std::move(loaded), "", paste.sourceName, false, false);
+  if (!issued.error) paste.open = false;
+  return issued;
+}
+
+std::optional<std::string> Viewer::pasteLensTable(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot read " + path;
+  std::stringstream text;
+  text << in.rdbuf();
+  showPasteTable(state_.pasteTable, text.str(), path);
+  return std::nullopt;
+}
+
+std::optional<std::string> Viewer::setPastedColumn(int column, const std::string& meaning) {
+  PasteTableState& paste = state_.pasteTable;
+  if (!paste.open) return "the Paste lens table window is not open";
+  const std::size_t columns = pastedTableRead(paste).table.columns.size();
+  if (column < 1 || static_cast<std::size_t>(column) > columns)
+    return "the table has " + std::to_string(columns) + " columns, not " + std::to_string(column);
+  const auto m = script_words::patentColumnFromWord(meaning);
+  if (!m) return "unknown column meaning '" + meaning + "'";
+  if (paste.overrides.size() < columns) paste.overrides.resize(columns);
+  paste.overrides[static_cast<std::size_t>(column - 1)] = *m;
+  paste.read.reset();
+  return std::nullopt;
+}
+
+ScriptHost::Issued Viewer::openLoadedLens(optics::LoadedLens loaded, const std::string& path,
+                                          const std::string& name, bool startsSession,
+                                          bool keepFilmDistance) {
   if (!loaded.ok()) {
     // The current lens stays; every problem goes to the log with its file:line:column.
-    std::string message = "cannot open lens " + path + ":";
+    std::string message = "cannot open lens " + name + ":";
     for (const Diagnostic& diagnostic : loaded.diagnostics.all()) {
       message += "\n  " + diagnostic.format();
     }
@@ -207,10 +256,14 @@ ScriptHost::Issued Viewer::openLensFile(const std::string& path, bool startsSess
     lensOpenedWhileSceneLoads_ = {ticket, loaded.system, openedFilmDistanceMm,
                                   keepFilmDistance || state_.settings.keepLensFilmDistance};
   }
-  state_.log.info("Opened lens " + path);
+  state_.log.info("Opened lens " + name);
   // What the lens file could not honour (an aperture image: the stop stays a circle).
-  for (const Diagnostic& diagnostic : loaded.diagnostics.all())
-    state_.log.warning(diagnostic.format());
+  for (const Diagnostic& diagnostic : loaded.diagnostics.all()) {
+    if (diagnostic.severity == Severity::Note)
+      state_.log.info(diagnostic.format());
+    else
+      state_.log.warning(diagnostic.format());
+  }
   if (!focus.message.empty()) state_.log.info(focus.message);
   return {std::nullopt, ticket};
 }

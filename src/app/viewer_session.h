@@ -22,6 +22,7 @@
 #include "app/scene_loader.h"
 #include "app/viewer.h"
 #include "app/viewer_state.h"
+#include "optics/lens_loader.h"
 
 namespace lenslab::app {
 
@@ -46,6 +47,13 @@ class Viewer final : public ScriptHost {
   // nothing to undo.
   Issued openLensFile(const std::string& path, bool startsSession = false,
                       bool keepFilmDistance = false);
+  // Opens what the paste window read (Edit > Paste lens table...) as File > Open opens a file:
+  // focused the same way, one undo step; an unsaved lens (no path).
+  Issued openPastedTable();
+  // The common part: `loaded` is usable; `path` is empty for a lens that came from no file, and
+  // `name` is what the log calls it.
+  Issued openLoadedLens(optics::LoadedLens loaded, const std::string& path, const std::string& name,
+                        bool startsSession, bool keepFilmDistance);
 
   // ScriptHost
   Issued loadLens(const std::string& path, bool keepFilmDistance) override {
@@ -98,6 +106,9 @@ class Viewer final : public ScriptHost {
   void reportInfo(const std::string& message) override { state_.log.info(message); }
   std::optional<std::string> openDialog(const std::string& kind) override;
   std::optional<std::string> chooseInDialog(const std::string& name) override;
+  std::optional<std::string> pasteLensTable(const std::string& path) override;
+  std::optional<std::string> setPastedColumn(int column, const std::string& meaning) override;
+  Issued pressPasteTableOpen() override { return openPastedTable(); }
   std::optional<std::string> drop(const std::string& path) override {
     window_.simulateDrop({path});
     return std::nullopt;

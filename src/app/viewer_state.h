@@ -21,6 +21,7 @@
 #include "app/automation/viewer_stats.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
+#include "app/dialogs/paste_table_dialog.h"
 #include "app/document/lens_editor.h"
 #include "app/document/opening_focus.h"
 #include "app/drawing/cross_section_view.h"
@@ -233,6 +234,8 @@ struct ViewerState {
   // File > Export cross-section...: the dialog's settings, kept for the file browser's answer.
   CrossSectionExportSettings crossSectionExport;
   bool showExportCrossSection = false;
+  // Edit > Paste lens table...: the pasted text and what was understood of it.
+  PasteTableState pasteTable;
 };
 
 // The exposure the preview shows: the user's, plus the metered one when auto exposure is on.

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <utility>
 
+#include "optics/import/patent_table.h"
 #include "optics/import/zemax_file.h"
 #include "optics/import/codev_file.h"
 #include "optics/lens_system.h"
@@ -281,7 +282,10 @@ LensFileResult readLensFile(const std::filesystem::path& path) {
   }
   if (hasZemaxExtension(path)) return parseZemaxBytes(text, name);
   if (hasCodeVExtension(path)) return parseCodeVText(text, name);
-  return isNativeLensText(text, path) ? parseNativeLensText(text, name) : parseLensText(text, name);
+  if (isNativeLensText(text, path)) return parseNativeLensText(text, name);
+  // A patent's numerical example saved as text (import/patent_table.h).
+  if (isPatentTablePath(name)) return parsePatentTableText(text, name);
+  return parseLensText(text, name);
 }
 
 std::string formatLensText(const Prescription& prescription,

@@ -292,6 +292,17 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "open-dialog") return check(host.openDialog(a[0]));
   if (verb == "dialog-choose") return check(host.chooseInDialog(a[0]));
+  if (verb == "paste-lens-table") return check(host.pasteLensTable(a[0]));
+  if (verb == "paste-lens-table-column")
+    return check(host.setPastedColumn(static_cast<int>(*parseInteger(a[0])), a[1]));
+  if (verb == "paste-lens-table-open") {
+    if (!awaitedCommand_) {
+      const ScriptHost::Issued issued = host.pressPasteTableOpen();
+      if (issued.error) return check(issued.error);
+      awaitedCommand_ = issued.ticket;
+    }
+    return waitForCommand(command, host);
+  }
   if (verb == "wait-frames") {
     // Counted from this command's first frame: "wait-frames 3" lets three frames be drawn.
     return framesWaited_++ >= *parseInteger(a[0]);

@@ -37,6 +37,12 @@
 //                                save-ID-plot (ID as for export-plot); shows the file browser,
 //                                or the export window, as the menu does)
 //   dialog-choose NAME          (types NAME into the file browser and confirms)
+//   paste-lens-table FILE       (Edit > Paste lens table...: the window shows FILE's text, read as
+//                                a patent's numerical example, optics/import/patent_table.h)
+//   paste-lens-table-column N MEANING   (gives the window's column N, from 1, a meaning:
+//                                surface r d nd vd ignored, as its combo does)
+//   paste-lens-table-open       (presses the window's Open, and waits until the lens is open;
+//                                fails with the text's errors when it cannot be opened)
 //   wait-frames N               wait-spp N                  wait-until-file PATH
 //   wait-scene-load             (until the scene being loaded, say a dropped one, has opened or
 //                                failed; a failure is in the log and does not fail the script)
@@ -172,6 +178,16 @@ class ScriptHost {
   virtual std::optional<std::string> chooseInDialog(const std::string& name) {
     return "there is no dialog to choose " + name + " in";
   }
+  // Edit > Paste lens table...: shows the window with a file's text (paste-lens-table), gives a
+  // column (1-based) a meaning (paste-lens-table-column), presses Open (paste-lens-table-open).
+  virtual std::optional<std::string> pasteLensTable(const std::string& path) {
+    return "cannot paste " + path + " here";
+  }
+  virtual std::optional<std::string> setPastedColumn(int /*column*/,
+                                                     const std::string& /*meaning*/) {
+    return "there is no Paste lens table window here";
+  }
+  virtual Issued pressPasteTableOpen() { return {"there is no Paste lens table window here"}; }
   virtual std::optional<std::string> drop(const std::string& path) {
     return "cannot drop " + path + " here";
   }

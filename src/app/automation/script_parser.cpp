@@ -60,6 +60,9 @@ const std::map<std::string, VerbShape>& verbs() {
       {"drop", {1, 1}},
       {"open-dialog", {1, 1}},
       {"dialog-choose", {1, 1}},
+      {"paste-lens-table", {1, 1}},
+      {"paste-lens-table-column", {2, 2}},
+      {"paste-lens-table-open", {0, 0}},
       {"show-panel", {1, 1}},
       {"asphere-editor", {1, 1}},
       {"glass-map", {1, 3}},  // open | close | maker M on|off
@@ -335,6 +338,16 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     if (extension != ".png" && extension != ".svg") {
       return problemAt(command, 0, "'" + command.arguments[0] + "' does not end in .png or .svg");
     }
+  }
+  if (command.verb == "paste-lens-table-column") {
+    const auto column = parseInteger(command.arguments[0]);
+    if (!column || *column < 1)
+      return problemAt(command, 0,
+                       "'" + command.arguments[0] + "' is not a column number (from 1)");
+    if (!script_words::patentColumnFromWord(command.arguments[1]))
+      return problemAt(command, 1,
+                       "'" + command.arguments[1] +
+                           "' is not a column meaning (surface, r, d, nd, vd or ignored)");
   }
   if (command.verb == "open-dialog") {
     static const char* const kKinds[] = {

@@ -43,4 +43,15 @@ std::optional<double> parseProfileValue(const std::string& text) {
   return value;
 }
 
+std::optional<optics::PatentColumn> patentColumnFromWord(const std::string& word) {
+  using optics::PatentColumn;
+  if (word == "surface") return PatentColumn::Surface;
+  if (word == "r") return PatentColumn::Radius;
+  if (word == "d") return PatentColumn::Thickness;
+  if (word == "nd") return PatentColumn::IndexD;
+  if (word == "vd") return PatentColumn::AbbeD;
+  if (word == "ignored") return PatentColumn::Ignored;
+  return std::nullopt;
+}
+
 }  // namespace lenslab::app::script_words

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/document/lens_document.h"
+#include "optics/import/patent_table.h"
 
 namespace lenslab::app::script_words {
 
@@ -20,5 +21,7 @@ std::optional<long> parseInteger(const std::string& text);
 std::optional<long> asphericTermPower(const std::string& word);
 // An aspheric term's or a conic's value: a finite number (not "none": there is no "no term").
 std::optional<double> parseProfileValue(const std::string& text);
+// A column meaning of the paste window (paste-lens-table-column): surface, r, d, nd, vd, ignored.
+std::optional<optics::PatentColumn> patentColumnFromWord(const std::string& word);
 
 }  // namespace lenslab::app::script_words

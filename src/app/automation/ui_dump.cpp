@@ -48,6 +48,17 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
   if (!lens.surfaces.empty()) filmDistance = lens.surfaces.back().thicknessMm;
   if (const auto stop = lens.stopIndex()) stopDiameter = lens.surfaces[*stop].apertureDiameterMm;
   const CrossSectionView& view = state.crossSectionView;
+  // Edit > Paste lens table...: what the window read, as its rows and combos show it.
+  nlohmann::json pasteColumns = nlohmann::json::array();
+  int pasteRows = 0, pasteErrors = 0;
+  if (state.pasteTable.read) {
+    for (const optics::PatentTableColumn& c : state.pasteTable.read->table.columns)
+      pasteColumns.push_back(
+          {{"heading", c.heading}, {"meaning", optics::patentColumnLabel(c.meaning)}});
+    pasteRows = static_cast<int>(state.pasteTable.read->table.rows.size());
+    for (const Diagnostic& d : state.pasteTable.read->lens.diagnostics.all())
+      pasteErrors += d.severity == Severity::Error;
+  }
   nlohmann::json about = {
       {"lens_path", state.lens.path()},
       {"lens_modified", state.lens.modified()},
@@ -103,6 +114,12 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"running", state.exportDialog.progress.running()},
         {"spp_done", state.exportDialog.progress.sppDone()},
         {"shown_result", state.exportDialog.shownResult}}},
+      {"paste_table",
+       {{"open", state.pasteTable.open},
+        {"rows", pasteRows},
+        {"columns", pasteColumns},
+        {"errors", pasteErrors},
+        {"can_open", state.pasteTable.read && state.pasteTable.read->lens.ok()}}},
       {"cross_section_view",
        {{"pixels_per_mm", view.pixelsPerMm},
         {"centre_z_mm", view.centreZMm},

@@ -56,6 +56,12 @@ void editMenu(ViewerState& state) {
   if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, state.lens.canRedo())) {
     state.lens.issue(Redo{});
   }
+  ImGui::Separator();
+  // A patent's numerical example from the clipboard (dialogs/paste_table_dialog.h).
+  if (ImGui::MenuItem("Paste lens table...", "Ctrl+Shift+V")) {
+    const char* clip = ImGui::GetClipboardText();
+    showPasteTable(state.pasteTable, clip ? clip : "", "pasted table");
+  }
 }
 
 void lensMenu(ViewerState& state) {

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "optics/analysis/paraxial_ray.h"
 #include "optics/glass.h"
 #include "optics/paraxial.h"
 #include "optics/surface_geometry.h"
@@ -315,6 +316,15 @@ ClearApertureDerivation deriveClearApertures(Prescription& prescription,
       raise(bundleMm, rim);
     }
   }
+
+  // The paraxial marginal ray of the stated beam as well: a fast lens's real rim rays run lower
+  // than it where the lens has spherical aberration, and a rim sized to them alone would limit
+  // the paraxial beam before the stop (the lens's f-number, EFL over the limited entrance pupil,
+  // would then not be the stated one: f/1.96 for a stated f/1.85).
+  const double pupilRadiusMm = 0.5 * unitStop.entrancePupil.diameterMm * stopRadiusMm;
+  const std::vector<ParaxialRayAtSurface> marginal = traceParaxialRay(surfaces, pupilRadiusMm, 0.0);
+  for (std::size_t k = 0; k < n && k < marginal.size(); ++k)
+    axialMm[k] = std::max(axialMm[k], std::abs(marginal[k].heightMm));
 
   // The sizes for a vignetting factor v: the axial beam and the chief ray, and v of the rest of
   // the off-axis bundle.
