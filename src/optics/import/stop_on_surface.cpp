@@ -13,8 +13,12 @@ std::size_t insertStopAtSurface(LensFile& lens, std::size_t surface, double stop
   // The height where the stop's rim meets the surface; without a diameter yet, the surface's own.
   const double rimHeightMm =
       0.5 * (stopDiameterMm > 0.0 ? stopDiameterMm : carrier.apertureDiameterMm);
+  // Without any diameter yet (a table whose apertures are derived later), the side follows the
+  // sag near the vertex, (c / 2 + A2) r^2: the sign of the paraxial curvature.
   const double rimSagMm =
-      sagMm(carrier.curvaturePerMm(), carrier.profile, rimHeightMm).value_or(0.0);
+      rimHeightMm > 0.0
+          ? sagMm(carrier.curvaturePerMm(), carrier.profile, rimHeightMm).value_or(0.0)
+          : carrier.curvaturePerMm() + 2.0 * carrier.profile.coefficient(2);
 
   Surface stop;
   stop.radiusMm = 0.0;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "optics/import/imported_lens.h"
 #include "optics/lens_system.h"
 
 namespace lenslab::optics {
@@ -138,6 +139,31 @@ TEST(StopOnSurface, RaysPassAStopBehindASurfaceBulgingRearward) {
   LensFile lens = singlet(60.0, -50.0);
   insertStopAtSurface(lens, 1, 12.0);
   expectEveryRayThroughTheStopPasses(lens);
+}
+
+}  // namespace
+}  // namespace lenslab::optics
+
+namespace lenslab::optics {
+namespace {
+
+TEST(StopOnSurface, WithoutDiametersTheSideFollowsTheCurvatureAndTheDerivedLensOpens) {
+  // A table's lens: no diameters anywhere, the stop on the rear surface (R -200, whose rim bends
+  // toward the front): the stop goes behind it. Before, a height of 0 put it in front, inside the
+  // glass, where the surface crosses it, and no axial ray passed.
+  LensFile lens = singlet(50.0, -200.0);
+  for (Surface& s : lens.prescription.surfaces) s.apertureDiameterMm = 0.0;
+  EXPECT_EQ(insertStopAtSurface(lens, 1, 0.0), 2u);
+  lens.design.aperture = DesignAperture{ApertureKind::ImageFNumber, 4.0};
+  const LensFileResult finished = finishImportedLens(lens, Diagnostics{}, "table.txt");
+  ASSERT_TRUE(finished.ok()) << finished.diagnostics.formatAll();
+  const BuildResult built = LensSystem::build(finished.lens->prescription);
+  ASSERT_TRUE(built.ok());
+  EXPECT_NEAR(built.system->firstOrder().fNumber, 4.0, 1e-9);
+  // And a front surface bulging forward (R +50) takes the stop in front.
+  LensFile front = singlet(50.0, -200.0);
+  for (Surface& s : front.prescription.surfaces) s.apertureDiameterMm = 0.0;
+  EXPECT_EQ(insertStopAtSurface(front, 0, 0.0), 0u);
 }
 
 }  // namespace
