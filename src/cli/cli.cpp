@@ -12,6 +12,7 @@
 #include "cli/analyze_command.h"
 #include "cli/exit_codes.h"
 #include "cli/focus_command.h"
+#include "cli/glass_command.h"
 #include "cli/info_command.h"
 #include "cli/nearest_name.h"
 #include "cli/render_command.h"
@@ -171,6 +172,7 @@ int run(int argc, char** argv) {
   addFocusCommand(app, subcommand);
   addAnalyzeCommand(app, subcommand);
   addRenderCommand(app, subcommand);
+  addGlassCommand(app, subcommand);
   // After the subcommands: CLI11 gives a subcommand its parent's footer when it is added, and a
   // subcommand's help is no place for the viewer's.
   app.footer(
