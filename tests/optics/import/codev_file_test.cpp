@@ -720,5 +720,21 @@ TEST(CodeVSyntax, EmptyAndSurfacelessTextsAreErrors) {
   }
 }
 
+TEST(CodeVFile, TheOptilandLac9SingletGivesOpticStudiosFocalLength) {
+  // SOURCES.md: Optiland's validation singlet (optiland/optiland#710), with OpticStudio 2025 R2's
+  // figures at 587.5618 nm: EFL 101.501826, back focal point 2.255622 beyond the image surface
+  // (BFL 94.993968). The stop is on the curved rear surface; no CIR, so the apertures are derived
+  // from the EPD.
+  const LensFileResult result = parseCodeVText(
+      "TIT 'LAC9 singlet'\nRDM\nDIM M\nEPD 25\nWL 587.5618\nREF 1\nYAN 0\n"
+      "SO 0 1e13\nS 63.73364157 10 LAC9_HOYA\nS 653.2939232 92.7383463\nSTO\nSI 0 0\nGO\n",
+      "lac9.seq");
+  ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
+  const FirstOrderData first = firstOrderAt(result.lens->prescription, 587.5618);
+  EXPECT_NEAR(first.eflMm, 101.501826, 2e-6);
+  EXPECT_NEAR(first.bflMm, 94.993968, 2e-6);
+  EXPECT_NEAR(first.entrancePupil.diameterMm, 25.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace lenslab::optics
