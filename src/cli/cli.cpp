@@ -10,6 +10,7 @@
 
 #include "app/viewer.h"
 #include "cli/analyze_command.h"
+#include "cli/convert_command.h"
 #include "cli/exit_codes.h"
 #include "cli/focus_command.h"
 #include "cli/glass_command.h"
@@ -173,6 +174,7 @@ int run(int argc, char** argv) {
   addAnalyzeCommand(app, subcommand);
   addRenderCommand(app, subcommand);
   addGlassCommand(app, subcommand);
+  addConvertCommand(app, subcommand);
   // After the subcommands: CLI11 gives a subcommand its parent's footer when it is added, and a
   // subcommand's help is no place for the viewer's.
   app.footer(
