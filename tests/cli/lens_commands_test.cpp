@@ -390,9 +390,6 @@ TEST_F(LensCommands, ReadsTheCourseReferenceFiles) {
   }
 }
 
-}  // namespace
-}  // namespace lenslab
-
 // Issue 41: every command opens an OpticStudio .zmx, as the viewer's doors do (they all read
 // through optics::readLensFile). Edmund's #47728 asphere: Edmund gives EFL 22.5 mm.
 TEST_F(LensCommands, EveryCommandOpensAZmx) {
@@ -429,3 +426,6 @@ TEST_F(LensCommands, EveryCommandOpensAZmx) {
   EXPECT_TRUE(std::filesystem::exists(scratch / "a.png"));
   EXPECT_TRUE(std::filesystem::exists(scratch / "b.png"));
 }
+
+}  // namespace
+}  // namespace lenslab
