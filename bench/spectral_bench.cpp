@@ -11,6 +11,11 @@
 //   vd 0: the scene's lens as it is (no V_d: the spectral render draws wavelengths and converts
 //         colour, and traces the same rays); vd 1: the same lens with V_d 50 on every glass, so
 //         that the spectral trace runs its per-ray index kernel and the spectral exit-pupil table.
+// BM_SpectralCatalogueVsModel: the benchmark scene (scene 1 above) rendered spectrally through its
+//   double-Gauss with a SCHOTT catalogue glass in place of each model glass (the one nearest in
+//   n_d and V_d, whose formula the spectral trace follows by its fitted series), against the same
+//   lens with those glasses' n_d and V_d as model glasses; alternating, medians, and their ratio
+//   (issue 40's target: at most 1.05).
 // BM_SpectralPreviewFirstPass/spectral:<0 or 1>: the viewer's first preview pass after an edit
 //   (as BM_PreviewFirstPass: a new film distance, so a new exit-pupil table; coarse look, 1 spp
 //   at 488 x 325) for the default scene through the flint landscape lens (V_d 23.78), RGB or
@@ -25,6 +30,8 @@
 #include <vector>
 
 #include "bench_scene.h"
+#include "optics/glass/glass_catalog.h"
+#include "optics/glass/glass_catalog_loader.h"
 #include "optics/lens_loader.h"
 #include "optics/lens_system.h"
 #include "render/camera_factory.h"
@@ -115,6 +122,69 @@ void BM_SpectralVsRgb(benchmark::State& state) {
 BENCHMARK(BM_SpectralVsRgb)
     ->ArgsProduct({{0, 1}, {0, 1}})
     ->ArgNames({"scene", "vd"})
+    ->Iterations(9)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+// The lens with each glass replaced by the SCHOTT catalogue glass nearest in n_d and V_d
+// (catalogue:1), or by that glass's n_d and V_d as a model glass (catalogue:0).
+std::shared_ptr<const LensSystem> withSchottGlasses(const LensSystem& lens, bool catalogue) {
+  using lenslab::optics::CatalogGlass;
+  static const auto load =
+      lenslab::optics::loadGlassCatalog(std::string(LENSLAB_SOURCE_DIR) + "/data/glass");
+  if (!load.catalog) return nullptr;
+  lenslab::optics::Prescription p = lens.prescription();
+  for (auto& s : p.surfaces) {
+    if (!(s.mediumIndexD() > 1.0)) continue;
+    const double vd = s.abbeD.value_or(50.0);
+    const CatalogGlass* best = nullptr;
+    double bestDistance = 1e300;
+    for (const CatalogGlass& g : load.catalog->glasses()) {
+      if (g.maker != "SCHOTT" || !g.nd || !g.vd || g.formula.minimumUm > 0.38 ||
+          g.formula.maximumUm < 0.78)
+        continue;
+      const double distance = std::abs(*g.nd - s.mediumIndexD()) + std::abs(*g.vd - vd) / 100.0;
+      if (distance < bestDistance) bestDistance = distance, best = &g;
+    }
+    if (!best) return nullptr;
+    lenslab::optics::setCatalogGlass(s, std::shared_ptr<const CatalogGlass>(load.catalog, best));
+    if (!catalogue) lenslab::optics::setCatalogGlass(s, nullptr);  // keeps n_d and V_d
+  }
+  return LensSystem::build(p).system;
+}
+
+void BM_SpectralCatalogueVsModel(benchmark::State& state) {
+  const LoadedScene& loaded = scene(1);
+  if (!loaded.scene) return state.SkipWithError("cannot load the scene from ../shared");
+  const auto catalogueLens = withSchottGlasses(*loaded.lens, true);
+  const auto modelLens = withSchottGlasses(*loaded.lens, false);
+  if (!catalogueLens || !modelLens || !catalogueLens->spectralTraceProblem().empty())
+    return state.SkipWithError("cannot give the lens catalogue glasses");
+  const render::RenderJob model = job(loaded, modelLens, 256, 256, 4, true);
+  const render::RenderJob catalogue = job(loaded, catalogueLens, 256, 256, 4, true);
+  model.camera->prepare();
+  catalogue.camera->prepare();
+  std::vector<double> modelMs, catalogueMs;
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    const bool modelFirst = iteration++ % 2 == 0;
+    double a = 0, b = 0;
+    if (modelFirst) {
+      a = renderMs(model);
+      b = renderMs(catalogue);
+    } else {
+      b = renderMs(catalogue);
+      a = renderMs(model);
+    }
+    modelMs.push_back(a);
+    catalogueMs.push_back(b);
+    state.SetIterationTime((a + b) * 1e-3);
+  }
+  state.counters["model_ms"] = median(modelMs);
+  state.counters["catalogue_ms"] = median(catalogueMs);
+  state.counters["ratio"] = median(catalogueMs) / median(modelMs);
+}
+BENCHMARK(BM_SpectralCatalogueVsModel)
     ->Iterations(9)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond);

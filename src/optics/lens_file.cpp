@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "optics/import/zemax_file.h"
+#include "optics/import/codev_file.h"
 #include "optics/lens_file_formats.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
@@ -280,6 +281,7 @@ LensFileResult readLensFile(const std::filesystem::path& path) {
     if (text.size() > kMaxFileBytes) return fail("file is too large to be a lens file");
   }
   if (hasZemaxExtension(path)) return parseZemaxBytes(text, name);
+  if (hasCodeVExtension(path)) return parseCodeVText(text, name);
   return isNativeLensText(text, path) ? parseNativeLensText(text, name) : parseLensText(text, name);
 }
 

@@ -61,9 +61,10 @@ struct LensFileResult {
 // Parses lens file text; `fileName` is only used in the error messages. The prescription is
 // checked with validate() as well, so a successful result always builds a LensSystem.
 LensFileResult parseLensText(std::string_view text, const std::string& fileName);
-// Reads a lens file in any format lenslab knows: OpticStudio's .zmx by its extension, in any case
-// (import/zemax_file.h); lenslab's own .lens (native_lens_file.h), told by its version line or its
-// extension; and otherwise pbrt's .dat.
+// Reads a lens file in any format lenslab knows: OpticStudio's .zmx (import/zemax_file.h) and a
+// CODE V sequence (.seq, import/codev_file.h) by their extensions, in any case; lenslab's own
+// .lens (native_lens_file.h), told by its version line or its extension; and otherwise pbrt's
+// .dat.
 LensFileResult readLensFile(const std::filesystem::path& path);
 
 // The text without a leading UTF-8 byte-order mark (some Windows editors write one; it is not
