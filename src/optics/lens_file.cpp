@@ -10,8 +10,8 @@
 #include <sstream>
 #include <utility>
 
-#include "optics/import/zemax_file.h"
 #include "optics/import/codev_file.h"
+#include "optics/import/zemax_file.h"
 #include "optics/lens_file_formats.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
