@@ -49,6 +49,7 @@ SlideCaption crossSectionCaption(ViewerState& state) {
   if (const std::string& path = state.lens.document().path(); !path.empty()) {
     add(std::filesystem::path(path).filename().string());
   }
+  if (const std::string source = lensSource(state); !source.empty()) add(source);
   if (state.lensSystem) {
     const optics::FirstOrderData& firstOrder = state.lensSystem->firstOrder();
     // As the first-order section writes it (and the plots' exports): EFL over the paraxial beam

@@ -2,10 +2,12 @@
 
 #include <filesystem>
 #include <regex>
+#include <string_view>
 #include <vector>
 
 #include "app/analysis/lens_figures.h"
 #include "app/viewer_state.h"
+#include "optics/lens_file_formats.h"
 #include "optics/lens_loader.h"
 
 namespace lenslab::app {
@@ -27,17 +29,31 @@ std::string withoutNominalFNumber(const std::string& name) {
   return trimmed(std::regex_replace(name, kFNumber, ""));
 }
 
-std::string lensName(const ViewerState& state) {
-  // Read from the file when the document has no comments (a scene's lens is opened without).
-  std::vector<std::string> comments = state.lens.document().headerComments();
+LensDetails lensDetails(const ViewerState& state) {
+  // Read from the file when the document has none (a scene's lens is opened without them).
+  const LensDetails& details = state.lens.document().details();
   const std::string& path = state.lens.document().path();
-  if (comments.empty() && !path.empty()) comments = optics::loadLens(path).file.headerComments;
-  for (const std::string& comment : comments) {
-    if (std::string name = withoutNominalFNumber(trimmed(comment)); !name.empty()) return name;
+  if (details.empty() && !path.empty()) return detailsOf(optics::loadLens(path).file);
+  return details;
+}
+
+std::string lensName(const ViewerState& state) {
+  const LensDetails details = lensDetails(state);
+  if (std::string name = withoutNominalFNumber(trimmed(details.title)); !name.empty()) return name;
+  // A pbrt .dat has no title: its first header comment names the lens. The notes of a format
+  // with a title (a .lens, a .zmx's NOTE: often a vendor's disclaimer) are not a name.
+  const std::string& path = state.lens.document().path();
+  const optics::LensFileFormat* format = optics::lensFileFormatOf(path);
+  if (!format || std::string_view(format->extension) == ".dat") {
+    for (const std::string& comment : details.notes) {
+      if (std::string name = withoutNominalFNumber(trimmed(comment)); !name.empty()) return name;
+    }
   }
   if (!path.empty()) return std::filesystem::path(path).stem().string();
   return "Untitled lens";
 }
+
+std::string lensSource(const ViewerState& state) { return lensDetails(state).source; }
 
 std::string lensFNumberText(const ViewerState& state) {
   if (!state.lensSystem) return "";

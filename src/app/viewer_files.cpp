@@ -15,6 +15,7 @@
 #include "app/resources.h"
 #include "app/viewer_session.h"
 #include "optics/lens_file.h"
+#include "optics/lens_file_formats.h"
 #include "optics/lens_loader.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
@@ -52,19 +53,25 @@ void Viewer::askForPath(const FileRequest& request) {
   switch (request.kind) {
     case Kind::Open:
     case Kind::OpenLens:
-      fileBrowser_.show("Open lens", FileBrowser::Mode::Open, {".lens", ".dat"}, lenses);
+      // Every format lenslab reads (optics/lens_file_formats.h), as every other door.
+      fileBrowser_.show("Open lens", FileBrowser::Mode::Open, optics::lensFileExtensions(), lenses);
       fileBrowser_.addOption(kKeepFilmDistanceLabel, &state_.settings.keepLensFilmDistance,
                              kKeepFilmDistanceTooltip);
       break;
     case Kind::OpenScene:
       fileBrowser_.show("Open scene", FileBrowser::Mode::Open, {".pbrt"}, scenes);
       break;
-    case Kind::SaveLens:
+    case Kind::SaveLens: {
       // lenslab's own format holds everything (aspheric terms too); .dat only spheres and
-      // model glasses (optics::whyNotDat says what does not fit).
+      // model glasses (optics::whyNotDat says what does not fit). The name proposed is the
+      // lens's own as .lens: an imported lens (.zmx, .seq, .txt) is never written over in its
+      // foreign format (writeLensFile refuses it).
+      const std::filesystem::path opened = state_.lens.path();
+      const std::string stem = opened.empty() ? std::string("lens") : opened.stem().string();
       fileBrowser_.show("Save lens as", FileBrowser::Mode::Save, {".lens", ".dat"}, here,
-                        render::nonClobberingPath(here, "lens", ".lens").filename());
+                        render::nonClobberingPath(here, stem, ".lens").filename());
       break;
+    }
     case Kind::SaveRender:
       fileBrowser_.show("Save render as (.png or .exr)", FileBrowser::Mode::Save, {".png", ".exr"},
                         here, render::nonClobberingPath(here, "lenslab-render", ".png").filename());
@@ -240,8 +247,9 @@ ScriptHost::Issued Viewer::openLoadedLens(optics::LoadedLens loaded, const std::
     return {message};
   }
   // Focused as a camera would be, in the one command that opens it: one undo step.
-  ReplaceLens opening{std::move(loaded.file.prescription), path,
-                      std::move(loaded.file.headerComments), startsSession};
+  // With all the file says of the lens (title, notes, source, design conditions), to save back.
+  LensDetails details = detailsOf(loaded.file);
+  ReplaceLens opening{std::move(loaded.file.prescription), path, std::move(details), startsSession};
   const OpeningFocus focus = focusForOpening(
       *loaded.system, state_.sceneFocus, keepFilmDistance || state_.settings.keepLensFilmDistance);
   if (focus.filmDistanceMm) {
@@ -393,8 +401,8 @@ std::optional<std::string> Viewer::openLoadedScene(const std::string& path,
 
 std::optional<std::string> Viewer::saveLens(const std::string& path) {
   std::string error;
-  if (!optics::writeLensFile(path, state_.lens.prescription(),
-                             state_.lens.document().headerComments(), &error)) {
+  if (!optics::writeLensFile(
+          path, lensFileOf(state_.lens.prescription(), state_.lens.document().details()), &error)) {
     return error;
   }
   state_.lens.markSaved(path);

@@ -6,6 +6,7 @@
 #include "cli/number_validators.h"
 #include "cli/usage_error.h"
 #include "common/distance_text.h"
+#include "optics/lens_file_formats.h"
 
 namespace lenslab::cli {
 
@@ -50,7 +51,10 @@ std::string knownAnalysisKeys() {
 
 AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments) {
   AnalyzeOptions options;
-  analyze.add_option("LENS", arguments.lensPath, "Lens file (.lens, or pbrt's .dat)")->required();
+  analyze
+      .add_option("LENS", arguments.lensPath,
+                  "Lens file (" + optics::lensFileExtensionsText() + ")")
+      ->required();
   analyze.add_flag("--json", arguments.json, "Print JSON instead of a readable summary");
   options.filmDistance =
       analyze

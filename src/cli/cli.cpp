@@ -20,6 +20,7 @@
 #include "cli/size_argument.h"
 #include "cli/subcommand.h"
 #include "cli/usage_error.h"
+#include "optics/lens_file_formats.h"
 
 namespace lenslab::cli {
 
@@ -41,12 +42,14 @@ struct ViewerArguments {
 };
 
 void addViewerOptions(CLI::App& app, ViewerArguments& arguments) {
-  app.add_option("--lens", arguments.lensPath, "Lens file to open (.lens or .dat)")
+  app.add_option("--lens", arguments.lensPath,
+                 "Lens file to open (" + optics::lensFileExtensionsText() + ")")
       ->check(CLI::ExistingFile);
   app.add_option("--scene", arguments.scenePath, "Scene file to open (.pbrt)")
       ->check(CLI::ExistingFile);
   app.add_option("file", arguments.filePath,
-                 "Lens (.lens or .dat) or scene (.pbrt) to open, as --lens or --scene would")
+                 "Lens (" + optics::lensFileExtensionsText() +
+                     ") or scene (.pbrt) to open, as --lens or --scene would")
       ->check(CLI::ExistingFile);
   app.add_option("--screenshot", arguments.screenshotPath,
                  "Draw --frames frames, save the window as this PNG, and exit");

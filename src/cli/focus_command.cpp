@@ -13,6 +13,7 @@
 #include "cli/usage_error.h"
 #include "common/distance_text.h"
 #include "optics/focus.h"
+#include "optics/lens_file_formats.h"
 
 namespace lenslab::cli {
 
@@ -93,7 +94,10 @@ void addFocusCommand(CLI::App& app, SubcommandRunner& run) {
   auto arguments = std::make_shared<FocusArguments>();
   CLI::App* focus = app.add_subcommand(
       "focus", "Real-ray focus: the film distance for an object distance, or the reverse");
-  focus->add_option("LENS", arguments->lensPath, "Lens file (.lens, or pbrt's .dat)")->required();
+  focus
+      ->add_option("LENS", arguments->lensPath,
+                   "Lens file (" + optics::lensFileExtensionsText() + ")")
+      ->required();
   auto* object = focus->add_option("--object-distance", arguments->objectDistance,
                                    "Object distance from the film plane (mm, or 3.6 m), or 'inf'");
   auto* film = focus

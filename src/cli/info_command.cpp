@@ -16,6 +16,7 @@
 #include "optics/axial_beam_area.h"
 #include "optics/field.h"
 #include "optics/focus.h"
+#include "optics/lens_file_formats.h"
 #include "optics/limiting_aperture.h"
 #include "optics/unvignetted_field.h"
 
@@ -289,7 +290,9 @@ void printText(const optics::LoadedLens& loaded, const InfoArguments& arguments)
 void addInfoCommand(CLI::App& app, SubcommandRunner& run) {
   auto arguments = std::make_shared<InfoArguments>();
   CLI::App* info = app.add_subcommand("info", "Print a lens's first-order (paraxial) data");
-  info->add_option("LENS", arguments->lensPath, "Lens file (.lens, or pbrt's .dat)")->required();
+  info->add_option("LENS", arguments->lensPath,
+                   "Lens file (" + optics::lensFileExtensionsText() + ")")
+      ->required();
   info->add_flag("--json", arguments->json, "Print JSON instead of text");
   info->add_option("--wavelength", arguments->wavelengthNm, "Wavelength in nm (default 587.56)")
       ->check(FiniteNumberBetween(200.0, 2000.0, "nm"));

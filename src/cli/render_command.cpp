@@ -19,6 +19,7 @@
 #include "cli/number_validators.h"
 #include "cli/size_argument.h"
 #include "cli/usage_error.h"
+#include "optics/lens_file_formats.h"
 #include "render/auto_exposure.h"
 #include "render/camera_factory.h"
 #include "render/image_io.h"
@@ -132,11 +133,12 @@ std::shared_ptr<RenderArguments> registerRenderCommand(CLI::App& app) {
   command->add_option("scene", arguments->scenePath, "Scene file (.pbrt)")->required();
   command->add_option(
       "--lens", arguments->lensPath,
-      "Lens file (.lens or .dat) to render through. It replaces a realistic camera's lens "
-      "(keeping the scene's stop and focus). A perspective camera becomes a "
-      "realistic one at the same place: this lens at its own stop, focused at the "
-      "camera's \"focaldistance\" (default: infinity), with the Film's "
-      "\"diagonal\" (default 35 mm)");
+      "Lens file (" + optics::lensFileExtensionsText() +
+          ") to render through. It replaces a realistic camera's lens "
+          "(keeping the scene's stop and focus). A perspective camera becomes a "
+          "realistic one at the same place: this lens at its own stop, focused at the "
+          "camera's \"focaldistance\" (default: infinity), with the Film's "
+          "\"diagonal\" (default 35 mm)");
   command->add_option("--spp", arguments->samplesPerPixel, "Samples per pixel (default: scene's)")
       ->check(CLI::Range(1, 1 << 20));
   command->add_option("--resolution", arguments->resolution, "Image size WIDTHxHEIGHT");

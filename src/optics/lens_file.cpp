@@ -10,9 +10,10 @@
 #include <sstream>
 #include <utility>
 
+#include "optics/import/codev_file.h"
 #include "optics/import/patent_table.h"
 #include "optics/import/zemax_file.h"
-#include "optics/import/codev_file.h"
+#include "optics/lens_file_formats.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
 
@@ -325,7 +326,12 @@ std::string whyNotDat(const Prescription& prescription) {
 
 bool writeLensFile(const std::filesystem::path& path, const LensFile& lens, std::string* error) {
   std::string failure;
-  if (hasNativeLensExtension(path)) {
+  // An imported lens is never written in its foreign format (lens_file_formats.h): lenslab
+  // would write pbrt's rows into a file named .zmx, which no program reads.
+  if (const LensFileFormat* format = lensFileFormatOf(path); format && !format->writable) {
+    failure = std::string("lenslab reads ") + format->name +
+              " files but does not write them (save the lens as .lens)";
+  } else if (hasNativeLensExtension(path)) {
     failure = writeFileAtomically(path, formatNativeLensText(lens));
   } else {
     failure = whyNotDat(lens.prescription);

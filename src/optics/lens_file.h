@@ -89,8 +89,9 @@ std::string formatLensText(const Prescription& prescription,
 // naming the first surface that does not fit; empty when it can.
 std::string whyNotDat(const Prescription& prescription);
 // Writes atomically in the format the extension names: .lens (native_lens_file.h) or else .dat.
-// Returns false and sets `error` when the file cannot be written, or when .dat cannot hold the
-// lens (whyNotDat; nothing is written then).
+// Returns false and sets `error` when the file cannot be written, when .dat cannot hold the
+// lens (whyNotDat), or when the extension is a format lenslab only reads (.zmx, .seq, .txt:
+// lens_file_formats.h); nothing is written then.
 bool writeLensFile(const std::filesystem::path& path, const LensFile& lens, std::string* error);
 bool writeLensFile(const std::filesystem::path& path, const Prescription& prescription,
                    const std::vector<std::string>& headerComments, std::string* error);

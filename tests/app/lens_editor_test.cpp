@@ -16,7 +16,9 @@ optics::Prescription singlet(double frontRadiusMm = 50.0) {
 // An editor opened on `lens` the way the viewer opens its first lens: nothing to undo.
 LensEditor openedOn(const optics::Prescription& lens) {
   LensEditor editor;
-  editor.issue(ReplaceLens{lens, "singlet.dat", {"# a comment"}, /*startsSession=*/true});
+  editor.issue(ReplaceLens{lens, "singlet.dat",
+                           LensDetails{{"# a comment"}, "A singlet", "Nowhere, 1900", 50.0},
+                           /*startsSession=*/true});
   editor.applyQueued();
   return editor;
 }
@@ -95,20 +97,23 @@ TEST(LensEditor, ADragUndoesInOneStepAndItsReleaseEndsTheStep) {
 TEST(LensEditor, ALensThatStartsTheSessionIsAnUndoStepOnceTheLensWasEdited) {
   LensEditor editor = openedOn(singlet());
   EXPECT_EQ(editor.path(), "singlet.dat");
-  EXPECT_EQ(editor.document().headerComments(), std::vector<std::string>{"# a comment"});
+  EXPECT_EQ(editor.document().details().notes, std::vector<std::string>{"# a comment"});
   EXPECT_FALSE(editor.modified());
   // The scene's lens arrives after the user edited: an ordinary replacement, undone whole,
-  // header comments and path included.
+  // what the file says of the lens (notes, title, source, ...) and path included.
   editor.issue(SetSurfaceField{0, SurfaceField::RadiusMm, 60.0});
   editor.issue(ReplaceLens{singlet(70.0), "scene.dat", {}, /*startsSession=*/true});
   editor.applyQueued();
   EXPECT_DOUBLE_EQ(editor.prescription().surfaces[0].radiusMm, 70.0);
-  EXPECT_TRUE(editor.document().headerComments().empty());
+  EXPECT_TRUE(editor.document().details().empty());
   editor.issue(Undo{});
   editor.applyQueued();
   EXPECT_DOUBLE_EQ(editor.prescription().surfaces[0].radiusMm, 60.0);
   EXPECT_EQ(editor.path(), "singlet.dat");
-  EXPECT_EQ(editor.document().headerComments(), std::vector<std::string>{"# a comment"});
+  EXPECT_EQ(editor.document().details().notes, std::vector<std::string>{"# a comment"});
+  EXPECT_EQ(editor.document().details().title, "A singlet");
+  EXPECT_EQ(editor.document().details().source, "Nowhere, 1900");
+  EXPECT_EQ(editor.document().details().publishedEflMm, 50.0);
 }
 
 }  // namespace

@@ -390,5 +390,42 @@ TEST_F(LensCommands, ReadsTheCourseReferenceFiles) {
   }
 }
 
+// Issue 41: every command opens an OpticStudio .zmx, as the viewer's doors do (they all read
+// through optics::readLensFile). Edmund's #47728 asphere: Edmund gives EFL 22.5 mm.
+TEST_F(LensCommands, EveryCommandOpensAZmx) {
+  const std::string zmx =
+      std::string(LENSLAB_SOURCE_DIR) + "/../shared/reference/import/optiland/zemax/lens2.zmx";
+  ASSERT_TRUE(std::filesystem::exists(zmx)) << zmx;
+  auto result = testing::runProcess(lenslab("info --json '" + zmx + "'"), scratch);
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_NEAR(json.at("efl_mm").get<double>(), 22.5, 0.01);
+  EXPECT_EQ(json.at("title").get<std::string>(), "47728 Asphere F/1.5");
+  for (const std::string command : {"focus '" + zmx + "' --object-distance 1000",
+                                    "analyze '" + zmx + "' --only relative_illumination"}) {
+    result = testing::runProcess(lenslab(command), scratch);
+    EXPECT_EQ(result.exitCode, 0) << command << ": " << result.err;
+  }
+  // render --lens, and a scene's "string lensfile".
+  const std::string world =
+      "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
+      "Shape \"sphere\" \"float radius\" [0.5]\nWorldEnd\n";
+  writeFile("perspective.pbrt", "LookAt 0 0 4  0 0 0  0 1 0\nCamera \"perspective\"\n" + world);
+  writeFile("realistic.pbrt",
+            "LookAt 0 0 4  0 0 0  0 1 0\nCamera \"realistic\" "
+            "\"string lensfile\" \"" +
+                zmx + "\" \"float aperturediameter\" [5]\n" + world);
+  for (const std::string command :
+       {"render '" + (scratch / "perspective.pbrt").string() + "' --lens '" + zmx +
+            "' --spp 2 --resolution 24x16 --out '" + (scratch / "a.png").string() + "'",
+        "render '" + (scratch / "realistic.pbrt").string() +
+            "' --spp 2 --resolution 24x16 --out '" + (scratch / "b.png").string() + "'"}) {
+    result = testing::runProcess(lenslab(command), scratch);
+    EXPECT_EQ(result.exitCode, 0) << command << ": " << result.err;
+  }
+  EXPECT_TRUE(std::filesystem::exists(scratch / "a.png"));
+  EXPECT_TRUE(std::filesystem::exists(scratch / "b.png"));
+}
+
 }  // namespace
 }  // namespace lenslab

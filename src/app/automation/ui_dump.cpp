@@ -1,5 +1,6 @@
 #include "app/automation/ui_dump.h"
 
+#include "app/lens_caption.h"
 #include "common/atomic_file.h"
 
 #include <fstream>
@@ -61,6 +62,9 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
   }
   nlohmann::json about = {
       {"lens_path", state.lens.path()},
+      // As the Lens panel and the exports caption it (lens_caption.h).
+      {"lens_name", lensName(state)},
+      {"lens_source", lensSource(state)},
       {"lens_modified", state.lens.modified()},
       {"lens_valid", state.lensSystemIsCurrent},
       {"problems", problems},

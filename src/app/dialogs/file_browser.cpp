@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <system_error>
 #include <utility>
@@ -41,7 +42,10 @@ void FileBrowser::addOption(std::string label, bool* value, std::string tooltip)
 
 bool FileBrowser::matchesFilter(const std::filesystem::path& path) const {
   if (extensions_.empty()) return true;
-  const std::string extension = path.extension().string();
+  // In any case: "LENS2.ZMX" from a Windows disk is a .zmx.
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return std::find(extensions_.begin(), extensions_.end(), extension) != extensions_.end();
 }
 
@@ -95,7 +99,9 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
       directory_ = directoryBuffer_;
       readDirectory();
     }
-    const float footer = ImGui::GetFrameHeightWithSpacing() * (option_ ? 3.0f : 2.0f);
+    // The filter, above the name: which files the list shows.
+    const float footer = ImGui::GetFrameHeightWithSpacing() * (option_ ? 3.0f : 2.0f) +
+                         (extensions_.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing());
     ImGui::BeginChild("entries", ImVec2(0, -footer), true);
     if (!listingError_.empty()) {
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", listingError_.c_str());
@@ -117,6 +123,11 @@ std::optional<std::filesystem::path> FileBrowser::draw() {
     if (enter) {
       directory_ = *enter;
       readDirectory();
+    }
+    if (!extensions_.empty()) {
+      std::string shown = "Files:";
+      for (const std::string& extension : extensions_) shown += " *" + extension;
+      ImGui::TextDisabled("%s", shown.c_str());
     }
     ImGui::SetNextItemWidth(-px(160));
     const bool submitted = ImGui::InputText("##name", nameBuffer_, sizeof nameBuffer_,

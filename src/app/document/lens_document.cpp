@@ -61,6 +61,21 @@ std::string surfaceOutOfRange(std::size_t surface, std::size_t count) {
 
 }  // namespace
 
+LensDetails detailsOf(const optics::LensFile& file) {
+  return {file.headerComments, file.title, file.source, file.publishedEflMm, file.design};
+}
+
+optics::LensFile lensFileOf(const optics::Prescription& prescription, const LensDetails& details) {
+  optics::LensFile file;
+  file.prescription = prescription;
+  file.headerComments = details.notes;
+  file.title = details.title;
+  file.source = details.source;
+  file.publishedEflMm = details.publishedEflMm;
+  file.design = details.design;
+  return file;
+}
+
 std::optional<SurfaceField> surfaceFieldFromName(const std::string& name) {
   if (name == "radius") return SurfaceField::RadiusMm;
   if (name == "thickness") return SurfaceField::ThicknessMm;
@@ -174,14 +189,14 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
       replace != nullptr && replace->startsSession && undo_.empty() && redo_.empty()) {
     current_ = replace->prescription;
     path_ = replace->path;
-    headerComments_ = replace->headerComments;
+    details_ = replace->details;
     saved_ = current_;
     lastMergeKey_.clear();
     ++generation_;
     return std::nullopt;
   }
   optics::Prescription next = current_;
-  std::vector<std::string> nextHeaderComments = headerComments_;
+  LensDetails nextDetails = details_;
   std::string nextPath = path_;
   std::vector<optics::Surface>& surfaces = next.surfaces;
   const std::size_t count = surfaces.size();
@@ -278,7 +293,7 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
           [&](const ReplaceLens& c) {
             next = c.prescription;
             nextPath = c.path;
-            nextHeaderComments = c.headerComments;
+            nextDetails = c.details;
           },
           [](const Undo&) {},  // handled above
           [](const Redo&) {},
@@ -295,7 +310,7 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
   redo_.clear();
   current_ = std::move(next);
   path_ = std::move(nextPath);
-  headerComments_ = std::move(nextHeaderComments);
+  details_ = std::move(nextDetails);
   // A lens just opened is unmodified, and a lens of its own for the steps that follow.
   if (std::holds_alternative<ReplaceLens>(command)) {
     saved_ = current_;
@@ -308,7 +323,7 @@ std::optional<std::string> LensDocument::apply(const EditCommand& command,
 void LensDocument::restore(Snapshot&& from) {
   current_ = std::move(from.prescription);
   path_ = std::move(from.path);
-  headerComments_ = std::move(from.headerComments);
+  details_ = std::move(from.details);
   saved_ = std::move(from.saved);
   openedLens_ = from.openedLens;
   lastMergeKey_.clear();

@@ -12,9 +12,28 @@
 #include <variant>
 #include <vector>
 
+#include "optics/design_conditions.h"
+#include "optics/lens_file.h"
 #include "optics/prescription.h"
 
 namespace lenslab::app {
+
+// What a lens file says of its lens besides the prescription (optics::LensFile): kept with the
+// lens while it is edited, through undo and redo, and written back when it is saved, so that
+// saving a .lens keeps its title, source, published focal length and design conditions.
+struct LensDetails {
+  std::vector<std::string> notes;  // the file's header comments (a .lens's `note` lines)
+  std::string title;
+  std::string source;                    // the publication the prescription comes from
+  std::optional<double> publishedEflMm;  // the focal length printed there
+  optics::DesignConditions design;       // design wavelengths, fields and aperture
+  bool empty() const {
+    return notes.empty() && title.empty() && source.empty() && !publishedEflMm && design.empty();
+  }
+};
+LensDetails detailsOf(const optics::LensFile& file);
+// The file that saving writes: the prescription with the details.
+optics::LensFile lensFileOf(const optics::Prescription& prescription, const LensDetails& details);
 
 // Conic: the conic constant k of the surface's profile (optics/aspheric_profile.h; 0 a sphere).
 enum class SurfaceField { RadiusMm, ThicknessMm, IndexD, AbbeD, ApertureDiameterMm, Conic };
@@ -75,8 +94,8 @@ struct SetStopShape {
 };
 struct ReplaceLens {
   optics::Prescription prescription;
-  std::string path;                              // where it came from; empty for an unsaved lens
-  std::vector<std::string> headerComments = {};  // the file's, kept for saving
+  std::string path;          // where it came from; empty for an unsaved lens
+  LensDetails details = {};  // the file's, kept for saving
   // The lens the session starts with (the default or --lens, or the scene's): while nothing has
   // been edited it replaces the document without an undo step, so that there is nothing to undo
   // at the start. Once something has been edited it is an ordinary, undoable replacement.
@@ -101,8 +120,9 @@ class LensDocument {
 
   const optics::Prescription& prescription() const { return current_; }
   const std::string& path() const { return path_; }
-  // Comment lines of the file the lens came from, written back when it is saved.
-  const std::vector<std::string>& headerComments() const { return headerComments_; }
+  // What the file the lens came from says of it (title, notes, ...), written back when it is
+  // saved.
+  const LensDetails& details() const { return details_; }
   // Bumped by every change, undo and redo included.
   std::uint64_t generation() const { return generation_; }
 
@@ -131,7 +151,7 @@ class LensDocument {
   struct Snapshot {
     optics::Prescription prescription;
     std::string path;
-    std::vector<std::string> headerComments;
+    LensDetails details;
     // What that lens was last opened or saved as: undoing back across opening another lens
     // compares the earlier lens with its own file, not with the one opened after it.
     optics::Prescription saved;
@@ -139,7 +159,7 @@ class LensDocument {
     // the steps of the lens saved, not those of a lens opened before it.
     std::uint64_t openedLens = 0;
   };
-  Snapshot snapshot() const { return {current_, path_, headerComments_, saved_, openedLens_}; }
+  Snapshot snapshot() const { return {current_, path_, details_, saved_, openedLens_}; }
   void restore(Snapshot&& from);
   // A step is two prescriptions, the lens and what its file holds (about a kilobyte each for a
   // 13-surface lens; an image stop's mask is shared, not copied): 5,000 steps hold an
@@ -149,7 +169,7 @@ class LensDocument {
 
   optics::Prescription current_;
   std::string path_;
-  std::vector<std::string> headerComments_;
+  LensDetails details_;
   optics::Prescription saved_;      // as last opened or saved
   std::uint64_t openedLens_ = 0;    // the lens the current state belongs to
   std::uint64_t lensesOpened_ = 0;  // ReplaceLens commands applied: each opens a new lens

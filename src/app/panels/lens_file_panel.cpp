@@ -9,6 +9,7 @@
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "optics/lens_file.h"
+#include "optics/lens_file_formats.h"
 #include "optics/native_lens_file.h"
 
 namespace lenslab::app {
@@ -17,11 +18,13 @@ void drawLensFilePanel(ViewerState& state, const PanelPlace& place) {
   if (beginPanel("Lens file", place)) {
     // A dozen rows format in microseconds; only the shown tab draws, so no cache is needed.
     const std::string& path = state.lens.path();
+    // An imported lens (.zmx, .seq, .txt) saves as .lens (lens_file_formats.h).
+    const optics::LensFileFormat* format = optics::lensFileFormatOf(path);
     const bool asDat = !path.empty() && !optics::hasNativeLensExtension(path) &&
+                       (!format || format->writable) &&
                        optics::whyNotDat(state.lens.prescription()).empty();
-    optics::LensFile file;
-    file.prescription = state.lens.prescription();
-    file.headerComments = state.lens.document().headerComments();
+    const optics::LensFile file =
+        lensFileOf(state.lens.prescription(), state.lens.document().details());
     const std::string text = asDat ? optics::formatLensText(file.prescription, file.headerComments)
                                    : optics::formatNativeLensText(file);
     if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(text.c_str());

@@ -248,6 +248,14 @@ void drawLensTablePanel(ViewerState& state, const PanelPlace& place) {
   const std::string& path = state.lens.path();
   const std::string name = path.empty() ? std::string("(unsaved lens)")
                                         : std::filesystem::path(path).filename().string();
+  // The title and source the file gives (a .lens, a .zmx's NAME), above its name.
+  const LensDetails& details = state.lens.document().details();
+  if (!details.title.empty()) ImGui::TextWrapped("%s", details.title.c_str());
+  if (!details.source.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%s", details.source.c_str());
+    ImGui::PopStyleColor();
+  }
   // The file name, with "*" while the lens differs from what was opened or saved.
   const bool modified = state.lens.modified();
   ImGui::TextDisabled("%s%s", name.c_str(), modified ? "*" : "");

@@ -8,6 +8,7 @@
 #include "app/panels/panels.h"
 #include "app/platform/ui_scale.h"
 #include "app/resources.h"
+#include "optics/lens_file_formats.h"
 
 namespace lenslab::app {
 
@@ -67,8 +68,9 @@ void editMenu(ViewerState& state) {
 void lensMenu(ViewerState& state) {
   const std::filesystem::path library = findResourceDirectory("lenses");
   if (ImGui::BeginMenu("Library", !library.empty())) {
-    std::vector<std::filesystem::path> files = listFiles(library, ".lens");
-    for (const auto& file : listFiles(library, ".dat")) files.push_back(file);
+    std::vector<std::filesystem::path> files;
+    for (const std::string& extension : optics::lensFileExtensions())
+      for (const auto& file : listFiles(library, extension)) files.push_back(file);
     std::sort(files.begin(), files.end());
     for (const auto& file : files) {
       if (ImGui::MenuItem(file.stem().string().c_str())) {
