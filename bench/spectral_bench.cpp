@@ -89,6 +89,32 @@ double renderMs(const render::RenderJob& job) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// Renders A and B once per iteration, which first alternating, with their tables built before
+// timing; the medians go into the counters named, and their ratio B / A into "ratio".
+void renderAlternating(benchmark::State& state, const render::RenderJob& a,
+                       const render::RenderJob& b, const char* aName, const char* bName) {
+  a.camera->prepare();
+  b.camera->prepare();
+  std::vector<double> aMs, bMs;
+  std::int64_t iteration = 0;
+  for (auto _ : state) {
+    double aTime = 0, bTime = 0;
+    if (iteration++ % 2 == 0) {
+      aTime = renderMs(a);
+      bTime = renderMs(b);
+    } else {
+      bTime = renderMs(b);
+      aTime = renderMs(a);
+    }
+    aMs.push_back(aTime);
+    bMs.push_back(bTime);
+    state.SetIterationTime((aTime + bTime) * 1e-3);
+  }
+  state.counters[aName] = median(aMs);
+  state.counters[bName] = median(bMs);
+  state.counters["ratio"] = median(bMs) / median(aMs);
+}
+
 void BM_SpectralVsRgb(benchmark::State& state) {
   const int sceneIndex = static_cast<int>(state.range(0));
   const LoadedScene& loaded = scene(sceneIndex);
@@ -97,27 +123,7 @@ void BM_SpectralVsRgb(benchmark::State& state) {
   const int size = sceneIndex == 0 ? 300 : 256, spp = sceneIndex == 0 ? 8 : 4;
   const render::RenderJob rgb = job(loaded, lens, size, size, spp, false);
   const render::RenderJob spectral = job(loaded, lens, size, size, spp, true);
-  rgb.camera->prepare();  // tables built before timing
-  spectral.camera->prepare();
-  std::vector<double> rgbMs, spectralMs;
-  std::int64_t iteration = 0;
-  for (auto _ : state) {
-    const bool rgbFirst = iteration++ % 2 == 0;
-    double a = 0, b = 0;
-    if (rgbFirst) {
-      a = renderMs(rgb);
-      b = renderMs(spectral);
-    } else {
-      b = renderMs(spectral);
-      a = renderMs(rgb);
-    }
-    rgbMs.push_back(a);
-    spectralMs.push_back(b);
-    state.SetIterationTime((a + b) * 1e-3);
-  }
-  state.counters["rgb_ms"] = median(rgbMs);
-  state.counters["spectral_ms"] = median(spectralMs);
-  state.counters["ratio"] = median(spectralMs) / median(rgbMs);
+  renderAlternating(state, rgb, spectral, "rgb_ms", "spectral_ms");
 }
 BENCHMARK(BM_SpectralVsRgb)
     ->ArgsProduct({{0, 1}, {0, 1}})
@@ -162,27 +168,7 @@ void BM_SpectralCatalogueVsModel(benchmark::State& state) {
     return state.SkipWithError("cannot give the lens catalogue glasses");
   const render::RenderJob model = job(loaded, modelLens, 256, 256, 4, true);
   const render::RenderJob catalogue = job(loaded, catalogueLens, 256, 256, 4, true);
-  model.camera->prepare();
-  catalogue.camera->prepare();
-  std::vector<double> modelMs, catalogueMs;
-  std::int64_t iteration = 0;
-  for (auto _ : state) {
-    const bool modelFirst = iteration++ % 2 == 0;
-    double a = 0, b = 0;
-    if (modelFirst) {
-      a = renderMs(model);
-      b = renderMs(catalogue);
-    } else {
-      b = renderMs(catalogue);
-      a = renderMs(model);
-    }
-    modelMs.push_back(a);
-    catalogueMs.push_back(b);
-    state.SetIterationTime((a + b) * 1e-3);
-  }
-  state.counters["model_ms"] = median(modelMs);
-  state.counters["catalogue_ms"] = median(catalogueMs);
-  state.counters["ratio"] = median(catalogueMs) / median(modelMs);
+  renderAlternating(state, model, catalogue, "model_ms", "catalogue_ms");
 }
 BENCHMARK(BM_SpectralCatalogueVsModel)
     ->Iterations(9)
