@@ -5,6 +5,8 @@
 // lens and what a table without clear apertures derives them from (import/clear_apertures.h).
 // A .dat states none of them; every member is then empty.
 
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -14,6 +16,12 @@ struct DesignWavelengths {
   std::vector<double> nanometres;  // in the order the file lists them
   int primaryIndex = 0;            // into nanometres: the reference wavelength
   bool empty() const { return nanometres.empty(); }
+  // The reference wavelength (an index out of range taken as the nearest end); 0 when empty.
+  double primaryNm() const {
+    if (nanometres.empty()) return 0.0;
+    const int last = static_cast<int>(nanometres.size()) - 1;
+    return nanometres[static_cast<std::size_t>(std::clamp(primaryIndex, 0, last))];
+  }
 };
 
 // How a file measures its field points.

@@ -523,11 +523,7 @@ std::string formatNativeLensText(const LensFile& lens) {
   if (!design.wavelengths.empty()) {
     out += "design_wavelengths_nm";
     for (double nm : design.wavelengths.nanometres) out += " " + exactNumber(nm);
-    out += " primary " +
-           exactNumber(design.wavelengths.nanometres.at(static_cast<std::size_t>(
-               std::clamp(design.wavelengths.primaryIndex, 0,
-                          static_cast<int>(design.wavelengths.nanometres.size()) - 1)))) +
-           "\n";
+    out += " primary " + exactNumber(design.wavelengths.primaryNm()) + "\n";
   }
   if (!design.fields.empty()) {
     for (const auto& [kind, word] : kFieldKindWords)

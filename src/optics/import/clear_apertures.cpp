@@ -61,10 +61,11 @@ std::vector<SurfaceGeometry> placeForApertures(const Prescription& prescription,
 }
 
 // A ray from in front of the lens through surfaces 0..last; the height at each surface reached
-// goes into `heightsMm` (when given). False when it misses a surface or reflects totally.
+// goes into `heightsMm` (when given), and the ray leaving surface `last` into pointOut and (when
+// given) directionOut. False when it misses a surface or reflects totally.
 bool traceForApertures(const std::vector<SurfaceGeometry>& surfaces, glm::dvec3 origin,
                        glm::dvec3 direction, std::size_t last, std::vector<double>* heightsMm,
-                       glm::dvec3& pointOut) {
+                       glm::dvec3& pointOut, glm::dvec3* directionOut = nullptr) {
   for (std::size_t k = 0; k <= last; ++k) {
     const SurfaceGeometry& s = surfaces[k];
     double t = 0.0;
@@ -76,6 +77,7 @@ bool traceForApertures(const std::vector<SurfaceGeometry>& surfaces, glm::dvec3 
       return false;
   }
   pointOut = origin;
+  if (directionOut) *directionOut = direction;
   return true;
 }
 
@@ -153,17 +155,10 @@ struct ApertureAimer {
     const glm::dvec3 direction = directionAt(fieldAngleRad);
     const std::optional<glm::dvec2> start = aim(direction, {0.0, 0.0});
     if (!start) return std::nullopt;
-    glm::dvec3 d = direction;
-    glm::dvec3 origin{start->x, start->y, startZMm};
-    // Trace surface by surface to keep the final direction.
-    for (const SurfaceGeometry& s : surfaces) {
-      double t = 0.0;
-      if (!intersectSurface(s, origin, d, t)) return std::nullopt;
-      origin += t * d;
-      if (!s.isStop && s.indexFront != s.indexRear &&
-          !refract(d, surfaceNormal(s, origin), s.indexFront / s.indexRear, d))
-        return std::nullopt;
-    }
+    glm::dvec3 origin, d;
+    if (!traceForApertures(surfaces, {start->x, start->y, startZMm}, direction, surfaces.size() - 1,
+                           nullptr, origin, &d))
+      return std::nullopt;
     if (!(d.z < 0.0)) return std::nullopt;
     return std::abs(origin.y + (-origin.z / d.z) * d.y);
   }
@@ -230,12 +225,8 @@ ClearApertureDerivation deriveClearApertures(Prescription& prescription,
                              "derived"});
     return result;
   }
-  const double wavelengthNm =
-      design.wavelengths.empty()
-          ? LensSystem::kDefaultWavelengthNm
-          : design.wavelengths.nanometres.at(static_cast<std::size_t>(
-                std::clamp(design.wavelengths.primaryIndex, 0,
-                           static_cast<int>(design.wavelengths.nanometres.size()) - 1)));
+  const double wavelengthNm = design.wavelengths.empty() ? LensSystem::kDefaultWavelengthNm
+                                                         : design.wavelengths.primaryNm();
   ValidationError placeError;
   std::vector<SurfaceGeometry> surfaces = placeForApertures(prescription, wavelengthNm, placeError);
   if (surfaces.empty()) {
