@@ -139,6 +139,14 @@ std::optional<std::vector<PatentHeadingCell>> patentHeading(const FoldedLine& li
     }
     cells.push_back(h);
   }
+  // A heading written as a comment ("# surf  radius  thickness ..."): the leading `#` marks the
+  // line, and is no column when another cell names the surface column ("#" alone is one).
+  const auto namesSurface = [](const PatentHeadingCell& h) {
+    return h.meaning == PatentColumn::Surface;
+  };
+  if (cells.size() > 1 && cells.front().original == "#" &&
+      std::any_of(cells.begin() + 1, cells.end(), namesSurface))
+    cells.erase(cells.begin());
   int known = 0;
   bool radius = false, thickness = false;
   for (const PatentHeadingCell& h : cells) {
@@ -481,8 +489,13 @@ void PatentReader::readColumnRows(std::size_t firstLine,
       if (inOrder)
         for (std::size_t c = 0; c < cells.size(); ++c) columnOfCell[c] = static_cast<int>(c);
     }
+    // A note column the reader does not know may say which row is the stop ("STOP", "STO").
+    bool stopInNote = false;
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const PatentColumn m = table_.columns[static_cast<std::size_t>(columnOfCell[c])].meaning;
+      const std::string lowerCell = lowerAscii(cells[c].text);
+      if (m == PatentColumn::Ignored && (lowerCell == "stop" || lowerCell == "sto"))
+        stopInNote = true;
       if (!cells[c].text.empty())
         rowCells.byMeaning[patentMeaningIndex(m)] = cells[c];
       else if (tabs && (m == PatentColumn::Radius || m == PatentColumn::Thickness))
@@ -493,7 +506,7 @@ void PatentReader::readColumnRows(std::size_t firstLine,
     row.label = hasSurfaceColumn ? patentOriginalSpan(line, cells[tabs ? firstColumn : 0].begin,
                                                       cells[tabs ? firstColumn : 0].end)
                                  : std::to_string(previousNumber + 1);
-    row.stop = stopMark || label.kind == PatentLabel::Stop;
+    row.stop = stopMark || stopInNote || label.kind == PatentLabel::Stop;
     row.aspheric = aspheric || label.aspheric;
     row.surfaceNumber = label.number.value_or(previousNumber + 1);
     previousNumber = row.surfaceNumber;
