@@ -128,6 +128,9 @@ TEST(LibraryLenses, EveryLensOpensAndSaysWhatItIsAndWhereItComesFrom) {
       EXPECT_TRUE(file->publishedEflMm && *file->publishedEflMm > 0.0)
           << name(path) << ": no positive 'published_efl_mm'";
     }
+    EXPECT_FALSE(file->lensType.empty()) << name(path) << ": no 'type'";
+    EXPECT_TRUE(file->year && *file->year >= 1800 && *file->year <= 2100)
+        << name(path) << ": no 'year' of its source";
     EXPECT_TRUE(file->design.aperture &&
                 file->design.aperture->kind == ApertureKind::ImageFNumber &&
                 file->design.aperture->value > 0.0)
