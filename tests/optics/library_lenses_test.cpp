@@ -45,12 +45,27 @@ struct LibraryEflException {
   std::optional<double> tolerance;
   const char* reason;
 };
-const std::map<std::string, LibraryEflException> kLibraryEflExceptions = {};
+const std::map<std::string, LibraryEflException> kLibraryEflExceptions = {
+    {"cellphone-4-element-f3.5.lens",
+     {std::nullopt,
+      "US 7,535,658's focal length was not available to check against (SOURCES.md, doubt 4); "
+      "kept as the library's smartphone lens, its notes say so"}},
+};
 
 const LibraryEflException* eflException(const std::filesystem::path& path) {
   const auto found = kLibraryEflExceptions.find(path.filename().string());
   return found == kLibraryEflExceptions.end() ? nullptr : &found->second;
 }
+
+// Lenses whose clear apertures are their source's own, where a rim other than the iris cuts the
+// paraxial beam (a fast lens's real rim rays run lower, where it has spherical aberration): their
+// f-number is the real rays' working f-number, 1 / (2 n' sin u'), which `lenslab info` prints
+// beside the paraxial one. Each with the reason, printed on failure.
+const std::map<std::string, const char*> kLibraryRealRayFNumbers = {
+    {"canon-rf-50mm-f1.8.lens",
+     "the patent's effective diameters: surface 5 (semi-diameter 8.39) cuts the paraxial beam to "
+     "f/1.98, while the iris alone gives f/1.853 and the real rays pass at the patent's F1.85"},
+};
 
 std::vector<std::filesystem::path> libraryLensFiles() {
   std::vector<std::filesystem::path> files;
@@ -172,6 +187,17 @@ TEST(LibraryLenses, EveryFNumberAgreesWithTheStatedOne) {
     const auto lens = buildLibraryLens(path, *file);
     if (!lens) continue;
     const double stated = file->design.aperture->value;
+    const auto realRays = kLibraryRealRayFNumbers.find(name(path));
+    if (realRays != kLibraryRealRayFNumbers.end()) {
+      const LimitingAperture limit =
+          findLimitingAperture(*lens, std::numeric_limits<double>::infinity());
+      ASSERT_TRUE(limit.real) << name(path) << ": no axial beam passes";
+      EXPECT_LE(std::abs(limit.real->workingFNumber - stated) / stated, kLibraryFNumberTolerance)
+          << name(path) << ": working f/" << limit.real->workingFNumber
+          << " (real rays from infinity), the source states f/" << stated << "; checked by real "
+          << "rays because " << realRays->second;
+      continue;
+    }
     const double computed = infinityFNumber(*lens);
     EXPECT_LE(std::abs(computed - stated) / stated, kLibraryFNumberTolerance)
         << name(path) << ": f/" << computed << " from infinity, the source states f/" << stated;
