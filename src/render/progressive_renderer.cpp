@@ -171,7 +171,7 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
   // with a border of one pixel, added to `sums` (the tile) and to the splats (the border) when
   // the tile is done. A wavelength's up to four landing shares then go to it without a test per
   // share (a zero share adds zero), where each used to be tested for zero, for the sample's own
-  // pixel and for the tile: unpredictable branches, a fifth of the spectral tile loop (perf,
+  // pixel and for the tile: unpredictable branches, much of the spectral tile loop (perf,
   // issue 39). Only for a camera that lands wavelengths elsewhere.
   const bool landsElsewhere = spectral && camera.readsWavelengths();
   const int apronWidth = tile.x1 - tile.x0 + 2, apronHeight = tile.y1 - tile.y0 + 2;
