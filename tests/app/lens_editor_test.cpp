@@ -16,9 +16,10 @@ optics::Prescription singlet(double frontRadiusMm = 50.0) {
 // An editor opened on `lens` the way the viewer opens its first lens: nothing to undo.
 LensEditor openedOn(const optics::Prescription& lens) {
   LensEditor editor;
-  editor.issue(ReplaceLens{lens, "singlet.dat",
-                           LensDetails{{"# a comment"}, "A singlet", "Nowhere, 1900", 50.0},
-                           /*startsSession=*/true});
+  editor.issue(
+      ReplaceLens{lens, "singlet.dat",
+                  LensDetails{{"# a comment"}, "A singlet", "Nowhere, 1900", 50.0, {}, {}, {}},
+                  /*startsSession=*/true});
   editor.applyQueued();
   return editor;
 }

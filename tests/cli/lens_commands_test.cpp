@@ -401,8 +401,8 @@ TEST_F(LensCommands, EveryCommandOpensAZmx) {
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_NEAR(json.at("efl_mm").get<double>(), 22.5, 0.01);
   EXPECT_EQ(json.at("title").get<std::string>(), "47728 Asphere F/1.5");
-  for (const std::string command : {"focus '" + zmx + "' --object-distance 1000",
-                                    "analyze '" + zmx + "' --only relative_illumination"}) {
+  for (const std::string& command : {"focus '" + zmx + "' --object-distance 1000",
+                                     "analyze '" + zmx + "' --only relative_illumination"}) {
     result = testing::runProcess(lenslab(command), scratch);
     EXPECT_EQ(result.exitCode, 0) << command << ": " << result.err;
   }
@@ -415,7 +415,7 @@ TEST_F(LensCommands, EveryCommandOpensAZmx) {
             "LookAt 0 0 4  0 0 0  0 1 0\nCamera \"realistic\" "
             "\"string lensfile\" \"" +
                 zmx + "\" \"float aperturediameter\" [5]\n" + world);
-  for (const std::string command :
+  for (const std::string& command :
        {"render '" + (scratch / "perspective.pbrt").string() + "' --lens '" + zmx +
             "' --spp 2 --resolution 24x16 --out '" + (scratch / "a.png").string() + "'",
         "render '" + (scratch / "realistic.pbrt").string() +

@@ -107,16 +107,16 @@ glm::dvec3 sampledAlbedo(const Bsdf& bsdf, glm::vec3 wo) {
   return sum / double(kGrid * kGrid);
 }
 
-struct Case {
+struct ReflectanceCase {
   float roughness;
   bool remap;
   float cosThetaO;
 };
 
-class PlasticReflectance : public ::testing::TestWithParam<Case> {};
+class PlasticReflectance : public ::testing::TestWithParam<ReflectanceCase> {};
 
 TEST_P(PlasticReflectance, MatchesQuadratureOfTheBookModel) {
-  const Case c = GetParam();
+  const ReflectanceCase c = GetParam();
   // The benchmark scene's red plastic (bench-world.pbrt).
   const glm::vec3 kd(0.6f, 0.08f, 0.06f), ks(0.35f, 0.35f, 0.35f);
   TextureSet textures;
@@ -150,16 +150,17 @@ TEST_P(PlasticReflectance, MatchesQuadratureOfTheBookModel) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(BenchAndRougher, PlasticReflectance,
-                         ::testing::Values(Case{0.02f, true, 0.95f}, Case{0.02f, true, 0.7f},
-                                           Case{0.02f, true, 0.4f}, Case{0.3f, true, 0.8f},
-                                           Case{0.3f, true, 0.5f}, Case{0.4f, false, 0.6f}),
-                         [](const ::testing::TestParamInfo<Case>& param) {
-                           const Case& c = param.param;
-                           return "roughness" + std::to_string(int(c.roughness * 100 + 0.5f)) +
-                                  (c.remap ? "remapped" : "asAlpha") + "_cos" +
-                                  std::to_string(int(c.cosThetaO * 100 + 0.5f));
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    BenchAndRougher, PlasticReflectance,
+    ::testing::Values(ReflectanceCase{0.02f, true, 0.95f}, ReflectanceCase{0.02f, true, 0.7f},
+                      ReflectanceCase{0.02f, true, 0.4f}, ReflectanceCase{0.3f, true, 0.8f},
+                      ReflectanceCase{0.3f, true, 0.5f}, ReflectanceCase{0.4f, false, 0.6f}),
+    [](const ::testing::TestParamInfo<ReflectanceCase>& param) {
+      const ReflectanceCase& c = param.param;
+      return "roughness" + std::to_string(int(c.roughness * 100 + 0.5f)) +
+             (c.remap ? "remapped" : "asAlpha") + "_cos" +
+             std::to_string(int(c.cosThetaO * 100 + 0.5f));
+    });
 
 // The Fresnel term alone: at normal incidence both orders of the indices give
 // ((1.5 - 1) / (1.5 + 1))^2 = 0.04, and beyond the critical angle asin(1 / 1.5) = 41.8 degrees
