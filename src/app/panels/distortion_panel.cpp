@@ -50,12 +50,19 @@ std::optional<PlotSpec> distortionGridCurrentPlot(ViewerState& state, std::strin
   return spec;
 }
 
+PlotSpec referenceFieldCurvesPlot(const ReferenceAnalyses& reference) {
+  PlotSpec spec = fieldCurvesPlot(reference.distortion);
+  // Its Petzval surface and film would double the plot's guides.
+  std::erase_if(spec.series,
+                [](const PlotSeries& s) { return s.name != "tangential" && s.name != "sagittal"; });
+  return spec;
+}
+
 std::optional<PlotSpec> fieldCurvesCurrentPlot(ViewerState& state, std::string* whyNot) {
   const auto result = currentResult(state, whyNot);
   if (!result) return std::nullopt;
   PlotSpec spec = fieldCurvesPlot(*result);
-  addPinnedReference(state, spec,
-                     [](const ReferenceAnalyses& r) { return fieldCurvesPlot(r.distortion); });
+  addPinnedReference(state, spec, referenceFieldCurvesPlot);
   return spec;
 }
 

@@ -33,8 +33,7 @@ void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place) {
     }
     if (result) {
       PlotSpec spec = fieldCurvesPlot(*result);
-      addPinnedReference(state, spec,
-                         [](const ReferenceAnalyses& r) { return fieldCurvesPlot(r.distortion); });
+      addPinnedReference(state, spec, referenceFieldCurvesPlot);
       ImGui::TextDisabled("%s", spec.note.c_str());
       drawAnalysisConditions(state, "field-curves", *result->request.lens, result->setup);
       spec.title.clear();
