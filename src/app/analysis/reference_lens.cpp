@@ -231,7 +231,12 @@ void addReference(PlotSpec& spec, const PlotSpec& reference, const std::string& 
     copy.rgba = referenceRgba(series.rgba);
     copy.dashed = !series.points;
     copy.inLegend = false;
-    spec.series.push_back(std::move(copy));
+    // A spot's rays under the lens's (drawn first), whose spot is the one being edited; curves
+    // over them.
+    if (copy.points)
+      spec.series.insert(spec.series.begin(), std::move(copy));
+    else
+      spec.series.push_back(std::move(copy));
     ++added;
   }
   if (added == 0) {
@@ -283,10 +288,10 @@ void addPinnedReference(
     else
       addReferenceNote(figure.plots[i], title, whyNot.empty() ? "no such field" : whyNot);
     if (i < figure.captions.size()) {
-      // "RMS 12.3 um  GEO 40.1 um  ref: RMS 11.1 GEO 29.8": the reference's figures without
-      // their units, so that the line fits under a plot a third of the window wide.
+      // "RMS 12.3 um  GEO 40.1 um  ref: RMS 11.1": the reference's RMS alone, so that the line
+      // fits under a plot a third of a slide wide (or why it has no spot).
       std::string theirs = i < reference.captions.size() ? reference.captions[i] : "";
-      for (std::size_t at; (at = theirs.find(" um")) != std::string::npos;) theirs.erase(at, 3);
+      if (theirs.rfind("RMS ", 0) == 0) theirs = theirs.substr(0, theirs.find(" um"));
       figure.captions[i] += "  ref: " + (theirs.empty() ? std::string("none") : theirs);
     }
   }
