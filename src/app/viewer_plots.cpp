@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "app/analysis/analysis_plots.h"
+#include "app/analysis/reference_lens.h"
 #include "app/lens_caption.h"
 #include "app/panels/panel_registry.h"
 #include "app/plot/plot_csv.h"
@@ -30,6 +31,11 @@ ScriptHost::PlotExport Viewer::exportPlot(const std::string& plotId, const std::
   if (!whyNot.empty())
     return {true, "cannot save the " + std::string(source->title) + " plot: " + whyNot};
   if (!spec) return {false, std::nullopt};
+  // With a reference pinned, the export waits for its curves too (the plot says "computing..."
+  // until then).
+  bool referenceComputing = false;
+  referenceAnalyses(state_, &referenceComputing);
+  if (referenceComputing) return {false, std::nullopt};
   const std::string extension = std::filesystem::path(path).extension().string();
   std::string error;
   if (extension == ".svg" || extension == ".png") {
@@ -74,7 +80,7 @@ bool Viewer::analysesSettled() const {
   // Every analysis panel that asked for this lens.
   for (const AnalysisPlotSource& plot : analysisPlots())
     if (!plot.settled(state_)) return false;
-  return true;
+  return referenceSettled(state_);
 }
 
 }  // namespace lenslab::app

@@ -118,6 +118,12 @@ class Viewer final : public ScriptHost {
   std::optional<std::string> showPanel(const std::string& id) override;
   std::optional<std::string> showAsphereEditor(std::optional<std::size_t> surface) override;
   std::optional<std::string> showGlassMap(bool open) override;
+  std::optional<std::string> pinReference() override { return app::pinReference(state_); }
+  std::optional<std::string> unpinReference() override {
+    if (!state_.reference) return "no reference is pinned";
+    app::unpinReference(state_);
+    return std::nullopt;
+  }
   std::optional<std::string> showGlassMaker(const std::string& maker, bool shown) override;
   void showBlockedRays(bool show) override { state_.fanSettings.showBlocked = show; }
   void setColourFans(bool on) override { state_.fanSettings.colourFans = on; }

@@ -18,6 +18,7 @@
 #include "app/analysis/measured_falloff.h"
 #include "app/analysis/mtf_analysis.h"
 #include "app/analysis/ray_analysis.h"
+#include "app/analysis/reference_lens.h"
 #include "app/automation/viewer_stats.h"
 #include "app/cross_section_export.h"
 #include "app/dialogs/export_render_dialog.h"
@@ -219,6 +220,9 @@ struct ViewerState {
   // The Distortion and Field curves panels' results (one worker for both) and choices.
   DistortionView distortion;
   MtfView mtf;  // the MTF panel's worker (analysis/mtf_analysis.h)
+  // The lens pinned as the reference (Lens > Pin as reference): drawn beside the current lens in
+  // every analysis plot, the cross-section and the first-order data; none until pinned.
+  std::optional<ReferenceLens> reference;
   // The scene's camera samples the rear element's disk, as the course's scenes do
   // (render::LensSampling::RearElementDisk): the illumination plot shows what that integrates.
   bool sceneSamplesRearDisk = false;

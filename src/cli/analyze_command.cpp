@@ -52,20 +52,29 @@ bool objectInFocus(const Focus& focus, const optics::LensSystem& lens,
   return film.ok() && std::abs(*film.valueMm - lens.filmDistanceMm()) <= 1e-3;
 }
 
-int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
-  const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, objectGiven);
-  if (!request) return kUsageError;
-  const std::vector<const AnalysisReport*>& reports = request->reports;
-  const std::optional<double>& objectDistanceMm = request->objectDistanceMm;
-  auto lens = loadLensOrReport(arguments.lensPath, "analyze", arguments.wavelengthNm);
-  if (!lens) return 1;
+// One lens's analyses: the JSON and the text `analyze` prints for it alone.
+struct LensAnalysis {
+  nlohmann::json json;
+  std::string text;
+  bool complete = true;  // every report ran (none unavailable)
+};
+
+// The analyses of the lens at `lensPath` with the options' settings; nullopt once the reason it
+// cannot be analysed at all (unreadable, cannot be focused) has been printed.
+std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
+                                        const AnalyzeArguments& arguments,
+                                        const AnalyzeRequest& request, bool filmGiven) {
+  const std::vector<const AnalysisReport*>& reports = request.reports;
+  const std::optional<double>& objectDistanceMm = request.objectDistanceMm;
+  auto lens = loadLensOrReport(lensPath, "analyze", arguments.wavelengthNm);
+  if (!lens) return std::nullopt;
   if (arguments.stopDiameterMm > 0.0) {
     // Before focusing: the focus of a real lens moves as it is stopped down.
     lens = lens->withStopDiameter(arguments.stopDiameterMm);
     if (!lens) {
       std::cerr << "lenslab analyze: --stop-diameter " << arguments.stopDiameterMm
                 << " mm is beyond what a lens may have\n";
-      return 1;
+      return std::nullopt;
     }
   }
   // Where the lens is focused: at the object (infinity unless --object-distance says otherwise)
@@ -78,7 +87,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
     if (!lens) {
       std::cerr << "lenslab analyze: --film-distance " << arguments.filmDistanceMm
                 << " mm is beyond what a lens may have\n";
-      return 1;
+      return std::nullopt;
     }
     const optics::FocusResult object =
         optics::objectDistanceForFilmDistance(*lens, lens->filmDistanceMm());
@@ -89,20 +98,21 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
     const double focusAtMm = objectDistanceMm.value_or(std::numeric_limits<double>::infinity());
     const optics::FocusResult film = optics::filmDistanceForObjectDistance(*lens, focusAtMm);
     if (!film.ok()) {
-      std::cerr << "lenslab analyze: cannot focus "
+      // Named by its file: with --compare, either lens may be the one that cannot.
+      std::cerr << "lenslab analyze: " << lensPath << ": cannot focus "
                 << (objectDistanceMm ? "at " + distanceText(*objectDistanceMm)
                                      : std::string("at infinity (the default object distance)"))
                 << ": " << film.whyNot
                 << "\n(give --film-distance MM to analyse the lens with the film there)\n";
-      return 1;
+      return std::nullopt;
     }
     lens = lens->withFilmDistance(*film.valueMm);
-    if (!lens) return 1;
+    if (!lens) return std::nullopt;
     focus.objectDistanceMm = focusAtMm;
   }
 
   AnalyzeContext context;
-  context.lensPath = arguments.lensPath;
+  context.lensPath = lensPath;
   context.lens = lens;
   context.points = arguments.points;
   context.setup.fieldFractions = arguments.fieldFractions;
@@ -118,7 +128,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
 
   const bool inFocus = objectInFocus(focus, *lens, objectDistanceMm);
   nlohmann::json json{
-      {"lens", arguments.lensPath},
+      {"lens", lensPath},
       {"film_distance_mm", lens->filmDistanceMm()},
       {"film_diagonal_mm", arguments.filmDiagonalMm},
       {"stop_diameter_mm", lens->stopDiameterMm()},
@@ -141,7 +151,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   json["field_radius_mm"] = fieldScale.radiusMm();
   if (!coverageWarning.empty()) json["coverage_warning"] = coverageWarning;
   // The header says where the film is, what it focuses, and which object the numbers are for.
-  text += arguments.lensPath + ": film distance " + millimetresText(lens->filmDistanceMm()) + " (" +
+  text += lensPath + ": film distance " + millimetresText(lens->filmDistanceMm()) + " (" +
           (focus.atObject ? "" : "as given, ") + focusText(focus) + "), film diagonal " +
           millimetresText(arguments.filmDiagonalMm) + ", object at " +
           objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
@@ -164,11 +174,31 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
     }
   }
   if (!unavailable.empty()) json["unavailable"] = unavailable;
-  if (arguments.json)
-    std::cout << json.dump(2) << "\n";
-  else
-    std::cout << text;
-  return unavailable.empty() ? 0 : 1;
+  return LensAnalysis{std::move(json), std::move(text), unavailable.empty()};
+}
+
+int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
+  const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, objectGiven);
+  if (!request) return kUsageError;
+  const std::optional<LensAnalysis> lens =
+      analyzeLens(arguments.lensPath, arguments, *request, filmGiven);
+  if (!lens) return 1;
+  if (arguments.comparePath.empty()) {
+    std::cout << (arguments.json ? lens->json.dump(2) + "\n" : lens->text);
+    return lens->complete ? 0 : 1;
+  }
+  // --compare B: the reference analysed with the same options, as `analyze B` alone would be;
+  // both in one JSON object, {"lens": A's, "reference": B's}, or one text after the other.
+  const std::optional<LensAnalysis> reference =
+      analyzeLens(arguments.comparePath, arguments, *request, filmGiven);
+  if (!reference) return 1;
+  if (arguments.json) {
+    const nlohmann::json both{{"lens", lens->json}, {"reference", reference->json}};
+    std::cout << both.dump(2) << "\n";
+  } else {
+    std::cout << lens->text << "\n=== reference ===\n" << reference->text;
+  }
+  return lens->complete && reference->complete ? 0 : 1;
 }
 
 }  // namespace

@@ -56,6 +56,11 @@ AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments)
                   "Lens file (" + optics::lensFileExtensionsText() + ")")
       ->required();
   analyze.add_flag("--json", arguments.json, "Print JSON instead of a readable summary");
+  analyze
+      .add_option("--compare", arguments.comparePath,
+                  "A second lens analysed with the same options, as the reference: --json "
+                  "writes {\"lens\": ..., \"reference\": ...}")
+      ->check(CLI::ExistingFile);
   options.filmDistance =
       analyze
           .add_option("--film-distance", arguments.filmDistanceMm,

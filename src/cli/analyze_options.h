@@ -25,6 +25,9 @@ struct AnalyzeArguments {
   int points = 64;
   std::vector<double> fieldFractions{0.0, 0.7, 1.0};
   std::string only;  // comma-separated keys; empty: every analysis
+  // --compare B: B analysed with the same options beside the lens (the viewer's pinned
+  // reference); empty: the lens alone.
+  std::string comparePath;
 };
 
 // The options whose presence matters (a given film distance wins over focusing at the object).

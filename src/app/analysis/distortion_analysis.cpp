@@ -43,27 +43,29 @@ void requestDistortion(DistortionView& view, const AnalysisRequest& request) {
   if (view.job && request == view.requested) return;
   if (!view.job) view.job = std::make_unique<LatestJob<DistortionResult>>();
   view.requested = request;
-  view.job->request(++view.requests, [request] {
-    DistortionResult result;
-    result.request = request;
-    const optics::AnalysisSetup setup = analysisSetupFor(request);
-    result.setup = setup;
-    result.objectDistanceFromFilmMm = setup.objectDistanceFromFilmMm;
-    const optics::LensSystem& lens = *request.lens;
-    result.distortion = optics::distortionCurve(lens, setup, kDistortionPoints, &result.whyNot);
-    const optics::FieldScale scale = optics::fieldScaleFor(lens, setup);
-    for (double fraction : setup.fieldFractions) {
-      const double h = scale.imageHeightMm(fraction);
-      const auto field = optics::FieldPoint::resolve(lens, h, setup.objectDistanceFromFilmMm);
-      result.fieldMarks.push_back(
-          {fraction, h, field ? std::optional(field->fieldAngleDeg()) : std::nullopt});
-    }
-    if (result.distortion) {
-      result.grid = optics::distortionGrid(lens, setup, kGridFilmAspect, 8, kDistortionPoints);
-      result.fieldCurves = optics::fieldCurvature(lens, setup, kDistortionPoints);
-    }
-    return result;
-  });
+  view.job->request(++view.requests, [request] { return computeDistortion(request); });
+}
+
+DistortionResult computeDistortion(const AnalysisRequest& request) {
+  DistortionResult result;
+  result.request = request;
+  const optics::AnalysisSetup setup = analysisSetupFor(request);
+  result.setup = setup;
+  result.objectDistanceFromFilmMm = setup.objectDistanceFromFilmMm;
+  const optics::LensSystem& lens = *request.lens;
+  result.distortion = optics::distortionCurve(lens, setup, kDistortionPoints, &result.whyNot);
+  const optics::FieldScale scale = optics::fieldScaleFor(lens, setup);
+  for (double fraction : setup.fieldFractions) {
+    const double h = scale.imageHeightMm(fraction);
+    const auto field = optics::FieldPoint::resolve(lens, h, setup.objectDistanceFromFilmMm);
+    result.fieldMarks.push_back(
+        {fraction, h, field ? std::optional(field->fieldAngleDeg()) : std::nullopt});
+  }
+  if (result.distortion) {
+    result.grid = optics::distortionGrid(lens, setup, kGridFilmAspect, 8, kDistortionPoints);
+    result.fieldCurves = optics::fieldCurvature(lens, setup, kDistortionPoints);
+  }
+  return result;
 }
 
 std::shared_ptr<const DistortionResult> currentDistortion(const DistortionView& view,

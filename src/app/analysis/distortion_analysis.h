@@ -47,6 +47,9 @@ struct DistortionView {
 inline constexpr int kDistortionPoints = 64;
 inline constexpr double kGridFilmAspect = 1.5;  // 36 x 24 mm
 
+// On a worker: the analyses of `request` (its lens non-null).
+DistortionResult computeDistortion(const AnalysisRequest& request);
+
 // Asks for the analyses of `request` when it differs from the last request (and has a lens).
 void requestDistortion(DistortionView& view, const AnalysisRequest& request);
 // The newest finished result, when it is for `request`.

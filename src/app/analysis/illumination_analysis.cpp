@@ -21,19 +21,24 @@ void requestIllumination(IlluminationView& view,
   view.requestedFilmDiagonalMm = filmDiagonalMm;
   view.requestedRims = rims;
   view.job->request(++view.requests, [lens, filmDiagonalMm, rims] {
-    IlluminationResult result{lens, filmDiagonalMm, rims, std::nullopt, std::nullopt};
-    const double halfDiagonalMm = 0.5 * filmDiagonalMm;
-    if (rims) {
-      result.curve = optics::relativeIllumination(*lens, halfDiagonalMm, kIlluminationPoints, {},
-                                                  /*withRearDiskTotal=*/true);
-    } else {
-      // The render then samples the exit pupil, not the rear disk: no course curve.
-      const auto stopOnly = lens->withApertureClipping(optics::ApertureClipping::StopOnly);
-      result.curve = optics::relativeIllumination(*stopOnly, halfDiagonalMm, kIlluminationPoints);
-      result.withRims = optics::relativeIllumination(*lens, halfDiagonalMm, kIlluminationPoints);
-    }
-    return result;
+    return computeIllumination(lens, filmDiagonalMm, rims);
   });
+}
+
+IlluminationResult computeIllumination(const std::shared_ptr<const optics::LensSystem>& lens,
+                                       double filmDiagonalMm, bool rims) {
+  IlluminationResult result{lens, filmDiagonalMm, rims, std::nullopt, std::nullopt};
+  const double halfDiagonalMm = 0.5 * filmDiagonalMm;
+  if (rims) {
+    result.curve = optics::relativeIllumination(*lens, halfDiagonalMm, kIlluminationPoints, {},
+                                                /*withRearDiskTotal=*/true);
+  } else {
+    // The render then samples the exit pupil, not the rear disk: no course curve.
+    const auto stopOnly = lens->withApertureClipping(optics::ApertureClipping::StopOnly);
+    result.curve = optics::relativeIllumination(*stopOnly, halfDiagonalMm, kIlluminationPoints);
+    result.withRims = optics::relativeIllumination(*lens, halfDiagonalMm, kIlluminationPoints);
+  }
+  return result;
 }
 
 bool illuminationIsFor(const IlluminationResult& result,

@@ -43,6 +43,10 @@ struct IlluminationView {
 
 inline constexpr int kIlluminationPoints = 64;
 
+// On a worker: the curves of `lens` (non-null), as requestIllumination's job computes them.
+IlluminationResult computeIllumination(const std::shared_ptr<const optics::LensSystem>& lens,
+                                       double filmDiagonalMm, bool rims);
+
 // Asks for the curve of `lens` when it (or the film, or the rims toggle) differs from the last
 // request. `rims` false: the curve of the lens as the render traces it with its rims toggle off.
 void requestIllumination(IlluminationView& view,

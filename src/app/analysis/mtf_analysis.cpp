@@ -35,18 +35,22 @@ void requestMtf(MtfView& view, const AnalysisRequest& request) {
   if (!view.job) view.job = std::make_unique<LatestJob<MtfAnalysisResult>>();
   view.requested = request;
   view.requestedRangeCyclesPerMm = range;
-  view.job->request(++view.requests, [request, range] {
-    MtfAnalysisResult result;
-    result.request = request;
-    result.rangeCyclesPerMm = range;
-    result.setup = analysisSetupFor(request);
-    optics::MtfOptions options;
-    options.frequencySamples = kPanelFrequencySamples;
-    options.commonFrequencyAxis = true;  // one CSV row per frequency
-    if (range > 0.0) options.frequencyRangeCyclesPerMm = range;
-    result.mtf = optics::diffractionMtf(*request.lens, result.setup, options);
-    return result;
-  });
+  view.job->request(++view.requests, [request, range] { return computeMtf(request, range); });
+}
+
+double chosenMtfRange(const MtfView& view) { return chosenRange(view); }
+
+MtfAnalysisResult computeMtf(const AnalysisRequest& request, double rangeCyclesPerMm) {
+  MtfAnalysisResult result;
+  result.request = request;
+  result.rangeCyclesPerMm = rangeCyclesPerMm;
+  result.setup = analysisSetupFor(request);
+  optics::MtfOptions options;
+  options.frequencySamples = kPanelFrequencySamples;
+  options.commonFrequencyAxis = true;  // one CSV row per frequency
+  if (rangeCyclesPerMm > 0.0) options.frequencyRangeCyclesPerMm = rangeCyclesPerMm;
+  result.mtf = optics::diffractionMtf(*request.lens, result.setup, options);
+  return result;
 }
 
 std::shared_ptr<const MtfAnalysisResult> latestMtf(const MtfView& view) {

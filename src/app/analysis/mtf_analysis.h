@@ -36,6 +36,11 @@ struct MtfView {
   DrawnFigures drawn;  // what the panel drew last frame (a screenshot waits for it)
 };
 
+// On a worker: the MTF of `request` (its lens non-null) to `rangeCyclesPerMm` (0: the cutoff).
+MtfAnalysisResult computeMtf(const AnalysisRequest& request, double rangeCyclesPerMm);
+// The range the view's choice names (cycles/mm; 0: the cutoff).
+double chosenMtfRange(const MtfView& view);
+
 // Asks for the MTF of `request` when it differs from the last one; a request without a valid
 // lens asks nothing (the panel keeps the last result).
 void requestMtf(MtfView& view, const AnalysisRequest& request);

@@ -11,6 +11,7 @@ namespace lenslab::app {
 
 struct ViewerState;
 struct RayAnalysisResult;
+struct ReferenceAnalyses;
 
 std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot);
 bool illuminationSettled(const ViewerState& state);
@@ -37,6 +38,8 @@ bool spotSettled(const ViewerState& state);
 std::optional<PlotSpec> distortionCurrentPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> distortionGridCurrentPlot(ViewerState& state, std::string* whyNot);
 std::optional<PlotSpec> fieldCurvesCurrentPlot(ViewerState& state, std::string* whyNot);
+// A pinned reference's field curves beside the lens's: its tangential and sagittal curves alone.
+PlotSpec referenceFieldCurvesPlot(const ReferenceAnalyses& reference);
 bool distortionSettled(const ViewerState& state);
 std::optional<PlotSpec> mtfCurrentPlot(ViewerState& state, std::string* whyNot);
 bool mtfSettled(const ViewerState& state);

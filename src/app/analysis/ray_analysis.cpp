@@ -55,20 +55,22 @@ const optics::Spot* spotAt(const optics::SpotField& field, int focusIndex) {
 
 }  // namespace
 
+RayAnalysisResult computeRayAnalysis(const AnalysisRequest& request) {
+  const optics::AnalysisSetup setup = analysisSetupFor(request);
+  RayAnalysisResult result;
+  result.request = request;
+  result.setup = setup;
+  result.fans = optics::computeTransverseRayFans(*request.lens, setup);
+  result.spots = optics::computeSpotDiagrams(*request.lens, setup);
+  return result;
+}
+
 void requestRayAnalysis(RayAnalysisView& view, const AnalysisRequest& request) {
   if (!request.lens) return;
   if (view.job && request == view.requested) return;
   if (!view.job) view.job = std::make_unique<LatestJob<RayAnalysisResult>>();
   view.requested = request;
-  view.job->request(++view.requests, [request] {
-    const optics::AnalysisSetup setup = analysisSetupFor(request);
-    RayAnalysisResult result;
-    result.request = request;
-    result.setup = setup;
-    result.fans = optics::computeTransverseRayFans(*request.lens, setup);
-    result.spots = optics::computeSpotDiagrams(*request.lens, setup);
-    return result;
-  });
+  view.job->request(++view.requests, [request] { return computeRayAnalysis(request); });
 }
 
 std::shared_ptr<const RayAnalysisResult> latestRayAnalysis(const RayAnalysisView& view,

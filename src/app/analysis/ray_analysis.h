@@ -33,6 +33,9 @@ struct RayAnalysisView {
   DrawnFigures drawn;  // what the two panels that share the result drew last frame
 };
 
+// On a worker: the fans and spots of `request` (its lens non-null).
+RayAnalysisResult computeRayAnalysis(const AnalysisRequest& request);
+
 // Asks for the fans and spots of `request` when it differs from the last request (a null lens
 // asks nothing: the panels keep the last result and say why).
 void requestRayAnalysis(RayAnalysisView& view, const AnalysisRequest& request);

@@ -282,6 +282,8 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
     if (a[0] == "close") return check(host.showAsphereEditor(std::nullopt));
     return check(host.showAsphereEditor(static_cast<std::size_t>(*parseInteger(a[0]) - 1)));
   }
+  if (verb == "pin-reference") return check(host.pinReference());
+  if (verb == "unpin-reference") return check(host.unpinReference());
   if (verb == "glass-map") {
     if (a[0] == "maker") return check(host.showGlassMaker(a[1], a[2] == "on"));
     return check(host.showGlassMap(a[0] == "open"));

@@ -25,6 +25,10 @@
 //                                Asphere... button does, or closes it)
 //   glass-map open|close        (Lens > Glass map...: the catalogues' Abbe diagram)
 //   glass-map maker M on|off    (shows or hides maker M's glasses on it, as its check boxes)
+//   pin-reference               (Lens > Pin as reference: the lens as it is now, edits included,
+//                                drawn beside it in every analysis plot; once the edits before
+//                                it are applied; fails without a valid lens)
+//   unpin-reference             (Lens > Unpin reference)
 //   show-panel ID               (selects the panel's tab: lens, cross-section, preview, log,
 //                                lens-file, illumination; see panels/panel_registry.cpp)
 //   export-plot ID FILE         (an analysis panel's plot, as .svg, .png (1200 x 750, 144 DPI:
@@ -214,6 +218,9 @@ class ScriptHost {
   virtual std::optional<std::string> showAsphereEditor(std::optional<std::size_t> surface) {
     return surface ? "there is no asphere editor here" : std::optional<std::string>();
   }
+  // Lens > Pin as reference / Unpin reference (analysis/reference_lens.h).
+  virtual std::optional<std::string> pinReference() { return "there is no lens to pin here"; }
+  virtual std::optional<std::string> unpinReference() { return "there is no reference here"; }
   // Opens or closes the glass map (Lens > Glass map...); shows or hides a maker's glasses on it.
   virtual std::optional<std::string> showGlassMap(bool open) {
     return open ? "there is no glass map here" : std::optional<std::string>();

@@ -66,6 +66,8 @@ const std::map<std::string, VerbShape>& verbs() {
       {"show-panel", {1, 1}},
       {"asphere-editor", {1, 1}},
       {"glass-map", {1, 3}},  // open | close | maker M on|off
+      {"pin-reference", {0, 0}},
+      {"unpin-reference", {0, 0}},
       {"export-plot", {2, 2}},
       {"export-cross-section", {1, 4}},
       // Pictures for slides (issue 20).

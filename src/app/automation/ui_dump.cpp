@@ -23,6 +23,26 @@ std::vector<double> colourFanWavelengths(const ViewerState& state) {
   return wavelengths;
 }
 
+// The pinned reference: its title, how often its analyses were asked for (once per settings:
+// never for an edit of the lens), whether they have finished, and the first-order comparison.
+nlohmann::json referenceJson(const ViewerState& state) {
+  if (!state.reference) return nullptr;
+  const ReferenceLens& reference = *state.reference;
+  const auto latest = reference.job ? reference.job->latest() : nullptr;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const FirstOrderComparisonRow& row : reference.shownComparison)
+    rows.push_back({{"name", row.name},
+                    {"lens", row.lens},
+                    {"reference", row.reference},
+                    {"difference", row.difference}});
+  return {{"title", reference.title},
+          {"analysis_requests", reference.requests},
+          {"computed", latest != nullptr},
+          {"compute_ms", latest ? latest->computeMs : 0.0},
+          {"no_image", latest ? latest->noImage : std::string()},
+          {"first_order", rows}};
+}
+
 }  // namespace
 
 std::string writeUiDump(const std::filesystem::path& path, const ViewerState& state,
@@ -101,6 +121,8 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
         {"exposure_stops", state.exposureStops},
         {"auto_exposure", state.settings.autoExposure},
         {"auto_exposure_stops", state.preview.autoExposureStops}}},
+      // The pinned reference (null without one) and the first-order data beside it as shown.
+      {"reference", referenceJson(state)},
       // The first-order section's beam figures as shown (empty until it has been drawn).
       {"first_order",
        {{"f_number", state.fNumberText},

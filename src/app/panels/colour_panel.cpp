@@ -8,6 +8,7 @@
 
 #include "app/analysis/colour_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/analysis/reference_lens.h"
 #include "app/automation/item_rect.h"
 #include "app/drawing/cross_section_drawing.h"
 #include "app/drawing/im_colour.h"
@@ -51,13 +52,19 @@ std::optional<PlotSpec> colourCurrentPlot(ViewerState& state, std::string* whyNo
     *whyNot = result->focalShiftWhyNot;
     return std::nullopt;
   }
-  return focalShiftPlot(*result);
+  PlotSpec spec = focalShiftPlot(*result);
+  addPinnedReference(state, spec,
+                     [](const ReferenceAnalyses& r) { return focalShiftPlot(r.colour); });
+  return spec;
 }
 
 std::optional<PlotSpec> lateralColourCurrentPlot(ViewerState& state, std::string* whyNot) {
   const auto result = currentColour(state, whyNot);
   if (!result) return std::nullopt;
-  return lateralColourPlot(*result);
+  PlotSpec spec = lateralColourPlot(*result);
+  addPinnedReference(state, spec,
+                     [](const ReferenceAnalyses& r) { return lateralColourPlot(r.colour); });
+  return spec;
 }
 
 // Seidel and Colour share one worker.
@@ -112,6 +119,10 @@ void drawColourPanel(ViewerState& state, const PanelPlace& place) {
       }
       PlotSpec shift = focalShiftPlot(*result);
       PlotSpec lateral = lateralColourPlot(*result);
+      addPinnedReference(state, shift,
+                         [](const ReferenceAnalyses& r) { return focalShiftPlot(r.colour); });
+      addPinnedReference(state, lateral,
+                         [](const ReferenceAnalyses& r) { return lateralColourPlot(r.colour); });
       ImGui::TextDisabled("%s", shift.note.c_str());
       shift.note.clear();
       lateral.note.clear();

@@ -9,6 +9,7 @@
 #include "app/drawing/canvas_clip.h"
 #include "app/drawing/cross_section_drawing.h"
 #include "app/drawing/im_colour.h"
+#include "app/lens_caption.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/panels/wrap_row.h"
@@ -245,6 +246,28 @@ void recordHandles(ViewerState& state, const CrossSectionCache& shown, PixelPoin
 
 }  // namespace
 
+// The reference's cross-section right of the lens's: the same view (scale, and the same lens-frame
+// point at its canvas's centre, so the films line up), its title above it.
+void drawReferenceCanvas(ViewerState& state, ImVec2 origin, ImVec2 size, ImVec2 room, float gap) {
+  const ImVec2 at(origin.x + size.x + gap, origin.y);
+  const ImVec2 end(origin.x + room.x, origin.y + room.y);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  // The gap: a divider in the axis's colour.
+  draw->AddRectFilled(ImVec2(at.x - 0.5f * gap - px(1.0f), origin.y),
+                      ImVec2(at.x - 0.5f * gap + px(1.0f), end.y), toImColour(palette::kAxis));
+  state.uiRects["cross-section/reference"] = {at.x, at.y, end.x - at.x, end.y - at.y};
+  const PixelPoint centre{at.x + 0.5f * (end.x - at.x), at.y + 0.5f * (end.y - at.y)};
+  draw->PushClipRect(at, end, true);
+  paint(draw, referenceCrossSection(state), state.crossSectionView, centre,
+        {at.x, at.y, end.x, end.y});
+  const float margin = px(8.0f);
+  const std::string label = "reference: " + state.reference->title;
+  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + margin, at.y + px(6.0f)),
+                IM_COL32(200, 200, 200, 255), label.c_str(), nullptr,
+                std::max(1.0f, end.x - at.x - 2 * margin));
+  draw->PopClipRect();
+}
+
 void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place) {
   if (!beginCanvasPanel("Cross-section", place, ImGuiWindowFlags_NoScrollbar)) {
     ImGui::End();
@@ -253,13 +276,18 @@ void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place) {
   drawFanControls(state);
 
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  const ImVec2 size = ImGui::GetContentRegionAvail();
-  if (size.x < 2 || size.y < 2) {
+  const ImVec2 room = ImGui::GetContentRegionAvail();
+  if (room.x < 2 || room.y < 2) {
     fillPanelBackgroundAround(origin, origin);
     ImGui::End();
     return;
   }
-  fillPanelBackgroundAround(origin, ImVec2(origin.x + size.x, origin.y + size.y));
+  fillPanelBackgroundAround(origin, ImVec2(origin.x + room.x, origin.y + room.y));
+  // With a reference pinned, the lens takes the left half of the canvas and the reference the
+  // right, drawn at the same scale and with its film level with the lens's.
+  const float referenceGap = px(6.0f);
+  const ImVec2 size =
+      state.reference ? ImVec2(std::floor(0.5f * (room.x - referenceGap)), room.y) : room;
   state.uiRects["cross-section/canvas"] = {origin.x, origin.y, size.x, size.y};
   state.crossSectionCanvasSize = {size.x, size.y};
   const PixelPoint centre{origin.x + size.x * 0.5f, origin.y + size.y * 0.5f};
@@ -345,7 +373,16 @@ void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place) {
 
   const CrossSectionCache& shown = crossSection(state);
   if (state.crossSectionNeedsFit && shown.fitBounds.hasPoints) {
-    view.fit(shown.fitBounds, size.x, size.y);
+    // Both lenses fit at one scale: the reference's lens and film too.
+    BoundsMm bounds = shown.fitBounds;
+    if (state.reference) {
+      const BoundsMm& other = referenceCrossSection(state).bounds;
+      if (other.hasPoints) {
+        bounds.include({other.minZ, other.minY});
+        bounds.include({other.maxZ, other.maxY});
+      }
+    }
+    view.fit(bounds, size.x, size.y);
     state.crossSectionNeedsFit = false;
   }
   recordHandles(state, shown, centre);
@@ -362,7 +399,15 @@ void drawCrossSectionPanel(ViewerState& state, const PanelPlace& place) {
                   "The lens is invalid (see the lens table): rays are hidden until it is fixed.",
                   nullptr, std::max(1.0f, size.x - 2 * margin));
   }
+  if (state.reference && state.lensSystemIsCurrent) {
+    // Which half is which, as the reference's names itself.
+    const std::string label = "lens: " + lensTitle(state);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                  ImVec2(origin.x + px(8.0f), origin.y + px(6.0f)), IM_COL32(240, 240, 240, 255),
+                  label.c_str(), nullptr, std::max(1.0f, size.x - px(16.0f)));
+  }
   draw->PopClipRect();
+  if (state.reference) drawReferenceCanvas(state, origin, size, room, referenceGap);
   ImGui::End();
 }
 

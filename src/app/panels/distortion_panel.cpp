@@ -8,6 +8,7 @@
 
 #include "app/analysis/distortion_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/analysis/reference_lens.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/plot/plot_widget.h"
@@ -33,19 +34,36 @@ std::shared_ptr<const DistortionResult> currentResult(ViewerState& state, std::s
 std::optional<PlotSpec> distortionCurrentPlot(ViewerState& state, std::string* whyNot) {
   const auto result = currentResult(state, whyNot);
   if (!result) return std::nullopt;
-  return distortionPlot(*result, state.distortion.againstFieldAngle);
+  PlotSpec spec = distortionPlot(*result, state.distortion.againstFieldAngle);
+  addPinnedReference(state, spec, [&state](const ReferenceAnalyses& r) {
+    return distortionPlot(r.distortion, state.distortion.againstFieldAngle);
+  });
+  return spec;
 }
 
 std::optional<PlotSpec> distortionGridCurrentPlot(ViewerState& state, std::string* whyNot) {
   const auto result = currentResult(state, whyNot);
   if (!result) return std::nullopt;
-  return distortionGridPlot(*result);
+  PlotSpec spec = distortionGridPlot(*result);
+  addPinnedReference(state, spec,
+                     [](const ReferenceAnalyses& r) { return distortionGridPlot(r.distortion); });
+  return spec;
+}
+
+PlotSpec referenceFieldCurvesPlot(const ReferenceAnalyses& reference) {
+  PlotSpec spec = fieldCurvesPlot(reference.distortion);
+  // Its Petzval surface and film would double the plot's guides.
+  std::erase_if(spec.series,
+                [](const PlotSeries& s) { return s.name != "tangential" && s.name != "sagittal"; });
+  return spec;
 }
 
 std::optional<PlotSpec> fieldCurvesCurrentPlot(ViewerState& state, std::string* whyNot) {
   const auto result = currentResult(state, whyNot);
   if (!result) return std::nullopt;
-  return fieldCurvesPlot(*result);
+  PlotSpec spec = fieldCurvesPlot(*result);
+  addPinnedReference(state, spec, referenceFieldCurvesPlot);
+  return spec;
 }
 
 bool distortionSettled(const ViewerState& state) {
@@ -79,6 +97,11 @@ void drawDistortionPanel(ViewerState& state, const PanelPlace& place) {
     if (result) {
       PlotSpec curve = distortionPlot(*result, view.againstFieldAngle);
       PlotSpec grid = distortionGridPlot(*result);
+      addPinnedReference(state, curve, [&view](const ReferenceAnalyses& r) {
+        return distortionPlot(r.distortion, view.againstFieldAngle);
+      });
+      addPinnedReference(
+          state, grid, [](const ReferenceAnalyses& r) { return distortionGridPlot(r.distortion); });
       // The tab names the analysis; the note goes on the controls' line.
       ImGui::SameLine();
       ImGui::TextDisabled("%s", curve.note.c_str());

@@ -7,6 +7,7 @@
 
 #include "app/analysis/distortion_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/analysis/reference_lens.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/plot/plot_widget.h"
@@ -32,6 +33,7 @@ void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place) {
     }
     if (result) {
       PlotSpec spec = fieldCurvesPlot(*result);
+      addPinnedReference(state, spec, referenceFieldCurvesPlot);
       ImGui::TextDisabled("%s", spec.note.c_str());
       drawAnalysisConditions(state, "field-curves", *result->request.lens, result->setup);
       spec.title.clear();

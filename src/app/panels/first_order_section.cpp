@@ -183,6 +183,42 @@ void updateLensFigures(ViewerState& state) {
   }
 }
 
+// With a reference pinned: the first-order data of both lenses side by side, with the
+// differences, so that an edit's effect on each figure reads at once.
+void drawReferenceComparison(ViewerState& state, const optics::LensSystem& lens) {
+  if (!state.reference) return;
+  const std::string header = "Compared with the reference: " + state.reference->title;
+  if (!ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const auto analyses = referenceAnalyses(state);
+  ReferenceLens& reference = *state.reference;
+  reference.shownComparison =
+      compareFirstOrder(lens, state.fNumberText, reference, analyses.get(), state.filmDiagonalMm);
+  if (analyses && !analyses->noImage.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.35f, 1.0f), "The reference forms no image: %s",
+                       analyses->noImage.c_str());
+  constexpr ImGuiTableFlags kFlags = ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg;
+  if (ImGui::BeginTable("reference-comparison", 4, kFlags)) {
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("lens", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("difference", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableHeadersRow();
+    for (const FirstOrderComparisonRow& row : reference.shownComparison) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextDisabled("%s", row.name.c_str());
+      ImGui::TableSetColumnIndex(1);
+      ImGui::TextUnformatted(row.lens.c_str());
+      ImGui::TableSetColumnIndex(2);
+      ImGui::TextUnformatted(row.reference.c_str());
+      ImGui::TableSetColumnIndex(3);
+      ImGui::TextUnformatted(row.difference.c_str());
+    }
+    ImGui::EndTable();
+  }
+  recordItemRect(state, "first-order/reference");
+}
+
 }  // namespace
 
 void drawFirstOrderSection(ViewerState& state) {
@@ -270,6 +306,7 @@ void drawFirstOrderSection(ViewerState& state) {
     textRow("Film diagonal", format("%.1f mm", state.filmDiagonalMm));
     ImGui::EndTable();
   }
+  drawReferenceComparison(state, lens);
 }
 
 }  // namespace lenslab::app

@@ -5,6 +5,7 @@
 
 #include "app/analysis/illumination_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/analysis/reference_lens.h"
 #include "app/automation/item_rect.h"
 #include "app/drawing/im_colour.h"
 #include "app/panels/panel_window.h"
@@ -76,6 +77,16 @@ void drawFootprint(ViewerState& state, const optics::FilmPointBundle& bundle, Im
   draw->PopClipRect();
 }
 
+// The reference's total beside the lens's (its cos4 and vignetting would double a busy plot).
+void addIlluminationReference(ViewerState& state, PlotSpec& spec) {
+  addPinnedReference(state, spec, [&state](const ReferenceAnalyses& reference) {
+    PlotSpec plot = illuminationPlot(reference.illumination, state.illumination.againstFieldAngle,
+                                     false, state.falloff);
+    std::erase_if(plot.series, [](const PlotSeries& s) { return s.name != "total"; });
+    return plot;
+  });
+}
+
 }  // namespace
 
 std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string* whyNot) {
@@ -94,8 +105,10 @@ std::optional<PlotSpec> illuminationCurrentPlot(ViewerState& state, std::string*
   const MeasuredFalloff* measured = state.sceneIsUniformField
                                         ? latestMeasuredFalloff(state.measuredFalloff, keepMeasured)
                                         : nullptr;
-  return illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk,
-                          state.falloff, measured);
+  PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk,
+                                   state.falloff, measured);
+  addIlluminationReference(state, spec);
+  return spec;
 }
 
 bool illuminationSettled(const ViewerState& state) {
@@ -165,6 +178,7 @@ void drawIlluminationPanel(ViewerState& state, const PanelPlace& place) {
                                     : nullptr;
       PlotSpec spec = illuminationPlot(*result, view.againstFieldAngle, state.sceneSamplesRearDisk,
                                        state.falloff, measured);
+      addIlluminationReference(state, spec);
       view.renderNote = renderFalloffNote(state.falloff);
       // The tab names the plot; its note goes beside the checkbox, leaving the height to the
       // curves (an export keeps both above the plot).

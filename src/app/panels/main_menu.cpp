@@ -82,6 +82,14 @@ void lensMenu(ViewerState& state) {
   ImGui::Separator();
   if (ImGui::MenuItem("Flip front to back")) state.lens.issue(FlipLens{});
   ImGui::MenuItem("Glass map...", nullptr, &state.glassMap.open);
+  // Compare two lenses (analysis/reference_lens.h): the lens as it is now, beside every plot.
+  ImGui::Separator();
+  if (ImGui::MenuItem("Pin as reference", nullptr, false, state.lensSystemIsCurrent)) {
+    if (const auto error = pinReference(state)) state.log.error(*error);
+  }
+  if (ImGui::MenuItem("Unpin reference", nullptr, false, state.reference.has_value()))
+    unpinReference(state);
+  ImGui::Separator();
   if (ImGui::BeginMenu("Scale to focal length")) {
     ImGui::SetNextItemWidth(px(120));
     ImGui::InputDouble("mm##efl", &state.lensTable.scaleTargetEflMm, 0, 0, "%.2f");

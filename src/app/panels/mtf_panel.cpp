@@ -5,6 +5,7 @@
 
 #include "app/analysis/mtf_analysis.h"
 #include "app/analysis/plot_sources.h"
+#include "app/analysis/reference_lens.h"
 #include "app/automation/item_rect.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
@@ -23,7 +24,9 @@ std::optional<PlotSpec> mtfCurrentPlot(ViewerState& state, std::string* whyNot) 
   requestMtf(state.mtf, request);
   const auto result = latestMtf(state.mtf);
   if (!mtfIsCurrent(state.mtf, result.get(), request)) return std::nullopt;
-  return mtfPlot(*result);
+  PlotSpec spec = mtfPlot(*result);
+  addPinnedReference(state, spec, [](const ReferenceAnalyses& r) { return mtfPlot(r.mtf); });
+  return spec;
 }
 
 bool mtfSettled(const ViewerState& state) {
@@ -63,6 +66,7 @@ void drawMtfPanel(ViewerState& state, const PanelPlace& place) {
     }
     if (result) {
       PlotSpec spec = mtfPlot(*result);
+      addPinnedReference(state, spec, [](const ReferenceAnalyses& r) { return mtfPlot(r.mtf); });
       // The tab names the plot; its note goes above it, leaving the height to the curves (an
       // export keeps both).
       ImGui::TextDisabled("%s", spec.note.c_str());

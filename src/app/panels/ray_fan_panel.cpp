@@ -7,6 +7,7 @@
 
 #include "app/analysis/plot_sources.h"
 #include "app/analysis/ray_analysis.h"
+#include "app/analysis/reference_lens.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/plot/plot_widget.h"
@@ -56,7 +57,10 @@ namespace {
 std::optional<PlotSpec> currentFanPlot(ViewerState& state, FanPlane plane, std::string* whyNot) {
   const auto result = currentRayAnalysis(state, whyNot);
   if (!result) return std::nullopt;
-  return rayFanPlot(*result, plane);
+  PlotSpec spec = rayFanPlot(*result, plane);
+  addPinnedReference(state, spec,
+                     [plane](const ReferenceAnalyses& r) { return rayFanPlot(r.rays, plane); });
+  return spec;
 }
 
 }  // namespace
@@ -76,7 +80,10 @@ std::optional<PlotSpec> rayFanSagittalPlot(ViewerState& state, std::string* whyN
 std::optional<PlotFigure> rayFanCurrentFigure(ViewerState& state, std::string* whyNot) {
   const auto result = currentRayAnalysis(state, whyNot);
   if (!result) return std::nullopt;
-  return rayFanFigure(*result);
+  PlotFigure figure = rayFanFigure(*result);
+  addPinnedReference(state, figure,
+                     [](const ReferenceAnalyses& r) { return rayFanFigure(r.rays); });
+  return figure;
 }
 
 bool rayFanSettled(const ViewerState& state) {
@@ -98,7 +105,9 @@ void drawRayFanPanel(ViewerState& state, const PanelPlace& place) {
     drawRayStatus(state, result.get(), current);
     if (result) {
       // The plots a saved picture of `ray-fan` shows too (ray_analysis.h's rayFanFigure).
-      const PlotFigure figure = rayFanFigure(*result);
+      PlotFigure figure = rayFanFigure(*result);
+      addPinnedReference(state, figure,
+                         [](const ReferenceAnalyses& r) { return rayFanFigure(r.rays); });
       ImGui::TextDisabled("%s", figure.note.c_str());
       drawAnalysisConditions(state, "ray-fan", *result->request.lens, result->setup);
       const ImVec2 room = ImGui::GetContentRegionAvail();

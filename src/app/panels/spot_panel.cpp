@@ -9,6 +9,7 @@
 
 #include "app/analysis/plot_sources.h"
 #include "app/analysis/ray_analysis.h"
+#include "app/analysis/reference_lens.h"
 #include "app/panels/panel_window.h"
 #include "app/panels/panels.h"
 #include "app/plot/plot_layout.h"
@@ -19,13 +20,21 @@ namespace lenslab::app {
 std::optional<PlotSpec> spotCurrentPlot(ViewerState& state, std::string* whyNot) {
   const auto result = currentRayAnalysis(state, whyNot);
   if (!result) return std::nullopt;
-  return spotPlot(*result, -1, state.rayAnalysis.spotFocusIndex);
+  const int focus = state.rayAnalysis.spotFocusIndex;
+  PlotSpec spec = spotPlot(*result, -1, focus);
+  addPinnedReference(state, spec,
+                     [focus](const ReferenceAnalyses& r) { return spotPlot(r.rays, -1, focus); });
+  return spec;
 }
 
 std::optional<PlotFigure> spotCurrentFigure(ViewerState& state, std::string* whyNot) {
   const auto result = currentRayAnalysis(state, whyNot);
   if (!result) return std::nullopt;
-  return spotFigure(*result, state.rayAnalysis.spotFocusIndex);
+  const int focus = state.rayAnalysis.spotFocusIndex;
+  PlotFigure figure = spotFigure(*result, focus);
+  addPinnedReference(state, figure,
+                     [focus](const ReferenceAnalyses& r) { return spotFigure(r.rays, focus); });
+  return figure;
 }
 
 bool spotSettled(const ViewerState& state) { return rayFanSettled(state); }
@@ -63,7 +72,9 @@ void drawSpotPanel(ViewerState& state, const PanelPlace& place) {
     if (result && !result->spots.fields.empty()) {
       const int focus = view.spotFocusIndex;
       // The plots a saved picture shows too (ray_analysis.h's spotFigure).
-      const PlotFigure figure = spotFigure(*result, focus);
+      PlotFigure figure = spotFigure(*result, focus);
+      addPinnedReference(state, figure,
+                         [focus](const ReferenceAnalyses& r) { return spotFigure(r.rays, focus); });
       ImGui::TextDisabled(
           "%s; white circle: the Airy disk; DOF = 2 lambda N^2 = %.4f mm; rays from the chief ray",
           figure.note.c_str(), result->spots.depthOfFocusMm.value_or(0.0));

@@ -165,11 +165,11 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   auto legendSize = [&] {
     float nameWidth = 0.0f;
     for (const PlotSeries& series : spec.series)
-      nameWidth = std::max(nameWidth, textWidth(series.name));
+      if (series.inLegend) nameWidth = std::max(nameWidth, textWidth(series.name));
     return std::pair{kLegendSampleEm * fontPx + 0.5f * fontPx + nameWidth + fontPx,
-                     line * static_cast<float>(spec.series.size()) + 0.5f * fontPx};
+                     line * static_cast<float>(legendEntries(spec.series)) + 0.5f * fontPx};
   };
-  if (spec.legend && hasBars(spec) && spec.series.size() > 1) {
+  if (spec.legend && hasBars(spec) && legendEntries(spec.series) > 1) {
     const auto [width, height] = legendSize();
     if (width < 0.35f * frame.area.width && height < frame.area.height) {
       frame.area.width -= width + 0.5f * fontPx;
@@ -201,7 +201,7 @@ PlotFrame layoutPlot(const PlotSpec& spec, Rect outer, float fontPx, const TextW
   frame.xTickLabelY = frame.area.bottom() + 0.3f * fontPx;
   frame.xLabelY = frame.xTickLabelY + line;
 
-  if (spec.legend && spec.series.size() > 1 && frame.legend.width <= 0.0f) {
+  if (spec.legend && legendEntries(spec.series) > 1 && frame.legend.width <= 0.0f) {
     const auto [width, height] = legendSize();
     if (width < 0.8f * frame.area.width && height < 0.9f * frame.area.height) {
       // The corner of the box that covers the fewest data points (top right first on ties).
@@ -303,7 +303,7 @@ FigureFrame layoutFigure(const PlotFigure& figure, Rect outer, float fontPx,
     for (std::size_t s = 0; s < most; ++s) {
       for (std::size_t p = 0; p < figure.plots.size(); ++p) {
         const std::vector<PlotSeries>& series = figure.plots[p].series;
-        if (s >= series.size()) continue;
+        if (s >= series.size() || !series[s].inLegend) continue;
         if (std::find(names.begin(), names.end(), series[s].name) != names.end()) continue;
         names.push_back(series[s].name);
         items.push_back({p, s, sample + sampleGap + textWidth(series[s].name)});

@@ -38,7 +38,16 @@ struct PlotSeries {
   // A guide, not data (a field's position marked on a curve): drawn and in the legend, left out
   // of the CSV and the hover readout.
   bool guide = false;
+  // False: drawn, and in the CSV, but not in the legend (a pinned reference's curves, which the
+  // legend names once: analysis/reference_lens.h).
+  bool inLegend = true;
 };
+
+// How many of the plot's series the legend lists.
+inline std::size_t legendEntries(const std::vector<PlotSeries>& series) {
+  return static_cast<std::size_t>(
+      std::count_if(series.begin(), series.end(), [](const PlotSeries& s) { return s.inLegend; }));
+}
 
 struct PlotAxis {
   std::string label;  // with its unit: "image height (mm)"

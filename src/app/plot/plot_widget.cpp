@@ -121,9 +121,10 @@ PlotWidgetResult drawPlotWidget(const char* id, const PlotSpec& spec, ImVec2 siz
     const Rect& box = frame.legend;
     draw->AddRectFilled({box.x, box.y}, {box.right(), box.bottom()}, IM_COL32(20, 22, 26, 230));
     draw->AddRect({box.x, box.y}, {box.right(), box.bottom()}, IM_COL32(110, 110, 110, 255));
-    for (std::size_t i = 0; i < spec.series.size(); ++i) {
-      const PlotSeries& series = spec.series[i];
-      const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (static_cast<float>(i) + 0.5f);
+    float row = 0.0f;
+    for (const PlotSeries& series : spec.series) {
+      if (!series.inLegend) continue;
+      const float y = box.y + 0.25f * fontPx + frame.lineHeightPx * (row++ + 0.5f);
       const float x = box.x + 0.5f * fontPx;
       if (series.kind == PlotSeriesKind::Bars)
         draw->AddRectFilled({x, y - 0.3f * fontPx},
