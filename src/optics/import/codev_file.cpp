@@ -14,6 +14,7 @@
 #include "optics/glass/glass_catalog.h"
 #include "optics/glass/glass_catalog_loader.h"
 #include "optics/glass/glass_names.h"
+#include "optics/import/glass_resolution.h"
 #include "optics/import/imported_lens.h"
 #include "optics/import/stop_on_surface.h"
 
@@ -513,20 +514,19 @@ std::optional<SeqMedium> SeqReader::medium(const SeqWord& word) {
     found = catalog.lookup(text);
   }
   if (!found) {
-    // Older files name Schott's and Ohara's glasses without the N- or S- their current ones
-    // carry (BK7 for N-BK7): said, never substituted, since the two differ in index.
-    std::string message = found.error;
-    for (const char* prefix : {"N-", "S-"}) {
-      const GlassLookup current = catalog.lookup(prefix + lookedUpName, lookedUpMaker);
-      if (current) {
-        message += "; " + current.glass->name + " (" + current.glass->maker +
-                   ") is in the catalogue, but lenslab does not take one glass for another: "
-                   "write it if it is meant";
-        break;
-      }
+    // A name no catalogue holds: its documented successor, if it has one (glass_resolution.h),
+    // from the maker the name carries.
+    std::vector<std::string> makers;
+    if (!lookedUpMaker.empty()) makers.push_back(lookedUpMaker);
+    if (const std::optional<GlassSuccessor> successor =
+            documentedGlassSuccessor(catalog, lookedUpName, makers)) {
+      warning(word, glassSubstitutionWarning(text, *successor));
+      found.glass = successor->glass;
+      makerGiven = true;  // the successor is one glass of one maker
+    } else {
+      error(word, found.error);
+      return std::nullopt;
     }
-    error(word, message);
-    return std::nullopt;
   }
   if (found.ambiguous() && !makerGiven)
     note(word, found.choiceNote() + " (write NAME_MAKER to choose)");

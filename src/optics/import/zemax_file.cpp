@@ -14,6 +14,7 @@
 #include "optics/glass/glass_catalog.h"
 #include "optics/glass/glass_catalog_loader.h"
 #include "optics/glass/glass_names.h"
+#include "optics/import/glass_resolution.h"
 #include "optics/import/imported_lens.h"
 #include "optics/import/stop_on_surface.h"
 #include "optics/import/text_encoding.h"
@@ -504,17 +505,6 @@ bool ZmxReader::resolveGlass(const ZmxSurface& from, Surface& to) {
     if (lineHasNumbers) text << "; the file's line gives n_d " << field(2) << ", V_d " << field(3);
     return text.str();
   };
-  const auto describe = [](const CatalogGlass& g) {
-    std::ostringstream text;
-    text.setf(std::ios::fixed);
-    text.precision(5);
-    text << g.name << " (" << g.maker;
-    if (g.nd) text << ", n_d " << *g.nd;
-    text.precision(2);
-    if (g.vd) text << ", V_d " << *g.vd;
-    text << ")";
-    return text.str();
-  };
   if (!glass) {
     // Not in the file's catalogues: any of lenslab's (OpticStudio's catalogues differ from
     // lenslab's in what they hold; the name is the glass, but a user should know).
@@ -524,42 +514,19 @@ bool ZmxReader::resolveGlass(const ZmxSurface& from, Surface& to) {
       warning(from.glassLine, from.glassColumn,
               "glass " + from.glass + " is not in the file's catalogues (GCAT " +
                   (catalogueList.empty() ? std::string("none") : catalogueList) +
-                  ") as lenslab has them; using " + describe(*glass) + lineNumbers());
+                  ") as lenslab has them; using " + describeCatalogGlass(*glass) + lineNumbers());
     }
   }
   if (!glass) {
-    // Names lenslab's catalogues no longer hold, with the one documented successor each: a
-    // Schott lead glass replaced by its lead-free N- glass (BK7 -> N-BK7), OpticStudio's MISC
-    // SILICA (fused silica, Malitson), and a glass "_MOLD" as molded (its catalogue glass before
-    // molding, whose index the molding lowers by a few 1e-4 to 1e-3).
-    std::string successor;
-    std::string why;
-    std::string successorMaker;
-    const std::string key = glassNameKey(from.glass);
-    if (upper == "SILICA") {
-      successor = "fused_silica";
-      successorMaker = "MISC";
-      why = "OpticStudio's MISC SILICA is fused silica (Malitson's formula)";
-    } else if (upper.size() > 5 && upper.substr(upper.size() - 5) == "_MOLD") {
-      successor = from.glass.substr(0, from.glass.size() - 5);
-      why =
-          "the molded glass's index differs from the catalogue glass's by the molding's "
-          "index drop, which lenslab does not model";
-    } else if (key.substr(0, 1) != "n" && have("SCHOTT")) {
-      successor = "N-" + from.glass;
-      successorMaker = "SCHOTT";
-      why = "SCHOTT replaced " + from.glass + " with the lead-free " + successor +
-            "; their indices differ slightly";
-    }
-    if (!successor.empty()) {
-      const GlassLookup found = catalog.lookup(successor, successorMaker);
-      if (found) {
-        glass = found.glass;
-        warning(from.glassLine, from.glassColumn,
-                "glass " + from.glass + " is in no catalogue lenslab has; substituting " +
-                    describe(*glass) + ": " + why + lineNumbers() +
-                    ". Check the lens against its source");
-      }
+    // A name no catalogue holds: its documented successor, if it has one (glass_resolution.h),
+    // from the file's catalogues first.
+    std::optional<GlassSuccessor> successor = documentedGlassSuccessor(catalog, from.glass, makers);
+    if (!successor && !catalogues.empty())
+      successor = documentedGlassSuccessor(catalog, from.glass, {});
+    if (successor) {
+      glass = successor->glass;
+      warning(from.glassLine, from.glassColumn,
+              glassSubstitutionWarning(from.glass, *successor, lineNumbers()));
     }
   }
   if (!glass) {
