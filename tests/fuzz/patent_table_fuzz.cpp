@@ -17,6 +17,7 @@
 #include "optics/import/patent_table.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
+#include "optics/prescription.h"
 
 namespace {
 
@@ -38,19 +39,20 @@ bool patentSamePrescription(const lenslab::optics::Prescription& a,
 void checkUnderstood(const lenslab::optics::PatentTable& table) {
   using lenslab::fuzz::check;
   for (const auto& row : table.rows) {
-    check(std::isfinite(row.radiusMm), "a row's radius is finite");
-    check(finiteOrAbsent(row.thicknessMm) && finiteOrAbsent(row.indexD) &&
-              finiteOrAbsent(row.abbeD),
-          "a row's d, n_d and V_d are finite");
+    check(std::isfinite(row.radiusMm) || row.radiusMm == lenslab::optics::kFlatRadius,
+          "a row's radius is finite, or flat (kFlatRadius)");
+    check(
+        finiteOrAbsent(row.thicknessMm) && finiteOrAbsent(row.indexD) && finiteOrAbsent(row.abbeD),
+        "a row's d, n_d and V_d are finite");
   }
   for (const auto& asphere : table.aspheres) {
     check(std::isfinite(asphere.conic), "a conic constant is finite");
     for (const auto& [power, coefficient] : asphere.terms)
       check(std::isfinite(coefficient), "an aspheric coefficient is finite");
   }
-  for (const auto* value : {&table.header.focalLengthMm, &table.header.fNumber,
-                            &table.header.halfFieldDeg, &table.header.imageHeightMm,
-                            &table.header.backFocusMm})
+  for (const auto* value :
+       {&table.header.focalLengthMm, &table.header.fNumber, &table.header.halfFieldDeg,
+        &table.header.imageHeightMm, &table.header.backFocusMm})
     check(!*value || std::isfinite((*value)->value), "a header value is finite");
   check(finiteOrAbsent(table.filmDistanceMm), "the film distance is finite");
 }

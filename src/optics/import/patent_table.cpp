@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <sstream>
+#include <string>
 
 #include "optics/import/imported_lens.h"
 #include "optics/import/patent_text.h"
@@ -211,6 +213,12 @@ struct PatentRowCells {
 
 std::size_t patentMeaningIndex(PatentColumn c) { return static_cast<std::size_t>(c); }
 
+// Where a row's n_d stands (where it is missing when it has none).
+std::size_t patentIndexAt(const PatentRowCells& cells) {
+  const std::optional<Cell>& cell = cells.byMeaning[patentMeaningIndex(PatentColumn::IndexD)];
+  return cell ? cell->begin : cells.missingAt;
+}
+
 class PatentReader {
  public:
   PatentReader(std::string_view text, const std::string& fileName,
@@ -251,6 +259,7 @@ class PatentReader {
   std::vector<bool> tableLine_;
   std::vector<std::size_t> rowLineIndex_;  // the lines_ index of each row
   std::vector<std::size_t> rowMissingAt_;  // where a missing d of each row is reported
+  std::vector<std::size_t> rowIndexAt_;    // where each row's n_d stands
   PatentTable table_;
   Diagnostics diagnostics_;
   LensFileResult lens_;
@@ -501,6 +510,7 @@ void PatentReader::readColumnRows(std::size_t firstLine,
     table_.rows.push_back(row);
     rowLineIndex_.push_back(li);
     rowMissingAt_.push_back(rowCells.missingAt);
+    rowIndexAt_.push_back(patentIndexAt(rowCells));
   }
 }
 
@@ -554,12 +564,48 @@ bool PatentReader::fillRow(const FoldedLine& line, const PatentRowCells& cells,
           "surface " + std::to_string(row.surfaceNumber) + " has no r (radius) in this row");
     return false;
   }
+  const auto cellAt = [&](PatentColumn m) { return cells.byMeaning[patentMeaningIndex(m)]->begin; };
+  const std::string surface = "surface " + std::to_string(row.surfaceNumber);
   row.radiusMm = std::isinf(*radius) ? kFlatRadius : *radius;
+  if (std::abs(row.radiusMm) > kMaxLengthMm && !std::isinf(row.radiusMm)) {
+    // As a .zmx file's: a sphere that large is a plane to any ray lenslab traces.
+    std::ostringstream message;
+    message << "r " << *radius << " of " << surface << " is taken as flat (beyond " << kMaxLengthMm
+            << " mm)";
+    diagnostics_.note({fileName_, line.number, line.columnAt(cellAt(PatentColumn::Radius))},
+                      message.str());
+    row.radiusMm = kFlatRadius;
+  }
   if (thickness && std::isinf(*thickness)) {
-    error(line, cells.byMeaning[patentMeaningIndex(PatentColumn::Thickness)]->begin,
-          "d of surface " + std::to_string(row.surfaceNumber) + " is infinite");
+    error(line, cellAt(PatentColumn::Thickness), "d of " + surface + " is infinite");
     return false;
   }
+  // Values a lens cannot have: errors at the value. A finite one keeps its row (the paste window
+  // shows the row as read, with the error); an infinite one does not (what the reader
+  // understood stays finite).
+  bool keep = true;
+  if (thickness && std::abs(*thickness) > kMaxLengthMm) {
+    std::ostringstream message;
+    message << "d " << *thickness << " of " << surface << " is beyond lenslab's " << kMaxLengthMm
+            << " mm";
+    error(line, cellAt(PatentColumn::Thickness), message.str());
+  }
+  // A glass's numbers where the row gives them: n_d 1 to 10, V_d above 0.
+  if (index && *index != 1.0 && !(*index > 1.0 && *index <= kMaxRefractiveIndex)) {
+    std::ostringstream message;
+    message << "n_d " << *index << " of " << surface << " is not a refractive index (1 to "
+            << kMaxRefractiveIndex << ")";
+    error(line, cellAt(PatentColumn::IndexD), message.str());
+    keep = keep && std::isfinite(*index);
+  }
+  if (abbe && !(*abbe > 0.0 && *abbe <= kMaxAbbeNumber)) {
+    std::ostringstream message;
+    message << "V_d " << *abbe << " of " << surface << " is not an Abbe number (above 0, at most "
+            << kMaxAbbeNumber << ")";
+    error(line, cellAt(PatentColumn::AbbeD), message.str());
+    keep = keep && std::isfinite(*abbe);
+  }
+  if (!keep) return false;
   row.thicknessMm = thickness;
   // n_d 1 (some tables print air's index) is air.
   if (index && *index != 1.0) {
@@ -671,6 +717,7 @@ void PatentReader::readEquationRows(std::size_t firstLine) {
     table_.rows.push_back(row);
     rowLineIndex_.push_back(li);
     rowMissingAt_.push_back(cells.missingAt);
+    rowIndexAt_.push_back(patentIndexAt(cells));
   }
 }
 
@@ -713,6 +760,15 @@ void PatentReader::buildLens() {
       error(lines_[rowLineIndex_[i]], rowMissingAt_[i],
             "surface " + std::to_string(rows[i].surfaceNumber) + " has no d (thickness)");
   const PatentTableRow& last = rows.back();
+  // The film lies behind the last row, in its medium: a camera's image is in air. A last row
+  // with a glass is a table cut short (or one row alone).
+  if (last.indexD) {
+    std::ostringstream message;
+    message << "the last surface (" << last.surfaceNumber << ") has n_d " << *last.indexD
+            << ": the film would be inside glass; a table ends with the air before the image (is "
+               "it cut short?)";
+    error(lines_[rowLineIndex_.back()], rowIndexAt_.back(), message.str());
+  }
   if (last.thicknessMm) {
     table_.filmDistanceMm = *last.thicknessMm;
     table_.filmDistanceFrom = "the last row's d (line " + std::to_string(last.line) + ")";
