@@ -52,12 +52,18 @@ bool objectInFocus(const Focus& focus, const optics::LensSystem& lens,
   return film.ok() && std::abs(*film.valueMm - lens.filmDistanceMm()) <= 1e-3;
 }
 
-int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
+int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven,
+               bool wavelengthGiven) {
   const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, objectGiven);
   if (!request) return kUsageError;
   const std::vector<const AnalysisReport*>& reports = request->reports;
   const std::optional<double>& objectDistanceMm = request->objectDistanceMm;
-  auto lens = loadLensOrReport(arguments.lensPath, "analyze", arguments.wavelengthNm);
+  CommandWavelength wavelength;
+  auto lens = loadLensAtWavelengthOrReport(
+                  arguments.lensPath, "analyze",
+                  wavelengthGiven ? std::optional<double>(arguments.wavelengthNm) : std::nullopt,
+                  {kAnalyzeMinWavelengthNm, kAnalyzeMaxWavelengthNm}, wavelength)
+                  .system;
   if (!lens) return 1;
   if (arguments.stopDiameterMm > 0.0) {
     // Before focusing: the focus of a real lens moves as it is stopped down.
@@ -108,7 +114,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   context.setup.fieldFractions = arguments.fieldFractions;
   context.setup.filmHalfDiagonalMm = 0.5 * arguments.filmDiagonalMm;
   context.setup.objectDistanceFromFilmMm = objectDistanceMm;
-  context.setup.wavelengthNm = arguments.wavelengthNm;
+  context.setup.wavelengthNm = wavelength.nm;
   // The fields' one scale (optics/field_coverage.h), searched once for every report. A film
   // corner beyond the lens's image circle is said in the header and the JSON, as the viewer's
   // panels say it: the fields then spread over the circle, not the film.
@@ -122,7 +128,8 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
       {"film_distance_mm", lens->filmDistanceMm()},
       {"film_diagonal_mm", arguments.filmDiagonalMm},
       {"stop_diameter_mm", lens->stopDiameterMm()},
-      {"wavelength_nm", arguments.wavelengthNm},
+      {"wavelength_nm", wavelength.nm},
+      {"wavelength_from", wavelength.from},  // "option", "design" (the file's) or "default"
       {"object_distance_mm",
        objectDistanceMm ? nlohmann::json(*objectDistanceMm) : nlohmann::json(nullptr)},
       {"object_at_infinity", !objectDistanceMm.has_value()},
@@ -145,9 +152,9 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
           (focus.atObject ? "" : "as given, ") + focusText(focus) + "), film diagonal " +
           millimetresText(arguments.filmDiagonalMm) + ", object at " +
           objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
-  char wavelength[32];
-  std::snprintf(wavelength, sizeof wavelength, "%.2f nm\n", arguments.wavelengthNm);
-  text += wavelength;
+  char wavelengthText[32];
+  std::snprintf(wavelengthText, sizeof wavelengthText, "%.2f nm ", wavelength.nm);
+  text += wavelengthText + wavelength.describe() + "\n";
   if (!coverageWarning.empty()) text += "warning: " + coverageWarning + "\n";
   nlohmann::json unavailable = nlohmann::json::object();
   for (const AnalysisReport* report : reports) {
@@ -183,10 +190,12 @@ void addAnalyzeCommand(CLI::App& app, SubcommandRunner& run) {
   const AnalyzeOptions options = addAnalyzeOptions(*analyze, *arguments);
   CLI::Option* film = options.filmDistance;
   CLI::Option* object = options.objectDistance;
-  analyze->callback([arguments, film, object, &run] {
+  CLI::Option* wavelength = options.wavelength;
+  analyze->callback([arguments, film, object, wavelength, &run] {
     const bool filmGiven = film->count() > 0, objectGiven = object->count() > 0;
-    run = [arguments, filmGiven, objectGiven] {
-      return runAnalyze(*arguments, filmGiven, objectGiven);
+    const bool wavelengthGiven = wavelength->count() > 0;
+    run = [arguments, filmGiven, objectGiven, wavelengthGiven] {
+      return runAnalyze(*arguments, filmGiven, objectGiven, wavelengthGiven);
     };
   });
 }

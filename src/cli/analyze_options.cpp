@@ -85,10 +85,13 @@ AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments)
                   "Fields as fractions of the film's half diagonal (default 0,0.7,1)")
       ->delimiter(',')
       ->check(FiniteNumberBetween(0.0, 1.0, "of the half diagonal"));
-  analyze
-      .add_option("--wavelength", arguments.wavelengthNm,
-                  "Wavelength in nm for the monochromatic analyses (default 587.56, the d line)")
-      ->check(FiniteNumberBetween(350.0, 1000.0, "nm"));
+  options.wavelength =
+      analyze
+          .add_option("--wavelength", arguments.wavelengthNm,
+                      "Wavelength in nm for the monochromatic analyses (default: the lens's "
+                      "primary design wavelength when its file states one, else 587.56, the d "
+                      "line)")
+          ->check(FiniteNumberBetween(kAnalyzeMinWavelengthNm, kAnalyzeMaxWavelengthNm, "nm"));
   analyze.add_option("--only", arguments.only,
                      "Run only these analyses, comma-separated (" + knownAnalysisKeys() + ")");
   return options;
