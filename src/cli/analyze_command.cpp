@@ -1,12 +1,16 @@
 #include "cli/analyze_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/analyze/analysis_report.h"
 #include "cli/analyze_options.h"
@@ -52,19 +56,56 @@ bool objectInFocus(const Focus& focus, const optics::LensSystem& lens,
   return film.ok() && std::abs(*film.valueMm - lens.filmDistanceMm()) <= 1e-3;
 }
 
+// The film and fields a lens file's design states as image heights (FTYP 2 or 3, YIM, a
+// patent's image height without an angle of view): a film whose half diagonal is the largest,
+// and each design field as a fraction of it. Object angles and heights are left to the defaults:
+// where they land on the film takes a search through the lens.
+struct DesignFilm {
+  double diagonalMm = 0.0;
+  std::vector<double> fieldFractions;
+};
+
+std::optional<DesignFilm> designFilm(const optics::DesignFields& fields) {
+  if (fields.kind != optics::FieldKind::ParaxialImageHeightMm &&
+      fields.kind != optics::FieldKind::RealImageHeightMm)
+    return std::nullopt;
+  double largest = 0.0;
+  for (double value : fields.values)
+    if (std::isfinite(value)) largest = std::max(largest, std::abs(value));
+  if (!(largest > 0.0)) return std::nullopt;
+  DesignFilm film;
+  film.diagonalMm = 2.0 * largest;
+  for (double value : fields.values)
+    if (std::isfinite(value))
+      film.fieldFractions.push_back(std::min(std::abs(value) / largest, 1.0));
+  std::sort(film.fieldFractions.begin(), film.fieldFractions.end());
+  film.fieldFractions.erase(std::unique(film.fieldFractions.begin(), film.fieldFractions.end()),
+                            film.fieldFractions.end());
+  return film;
+}
+
 int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven,
-               bool wavelengthGiven) {
+               bool wavelengthGiven, bool filmDiagonalGiven, bool fieldsGiven) {
   const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, objectGiven);
   if (!request) return kUsageError;
   const std::vector<const AnalysisReport*>& reports = request->reports;
   const std::optional<double>& objectDistanceMm = request->objectDistanceMm;
   CommandWavelength wavelength;
-  auto lens = loadLensAtWavelengthOrReport(
-                  arguments.lensPath, "analyze",
-                  wavelengthGiven ? std::optional<double>(arguments.wavelengthNm) : std::nullopt,
-                  {kAnalyzeMinWavelengthNm, kAnalyzeMaxWavelengthNm}, wavelength)
-                  .system;
+  const optics::LoadedLens loaded = loadLensAtWavelengthOrReport(
+      arguments.lensPath, "analyze",
+      wavelengthGiven ? std::optional<double>(arguments.wavelengthNm) : std::nullopt,
+      {kAnalyzeMinWavelengthNm, kAnalyzeMaxWavelengthNm}, wavelength);
+  auto lens = loaded.system;
   if (!lens) return 1;
+  // The film and fields: the options', else the design's image heights, else the defaults.
+  double filmDiagonalMm = arguments.filmDiagonalMm;
+  std::vector<double> fieldFractions = arguments.fieldFractions;
+  const char* filmFrom = filmDiagonalGiven ? "option" : "default";
+  if (const auto film = designFilm(loaded.file.design.fields); film && !filmDiagonalGiven) {
+    filmDiagonalMm = film->diagonalMm;
+    filmFrom = "design";
+    if (!fieldsGiven) fieldFractions = film->fieldFractions;
+  }
   if (arguments.stopDiameterMm > 0.0) {
     // Before focusing: the focus of a real lens moves as it is stopped down.
     lens = lens->withStopDiameter(arguments.stopDiameterMm);
@@ -111,8 +152,8 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   context.lensPath = arguments.lensPath;
   context.lens = lens;
   context.points = arguments.points;
-  context.setup.fieldFractions = arguments.fieldFractions;
-  context.setup.filmHalfDiagonalMm = 0.5 * arguments.filmDiagonalMm;
+  context.setup.fieldFractions = fieldFractions;
+  context.setup.filmHalfDiagonalMm = 0.5 * filmDiagonalMm;
   context.setup.objectDistanceFromFilmMm = objectDistanceMm;
   context.setup.wavelengthNm = wavelength.nm;
   // The fields' one scale (optics/field_coverage.h), searched once for every report. A film
@@ -126,7 +167,9 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   nlohmann::json json{
       {"lens", arguments.lensPath},
       {"film_distance_mm", lens->filmDistanceMm()},
-      {"film_diagonal_mm", arguments.filmDiagonalMm},
+      {"film_diagonal_mm", filmDiagonalMm},
+      // "option", "design" (twice the file's largest design image height) or "default".
+      {"film_diagonal_from", filmFrom},
       {"stop_diameter_mm", lens->stopDiameterMm()},
       {"wavelength_nm", wavelength.nm},
       {"wavelength_from", wavelength.from},  // "option", "design" (the file's) or "default"
@@ -141,7 +184,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
                                        : nlohmann::json(nullptr)},
       {"focused_at_infinity", focus.objectDistanceMm && std::isinf(*focus.objectDistanceMm)},
       {"object_in_focus", inFocus},
-      {"field_fractions", arguments.fieldFractions}};
+      {"field_fractions", fieldFractions}};
   std::string text;
   if (!focus.whyNot.empty()) json["focus_why_not"] = focus.whyNot;
   json["film_covered"] = fieldScale.filmCovered();
@@ -150,8 +193,9 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   // The header says where the film is, what it focuses, and which object the numbers are for.
   text += arguments.lensPath + ": film distance " + millimetresText(lens->filmDistanceMm()) + " (" +
           (focus.atObject ? "" : "as given, ") + focusText(focus) + "), film diagonal " +
-          millimetresText(arguments.filmDiagonalMm) + ", object at " +
-          objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
+          millimetresText(filmDiagonalMm) +
+          (std::string(filmFrom) == "design" ? " (twice the lens's design image height)" : "") +
+          ", object at " + objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
   char wavelengthText[32];
   std::snprintf(wavelengthText, sizeof wavelengthText, "%.2f nm ", wavelength.nm);
   text += wavelengthText + wavelength.describe() + "\n";
@@ -188,14 +232,15 @@ void addAnalyzeCommand(CLI::App& app, SubcommandRunner& run) {
       "given film distance: " +
           knownAnalysisKeys() + " (JSON keys)");
   const AnalyzeOptions options = addAnalyzeOptions(*analyze, *arguments);
-  CLI::Option* film = options.filmDistance;
-  CLI::Option* object = options.objectDistance;
-  CLI::Option* wavelength = options.wavelength;
-  analyze->callback([arguments, film, object, wavelength, &run] {
-    const bool filmGiven = film->count() > 0, objectGiven = object->count() > 0;
-    const bool wavelengthGiven = wavelength->count() > 0;
-    run = [arguments, filmGiven, objectGiven, wavelengthGiven] {
-      return runAnalyze(*arguments, filmGiven, objectGiven, wavelengthGiven);
+  analyze->callback([arguments, options, &run] {
+    const bool filmGiven = options.filmDistance->count() > 0;
+    const bool objectGiven = options.objectDistance->count() > 0;
+    const bool wavelengthGiven = options.wavelength->count() > 0;
+    const bool filmDiagonalGiven = options.filmDiagonal->count() > 0;
+    const bool fieldsGiven = options.fields->count() > 0;
+    run = [arguments, filmGiven, objectGiven, wavelengthGiven, filmDiagonalGiven, fieldsGiven] {
+      return runAnalyze(*arguments, filmGiven, objectGiven, wavelengthGiven, filmDiagonalGiven,
+                        fieldsGiven);
     };
   });
 }

@@ -34,6 +34,8 @@ struct AnalyzeOptions {
   CLI::Option* filmDistance = nullptr;
   CLI::Option* objectDistance = nullptr;
   CLI::Option* wavelength = nullptr;
+  CLI::Option* filmDiagonal = nullptr;
+  CLI::Option* fields = nullptr;
 };
 
 // What --wavelength accepts, and so the design wavelengths analyze traces at.

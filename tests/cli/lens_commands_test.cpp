@@ -187,6 +187,39 @@ TEST_F(LensCommands, InfoAndAnalyzeUseTheLensesDesignWavelength) {
   EXPECT_EQ(analyzedGiven.value("wavelength_from", ""), "option");
 }
 
+// A file that states its fields as image heights (a patent's Y' without an angle of view):
+// analyze's film is twice the largest (12 mm -> 24 mm) and its fields the design's, {0, 12 mm}
+// as fractions {0, 1}; the options still win.
+TEST_F(LensCommands, AnalyzeTakesTheFilmFromTheDesignImageHeight) {
+  const std::string table =
+      writeFile("image-height.txt",
+                "Fno 4.0  Y' 12.0\nSurface r d nd vd\n1 50 5 1.5168 64.2\n2 -200 2\n3(Stop) INF 3\n"
+                "4 -80 40\n");
+  auto json = [&](const std::string& arguments) {
+    const auto r = testing::runProcess(lenslab(arguments), scratch);
+    EXPECT_EQ(r.exitCode, 0) << arguments << "\n" << r.err;
+    return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+  };
+  const auto design = json("analyze --json --only seidel " + table);
+  EXPECT_DOUBLE_EQ(design.value("film_diagonal_mm", 0.0), 24.0);
+  EXPECT_EQ(design.value("film_diagonal_from", ""), "design");
+  EXPECT_EQ(design.value("field_fractions", std::vector<double>{}),
+            (std::vector<double>{0.0, 1.0}));
+  const auto given = json("analyze --json --only seidel --film-diagonal 43.27 " + table);
+  EXPECT_DOUBLE_EQ(given.value("film_diagonal_mm", 0.0), 43.27);
+  EXPECT_EQ(given.value("film_diagonal_from", ""), "option");
+  EXPECT_EQ(given.value("field_fractions", std::vector<double>{}),
+            (std::vector<double>{0.0, 0.7, 1.0}));
+  const auto fields = json("analyze --json --only seidel --fields 0,0.5 " + table);
+  EXPECT_DOUBLE_EQ(fields.value("film_diagonal_mm", 0.0), 24.0);
+  EXPECT_EQ(fields.value("field_fractions", std::vector<double>{}),
+            (std::vector<double>{0.0, 0.5}));
+  // A lens whose file states no fields: the full-frame default.
+  EXPECT_EQ(json("analyze --json --only seidel " + lensPath("dgauss-50mm.dat"))
+                .value("film_diagonal_from", ""),
+            "default");
+}
+
 // The chromatic focal shift (F - C back focus from infinity) of a plano-convex singlet, against
 // the thick-lens formula with indices from the two-term Cauchy fit to n_d and V_d worked here;
 // null (and a dash with the reason in the text) without V_d.
