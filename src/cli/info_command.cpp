@@ -188,6 +188,8 @@ nlohmann::json toJson(const optics::LoadedLens& loaded, const InfoArguments& arg
   if (!loaded.file.source.empty()) out["source"] = loaded.file.source;
   if (loaded.file.publishedEflMm)
     out["published_efl_mm"] = finiteOrNull(*loaded.file.publishedEflMm);
+  if (!loaded.file.lensType.empty()) out["type"] = loaded.file.lensType;
+  if (loaded.file.year) out["year"] = *loaded.file.year;
   return out;
 }
 
@@ -227,6 +229,11 @@ void printText(const optics::LoadedLens& loaded, const InfoArguments& arguments)
   const optics::LensSystem& lens = *loaded.system;
   if (!loaded.file.title.empty()) std::printf("%s\n", loaded.file.title.c_str());
   if (!loaded.file.source.empty()) std::printf("source: %s\n", loaded.file.source.c_str());
+  if (!loaded.file.lensType.empty() || loaded.file.year) {
+    std::string kind = loaded.file.lensType;
+    if (loaded.file.year) kind += (kind.empty() ? "" : ", ") + std::to_string(*loaded.file.year);
+    std::printf("type: %s\n", kind.c_str());
+  }
   const optics::FirstOrderData& fo = lens.firstOrder();
   const BeamFigures beam = beamFigures(lens);
   auto line = [](const char* label, double value, const char* unit) {

@@ -41,6 +41,10 @@ struct LensFile {
   std::string title;
   std::string source;
   std::optional<double> publishedEflMm;
+  // The kind of design (`double-Gauss`, `telephoto`, `fisheye`, ...) and the year of the source
+  // (a patent's filing or publication year, as the file says), for the library browser.
+  std::string lensType;
+  std::optional<int> year;
   // The wavelengths, fields and aperture the lens was designed for, when the file states them.
   DesignConditions design;
   // Line number (1-based) of each surface row, for error messages that point at a row.

@@ -346,10 +346,11 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
       continue;
     }
 
-    const bool isText = key.text == "title" || key.text == "source" || key.text == "note";
+    const bool isText =
+        key.text == "title" || key.text == "source" || key.text == "note" || key.text == "type";
     const bool once = isText ? key.text != "note"
                              : key.text == "published_efl_mm" || key.text == "aperture" ||
-                                   key.text.starts_with("design_");
+                                   key.text == "year" || key.text.starts_with("design_");
     if (once) {
       const auto [at, inserted] = onceKeys.emplace(std::string(key.text), line.lineNumber);
       if (!inserted)
@@ -365,6 +366,7 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
         return fail(line.lineNumber, valueColumn, "'" + std::string(key.text) + "' needs a text");
       if (key.text == "title") lens.title = value;
       if (key.text == "source") lens.source = value;
+      if (key.text == "type") lens.lensType = value;
       if (key.text == "note") lens.headerComments.push_back(value);
       continue;
     }
@@ -376,6 +378,17 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
       const std::string error = parseNamedValue(tokens[1].text, key.text, ValueKind::Focal, value);
       if (!error.empty()) return fail(line.lineNumber, tokens[1].column, error);
       lens.publishedEflMm = value;
+      continue;
+    }
+    if (key.text == "year") {
+      // A whole number of four digits: a source's year, never a fraction or a sign.
+      const bool fourDigits = tokens.size() == 2 && tokens[1].text.size() == 4 &&
+                              std::all_of(tokens[1].text.begin(), tokens[1].text.end(),
+                                          [](char c) { return c >= '0' && c <= '9'; });
+      if (!fourDigits)
+        return fail(line.lineNumber, tokens.size() < 2 ? valueColumn : tokens[1].column,
+                    "'year' takes one year of four digits (e.g. 1927)");
+      lens.year = std::stoi(std::string(tokens[1].text));
       continue;
     }
     if (key.text == "aperture") {
@@ -395,7 +408,7 @@ LensFileResult parseNativeLensText(std::string_view text, const std::string& fil
     if (key.text != "surface" && key.text != "stop")
       return fail(line.lineNumber, key.column,
                   "unknown key '" + std::string(key.text) +
-                      "' (expected title, source, published_efl_mm, note, aperture, "
+                      "' (expected title, source, published_efl_mm, type, year, note, aperture, "
                       "design_wavelengths_nm, design_fields, design_aperture, surface or stop)");
 
     const bool isStop = key.text == "stop";
@@ -514,6 +527,8 @@ std::string formatNativeLensText(const LensFile& lens) {
   if (!singleLine(lens.title).empty()) out += "title " + singleLine(lens.title) + "\n";
   if (!singleLine(lens.source).empty()) out += "source " + singleLine(lens.source) + "\n";
   if (lens.publishedEflMm) out += "published_efl_mm " + exactNumber(*lens.publishedEflMm) + "\n";
+  if (!singleLine(lens.lensType).empty()) out += "type " + singleLine(lens.lensType) + "\n";
+  if (lens.year) out += "year " + std::to_string(*lens.year) + "\n";
   for (const std::string& note : lens.headerComments) {
     const std::string text = singleLine(note);
     out += text.empty() ? "note\n" : "note " + text + "\n";

@@ -38,6 +38,8 @@ const std::string kDoublet =
     "title Achromat 100 mm f/5 # not a comment here\n"
     "source Smith, Modern Lens Design, p. 2\n"
     "published_efl_mm 100.0\n"
+    "type cemented achromat # kept as written\n"
+    "year 1953\n"
     "note first note\n"
     "note second note\n"
     "aperture blades 6 curvature 0.5\n"
@@ -55,6 +57,8 @@ TEST(NativeLensFile, ReadsEveryPartOfAHandWrittenFile) {
   EXPECT_EQ(lens.source, "Smith, Modern Lens Design, p. 2");
   ASSERT_TRUE(lens.publishedEflMm);
   EXPECT_EQ(*lens.publishedEflMm, 100.0);
+  EXPECT_EQ(lens.lensType, "cemented achromat # kept as written");
+  EXPECT_EQ(lens.year, 1953);
   EXPECT_EQ(lens.headerComments, (std::vector<std::string>{"first note", "second note"}));
   EXPECT_EQ(lens.prescription.stopShape.kind, ApertureShape::Kind::Blades);
   EXPECT_EQ(lens.prescription.stopShape.bladeCount, 6);
@@ -73,7 +77,7 @@ TEST(NativeLensFile, ReadsEveryPartOfAHandWrittenFile) {
   EXPECT_EQ(s[2].profile.highestPower(), 6);
   EXPECT_TRUE(s[3].isStop());
   EXPECT_EQ(s[3].thicknessMm, 93.5);  // the last row's thickness: the film distance
-  EXPECT_EQ(lens.rowLines, (std::vector<int>{9, 10, 11, 13}));
+  EXPECT_EQ(lens.rowLines, (std::vector<int>{11, 12, 13, 15}));
 }
 
 TEST(NativeLensFile, ReadsBackExactlyWhatItWrites) {
@@ -82,6 +86,8 @@ TEST(NativeLensFile, ReadsBackExactlyWhatItWrites) {
   lens.source = "nowhere";
   lens.publishedEflMm = 0.1 + 0.2;  // 0.30000000000000004: only the shortest exact form keeps it
   lens.headerComments = {"one", "", "three"};
+  lens.lensType = "Tessar";
+  lens.year = 1902;
   lens.prescription.stopShape.kind = ApertureShape::Kind::Blades;
   lens.prescription.stopShape.bladeCount = 7;
   lens.prescription.stopShape.rotationDeg = 12.5;
@@ -100,6 +106,8 @@ TEST(NativeLensFile, ReadsBackExactlyWhatItWrites) {
   EXPECT_EQ(r.lens->source, lens.source);
   EXPECT_EQ(r.lens->publishedEflMm, lens.publishedEflMm);
   EXPECT_EQ(r.lens->headerComments, lens.headerComments);
+  EXPECT_EQ(r.lens->lensType, lens.lensType);
+  EXPECT_EQ(r.lens->year, lens.year);
   EXPECT_TRUE(r.lens->prescription.stopShape == lens.prescription.stopShape);
   ASSERT_EQ(r.lens->prescription.surfaces.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) {
@@ -140,6 +148,12 @@ TEST(NativeLensFile, RefusesWhatItCannotReadAtItsLineAndColumn) {
   expectError(v + "surface radius 1e999 thickness 5 diameter 20\n", 2, 16, "out of range");
   expectError(v + "title one\ntitle two\n", 3, 1, "a second 'title' (the first is on line 2)");
   expectError(v + "title\n", 2, 7, "'title' needs a text");
+  expectError(v + "type\n", 2, 6, "'type' needs a text");
+  expectError(v + "year 1902\nyear 1903\n", 3, 1, "a second 'year' (the first is on line 2)");
+  expectError(v + "year 95\n", 2, 6, "four digits");
+  expectError(v + "year -1902\n", 2, 6, "four digits");
+  expectError(v + "year 1902 1903\n", 2, 6, "four digits");
+  expectError(v + "year\n", 2, 6, "four digits");
   expectError(v + "source x\n", 2, 1, "no surfaces");
   expectError(v + "surface radius 40 thickness 5 nd 0.5 diameter 20\n", 2, 34, "from 1 to");
   // Validation's errors point at the row of the surface they name (line 3: surface 2).

@@ -62,7 +62,8 @@ std::string surfaceOutOfRange(std::size_t surface, std::size_t count) {
 }  // namespace
 
 LensDetails detailsOf(const optics::LensFile& file) {
-  return {file.headerComments, file.title, file.source, file.publishedEflMm, file.design};
+  return {file.headerComments, file.title,    file.source, file.publishedEflMm,
+          file.design,         file.lensType, file.year};
 }
 
 optics::LensFile lensFileOf(const optics::Prescription& prescription, const LensDetails& details) {
@@ -73,6 +74,8 @@ optics::LensFile lensFileOf(const optics::Prescription& prescription, const Lens
   file.source = details.source;
   file.publishedEflMm = details.publishedEflMm;
   file.design = details.design;
+  file.lensType = details.lensType;
+  file.year = details.year;
   return file;
 }
 

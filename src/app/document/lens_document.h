@@ -27,8 +27,11 @@ struct LensDetails {
   std::string source;                    // the publication the prescription comes from
   std::optional<double> publishedEflMm;  // the focal length printed there
   optics::DesignConditions design;       // design wavelengths, fields and aperture
+  std::string lensType;                  // `double-Gauss`, `telephoto`, ...
+  std::optional<int> year;               // of the source
   bool empty() const {
-    return notes.empty() && title.empty() && source.empty() && !publishedEflMm && design.empty();
+    return notes.empty() && title.empty() && source.empty() && !publishedEflMm && design.empty() &&
+           lensType.empty() && !year;
   }
 };
 LensDetails detailsOf(const optics::LensFile& file);

@@ -73,6 +73,15 @@ std::optional<AsphSurfaceRef> asphSurfaceRef(const std::string& text) {
     if (const auto n = digitsAt(q, end)) return finish(*n, end);
     return std::nullopt;
   }
+  // "asph 6", "asp 6": a table's own "ASPH" mark repeated before the surface's data
+  for (const std::string_view word : {std::string_view("asph"), std::string_view("asp")}) {
+    if (t.compare(p, word.size(), word) != 0) continue;
+    std::size_t q = p + word.size();
+    if (q >= t.size() || t[q] != ' ') break;
+    while (q < t.size() && t[q] == ' ') ++q;
+    if (const auto n = digitsAt(q, end)) return finish(*n, end);
+    return std::nullopt;
+  }
   // "r7:", "s6"
   if (p < t.size() && (t[p] == 'r' || t[p] == 's')) {
     if (const auto n = digitsAt(p + 1, end)) return finish(*n, end);
@@ -232,7 +241,8 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
     }
     std::vector<AsphPair> pairs;
     const std::size_t stop = asphReadPairs(line.text, ref ? ref->end : 0, pairs);
-    if (stop < line.text.size())
+    // A remark after the coefficients, "# from ...", is no coefficient.
+    if (stop < line.text.size() && line.text[stop] != '#')
       diagnostics.error({fileName, line.number, line.columnAt(stop)},
                         "cannot read '" + trimmed(line.text.substr(stop, 24)) +
                             "' as an aspheric coefficient (K = ..., A4 = ...)");
@@ -348,6 +358,7 @@ namespace {
 enum class HeaderKey {
   Focal,
   FNumber,
+  FSlash,  // "F/4.00": an f-number, unless the text names one with a word (a title's "f/3.5-5.6")
   HalfField,
   FullField,
   AngleOfView,
@@ -365,6 +376,7 @@ constexpr HeaderWord kHeaderWords[] = {
     {"half angle of view", HeaderKey::HalfField},
     {"back focal length", HeaderKey::BackFocus},
     {"half field angle", HeaderKey::HalfField},
+    {"half field", HeaderKey::HalfField},
     {"angle of view", HeaderKey::AngleOfView},
     {"image height", HeaderKey::ImageHeight},
     {"focal length", HeaderKey::Focal},
@@ -375,6 +387,8 @@ constexpr HeaderWord kHeaderWords[] = {
     {"2omega", HeaderKey::FullField},
     {"omega", HeaderKey::HalfField},
     {"f/no", HeaderKey::FNumber},
+    {"2w", HeaderKey::FullField},  // 2ω typed without Greek
+    {"f/", HeaderKey::FSlash},
     {"fno.", HeaderKey::FNumber},
     {"f no", HeaderKey::FNumber},
     {"fno", HeaderKey::FNumber},
@@ -393,6 +407,7 @@ const char* headerKeyName(HeaderKey key) {
     case HeaderKey::Focal:
       return "f";
     case HeaderKey::FNumber:
+    case HeaderKey::FSlash:
       return "Fno";
     case HeaderKey::HalfField:
       return "w";
@@ -412,6 +427,7 @@ const char* headerKeyName(HeaderKey key) {
 
 void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bool>& skipLine,
                       const std::string& fileName, PatentHeader& header, Diagnostics& diagnostics) {
+  std::optional<PatentHeaderValue> slashFNumber;
   for (std::size_t li = 0; li < lines.size(); ++li) {
     if (skipLine[li]) continue;
     const FoldedLine& line = lines[li];
@@ -421,7 +437,9 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
       for (const HeaderWord& w : kHeaderWords) {
         if (t.compare(p, w.text.size(), w.text) != 0) continue;
         std::size_t q = p + w.text.size();
-        if (q < t.size() && (asphIsAlnum(t[q]) || t[q] == '/' || t[q] == '-' || t[q] == '\''))
+        // A word ends here ("F/" is followed by its number at once).
+        if (w.text.back() != '/' && q < t.size() &&
+            (asphIsAlnum(t[q]) || t[q] == '/' || t[q] == '-' || t[q] == '\''))
           continue;
         HeaderKey key = w.key;
         while (q < t.size() && (t[q] == ' ' || t[q] == '\t')) ++q;
@@ -476,6 +494,9 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
           case HeaderKey::FNumber:
             slot = &header.fNumber;
             break;
+          case HeaderKey::FSlash:
+            slot = &slashFNumber;
+            break;
           case HeaderKey::HalfField:
             slot = &header.halfFieldDeg;
             break;
@@ -498,7 +519,7 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
         // Values no lens can have: an f-number below 0.5 (1 / (2 sin u') in air), a half field
         // outside 0..90 degrees, an image height that is not positive.
         const char* impossible = nullptr;
-        if (key == HeaderKey::FNumber && !(value >= 0.5))
+        if ((key == HeaderKey::FNumber || key == HeaderKey::FSlash) && !(value >= 0.5))
           impossible = " is below 0.5, the fastest an image in air can be (1 / (2 sin u'))";
         else if (slot == &header.halfFieldDeg && !(value >= 0.0 && value < 90.0))
           impossible = " is not a half field of 0 to 90 degrees";
@@ -523,6 +544,7 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
       }
     }
   }
+  if (!header.fNumber) header.fNumber = slashFNumber;
 }
 
 }  // namespace lenslab::optics::patent

@@ -85,7 +85,10 @@ std::optional<std::vector<PatentHeadingCell>> patentHeading(const FoldedLine& li
     if (readWholeNumber(cell.text)) return std::nullopt;
     PatentHeadingCell h{patentOriginalSpan(line, cell.begin, cell.end),
                         patentHeadingMeaning(cell.text), cell.begin, cell.end};
-    if (!tabs && !cells.empty() && patentHeadingContinues(cell.text)) {
+    // Two surface-number headings side by side are one ("# surf", "No. Surface").
+    const bool secondSurfaceWord = !tabs && !cells.empty() && h.meaning == PatentColumn::Surface &&
+                                   cells.back().meaning == PatentColumn::Surface;
+    if (!tabs && !cells.empty() && (patentHeadingContinues(cell.text) || secondSurfaceWord)) {
       PatentHeadingCell& previous = cells.back();
       const std::string merged =
           lowerAscii(line.text.substr(previous.begin, cell.end - previous.begin));
