@@ -360,6 +360,24 @@ TEST(PatentTableConventions, StopMarkings) {
   }
 }
 
+// The layout of ../shared/reference/library/tables: the heading is a comment line ("# surf ..."),
+// air is n_d 1.0 with V_d "-", a semi-diameter column the reader does not use, and the stop is
+// named in the last (note) column of a flat row.
+TEST(PatentTableConventions, CommentedHeadingAndStopInANoteColumn) {
+  const PatentTableResult r = readPatentTable(
+      "# surf  radius   thickness  nd      vd     semi_diam  note\n"
+      "  1     50       5          1.5168  64.2   20\n"
+      "  2     -200     2          1.0     -      20\n"
+      "  3     inf      3          1.0     -      15         STOP\n"
+      "  4     -80      40         1.0     -      20\n",
+      "library.txt");
+  expectSmallLens(r);
+  ASSERT_EQ(r.table.columns.size(), 7u);
+  EXPECT_EQ(r.table.columns[0].meaning, PatentColumn::Surface);
+  EXPECT_EQ(r.table.columns[5].meaning, PatentColumn::Ignored);
+  EXPECT_FALSE(r.table.rows[0].stop);
+  EXPECT_FALSE(r.table.rows[3].stop);
+}
 TEST(PatentTableConventions, StopOnARefractingSurfaceBecomesAStopRowAtItsVertex) {
   // A heading without a surface column: rows start with r.
   const PatentTableResult r = readPatentTable(
