@@ -1,12 +1,16 @@
 #include "cli/analyze_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/analyze/analysis_report.h"
 #include "cli/analyze_options.h"
@@ -52,6 +56,40 @@ bool objectInFocus(const Focus& focus, const optics::LensSystem& lens,
   return film.ok() && std::abs(*film.valueMm - lens.filmDistanceMm()) <= 1e-3;
 }
 
+// The film and fields a lens file's design states as image heights (FTYP 2 or 3, YIM, a
+// patent's image height without an angle of view): a film whose half diagonal is the largest,
+// and each design field as a fraction of it. Object angles and heights are left to the defaults:
+// where they land on the film takes a search through the lens.
+struct DesignFilm {
+  double diagonalMm = 0.0;
+  std::vector<double> fieldFractions;
+};
+
+std::optional<DesignFilm> designFilm(const optics::DesignFields& fields) {
+  if (fields.kind != optics::FieldKind::ParaxialImageHeightMm &&
+      fields.kind != optics::FieldKind::RealImageHeightMm)
+    return std::nullopt;
+  double largest = 0.0;
+  for (double value : fields.values)
+    if (std::isfinite(value)) largest = std::max(largest, std::abs(value));
+  if (!(largest > 0.0)) return std::nullopt;
+  DesignFilm film;
+  film.diagonalMm = 2.0 * largest;
+  for (double value : fields.values)
+    if (std::isfinite(value))
+      film.fieldFractions.push_back(std::min(std::abs(value) / largest, 1.0));
+  std::sort(film.fieldFractions.begin(), film.fieldFractions.end());
+  film.fieldFractions.erase(std::unique(film.fieldFractions.begin(), film.fieldFractions.end()),
+                            film.fieldFractions.end());
+  return film;
+}
+
+// Which of the settings the command line gave (the others come from each lens's design, or
+// the defaults).
+struct GivenOptions {
+  bool film = false, object = false, wavelength = false, filmDiagonal = false, fields = false;
+};
+
 // One lens's analyses: the JSON and the text `analyze` prints for it alone.
 struct LensAnalysis {
   nlohmann::json json;
@@ -63,11 +101,25 @@ struct LensAnalysis {
 // cannot be analysed at all (unreadable, cannot be focused) has been printed.
 std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
                                         const AnalyzeArguments& arguments,
-                                        const AnalyzeRequest& request, bool filmGiven) {
+                                        const AnalyzeRequest& request, const GivenOptions& given) {
   const std::vector<const AnalysisReport*>& reports = request.reports;
   const std::optional<double>& objectDistanceMm = request.objectDistanceMm;
-  auto lens = loadLensOrReport(lensPath, "analyze", arguments.wavelengthNm);
+  CommandWavelength wavelength;
+  const optics::LoadedLens loaded = loadLensAtWavelengthOrReport(
+      lensPath, "analyze",
+      given.wavelength ? std::optional<double>(arguments.wavelengthNm) : std::nullopt,
+      {kAnalyzeMinWavelengthNm, kAnalyzeMaxWavelengthNm}, wavelength);
+  auto lens = loaded.system;
   if (!lens) return std::nullopt;
+  // The film and fields: the options', else the design's image heights, else the defaults.
+  double filmDiagonalMm = arguments.filmDiagonalMm;
+  std::vector<double> fieldFractions = arguments.fieldFractions;
+  const char* filmFrom = given.filmDiagonal ? "option" : "default";
+  if (const auto film = designFilm(loaded.file.design.fields); film && !given.filmDiagonal) {
+    filmDiagonalMm = film->diagonalMm;
+    filmFrom = "design";
+    if (!given.fields) fieldFractions = film->fieldFractions;
+  }
   if (arguments.stopDiameterMm > 0.0) {
     // Before focusing: the focus of a real lens moves as it is stopped down.
     lens = lens->withStopDiameter(arguments.stopDiameterMm);
@@ -82,7 +134,7 @@ std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
   // that film distance focuses, so that numbers for an object at infinity are never read as the
   // in-focus ones when they are not.
   Focus focus;
-  if (filmGiven) {
+  if (given.film) {
     lens = lens->withFilmDistance(arguments.filmDistanceMm);
     if (!lens) {
       std::cerr << "lenslab analyze: --film-distance " << arguments.filmDistanceMm
@@ -115,10 +167,10 @@ std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
   context.lensPath = lensPath;
   context.lens = lens;
   context.points = arguments.points;
-  context.setup.fieldFractions = arguments.fieldFractions;
-  context.setup.filmHalfDiagonalMm = 0.5 * arguments.filmDiagonalMm;
+  context.setup.fieldFractions = fieldFractions;
+  context.setup.filmHalfDiagonalMm = 0.5 * filmDiagonalMm;
   context.setup.objectDistanceFromFilmMm = objectDistanceMm;
-  context.setup.wavelengthNm = arguments.wavelengthNm;
+  context.setup.wavelengthNm = wavelength.nm;
   // The fields' one scale (optics/field_coverage.h), searched once for every report. A film
   // corner beyond the lens's image circle is said in the header and the JSON, as the viewer's
   // panels say it: the fields then spread over the circle, not the film.
@@ -130,9 +182,12 @@ std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
   nlohmann::json json{
       {"lens", lensPath},
       {"film_distance_mm", lens->filmDistanceMm()},
-      {"film_diagonal_mm", arguments.filmDiagonalMm},
+      {"film_diagonal_mm", filmDiagonalMm},
+      // "option", "design" (twice the file's largest design image height) or "default".
+      {"film_diagonal_from", filmFrom},
       {"stop_diameter_mm", lens->stopDiameterMm()},
-      {"wavelength_nm", arguments.wavelengthNm},
+      {"wavelength_nm", wavelength.nm},
+      {"wavelength_from", wavelength.from},  // "option", "design" (the file's) or "default"
       {"object_distance_mm",
        objectDistanceMm ? nlohmann::json(*objectDistanceMm) : nlohmann::json(nullptr)},
       {"object_at_infinity", !objectDistanceMm.has_value()},
@@ -144,7 +199,7 @@ std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
                                        : nlohmann::json(nullptr)},
       {"focused_at_infinity", focus.objectDistanceMm && std::isinf(*focus.objectDistanceMm)},
       {"object_in_focus", inFocus},
-      {"field_fractions", arguments.fieldFractions}};
+      {"field_fractions", fieldFractions}};
   std::string text;
   if (!focus.whyNot.empty()) json["focus_why_not"] = focus.whyNot;
   json["film_covered"] = fieldScale.filmCovered();
@@ -153,11 +208,12 @@ std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
   // The header says where the film is, what it focuses, and which object the numbers are for.
   text += lensPath + ": film distance " + millimetresText(lens->filmDistanceMm()) + " (" +
           (focus.atObject ? "" : "as given, ") + focusText(focus) + "), film diagonal " +
-          millimetresText(arguments.filmDiagonalMm) + ", object at " +
-          objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
-  char wavelength[32];
-  std::snprintf(wavelength, sizeof wavelength, "%.2f nm\n", arguments.wavelengthNm);
-  text += wavelength;
+          millimetresText(filmDiagonalMm) +
+          (std::string(filmFrom) == "design" ? " (twice the lens's design image height)" : "") +
+          ", object at " + objectText(objectDistanceMm) + (inFocus ? "" : " (out of focus)") + ", ";
+  char wavelengthText[32];
+  std::snprintf(wavelengthText, sizeof wavelengthText, "%.2f nm ", wavelength.nm);
+  text += wavelengthText + wavelength.describe() + "\n";
   if (!coverageWarning.empty()) text += "warning: " + coverageWarning + "\n";
   nlohmann::json unavailable = nlohmann::json::object();
   for (const AnalysisReport* report : reports) {
@@ -177,11 +233,11 @@ std::optional<LensAnalysis> analyzeLens(const std::string& lensPath,
   return LensAnalysis{std::move(json), std::move(text), unavailable.empty()};
 }
 
-int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiven) {
-  const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, objectGiven);
+int runAnalyze(const AnalyzeArguments& arguments, const GivenOptions& given) {
+  const std::optional<AnalyzeRequest> request = checkAnalyzeArguments(arguments, given.object);
   if (!request) return kUsageError;
   const std::optional<LensAnalysis> lens =
-      analyzeLens(arguments.lensPath, arguments, *request, filmGiven);
+      analyzeLens(arguments.lensPath, arguments, *request, given);
   if (!lens) return 1;
   if (arguments.comparePath.empty()) {
     std::cout << (arguments.json ? lens->json.dump(2) + "\n" : lens->text);
@@ -190,7 +246,7 @@ int runAnalyze(const AnalyzeArguments& arguments, bool filmGiven, bool objectGiv
   // --compare B: the reference analysed with the same options, as `analyze B` alone would be;
   // both in one JSON object, {"lens": A's, "reference": B's}, or one text after the other.
   const std::optional<LensAnalysis> reference =
-      analyzeLens(arguments.comparePath, arguments, *request, filmGiven);
+      analyzeLens(arguments.comparePath, arguments, *request, given);
   if (!reference) return 1;
   if (arguments.json) {
     const nlohmann::json both{{"lens", lens->json}, {"reference", reference->json}};
@@ -211,13 +267,14 @@ void addAnalyzeCommand(CLI::App& app, SubcommandRunner& run) {
       "given film distance: " +
           knownAnalysisKeys() + " (JSON keys)");
   const AnalyzeOptions options = addAnalyzeOptions(*analyze, *arguments);
-  CLI::Option* film = options.filmDistance;
-  CLI::Option* object = options.objectDistance;
-  analyze->callback([arguments, film, object, &run] {
-    const bool filmGiven = film->count() > 0, objectGiven = object->count() > 0;
-    run = [arguments, filmGiven, objectGiven] {
-      return runAnalyze(*arguments, filmGiven, objectGiven);
-    };
+  analyze->callback([arguments, options, &run] {
+    GivenOptions given;
+    given.film = options.filmDistance->count() > 0;
+    given.object = options.objectDistance->count() > 0;
+    given.wavelength = options.wavelength->count() > 0;
+    given.filmDiagonal = options.filmDiagonal->count() > 0;
+    given.fields = options.fields->count() > 0;
+    run = [arguments, given] { return runAnalyze(*arguments, given); };
   });
 }
 

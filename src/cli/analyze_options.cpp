@@ -72,11 +72,13 @@ AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments)
       "Object distance from the film plane (mm, or 3.6 m), or 'inf' (the default). Without "
       "--film-distance the lens is focused there first; with it the film stays where it is "
       "given, and the header says which object distance is then in focus");
-  analyze
-      .add_option("--film-diagonal", arguments.filmDiagonalMm,
-                  "Film diagonal in mm; curves run from the axis to its corner (default "
-                  "43.27, full frame)")
-      ->check(PositiveFiniteNumber());
+  options.filmDiagonal =
+      analyze
+          .add_option("--film-diagonal", arguments.filmDiagonalMm,
+                      "Film diagonal in mm; curves run from the axis to its corner (default: "
+                      "twice the lens's largest design image height when its file states its "
+                      "fields as image heights, else 43.27, full frame)")
+          ->check(PositiveFiniteNumber());
   analyze
       .add_option("--stop-diameter", arguments.stopDiameterMm,
                   "Open or close the iris to this diameter in mm (default: the file's)")
@@ -85,15 +87,20 @@ AnalyzeOptions addAnalyzeOptions(CLI::App& analyze, AnalyzeArguments& arguments)
       .add_option("--points", arguments.points,
                   "Points from the axis to the film corner (default 64)")
       ->check(CLI::Range(2, 4096));
-  analyze
-      .add_option("--fields", arguments.fieldFractions,
-                  "Fields as fractions of the film's half diagonal (default 0,0.7,1)")
-      ->delimiter(',')
-      ->check(FiniteNumberBetween(0.0, 1.0, "of the half diagonal"));
-  analyze
-      .add_option("--wavelength", arguments.wavelengthNm,
-                  "Wavelength in nm for the monochromatic analyses (default 587.56, the d line)")
-      ->check(FiniteNumberBetween(350.0, 1000.0, "nm"));
+  options.fields =
+      analyze
+          .add_option("--fields", arguments.fieldFractions,
+                      "Fields as fractions of the film's half diagonal (default: the lens's "
+                      "design image heights when the film is sized from them, else 0,0.7,1)")
+          ->delimiter(',')
+          ->check(FiniteNumberBetween(0.0, 1.0, "of the half diagonal"));
+  options.wavelength =
+      analyze
+          .add_option("--wavelength", arguments.wavelengthNm,
+                      "Wavelength in nm for the monochromatic analyses (default: the lens's "
+                      "primary design wavelength when its file states one, else 587.56, the d "
+                      "line)")
+          ->check(FiniteNumberBetween(kAnalyzeMinWavelengthNm, kAnalyzeMaxWavelengthNm, "nm"));
   analyze.add_option("--only", arguments.only,
                      "Run only these analyses, comma-separated (" + knownAnalysisKeys() + ")");
   return options;

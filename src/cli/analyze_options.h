@@ -21,6 +21,8 @@ struct AnalyzeArguments {
   std::string objectDistance;     // text, so that "inf" works
   double filmDiagonalMm = 43.27;  // 36 x 24 mm full frame
   double stopDiameterMm = 0.0;    // 0: the file's
+  // --wavelength's; when it is not given, runAnalyze uses the lens's primary design wavelength
+  // (its file's) or the d line.
   double wavelengthNm = optics::LensSystem::kDefaultWavelengthNm;
   int points = 64;
   std::vector<double> fieldFractions{0.0, 0.7, 1.0};
@@ -34,7 +36,14 @@ struct AnalyzeArguments {
 struct AnalyzeOptions {
   CLI::Option* filmDistance = nullptr;
   CLI::Option* objectDistance = nullptr;
+  CLI::Option* wavelength = nullptr;
+  CLI::Option* filmDiagonal = nullptr;
+  CLI::Option* fields = nullptr;
 };
+
+// What --wavelength accepts, and so the design wavelengths analyze traces at.
+inline constexpr double kAnalyzeMinWavelengthNm = 350.0;
+inline constexpr double kAnalyzeMaxWavelengthNm = 1000.0;
 
 // Adds the options to `analyze` (the subcommand); parsing stores them in `arguments`, which must
 // outlive it.

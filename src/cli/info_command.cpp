@@ -24,11 +24,17 @@ namespace lenslab::cli {
 
 namespace {
 
+// What --wavelength accepts, and so the design wavelengths info traces at.
+constexpr double kInfoMinWavelengthNm = 200.0;
+constexpr double kInfoMaxWavelengthNm = 2000.0;
+
 struct InfoArguments {
   std::string lensPath;
   bool json = false;
-  double wavelengthNm = optics::LensSystem::kDefaultWavelengthNm;
+  double wavelengthNm = optics::LensSystem::kDefaultWavelengthNm;  // when --wavelength is given
+  bool wavelengthGiven = false;
   double filmDiagonalMm = 43.27;  // 36 x 24 mm full frame
+  CommandWavelength used;         // the one traced at, and why (lens_loading.h)
 };
 
 // JSON has no infinity; such values are null.
@@ -114,6 +120,9 @@ nlohmann::json toJson(const optics::LoadedLens& loaded, const InfoArguments& arg
   nlohmann::json out = {
       {"lens", arguments.lensPath},
       {"wavelength_nm", lens.wavelengthNm()},
+      // Where it came from: "option" (--wavelength), "design" (the file's primary design
+      // wavelength) or "default" (the d line).
+      {"wavelength_from", arguments.used.from},
       {"afocal", fo.afocal},
       {"efl_mm", focal(fo, fo.eflMm)},
       {"bfl_mm", focal(fo, fo.bflMm)},
@@ -237,9 +246,9 @@ void printText(const optics::LoadedLens& loaded, const InfoArguments& arguments)
     else
       line(label, value, unit);
   };
-  std::printf("%s: %zu surfaces, stop is surface %zu (counted from 1), at %.2f nm\n",
+  std::printf("%s: %zu surfaces, stop is surface %zu (counted from 1), at %.2f nm %s\n",
               arguments.lensPath.c_str(), lens.prescription().surfaces.size(), lens.stopIndex() + 1,
-              lens.wavelengthNm());
+              lens.wavelengthNm(), arguments.used.describe().c_str());
   if (fo.afocal) std::printf("afocal: zero power, no focal lengths\n");
   // Said first, in focus's words: the paraxial figures below mean little for such a lens.
   if (!beam.image.ok()) std::printf("%s\n", beam.image.whyNot.c_str());
@@ -301,15 +310,22 @@ void addInfoCommand(CLI::App& app, SubcommandRunner& run) {
                    "Lens file (" + optics::lensFileExtensionsText() + ")")
       ->required();
   info->add_flag("--json", arguments->json, "Print JSON instead of text");
-  info->add_option("--wavelength", arguments->wavelengthNm, "Wavelength in nm (default 587.56)")
-      ->check(FiniteNumberBetween(200.0, 2000.0, "nm"));
+  CLI::Option* wavelength =
+      info->add_option("--wavelength", arguments->wavelengthNm,
+                       "Wavelength in nm (default: the lens's primary design wavelength when its "
+                       "file states one, else 587.56, the d line)")
+          ->check(FiniteNumberBetween(kInfoMinWavelengthNm, kInfoMaxWavelengthNm, "nm"));
   info->add_option("--film-diagonal", arguments->filmDiagonalMm,
                    "Film diagonal in mm for the field of view (default 43.27, full frame)")
       ->check(PositiveFiniteNumber());
-  info->callback([arguments, &run] {
+  info->callback([arguments, wavelength, &run] {
+    arguments->wavelengthGiven = wavelength->count() > 0;
     run = [arguments] {
-      const optics::LoadedLens loaded =
-          loadLensFileOrReport(arguments->lensPath, "info", arguments->wavelengthNm);
+      const optics::LoadedLens loaded = loadLensAtWavelengthOrReport(
+          arguments->lensPath, "info",
+          arguments->wavelengthGiven ? std::optional<double>(arguments->wavelengthNm)
+                                     : std::nullopt,
+          {kInfoMinWavelengthNm, kInfoMaxWavelengthNm}, arguments->used);
       if (!loaded.ok()) return 1;
       if (arguments->json)
         std::cout << toJson(loaded, *arguments).dump(2) << "\n";

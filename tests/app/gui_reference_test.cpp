@@ -24,7 +24,7 @@ std::string viewer(const std::filesystem::path& scratch, const std::string& argu
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
 }
 
-nlohmann::json readJson(const std::filesystem::path& path) {
+nlohmann::json readReferenceJson(const std::filesystem::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
 }
@@ -104,24 +104,24 @@ TEST(ReferenceLens, PinnedLensIsDrawnBesideTheEditedOneInEveryPlotAndExport) {
   for (const PanelCase& c : panelCases()) {
     SCOPED_TRACE(c.panel);
     const testing::Rgb reference = referenceColour(c.lensColour);
-    const double alone =
-        fractionIn(scratch / ("alone-" + c.panel + ".png"),
-                   readJson(scratch / ("alone-" + c.panel + ".json")), c.widget, reference);
-    const double pinned =
-        fractionIn(scratch / ("pinned-" + c.panel + ".png"),
-                   readJson(scratch / ("pinned-" + c.panel + ".json")), c.widget, reference);
-    const double unpinned =
-        fractionIn(scratch / ("unpinned-" + c.panel + ".png"),
-                   readJson(scratch / ("unpinned-" + c.panel + ".json")), c.widget, reference);
+    const double alone = fractionIn(scratch / ("alone-" + c.panel + ".png"),
+                                    readReferenceJson(scratch / ("alone-" + c.panel + ".json")),
+                                    c.widget, reference);
+    const double pinned = fractionIn(scratch / ("pinned-" + c.panel + ".png"),
+                                     readReferenceJson(scratch / ("pinned-" + c.panel + ".json")),
+                                     c.widget, reference);
+    const double unpinned = fractionIn(
+        scratch / ("unpinned-" + c.panel + ".png"),
+        readReferenceJson(scratch / ("unpinned-" + c.panel + ".json")), c.widget, reference);
     // The reference's dashed curves (dots, for the spot) in their colour while pinned, and not
     // before or after; the lens's own colour stays.
     EXPECT_GT(pinned, 0.0004);
     EXPECT_GT(pinned, 4.0 * alone + 1e-5) << "alone " << alone;
     EXPECT_GT(pinned, 4.0 * unpinned + 1e-5) << "unpinned " << unpinned;
-    EXPECT_GT(
-        fractionIn(scratch / ("pinned-" + c.panel + ".png"),
-                   readJson(scratch / ("pinned-" + c.panel + ".json")), c.widget, c.lensColour, 30),
-        0.0002);
+    EXPECT_GT(fractionIn(scratch / ("pinned-" + c.panel + ".png"),
+                         readReferenceJson(scratch / ("pinned-" + c.panel + ".json")), c.widget,
+                         c.lensColour, 30),
+              0.0002);
 
     // The CSV: the lens's columns and the reference's, which are the lens's before the edit
     // (pinned as it was), computed by the reference's own worker.
@@ -197,7 +197,7 @@ TEST(ReferenceLens, PinnedLensIsDrawnBesideTheEditedOneInEveryPlotAndExport) {
   EXPECT_GT(withReference, 4.0 * without + 1e-5) << without;
 
   // Computed once: the edit (and seven panels) asked nothing more of the reference's worker.
-  const nlohmann::json lensUi = readJson(scratch / "pinned-lens.json");
+  const nlohmann::json lensUi = readReferenceJson(scratch / "pinned-lens.json");
   ASSERT_TRUE(lensUi["state"]["reference"].is_object()) << lensUi["state"]["reference"];
   EXPECT_EQ(lensUi["state"]["reference"]["analysis_requests"], 1);
   EXPECT_EQ(lensUi["state"]["reference"]["no_image"], "");
@@ -210,7 +210,7 @@ TEST(ReferenceLens, PinnedLensIsDrawnBesideTheEditedOneInEveryPlotAndExport) {
   const double referenceEfl = std::stod(rows[0]["reference"].get<std::string>());
   EXPECT_NEAR(std::stod(rows[0]["difference"].get<std::string>()), efl - referenceEfl, 1.5e-3);
   EXPECT_GT(std::abs(efl - referenceEfl), 0.01);
-  EXPECT_TRUE(readJson(scratch / "unpinned-mtf.json")["state"]["reference"].is_null());
+  EXPECT_TRUE(readReferenceJson(scratch / "unpinned-mtf.json")["state"]["reference"].is_null());
 }
 
 TEST(ReferenceLens, AReferenceThatFormsNoImageSaysSoAndThePlotsStillDraw) {
@@ -232,7 +232,7 @@ TEST(ReferenceLens, AReferenceThatFormsNoImageSaysSoAndThePlotsStillDraw) {
       testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
 
-  const nlohmann::json ui = readJson(scratch / "lens.json")["state"];
+  const nlohmann::json ui = readReferenceJson(scratch / "lens.json")["state"];
   ASSERT_TRUE(ui["reference"].is_object());
   EXPECT_NE(ui["reference"]["no_image"], "") << ui["reference"];
   EXPECT_NE(ui["reference"]["title"].get<std::string>().find("Diverging singlet"),
@@ -249,8 +249,9 @@ TEST(ReferenceLens, AReferenceThatFormsNoImageSaysSoAndThePlotsStillDraw) {
     double lensPixels = 0.0;
     for (const testing::Rgb colour : {testing::Rgb{80, 220, 120}, testing::Rgb{250, 180, 60},
                                       testing::Rgb{235, 90, 200}, testing::Rgb{240, 240, 240}})
-      lensPixels += fractionIn(scratch / (c.panel + ".png"),
-                               readJson(scratch / (c.panel + ".json")), c.widget, colour, 40);
+      lensPixels +=
+          fractionIn(scratch / (c.panel + ".png"), readReferenceJson(scratch / (c.panel + ".json")),
+                     c.widget, colour, 40);
     EXPECT_GT(lensPixels, 0.0001);
     const auto named = [&](const std::string& what) {
       std::size_t n = 0;

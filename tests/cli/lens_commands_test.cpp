@@ -149,6 +149,77 @@ TEST_F(LensCommands, InfoTextAndWavelengthAndFilmDiagonal) {
             efl("dgauss-50mm.dat", "").at("field_of_view_deg").get<double>());
 }
 
+// A file that states its design wavelengths: info and analyze trace at its primary one unless
+// --wavelength says otherwise, and say which. Thorlabs' aspheric singlet is specified at 780 nm
+// (PWAV 1, WAVM 1 0.78): its catalogue EFL 15 mm, OpticStudio's 14.9956 (SOURCES.md).
+TEST_F(LensCommands, InfoAndAnalyzeUseTheLensesDesignWavelength) {
+  const std::string thorlabs = std::string("'") + LENSLAB_SOURCE_DIR +
+                               "/../shared/reference/import/optiland/zemax/"
+                               "lens_thorlabs_iso_8859_1.zmx'";
+  auto json = [&](const std::string& arguments) {
+    const auto r = testing::runProcess(lenslab(arguments), scratch);
+    EXPECT_EQ(r.exitCode, 0) << arguments << "\n" << r.err;
+    return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+  };
+  const auto design = json("info --json " + thorlabs);
+  EXPECT_DOUBLE_EQ(design.value("wavelength_nm", 0.0), 780.0);
+  EXPECT_EQ(design.value("wavelength_from", ""), "design");
+  EXPECT_NEAR(design.value("efl_mm", 0.0), 14.9956, 5e-4);
+  // --wavelength wins; at the d line the singlet's EFL is shorter (higher index).
+  const auto given = json("info --json --wavelength 587.56 " + thorlabs);
+  EXPECT_DOUBLE_EQ(given.value("wavelength_nm", 0.0), 587.56);
+  EXPECT_EQ(given.value("wavelength_from", ""), "option");
+  EXPECT_LT(given.value("efl_mm", 0.0), 14.99);
+  // A pbrt .dat file states none: the d line.
+  const auto plain = json("info --json " + lensPath("dgauss-50mm.dat"));
+  EXPECT_DOUBLE_EQ(plain.value("wavelength_nm", 0.0), 587.56);
+  EXPECT_EQ(plain.value("wavelength_from", ""), "default");
+  // The text says which.
+  const auto text = testing::runProcess(lenslab("info " + thorlabs), scratch);
+  EXPECT_NE(text.out.find("at 780.00 nm (the lens's primary design wavelength)"), std::string::npos)
+      << text.out;
+  // analyze the same.
+  const auto analyzed = json("analyze --json --only seidel " + thorlabs);
+  EXPECT_DOUBLE_EQ(analyzed.value("wavelength_nm", 0.0), 780.0);
+  EXPECT_EQ(analyzed.value("wavelength_from", ""), "design");
+  const auto analyzedGiven = json("analyze --json --only seidel --wavelength 550 " + thorlabs);
+  EXPECT_DOUBLE_EQ(analyzedGiven.value("wavelength_nm", 0.0), 550.0);
+  EXPECT_EQ(analyzedGiven.value("wavelength_from", ""), "option");
+}
+
+// A file that states its fields as image heights (a patent's Y' without an angle of view):
+// analyze's film is twice the largest (12 mm -> 24 mm) and its fields the design's, {0, 12 mm}
+// as fractions {0, 1}; the options still win.
+TEST_F(LensCommands, AnalyzeTakesTheFilmFromTheDesignImageHeight) {
+  const std::string table =
+      writeFile("image-height.txt",
+                "Fno 4.0  Y' 12.0\nSurface r d nd vd\n1 50 5 1.5168 64.2\n2 -200 2\n3(Stop) INF 3\n"
+                "4 -80 40\n");
+  auto json = [&](const std::string& arguments) {
+    const auto r = testing::runProcess(lenslab(arguments), scratch);
+    EXPECT_EQ(r.exitCode, 0) << arguments << "\n" << r.err;
+    return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+  };
+  const auto design = json("analyze --json --only seidel " + table);
+  EXPECT_DOUBLE_EQ(design.value("film_diagonal_mm", 0.0), 24.0);
+  EXPECT_EQ(design.value("film_diagonal_from", ""), "design");
+  EXPECT_EQ(design.value("field_fractions", std::vector<double>{}),
+            (std::vector<double>{0.0, 1.0}));
+  const auto given = json("analyze --json --only seidel --film-diagonal 43.27 " + table);
+  EXPECT_DOUBLE_EQ(given.value("film_diagonal_mm", 0.0), 43.27);
+  EXPECT_EQ(given.value("film_diagonal_from", ""), "option");
+  EXPECT_EQ(given.value("field_fractions", std::vector<double>{}),
+            (std::vector<double>{0.0, 0.7, 1.0}));
+  const auto fields = json("analyze --json --only seidel --fields 0,0.5 " + table);
+  EXPECT_DOUBLE_EQ(fields.value("film_diagonal_mm", 0.0), 24.0);
+  EXPECT_EQ(fields.value("field_fractions", std::vector<double>{}),
+            (std::vector<double>{0.0, 0.5}));
+  // A lens whose file states no fields: the full-frame default.
+  EXPECT_EQ(json("analyze --json --only seidel " + lensPath("dgauss-50mm.dat"))
+                .value("film_diagonal_from", ""),
+            "default");
+}
+
 // The chromatic focal shift (F - C back focus from infinity) of a plano-convex singlet, against
 // the thick-lens formula with indices from the two-term Cauchy fit to n_d and V_d worked here;
 // null (and a dash with the reason in the text) without V_d.

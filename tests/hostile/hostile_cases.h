@@ -218,6 +218,38 @@ inline std::vector<HostileCase> buildCases(const std::filesystem::path& director
   }
   lens("hundred-thousand-surfaces.zmx", surfaces, "too many surfaces",
        std::to_string(258 * 4 + 1) + ":6");
+  // Patent tables (import/patent_table.h): a valid f/4 table with one thing wrong each.
+  const auto patent = [](int replaced, const std::string& row, const std::string& extra = "") {
+    std::vector<std::string> lines = {"f = 52.1  Fno 4.0  2ω 20",
+                                      "Surface r d nd vd",
+                                      "1* 50 5 1.5168 64.2",
+                                      "2 -200 2",
+                                      "3(Stop) INF 3",
+                                      "4 -80 40",
+                                      "",
+                                      "Aspheric coefficients",
+                                      "Surface 1: K = -0.5 A4 = 1.0E-07 A6 = 2.0E-11"};
+    if (replaced > 0) lines[static_cast<std::size_t>(replaced - 1)] = row;
+    std::string text;
+    for (const std::string& line : lines) text += line + "\n";
+    return text + extra;
+  };
+  lens("patent-row-without-thickness.txt", patent(4, "2 -200"), "surface 2 has no d", "4:7");
+  lens("patent-no-f-number.txt", patent(1, "f = 52.1  2ω 20"), "states no f-number", "5:1");
+  lens("patent-asphere-of-no-surface.txt", patent(0, "", "Surface 9: K = 0 A4 = 1.0E-05\n"),
+       "aspheric data for surface 9, which the table does not have", "10:1");
+  lens("patent-one-row.txt", "Fno 2\nSurface r d nd vd\n1(Stop) 50 40 1.5168 64.2\n",
+       "the film would be inside glass", "3:15");
+  lens("patent-huge-exponent.txt", patent(9, "Surface 1: K = -0.5 A4 = 1.0E+400"),
+       "aspheric coefficient 'a4' is out of range", "9:21");
+  lens("patent-nan-radius.txt", patent(4, "2 nan 2"), "'nan' is not a number (r of surface 2)",
+       "4:3");
+  lens("patent-inf-index.txt", patent(3, "1* 50 5 inf 64.2"), "is not a refractive index", "3:9");
+  lens("patent-inf-conic.txt", patent(9, "Surface 1: K = inf A4 = 1.0E-07"),
+       "aspheric coefficient 'k' is infinite", "9:12");
+  lens("patent-nan-f-number.txt", patent(1, "f = 52.1  Fno nan  2ω 20"), "Fno is not a number",
+       "1:15");
+  lens("empty.txt", "", "no surface table found", "1:1");
   lens("ten-megabyte-line.dat", std::string(10'000'000, 'x') + "\n" + lensText,
        "(10000000 characters)", "1:1");
   lens("three-million-numbers.dat", "29.475" + threeMillion + "\n" + lensText,

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <sstream>
+#include <string>
 
 #include "optics/import/patent_table.h"
 #include "optics/import/patent_text.h"
@@ -278,6 +280,10 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
         diagnostics.error(where, "aspheric coefficient '" + p.key + "' is out of range");
         continue;
       }
+      if (!std::isfinite(p.value)) {  // "K = inf": read as a number, but no surface has it
+        diagnostics.error(where, "aspheric coefficient '" + p.key + "' is infinite");
+        continue;
+      }
       if (p.key == "k" || p.key == "conic" || p.key == "cc") {
         r.asphere.conic = p.value;
         continue;
@@ -462,7 +468,17 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
           break;
         }
         const auto n = readPatentNumber(line.text, q);
-        if (!n) continue;
+        if (!n) {
+          // "Fno nan": where the value belongs, a NaN is an error, not a key without a value.
+          if (t.compare(q, 3, "nan") == 0 && (q + 3 >= t.size() || !asphIsAlnum(t[q + 3]))) {
+            diagnostics.error({fileName, line.number, line.columnAt(q)},
+                              std::string(headerKeyName(key)) + " is not a number ('" +
+                                  line.text.substr(q, 3) + "')");
+            p = q + 3;
+            break;
+          }
+          continue;
+        }
         if (n->outOfRange || !(std::abs(n->value) < 1e6)) {
           diagnostics.error({fileName, line.number, line.columnAt(q)},
                             std::string(headerKeyName(key)) + " is out of range");
@@ -499,6 +515,22 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
           case HeaderKey::BackFocus:
             slot = &header.backFocusMm;
             break;
+        }
+        // Values no lens can have: an f-number below 0.5 (1 / (2 sin u') in air), a half field
+        // outside 0..90 degrees, an image height that is not positive.
+        const char* impossible = nullptr;
+        if ((key == HeaderKey::FNumber || key == HeaderKey::FSlash) && !(value >= 0.5))
+          impossible = " is below 0.5, the fastest an image in air can be (1 / (2 sin u'))";
+        else if (slot == &header.halfFieldDeg && !(value >= 0.0 && value < 90.0))
+          impossible = " is not a half field of 0 to 90 degrees";
+        else if (slot == &header.imageHeightMm && !(value > 0.0))
+          impossible = " is not a positive image height";
+        if (impossible) {
+          std::ostringstream message;
+          message << headerKeyName(key) << " " << n->value << impossible;
+          diagnostics.error({fileName, line.number, line.columnAt(q)}, message.str());
+          p = n->end;
+          break;
         }
         if (!*slot) {
           *slot = PatentHeaderValue{value, line.number};

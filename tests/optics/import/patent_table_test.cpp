@@ -656,5 +656,122 @@ TEST(PatentTableErrors, NoTableAtAll) {
   EXPECT_FALSE(readPatentTable("", "empty.txt").lens.ok());
 }
 
+// --- Hostile tables: each a clear error at line:column, never a crash, a NaN or a lens ---------
+
+// The first error's "file:line:column: error: message", or "" when there is none.
+std::string firstError(const PatentTableResult& r) {
+  for (const Diagnostic& d : r.lens.diagnostics.all())
+    if (d.severity == Severity::Error) return d.format();
+  return "";
+}
+
+// A valid table (f/4, a stop row on line 5, an aspheric surface 1) with `row` in place of line
+// `replaced` (1-based) and `extra` appended.
+std::string hostileTable(int replaced = 0, const std::string& row = "",
+                         const std::string& extra = "") {
+  std::vector<std::string> lines = {"f = 52.1  Fno 4.0  2ω 20",
+                                    "Surface r d nd vd",
+                                    "1* 50 5 1.5168 64.2",
+                                    "2 -200 2",
+                                    "3(Stop) INF 3",
+                                    "4 -80 40",
+                                    "",
+                                    "Aspheric coefficients",
+                                    "Surface 1: K = -0.5 A4 = 1.0E-07 A6 = 2.0E-11"};
+  if (replaced > 0) lines[static_cast<std::size_t>(replaced - 1)] = row;
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  return text + extra;
+}
+
+TEST(PatentTableHostile, TheBaseTableOpens) {
+  const PatentTableResult r = readPatentTable(hostileTable(), "base.txt");
+  EXPECT_TRUE(r.lens.ok()) << errors(r.lens);
+}
+
+TEST(PatentTableHostile, EachCaseIsAnErrorAtItsPlace) {
+  const struct {
+    const char* what;
+    std::string text;
+    std::string expected;  // the start of the first error: "line:column: error: message"
+  } cases[] = {
+      {"a middle row without its d", hostileTable(4, "2 -200"),
+       "4:7: error: surface 2 has no d (thickness)"},
+      {"a header with no Fno", hostileTable(1, "f = 52.1  2ω 20"),
+       "5:1: error: surface 3: the stop has no diameter, and the file states no f-number"},
+      {"aspheric data for a surface the table does not have",
+       hostileTable(0, "", "Surface 9: K = 0 A4 = 1.0E-05\n"),
+       "10:1: error: aspheric data for surface 9, which the table does not have"},
+      {"a huge exponent in a coefficient", hostileTable(9, "Surface 1: K = -0.5 A4 = 1.0E+400"),
+       "9:21: error: aspheric coefficient 'a4' is out of range"},
+      {"a huge exponent in D notation", hostileTable(9, "Surface 1: K = -0.5 A4 = 1.0D+999"),
+       "9:21: error: aspheric coefficient 'a4' is out of range"},
+      {"a huge exponent in x10^ notation", hostileTable(9, "Surface 1: K = -0.5 A4 = 1.0×10^999"),
+       "9:21: error: aspheric coefficient 'a4' is out of range"},
+      {"a huge exponent on a radius", hostileTable(4, "2 -2e999 2"),
+       "4:3: error: r of surface 2 is out of range"},
+      {"a huge thickness", hostileTable(4, "2 -200 1e300"),
+       "4:8: error: d 1e+300 of surface 2 is beyond lenslab's 1e+06 mm"},
+      {"a huge exponent on the f-number", hostileTable(1, "f = 52.1  Fno 2e400  2ω 20"),
+       "1:15: error: Fno is out of range"},
+      {"nan as a radius", hostileTable(4, "2 nan 2"),
+       "4:3: error: 'nan' is not a number (r of surface 2)"},
+      {"inf as a thickness", hostileTable(4, "2 -200 inf"),
+       "4:8: error: d of surface 2 is infinite"},
+      {"NaN as a thickness", hostileTable(4, "2 -200 NaN"),
+       "4:8: error: 'NaN' is not a number (d of surface 2)"},
+      {"inf as n_d", hostileTable(3, "1* 50 5 inf 64.2"),
+       "3:9: error: n_d inf of surface 1 is not a refractive index (1 to 10)"},
+      {"n_d below 1", hostileTable(3, "1* 50 5 0.5 64.2"),
+       "3:9: error: n_d 0.5 of surface 1 is not a refractive index (1 to 10)"},
+      {"nan as V_d", hostileTable(3, "1* 50 5 1.5168 nan"),
+       "3:16: error: 'nan' is not a number (V_d of surface 1)"},
+      {"-inf as V_d", hostileTable(3, "1* 50 5 1.5168 -inf"),
+       "3:16: error: V_d -inf of surface 1 is not an Abbe number"},
+      {"nan as a coefficient", hostileTable(9, "Surface 1: K = -0.5 A4 = nan"), "9:21: error:"},
+      {"inf as the conic constant", hostileTable(9, "Surface 1: K = inf A4 = 1.0E-07"),
+       "9:12: error: aspheric coefficient 'k' is infinite"},
+      {"nan as the f-number", hostileTable(1, "f = 52.1  Fno nan  2ω 20"),
+       "1:15: error: Fno is not a number ('nan')"},
+      {"a negative f-number", hostileTable(1, "f = 52.1  Fno -4  2ω 20"),
+       "1:15: error: Fno -4 is below 0.5"},
+      {"inf as the focal length", hostileTable(1, "f = inf  Fno 4.0  2ω 20"),
+       "1:5: error: f is out of range"},
+  };
+  for (const auto& c : cases) {
+    const PatentTableResult r = readPatentTable(c.text, "hostile.txt");
+    EXPECT_FALSE(r.lens.ok()) << c.what;
+    EXPECT_EQ(firstError(r).rfind("hostile.txt:" + c.expected, 0), 0u) << c.what << "\n"
+                                                                       << errors(r.lens);
+  }
+}
+
+TEST(PatentTableHostile, AHugeRadiusIsFlatWithANote) {
+  const PatentTableResult r = readPatentTable(hostileTable(4, "2 1e300 2"), "huge.txt");
+  ASSERT_TRUE(r.lens.ok()) << errors(r.lens);
+  EXPECT_TRUE(r.lens.lens->prescription.surfaces[1].isFlat());
+  EXPECT_NE(errors(r.lens).find("huge.txt:4:3: note: r 1e+300 of surface 2 is taken as flat"),
+            std::string::npos)
+      << errors(r.lens);
+}
+
+TEST(PatentTableHostile, ATableOfOneRow) {
+  // One surface, the stop on it, the film 40 mm behind it in glass: a table cut short, refused at
+  // its n_d; and one row of air without a stop.
+  const PatentTableResult glass =
+      readPatentTable("Fno 2\nSurface r d nd vd\n1(Stop) 50 40 1.5168 64.2\n", "one.txt");
+  EXPECT_FALSE(glass.lens.ok());
+  EXPECT_EQ(firstError(glass).rfind(
+                "one.txt:3:15: error: the last surface (1) has n_d 1.5168: the film would be "
+                "inside glass",
+                0),
+            0u)
+      << errors(glass.lens);
+  const PatentTableResult air = readPatentTable("Fno 2\nSurface r d nd vd\n1 50 40\n", "one.txt");
+  EXPECT_FALSE(air.lens.ok());
+  EXPECT_EQ(firstError(air).rfind("one.txt:2:1: error: the table marks no aperture stop", 0), 0u)
+      << errors(air.lens);
+}
+
 }  // namespace
 }  // namespace lenslab::optics
