@@ -44,8 +44,10 @@ fi
 
 # The benchmark pair, alternating (lens, pinhole, lens, ...): the machine's speed swings by 10-30%
 # between consecutive runs (bench/README.md, issue 39), so the lens/pinhole ratio is taken within
-# each pair, and its median over the pairs.
+# each pair, and its median over the pairs; beside the wall-clock ratio, the CPU-time one (user +
+# system), which does not count the time other tenants held the cores.
 ratios=""
+cpuRatios=""
 i=1
 while [ "$i" -le "$runs" ]; do
   for name in bench-dgauss bench-perspective; do
@@ -55,10 +57,14 @@ while [ "$i" -le "$runs" ]; do
     printf '%-22s run %d  wall %6.2f s  cpu %6.2f s  peak %5d MB\n' "$name" "$i" "$wall" \
       "$(awk -v u="$user" -v s="$system" 'BEGIN { print u + s }')" $((kb / 1024))
     eval "wall_$(echo "$name" | tr - _)=$wall"
+    eval "cpu_$(echo "$name" | tr - _)=$(awk -v u="$user" -v s="$system" 'BEGIN { print u + s }')"
   done
   ratio=$(awk -v a="$wall_bench_dgauss" -v b="$wall_bench_perspective" 'BEGIN { printf "%.3f", a / b }')
-  echo "  pair $i: bench-dgauss / bench-perspective = $ratio"
+  cpuRatio=$(awk -v a="$cpu_bench_dgauss" -v b="$cpu_bench_perspective" 'BEGIN { printf "%.3f", a / b }')
+  echo "  pair $i: bench-dgauss / bench-perspective = $ratio (CPU time $cpuRatio)"
   ratios="$ratios $ratio"
+  cpuRatios="$cpuRatios $cpuRatio"
   i=$((i + 1))
 done
-echo "bench-dgauss / bench-perspective, median of $runs pairs: $(echo "$ratios" | tr ' ' '\n' | sed '/^$/d' | sort -n | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')"
+median() { echo "$1" | tr ' ' '\n' | sed '/^$/d' | sort -n | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+echo "bench-dgauss / bench-perspective, median of $runs pairs: $(median "$ratios") (CPU time $(median "$cpuRatios"))"

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <new>
 #include <stdexcept>
 
 #include <vector>
@@ -517,10 +518,14 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, Ba
     for (std::size_t i = 0; i < rays.size(); ++i) x[i] = scale * invWavelengthSq[i];
     invWavelengthSq = x.data();
   }
+  // Room for the lens's surfaces on the stack, left uninitialised: each entry used is made
+  // below. (An array of 64 SurfaceF, each with its default member initialisers and 21 aspheric
+  // terms, was 10 KB of zeroes per call: a third of the spectral exit-pupil table's time, whose
+  // probes trace small batches (perf, issue 39).)
   constexpr int kMaxOnStack = 64;
-  SurfaceF stackSurfaces[kMaxOnStack];
+  alignas(SurfaceF) unsigned char stackStorage[kMaxOnStack * sizeof(SurfaceF)];
   std::vector<SurfaceF> heapSurfaces;
-  SurfaceF* list = stackSurfaces;
+  SurfaceF* list = reinterpret_cast<SurfaceF*>(stackStorage);
   const int count = static_cast<int>(surfaces_.size());
   if (count > kMaxOnStack) {
     heapSurfaces.resize(count);
@@ -534,15 +539,15 @@ void LensSystem::traceBatch(LensRayBatch& rays, const float* invWavelengthSq, Ba
     const SurfaceGeometry& s = surfaces_[k];
     const double eta = fromFilm ? s.indexRear / s.indexFront : s.indexFront / s.indexRear;
     const bool flat = s.curvaturePerMm == 0.0;
-    list[step] = {
-        static_cast<float>(s.vertexZMm),
-        static_cast<float>(s.curvaturePerMm),
-        flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
-        static_cast<float>(clipRadiusSqMm2_[k]),
-        static_cast<float>(eta),
-        eta != 1.0,
-        flat,
-        k == static_cast<int>(stopIndex_) && !stopTest_.isCircle() ? &stopTest_ : nullptr};
+    new (list + step)
+        SurfaceF{static_cast<float>(s.vertexZMm),
+                 static_cast<float>(s.curvaturePerMm),
+                 flat ? 0.0f : static_cast<float>(1.0 / s.curvaturePerMm),
+                 static_cast<float>(clipRadiusSqMm2_[k]),
+                 static_cast<float>(eta),
+                 eta != 1.0,
+                 flat,
+                 k == static_cast<int>(stopIndex_) && !stopTest_.isCircle() ? &stopTest_ : nullptr};
     // A conic on a flat base is still the plane; terms are not.
     if (s.profile.hasPolynomial() || (s.profile.conic() != 0.0 && !flat)) {
       SurfaceF& f = list[step];

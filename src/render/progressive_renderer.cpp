@@ -167,6 +167,18 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
     SplatImage& image;
     ~FlushAtExit() { image.add(pendingSplats); }
   } flushAtExit{splats};
+  // The other wavelengths' deposits that land in the tile or next to it: an image of the tile
+  // with a border of one pixel, added to `sums` (the tile) and to the splats (the border) when
+  // the tile is done. A wavelength's up to four landing shares then go to it without a test per
+  // share (a zero share adds zero), where each used to be tested for zero, for the sample's own
+  // pixel and for the tile: unpredictable branches, much of the spectral tile loop (perf,
+  // issue 39). Only for a camera that lands wavelengths elsewhere.
+  const bool landsElsewhere = spectral && camera.readsWavelengths();
+  const int apronWidth = tile.x1 - tile.x0 + 2, apronHeight = tile.y1 - tile.y0 + 2;
+  thread_local std::vector<glm::vec3> apron;
+  if (landsElsewhere)
+    apron.assign(static_cast<std::size_t>(apronWidth) * static_cast<std::size_t>(apronHeight),
+                 glm::vec3(0.0f));
   // The tile's pixels that some camera ray can leave the lens from; the others (outside a
   // lens's image circle) stay black, and their samples are counted without being taken.
   thread_local std::vector<glm::ivec2> visible;
@@ -350,6 +362,19 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
             const int landedY = target / width, landedX = target - landedY * width;
             const LandingShare alongX = landingShare(landing[2 * j], landedX, width);
             const LandingShare alongY = landingShare(landing[2 * j + 1], landedY, wave.height);
+            if (landedX >= tile.x0 && landedX < tile.x1 && landedY >= tile.y0 &&
+                landedY < tile.y1) {
+              // In the tile: all four shares fall in the apron (the usual case).
+              const float keptX = 1.0f - alongX.share, keptY = 1.0f - alongY.share;
+              glm::vec3* at = &apron[static_cast<std::size_t>(landedY - tile.y0 + 1) * apronWidth +
+                                     (landedX - tile.x0 + 1)];
+              const std::ptrdiff_t stepY = alongY.step * apronWidth;
+              at[0] += (keptX * keptY) * colour;
+              at[alongX.step] += (alongX.share * keptY) * colour;
+              at[stepY] += (keptX * alongY.share) * colour;
+              at[alongX.step + stepY] += (alongX.share * alongY.share) * colour;
+              continue;
+            }
             // Up to four pixels and their shares (a loop, not a lambda called four times: GCC
             // kept that out of line).
             struct Share {
@@ -395,6 +420,27 @@ bool renderTile(const RenderJob& job, const Wave& wave, const Tile& tile, std::v
       pixel[0] += sum.x;
       pixel[1] += sum.y;
       pixel[2] += sum.z;
+    }
+  }
+  if (landsElsewhere) {
+    // The apron's tile pixels are this thread's alone during the wave; its border belongs to the
+    // neighbouring tiles (splats). Cells outside the image stay zero: no share leaves it.
+    for (int ay = 0; ay < apronHeight; ++ay) {
+      const int y = tile.y0 - 1 + ay;
+      if (y < 0 || y >= wave.height) continue;
+      for (int ax = 0; ax < apronWidth; ++ax) {
+        const int x = tile.x0 - 1 + ax;
+        if (x < 0 || x >= width) continue;
+        const glm::vec3 part = apron[static_cast<std::size_t>(ay) * apronWidth + ax];
+        if (x >= tile.x0 && x < tile.x1 && y >= tile.y0 && y < tile.y1) {
+          double* pixel = &sums[3 * (static_cast<std::size_t>(y) * width + x)];
+          pixel[0] += part.x;
+          pixel[1] += part.y;
+          pixel[2] += part.z;
+        } else if (part != glm::vec3(0.0f)) {
+          pendingSplats.push_back({y * width + x, part});
+        }
+      }
     }
   }
   return true;

@@ -87,12 +87,9 @@ SpectralFilm::SpectralFilm() {
   cdf_[kBins] = 1.0;
   for (int k = 0; k < kBins; ++k) {
     const double low = kMinNm + k, high = low + 1.0;
-    binColour_[k] = {glm::vec3(basis(low)),
-                     glm::vec3(basis(high)),
-                     glm::vec3(srgbOfLine(low)),
-                     glm::vec3(srgbOfLine(high)),
-                     static_cast<float>(1.0 / pdf_[k]),
-                     static_cast<float>(cdf_[k])};
+    binColour_[k] = {glm::vec3(basis(low)), glm::vec3(basis(high)), glm::vec3(srgbOfLine(low)),
+                     glm::vec3(srgbOfLine(high)), static_cast<float>(1.0 / pdf_[k])};
+    cdfLow_[k] = static_cast<float>(cdf_[k]);
   }
   int k = 0;
   for (int j = 0; j <= kGuide; ++j) {

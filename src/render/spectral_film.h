@@ -79,17 +79,24 @@ class SpectralFilm {
   // What sample() reads, per bin: basis and line colour at the bin's two ends (within a bin both
   // are linear in lambda: bins lie inside the table's 5 nm pieces), and 1 / pdf. Float, so that a
   // camera sample's colour costs a few multiplications, not the matrices in double.
-  struct BinColour {
+  // (64-byte aligned: a sample reads one cache line of it, not two; the table is 25 KB, read at
+  // four random bins per camera sample.)
+  struct alignas(64) BinColour {
     glm::vec3 basisLow, basisHigh, srgbLow, srgbHigh;
     float invPdf;
-    float cdfLow;  // the distribution's value at the bin's start
   };
   std::array<BinColour, kBins> binColour_{};
+  // cdfLow_[k]: the distribution's value at bin k's start, in float (what the search compares),
+  // apart from the colours so that the search reads 1.6 KB, not the colour table.
+  std::array<float, kBins> cdfLow_{};
   // guide_[j]: the first bin whose CDF interval reaches j / kGuide (a guide table for inversion).
-  // Finer than the least likely bin (the density's floor; spectral_film_test checks it), so that
-  // a sample is in the guide's bin or the next: the search's loop runs once at most and is
-  // rarely taken (the renderer draws four wavelengths per camera sample).
-  static constexpr int kGuide = 16384;
+  // Small, so that it stays in the L1 cache beside the path tracer's data: the previous
+  // 16384-entry guide (32 KB, finer than the least likely bin, so that the search never took
+  // more than one step) missed the cache at most of its reads, the single dearest instruction of
+  // the spectral tile loop (perf, issue 39). Guide cells are equally likely, so the search takes
+  // on average about half the bins per cell, 400 / 512 / 2, plus one comparison; in the density's
+  // floor, where one cell spans up to a few dozen bins, it walks the compact cdfLow_.
+  static constexpr int kGuide = 512;
   std::array<std::uint16_t, kGuide + 1> guide_{};
 };
 
@@ -97,11 +104,11 @@ inline SpectralSample SpectralFilm::sample(float u) const {
   // In single precision (the renderer draws four per camera sample): the CDF's values need no
   // more than float's 6e-8 against bins of at least 8e-5.
   const float v = std::clamp(u, 0.0f, 0x1.fffffep-1f);
-  // The bin whose CDF interval holds v: the guide's, or rarely one after it.
+  // The bin whose CDF interval holds v: the guide's, or one after it.
   int k = guide_[static_cast<int>(v * static_cast<float>(kGuide))];
-  while (k < kBins - 1 && binColour_[k + 1].cdfLow <= v) ++k;
+  while (k < kBins - 1 && cdfLow_[k + 1] <= v) ++k;
   const BinColour& c = binColour_[k];
-  const float t = std::clamp((v - c.cdfLow) * c.invPdf, 0.0f, 0x1.fffffep-1f);
+  const float t = std::clamp((v - cdfLow_[k]) * c.invPdf, 0.0f, 0x1.fffffep-1f);
   SpectralSample s;
   s.wavelengthNm = static_cast<float>(kMinNm) + static_cast<float>(k) + t;
   s.basis = c.basisLow + t * (c.basisHigh - c.basisLow);

@@ -8,7 +8,7 @@
 namespace lenslab::app {
 namespace {
 
-optics::Prescription triplet() {
+optics::Prescription apertureEditTriplet() {
   optics::Prescription lens;
   lens.surfaces = {{40.0, 5.0, 1.6, 58.0, 30.0},
                    {-200.0, 6.0, 1.0, std::nullopt, 30.0},
@@ -27,7 +27,7 @@ optics::ApertureShape sixBlades(double rotationDeg) {
 }
 
 TEST(ApertureEdit, SetStopShapeIsOneUndoableStepThatMarksTheLensModified) {
-  LensDocument document(triplet());
+  LensDocument document(apertureEditTriplet());
   EXPECT_FALSE(document.modified());
   ASSERT_FALSE(document.apply(SetStopShape{sixBlades(15.0)}));
   EXPECT_EQ(document.prescription().stopShape, sixBlades(15.0));
@@ -40,7 +40,7 @@ TEST(ApertureEdit, SetStopShapeIsOneUndoableStepThatMarksTheLensModified) {
 }
 
 TEST(ApertureEdit, FlippingTheLensMirrorsTheIris) {
-  optics::Prescription lens = triplet();
+  optics::Prescription lens = apertureEditTriplet();
   lens.stopShape = sixBlades(15.0);
   const optics::Prescription turned = flipped(lens);
   // A corner at 15 degrees seen from the other side is at 180 - 15.
@@ -54,7 +54,7 @@ TEST(ApertureEdit, FlippingTheLensMirrorsTheIris) {
 
 TEST(ApertureEdit, FlippingTheLensMirrorsAnImageIrisAndFlippingBackRestoresIt) {
   // A right triangle in the upper left: mirrored, it opens in the upper right.
-  optics::Prescription lens = triplet();
+  optics::Prescription lens = apertureEditTriplet();
   lens.stopShape.kind = optics::ApertureShape::Kind::Image;
   lens.stopShape.imageName = "corner.png";
   lens.stopShape.mask =

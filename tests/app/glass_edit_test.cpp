@@ -17,7 +17,7 @@
 namespace lenslab::app {
 namespace {
 
-optics::Prescription singlet() {
+optics::Prescription glassEditSinglet() {
   optics::Prescription lens;
   lens.surfaces = {{40.0, 5.0, 1.6, 58.0, 20.0},
                    {0.0, 2.0, 1.0, std::nullopt, 15.0},
@@ -53,7 +53,7 @@ TEST(GlassChoice, FindsNamesWithoutCaseOrHyphensAndAMakerAsTheLastWord) {
 }
 
 TEST(SetSurfaceGlass, IsOneUndoStepAndTypingAnIndexMakesAModelGlassAgain) {
-  LensDocument document(singlet());
+  LensDocument document(glassEditSinglet());
   const GlassChoice choice = chooseGlass("N-SF6");
   ASSERT_TRUE(choice.glass);
   ASSERT_FALSE(document.apply(SetSurfaceGlass{0, choice.glass}));
@@ -72,7 +72,7 @@ TEST(SetSurfaceGlass, IsOneUndoStepAndTypingAnIndexMakesAModelGlassAgain) {
 }
 
 TEST(SetSurfaceGlass, RefusesTheStopNoGlassAnInfraredOneAndAMissingSurface) {
-  LensDocument document(singlet());
+  LensDocument document(glassEditSinglet());
   const auto generation = document.generation();
   const GlassChoice bk7 = chooseGlass("N-BK7");
   const auto refusal = [&](const EditCommand& command) {

@@ -18,17 +18,17 @@
 namespace lenslab {
 namespace {
 
-struct Box {
+struct ApertureBox {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
-Box widget(const nlohmann::json& ui, const std::string& name) {
+ApertureBox apertureWidget(const nlohmann::json& ui, const std::string& name) {
   const auto& w = ui["widgets"][name];
   const int x = w["x"].get<int>(), y = w["y"].get<int>();
   return {x, y, x + w["width"].get<int>(), y + w["height"].get<int>()};
 }
 
-nlohmann::json readJson(const std::filesystem::path& path) {
+nlohmann::json readApertureJson(const std::filesystem::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
 }
@@ -77,10 +77,10 @@ TEST(ApertureGui, SixBladesByScriptShowInTheCrossSectionAndTheFootprint) {
                                            "' --size 1400x900 --script commands.script",
                                        scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const nlohmann::json round = readJson(scratch / "round.json");
-  const nlohmann::json bad = readJson(scratch / "bad.json");
-  const nlohmann::json hexagon = readJson(scratch / "hexagon.json");
-  const nlohmann::json undone = readJson(scratch / "undone.json");
+  const nlohmann::json round = readApertureJson(scratch / "round.json");
+  const nlohmann::json bad = readApertureJson(scratch / "bad.json");
+  const nlohmann::json hexagon = readApertureJson(scratch / "hexagon.json");
+  const nlohmann::json undone = readApertureJson(scratch / "undone.json");
   EXPECT_EQ(round["state"]["aperture"], "circle");
   // Bad images: logged, and the stop stays the circle.
   EXPECT_EQ(bad["state"]["aperture"], "circle");
@@ -94,7 +94,7 @@ TEST(ApertureGui, SixBladesByScriptShowInTheCrossSectionAndTheFootprint) {
   const auto hexagonShot = testing::PngImage::load(scratch / "hexagon.png");
   ASSERT_TRUE(roundShot.valid() && hexagonShot.valid());
   // The cross-section: the iris drawn face-on above the stop adds the stop's yellow.
-  const Box canvas = widget(hexagon, "cross-section/canvas");
+  const ApertureBox canvas = apertureWidget(hexagon, "cross-section/canvas");
   const double yellowRound =
       roundShot.fractionNear(canvas.x0, canvas.y0, canvas.x1, canvas.y1, kStopYellow, 40);
   const double yellowHexagon =
@@ -105,7 +105,7 @@ TEST(ApertureGui, SixBladesByScriptShowInTheCrossSectionAndTheFootprint) {
 
   // The footprint: the iris outline in the stop's yellow, centred in its box. The circle's radius
   // in pixels is where a scan from the centre along +x first meets yellow.
-  const Box footprint = widget(hexagon, "illumination/footprint");
+  const ApertureBox footprint = apertureWidget(hexagon, "illumination/footprint");
   const double cx = 0.5 * (footprint.x0 + footprint.x1), cy = 0.5 * (footprint.y0 + footprint.y1);
   double radiusPx = 0;
   for (int r = 5; r < (footprint.x1 - footprint.x0) / 2; ++r)

@@ -1,6 +1,6 @@
-// The Seidel and Colour panels in the real viewer: the bar chart and the colour plots drawn in the
-// bottom area (pixels of the screenshot), an edit of the lens changing the exported numbers, the
-// exports valid SVG and CSV, and a lens without V_d getting words instead of a colour plot.
+// The Seidel and Colour panels in the real colourViewer: the bar chart and the colour plots drawn
+// in the bottom area (pixels of the screenshot), an edit of the lens changing the exported numbers,
+// the exports valid SVG and CSV, and a lens without V_d getting words instead of a colour plot.
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ namespace {
 
 using testing::CsvTable;
 
-CsvTable readCsv(const std::filesystem::path& path) {
+CsvTable readColourCsv(const std::filesystem::path& path) {
   return testing::readCsvTable(path, /*firstColumnIsNames=*/true);
 }
 
@@ -58,7 +58,7 @@ bool wellFormedXml(const std::string& xml, std::string* why) {
   return open.empty() && xml.substr(position).find_first_not_of(" \n") == std::string::npos;
 }
 
-std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+std::string colourViewer(const std::filesystem::path& scratch, const std::string& arguments) {
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
 }
 
@@ -93,12 +93,12 @@ TEST(ColourPanels, SeidelBarsAndColourPlotsFollowTheLensAndExport) {
                                                 "export-plot seidel edited.csv\n"
                                                 "export-plot colour edited-shift.csv\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      colourViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
 
   // Seidel CSV: a row per surface and the total; S_I..S_V columns.
-  const CsvTable seidel = readCsv(scratch / "seidel.csv");
+  const CsvTable seidel = readColourCsv(scratch / "seidel.csv");
   ASSERT_EQ(seidel.header.size(), 6u);
   EXPECT_EQ(seidel.header[0], "surface");
   EXPECT_EQ(seidel.header[4], "S_IV Petzval");
@@ -126,23 +126,23 @@ TEST(ColourPanels, SeidelBarsAndColourPlotsFollowTheLensAndExport) {
   EXPECT_EQ(seidel.rows[4][0], 0.0);  // the stop
 
   // The edit (surface 1 from R 37.4 to 34) changes surface 1's spherical aberration.
-  const CsvTable edited = readCsv(scratch / "edited.csv");
+  const CsvTable edited = readColourCsv(scratch / "edited.csv");
   ASSERT_EQ(edited.rows.size(), 8u);
   EXPECT_GT(std::abs(edited.rows[0][0] - seidel.rows[0][0]), 0.01 * std::abs(seidel.rows[0][0]));
 
   // Focal shift CSV: 400..700 nm in 31 rows, zero at the d line (between 580 and 590 nm).
-  const CsvTable shift = readCsv(scratch / "shift.csv");
+  const CsvTable shift = readColourCsv(scratch / "shift.csv");
   ASSERT_EQ(shift.names.size(), 31u);
   EXPECT_EQ(shift.header[0], "wavelength (nm)");
   EXPECT_EQ(std::stod(shift.names.front()), 400.0);
   EXPECT_EQ(std::stod(shift.names.back()), 700.0);
   const double at580 = shift.rows[18][0], at590 = shift.rows[19][0];
   EXPECT_LE(at580 * at590, 1e-12) << at580 << " " << at590;  // crosses zero at 587.56
-  const CsvTable editedShift = readCsv(scratch / "edited-shift.csv");
+  const CsvTable editedShift = readColourCsv(scratch / "edited-shift.csv");
   ASSERT_EQ(editedShift.rows.size(), 31u);
   EXPECT_GT(std::abs(editedShift.rows[0][0] - shift.rows[0][0]), 1e-4);
   // Lateral colour: zero on the axis, then the real-ray curve and its third-order line.
-  const CsvTable lateral = readCsv(scratch / "lateral.csv");
+  const CsvTable lateral = readColourCsv(scratch / "lateral.csv");
   EXPECT_EQ(lateral.header[0], "image height (mm)");
   ASSERT_GE(lateral.rows.size(), 24u);
   EXPECT_NEAR(lateral.rows[0][0], 0.0, 1e-6);
@@ -215,13 +215,13 @@ TEST(ColourPanels, LensWithoutAbbeNumbersSaysSoAndHasNoColourPlot) {
                                                 "export-plot seidel seidel.csv\n"
                                                 "export-plot colour shift.csv\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      colourViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   // The colour export is refused with the reason; the Seidel sums exist.
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("Abbe number"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(scratch / "shift.csv"));
-  EXPECT_EQ(readCsv(scratch / "seidel.csv").names.size(), 14u);  // 13 surfaces and the total
+  EXPECT_EQ(readColourCsv(scratch / "seidel.csv").names.size(), 14u);  // 13 surfaces and the total
   std::ifstream file(scratch / "ui.json");
   const nlohmann::json ui = nlohmann::json::parse(file);
   EXPECT_TRUE(ui["widgets"].contains("colour/no-dispersion")) << ui["widgets"];
@@ -266,8 +266,8 @@ TEST(ColourPanels, ColourFansDrawTheFAndCLinesInTheirColours) {
                                              << "wait-frames 3\n"
                                                 "dump-ui wide.json\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      colourViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
 
   std::ifstream colourFile(scratch / "colour.json");

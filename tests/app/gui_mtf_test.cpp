@@ -1,6 +1,6 @@
-// The MTF panel in the real viewer: its curves are drawn in the bottom area in the fields'
-// colours, its exported numbers are those `lenslab analyze` gives for the lens the viewer shows
-// (saved from the viewer), the aberration-free curve is the circular aperture's, an edit changes
+// The MTF panel in the real mtfViewer: its curves are drawn in the bottom area in the fields'
+// colours, its exported numbers are those `lenslab analyze` gives for the lens the mtfViewer shows
+// (saved from the mtfViewer), the aberration-free curve is the circular aperture's, an edit changes
 // the curves, and the SVG and CSV exports are whole.
 
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ using testing::CsvTable;
 
 CsvTable readCsv(const std::filesystem::path& path) { return testing::readCsvTable(path); }
 
-std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+std::string mtfViewer(const std::filesystem::path& scratch, const std::string& arguments) {
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
 }
 
@@ -53,7 +53,7 @@ TEST(MtfPanel, PlotsTheMtfAnalyzeGivesAndFollowsEdits) {
                                                 "export-plot mtf edited.csv\n"
                                                 "quit\n";
   const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+      testing::runProcess(mtfViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
 
   // The CSV: frequency, the axis's aberration-free MTF, then T and S of each of the 3 fields.

@@ -1,4 +1,4 @@
-// Spectral rendering in the real viewer (issue 23): the preview's Spectral choice and `set
+// Spectral rendering in the real spectralViewer (issue 23): the preview's Spectral choice and `set
 // spectral`, on the default scene through the flint landscape lens (V_d 23.78). Spectral, the
 // lens's colour shows: the picture's outer part, where the lateral colour grows, turns colourful
 // at the chart's and posts' edges; in RGB the same scene stays grey there.
@@ -16,11 +16,11 @@
 namespace lenslab {
 namespace {
 
-std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+std::string spectralViewer(const std::filesystem::path& scratch, const std::string& arguments) {
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
 }
 
-nlohmann::json readJson(const std::filesystem::path& path) {
+nlohmann::json readSpectralJson(const std::filesystem::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
 }
@@ -54,11 +54,11 @@ TEST(SpectralPreview, TheFlintLensShowsColourOnlyWhenSpectral) {
                                                 "screenshot spectral.png\n"
                                                 "dump-ui spectral.json\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      spectralViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const nlohmann::json rgbUi = readJson(scratch / "rgb.json");
-  const nlohmann::json spectralUi = readJson(scratch / "spectral.json");
+  const nlohmann::json rgbUi = readSpectralJson(scratch / "rgb.json");
+  const nlohmann::json spectralUi = readSpectralJson(scratch / "spectral.json");
   EXPECT_EQ(rgbUi["state"]["spectral"], "off");
   EXPECT_EQ(spectralUi["state"]["spectral"], "auto");
   ASSERT_TRUE(spectralUi["widgets"].contains("preview/spectral"));

@@ -1,5 +1,5 @@
-// The vignetting teaching in the real viewer (issue 21): the render's toggles, seen in the
-// preview's pixels and in dump-ui, on the flat-field demo scene through the wide 22 mm.
+// The vignetting teaching in the real vignettingViewer (issue 21): the render's toggles, seen in
+// the preview's pixels and in dump-ui, on the flat-field demo scene through the wide 22 mm.
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 namespace lenslab {
 namespace {
 
-std::string viewer(const std::filesystem::path& scratch, const std::string& arguments) {
+std::string vignettingViewer(const std::filesystem::path& scratch, const std::string& arguments) {
   return "cd '" + scratch.string() + "' && '" + LENSLAB_BINARY + "' " + arguments;
 }
 
@@ -71,8 +71,8 @@ TEST(VignettingToggles, SwitchingOffCos4AndRimsFlattensThePreview) {
                                                 "screenshot off.png\n"
                                                 "dump-ui off.json\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      vignettingViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json on = readJson(scratch / "on.json"), off = readJson(scratch / "off.json");
   EXPECT_EQ(on["state"]["vignetting"]["cos4"], true);
@@ -121,8 +121,8 @@ TEST(VignettingOverlay, TintsTheCornersRedAndShowsAColourBar) {
                                                 "screenshot overlay.png\n"
                                                 "dump-ui overlay.json\n"
                                                 "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      vignettingViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json plain = readJson(scratch / "plain.json");
   const nlohmann::json overlay = readJson(scratch / "overlay.json");
@@ -202,8 +202,8 @@ TEST(MeasuredFalloffView, OnTheDemoSceneTheRenderAgreesWithThePlot) {
          "export-plot illumination chart.csv\n"
          "dump-ui chart.json\n"
          "quit\n";
-  const auto run =
-      testing::runProcess(viewer(scratch, "--size 1400x900 --script commands.script"), scratch);
+  const auto run = testing::runProcess(
+      vignettingViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const nlohmann::json demo = readJson(scratch / "demo.json");
   const auto& vignetting = demo["state"]["vignetting"];

@@ -27,8 +27,8 @@
 namespace lenslab::app {
 namespace {
 
-std::string singlet(const std::string& header, double radiusMm, const std::string& profile,
-                    double diameterMm) {
+std::string librarySinglet(const std::string& header, double radiusMm, const std::string& profile,
+                           double diameterMm) {
   // Thick enough at the rim: the front surface's sag plus 1.5 mm (the focal length does not
   // depend on it).
   const double semi = 0.5 * diameterMm;
@@ -45,18 +45,19 @@ std::string singlet(const std::string& header, double radiusMm, const std::strin
 
 std::filesystem::path writeLibraryFixture() {
   const auto folder = testing::makeTestDirectory("library-fixture");
-  std::ofstream(folder / "a-dg.lens") << singlet(
+  std::ofstream(folder / "a-dg.lens") << librarySinglet(
       "title Gauss fifty\nsource US 2,532,751 (Tronnier)\ntype double-Gauss\nyear 1953\n", 25.0, "",
       20.0);
-  std::ofstream(folder / "b-tele.lens") << singlet(
+  std::ofstream(folder / "b-tele.lens") << librarySinglet(
       "title Long one\nsource US 3,000,000 (Smith)\ntype telephoto\nyear 1970\n", 100.0, "", 40.0);
   std::ofstream(folder / "c-phone.lens")
-      << singlet("title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n", 2.0,
-                 " a4 -0.001", 2.0);
-  std::ofstream(folder / "d-dg.lens")
-      << singlet("title Gauss eighty-five\nsource JP 1989-123\ntype Double-Gauss\nyear 1989\n",
-                 42.5, " conic -0.5 a6 1e-9", 30.0);
-  std::ofstream(folder / "e-fish.lens") << singlet("title Fish\ntype fisheye\n", 5.0, "", 6.0);
+      << librarySinglet("title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n",
+                        2.0, " a4 -0.001", 2.0);
+  std::ofstream(folder / "d-dg.lens") << librarySinglet(
+      "title Gauss eighty-five\nsource JP 1989-123\ntype Double-Gauss\nyear 1989\n", 42.5,
+      " conic -0.5 a6 1e-9", 30.0);
+  std::ofstream(folder / "e-fish.lens")
+      << librarySinglet("title Fish\ntype fisheye\n", 5.0, "", 6.0);
   // pbrt's columns: radius, thickness, n (0 for the stop's air), aperture diameter.
   std::ofstream(folder / "f-old.dat") << "# An old singlet, 100 mm\n"
                                          "0 1 0 10\n"
@@ -67,7 +68,7 @@ std::filesystem::path writeLibraryFixture() {
   return folder;
 }
 
-std::vector<LibraryEntry> readFixture(const std::filesystem::path& folder) {
+std::vector<LibraryEntry> readLibraryFixture(const std::filesystem::path& folder) {
   std::vector<LibraryEntry> entries;
   for (const auto& path : listLibraryFiles(folder)) entries.push_back(readLibraryEntry(path));
   return entries;
@@ -75,7 +76,9 @@ std::vector<LibraryEntry> readFixture(const std::filesystem::path& folder) {
 
 class LibraryFixture : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { entries_ = new std::vector(readFixture(writeLibraryFixture())); }
+  static void SetUpTestSuite() {
+    entries_ = new std::vector(readLibraryFixture(writeLibraryFixture()));
+  }
   static void TearDownTestSuite() { delete entries_; }
   static const std::vector<LibraryEntry>& entries() { return *entries_; }
   static std::size_t count(const LibraryFilter& filter) {

@@ -11,7 +11,7 @@
 namespace lenslab::optics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kAreaPi = std::numbers::pi;
 
 // The stop in front of a biconvex singlet (R 50, -50, 4 mm of n 1.5): the entrance pupil is the
 // stop itself, so the beam that passes has exactly the stop's shape and size. EFL by the
@@ -46,12 +46,12 @@ void expectArea(const ApertureShape& shape, double areaOverRSquared, double tole
   ASSERT_TRUE(beam);
   const double areaMm2 = areaOverRSquared * kStopRadiusMm * kStopRadiusMm;
   EXPECT_NEAR(beam->areaMm2, areaMm2, tolerance * areaMm2) << shape.spec();
-  const double fNumber = kEflMm / (2.0 * std::sqrt(areaMm2 / kPi));
+  const double fNumber = kEflMm / (2.0 * std::sqrt(areaMm2 / kAreaPi));
   EXPECT_NEAR(beam->fNumberByArea, fNumber, 0.5 * tolerance * fNumber + 1e-3) << shape.spec();
 }
 
 TEST(AxialBeamArea, ACircularStopGivesTheParaxialFNumber) {
-  expectArea(ApertureShape{}, kPi);  // f/5.07
+  expectArea(ApertureShape{}, kAreaPi);  // f/5.07
 }
 
 TEST(AxialBeamArea, StraightBladesPassTheirPolygonsArea) {
@@ -63,12 +63,12 @@ TEST(AxialBeamArea, StraightBladesPassTheirPolygonsArea) {
 TEST(AxialBeamArea, PbrtsStarPassesThePentagramsArea) {
   // Ten triangles (centre, outer corner, inner corner), outer radius 1, inner
   // r = cos 72 / cos 36, 36 degrees apart: 10 * r sin 36 / 2.
-  const double inner = std::cos(72.0 * kPi / 180.0) / std::cos(36.0 * kPi / 180.0);
+  const double inner = std::cos(72.0 * kAreaPi / 180.0) / std::cos(36.0 * kAreaPi / 180.0);
   const auto star = builtinPbrtAperture("star");
   ASSERT_TRUE(star);
   // The star is a 256-pixel mask, whose open pixels cover 0.4% more than the pentagram: allowed
   // for here, on top of the grid's 0.3%.
-  expectArea(*star, 5.0 * inner * std::sin(36.0 * kPi / 180.0), 0.008);
+  expectArea(*star, 5.0 * inner * std::sin(36.0 * kAreaPi / 180.0), 0.008);
 }
 
 TEST(AxialBeamArea, ARimNarrowerThanTheStopLimitsTheBeamInstead) {
@@ -83,7 +83,7 @@ TEST(AxialBeamArea, ARimNarrowerThanTheStopLimitsTheBeamInstead) {
   ASSERT_TRUE(built.ok());
   const auto beam = axialBeamAreaFromInfinity(*built.system);
   ASSERT_TRUE(beam);
-  EXPECT_NEAR(beam->areaMm2, kPi * 9.0, 0.003 * kPi * 9.0);
+  EXPECT_NEAR(beam->areaMm2, kAreaPi * 9.0, 0.003 * kAreaPi * 9.0);
 }
 
 TEST(AxialBeamArea, AnImageOpenToItsCornersPassesItsWholeSquare) {
@@ -106,7 +106,7 @@ TEST(AxialBeamArea, ADeepConcaveFrontSurfaceIsNotSkipped) {
   ASSERT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().message);
   const auto beam = axialBeamAreaFromInfinity(*built.system);
   ASSERT_TRUE(beam);
-  EXPECT_NEAR(beam->areaMm2, kPi * 81.0, 0.003 * kPi * 81.0);
+  EXPECT_NEAR(beam->areaMm2, kAreaPi * 81.0, 0.003 * kAreaPi * 81.0);
 }
 
 TEST(AxialBeamArea, AStoppedDownBeamStillGetsTheFineGrid) {
@@ -122,7 +122,8 @@ TEST(AxialBeamArea, AStoppedDownBeamStillGetsTheFineGrid) {
   const auto beam = axialBeamAreaFromInfinity(*built.system);
   ASSERT_TRUE(beam);
   const double pupilMm = built.system->firstOrder().entrancePupil.diameterMm;
-  EXPECT_NEAR(beam->areaMm2, kPi * pupilMm * pupilMm / 4.0, 0.003 * kPi * pupilMm * pupilMm / 4.0);
+  EXPECT_NEAR(beam->areaMm2, kAreaPi * pupilMm * pupilMm / 4.0,
+              0.003 * kAreaPi * pupilMm * pupilMm / 4.0);
 }
 
 }  // namespace

@@ -30,7 +30,9 @@ const std::string kBk7Singlet =
     "surface radius -50 thickness 1 diameter 20\n"
     "stop thickness 45 diameter 10\n";
 
-LensFileResult parse(const std::string& text) { return parseNativeLensText(text, "g.lens"); }
+LensFileResult parseGlassLens(const std::string& text) {
+  return parseNativeLensText(text, "g.lens");
+}
 
 std::string firstMessage(const LensFileResult& r) {
   return r.diagnostics.empty() ? std::string("(none)") : r.diagnostics.all().front().format();
@@ -38,7 +40,7 @@ std::string firstMessage(const LensFileResult& r) {
 
 TEST(CatalogGlassLens, ANamedGlassGivesTheMakersIndexAtEveryWavelength) {
   ASSERT_TRUE(defaultGlassCatalog().catalog) << defaultGlassCatalog().errors.front();
-  const LensFileResult r = parse(kBk7Singlet);
+  const LensFileResult r = parseGlassLens(kBk7Singlet);
   ASSERT_TRUE(r.ok()) << firstMessage(r);
   const Surface& front = r.lens->prescription.surfaces[0];
   ASSERT_TRUE(front.glass);
@@ -71,7 +73,7 @@ TEST(CatalogGlassLens, NamesMakersAndMistakesAreReportedWhereTheyAre) {
   ASSERT_TRUE(defaultGlassCatalog().catalog);
   // "surface radius 50 thickness 5 glass " is 36 characters: the name starts at column 37.
   LensFileResult r =
-      parse("lenslab-lens 1\nsurface radius 50 thickness 5 glass NBK8 diameter 20\n");
+      parseGlassLens("lenslab-lens 1\nsurface radius 50 thickness 5 glass NBK8 diameter 20\n");
   ASSERT_FALSE(r.ok());
   const Diagnostic& unknown = r.diagnostics.all().front();
   EXPECT_EQ(unknown.location.line, 2);
@@ -80,7 +82,7 @@ TEST(CatalogGlassLens, NamesMakersAndMistakesAreReportedWhereTheyAre) {
   EXPECT_NE(unknown.message.find("N-BK7"), std::string::npos) << unknown.message;  // nearest
   // F5 is in several catalogues: SCHOTT's is taken, and a note says so at the name; with a
   // maker there is no note.
-  r = parse(
+  r = parseGlassLens(
       "lenslab-lens 1\n"
       "surface radius 50 thickness 5 glass F5 diameter 20\n"
       "surface radius -50 thickness 1 diameter 20\n"
@@ -90,7 +92,7 @@ TEST(CatalogGlassLens, NamesMakersAndMistakesAreReportedWhereTheyAre) {
   ASSERT_FALSE(r.diagnostics.empty());
   EXPECT_EQ(r.diagnostics.all().front().severity, Severity::Note);
   EXPECT_NE(r.diagnostics.all().front().message.find("using SCHOTT's"), std::string::npos);
-  r = parse(
+  r = parseGlassLens(
       "lenslab-lens 1\n"
       "surface radius 50 thickness 5 glass F5 maker cdgm diameter 20\n"
       "surface radius -50 thickness 1 diameter 20\n"
@@ -99,21 +101,22 @@ TEST(CatalogGlassLens, NamesMakersAndMistakesAreReportedWhereTheyAre) {
   EXPECT_EQ(r.lens->prescription.surfaces[0].glass->maker, "CDGM");
   EXPECT_TRUE(r.diagnostics.empty());
   // A glass and numbers together, a maker alone, and an infrared material.
-  r = parse("lenslab-lens 1\nsurface radius 50 thickness 5 glass F5 nd 1.6 diameter 20\n");
+  r = parseGlassLens("lenslab-lens 1\nsurface radius 50 thickness 5 glass F5 nd 1.6 diameter 20\n");
   EXPECT_NE(firstMessage(r).find("not both"), std::string::npos) << firstMessage(r);
-  r = parse("lenslab-lens 1\nsurface radius 50 thickness 5 maker SCHOTT diameter 20\n");
+  r = parseGlassLens("lenslab-lens 1\nsurface radius 50 thickness 5 maker SCHOTT diameter 20\n");
   EXPECT_NE(firstMessage(r).find("'maker' without 'glass'"), std::string::npos);
-  r = parse("lenslab-lens 1\nsurface radius 50 thickness 5 glass Ge maker MISC diameter 20\n");
+  r = parseGlassLens(
+      "lenslab-lens 1\nsurface radius 50 thickness 5 glass Ge maker MISC diameter 20\n");
   EXPECT_NE(firstMessage(r).find("no index in the visible"), std::string::npos) << firstMessage(r);
 }
 
 TEST(CatalogGlassLens, TheFileKeepsTheGlassByNameAndDatRefusesIt) {
-  const LensFileResult r = parse(kBk7Singlet);
+  const LensFileResult r = parseGlassLens(kBk7Singlet);
   ASSERT_TRUE(r.ok()) << firstMessage(r);
   const std::string text = formatNativeLensText(*r.lens);
   EXPECT_NE(text.find("glass N-BK7 maker SCHOTT"), std::string::npos) << text;
   EXPECT_EQ(text.find(" nd "), std::string::npos) << text;  // the name, not its numbers
-  const LensFileResult again = parse(text);
+  const LensFileResult again = parseGlassLens(text);
   ASSERT_TRUE(again.ok()) << firstMessage(again);
   EXPECT_EQ(again.lens->prescription.surfaces[0].glass, r.lens->prescription.surfaces[0].glass);
   EXPECT_NE(whyNotDat(r.lens->prescription).find("surface 1's glass N-BK7 is a catalogue glass"),
@@ -121,7 +124,7 @@ TEST(CatalogGlassLens, TheFileKeepsTheGlassByNameAndDatRefusesIt) {
 }
 
 TEST(CatalogGlassLens, ARowsNumbersMustBeItsGlasss) {
-  Prescription p = parse(kBk7Singlet).lens->prescription;
+  Prescription p = parseGlassLens(kBk7Singlet).lens->prescription;
   p.surfaces[0].indexD = 1.6;  // the number edited, the name left: a contradiction
   const auto errors = validate(p);
   ASSERT_FALSE(errors.empty());
@@ -140,7 +143,7 @@ const std::string kCatalogueDoublet =
     "stop thickness 45 diameter 10\n";
 
 TEST(CatalogGlassLens, TheSpectralBatchTraceFollowsEachGlasssOwnFormula) {
-  const LensFileResult file = parse(kCatalogueDoublet);
+  const LensFileResult file = parseGlassLens(kCatalogueDoublet);
   ASSERT_TRUE(file.ok()) << firstMessage(file);
   const auto lens = LensSystem::build(file.lens->prescription);
   ASSERT_TRUE(lens.ok());
@@ -187,10 +190,10 @@ TEST(CatalogGlassLens, AGlassTheSpectralTraceCannotFollowIsNamedAndRefused) {
                                             "H-LAK67 (CDGM): its formula covers 365-706.5 nm"},
         std::pair<std::string, std::string>{"K8 maker LZOS", "K8 (LZOS) is a measured table"}}) {
     const LensFileResult file =
-        parse("lenslab-lens 1\nsurface radius 50 thickness 5 glass " + glass +
-              " diameter 20\n"
-              "surface radius -50 thickness 1 diameter 20\n"
-              "stop thickness 45 diameter 10\n");
+        parseGlassLens("lenslab-lens 1\nsurface radius 50 thickness 5 glass " + glass +
+                       " diameter 20\n"
+                       "surface radius -50 thickness 1 diameter 20\n"
+                       "stop thickness 45 diameter 10\n");
     ASSERT_TRUE(file.ok()) << firstMessage(file);
     const auto lens = LensSystem::build(file.lens->prescription);
     ASSERT_TRUE(lens.ok());

@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
-std::shared_ptr<const LensSystem> build(const Prescription& p) {
+std::shared_ptr<const LensSystem> buildChromaticLens(const Prescription& p) {
   BuildResult built = LensSystem::build(p);
   EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().toString());
   return built.system;
@@ -32,7 +32,7 @@ TEST(ChromaticFocalShift, PlanoConvexSingletFollowsTheLensmakersFormulaAtFAndC) 
   p.surfaces = {{R, t, nD, V, 25.0},
                 {kFlatRadius, 1.0, 1.0, std::nullopt, 25.0},
                 {0.0, 95.0, 1.0, std::nullopt, 20.0}};
-  const auto lens = build(p);
+  const auto lens = buildChromaticLens(p);
   ASSERT_TRUE(lens);
   auto backFocus = [&](double wavelengthNm) {
     const double n = refractiveIndex(nD, V, wavelengthNm);
@@ -69,7 +69,7 @@ TEST(ChromaticFocalShift, PlanoConvexSingletFollowsTheLensmakersFormulaAtFAndC) 
 }
 
 TEST(ChromaticFocalShift, LensWithoutAbbeNumbersHasNone) {
-  const auto lens = build(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
+  const auto lens = buildChromaticLens(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
   ASSERT_TRUE(lens);
   EXPECT_FALSE(lensHasDispersion(lens->prescription()));
   std::string whyNot;
@@ -91,7 +91,7 @@ TEST(LateralColour, SingletWithRemoteStopMatchesTheThinLensEstimateAndSeidelCT) 
   Prescription p;
   p.surfaces = {
       {0.0, s, 1.0, std::nullopt, 6.0}, {r1, t, nD, V, 16.0}, {r2, 100.0, 1.0, std::nullopt, 16.0}};
-  auto lens = build(p);
+  auto lens = buildChromaticLens(p);
   ASSERT_TRUE(lens);
   lens = lens->withFilmDistance(lens->firstOrder().bflMm);
   AnalysisSetup setup;

@@ -19,7 +19,7 @@ namespace {
 
 constexpr double kRadians = std::numbers::pi / 180.0;
 
-std::shared_ptr<const LensSystem> build(const Prescription& p) {
+std::shared_ptr<const LensSystem> buildDistortionLens(const Prescription& p) {
   auto built = LensSystem::build(p);
   EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().toString());
   return built.system;
@@ -38,7 +38,7 @@ Prescription symmetricLens(double filmDistanceMm) {
 
 // A biconvex singlet (f about 100 mm, f/25) with its stop `stopGapMm` in front of it (positive)
 // or behind it (negative).
-Prescription singletWithStop(double stopGapMm, double filmDistanceMm) {
+Prescription distortionSingletWithStop(double stopGapMm, double filmDistanceMm) {
   Prescription p;
   const Surface front{100.0, 2.0, 1.5, std::nullopt, 12.0};
   if (stopGapMm > 0) {
@@ -57,7 +57,7 @@ Prescription singletWithStop(double stopGapMm, double filmDistanceMm) {
 std::shared_ptr<const LensSystem> focusedAtInfinity(Prescription p) {
   const testing::SeidelByHand hand = testing::seidelByHand(p, 0.01);
   p.surfaces.back().thicknessMm = hand.imageDistanceMm;
-  return build(p);
+  return buildDistortionLens(p);
 }
 
 // At 1:1 with the object and film planes mirrored about the stop, the chief ray of an object
@@ -79,7 +79,7 @@ TEST(Distortion, SymmetricLensAtUnitMagnificationHasNone) {
     (imageDistance(mid) - mid > 0.0 ? lo : hi) = mid;
   }
   const double s = 0.5 * (lo + hi);
-  const auto lens = build(symmetricLens(s));
+  const auto lens = buildDistortionLens(symmetricLens(s));
   ASSERT_TRUE(lens);
   AnalysisSetup setup;
   setup.filmHalfDiagonalMm = 15.0;
@@ -105,7 +105,7 @@ TEST(Distortion, SymmetricLensAtUnitMagnificationHasNone) {
 // 6.3.5); at a few degrees the fifth order adds a fraction of a percent of that.
 TEST(Distortion, SingletWithARemoteStopMatchesThirdOrder) {
   for (double stopGapMm : {25.0, -25.0}) {
-    const Prescription p = singletWithStop(stopGapMm, 1.0);
+    const Prescription p = distortionSingletWithStop(stopGapMm, 1.0);
     const double unitSlope = 0.01;
     const testing::SeidelByHand hand = testing::seidelByHand(p, unitSlope);
     const auto lens = focusedAtInfinity(p);
@@ -148,7 +148,7 @@ TEST(Distortion, ChiefRayLeavingAtItsEntranceAngleHasNone) {
   const double focus = testing::seidelByHand(p, 0.01).imageDistanceMm;
   for (double defocusMm : {0.0, 2.0, -2.0}) {
     p.surfaces.back().thicknessMm = focus + defocusMm;
-    const auto lens = build(p);
+    const auto lens = buildDistortionLens(p);
     ASSERT_TRUE(lens);
     AnalysisSetup setup;
     setup.filmHalfDiagonalMm = 20.0;  // about 11 degrees
@@ -183,7 +183,7 @@ TEST(Distortion, StartsFromZeroWhereverTheFilmIs) {
 TEST(Distortion, AnAfocalLensHasNoReference) {
   Prescription opening;
   opening.surfaces = {{0.0, 30.0, 0.0, std::nullopt, 20.0}};
-  const auto lens = build(opening);
+  const auto lens = buildDistortionLens(opening);
   ASSERT_TRUE(lens);
   std::string why;
   EXPECT_FALSE(distortionCurve(*lens, AnalysisSetup{}, 32, &why));
@@ -225,7 +225,7 @@ TEST(Distortion, FieldsBeyondCoverageSayWhy) {
 // and the symmetric lens at 1:1 leaves the grid undistorted.
 TEST(Distortion, GridCornerIsWhereTheRealChiefRayLands) {
   for (double stopGapMm : {25.0, -25.0}) {
-    const auto lens = focusedAtInfinity(singletWithStop(stopGapMm, 1.0));
+    const auto lens = focusedAtInfinity(distortionSingletWithStop(stopGapMm, 1.0));
     ASSERT_TRUE(lens);
     AnalysisSetup setup;
     setup.filmHalfDiagonalMm = 0.5 * std::hypot(36.0, 24.0) * 0.4;  // about 5 degrees

@@ -16,7 +16,7 @@
 namespace lenslab::optics {
 namespace {
 
-std::shared_ptr<const LensSystem> build(const Prescription& p) {
+std::shared_ptr<const LensSystem> buildCurvatureLens(const Prescription& p) {
   auto built = LensSystem::build(p);
   EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().toString());
   return built.system;
@@ -41,7 +41,7 @@ Prescription thinLens(double stopGapMm) {
 // Fundamentals of Optics, 4th ed., sec. 9.9; Welford, sec. 7.4). Here the stop touches the first
 // vertex and the lens is 0.4 mm thick, which shifts these by a few parts in a thousand.
 TEST(FieldCurvature, ThinLensWithTheStopAtTheLensFollowsCoddington) {
-  const auto lens = build(thinLens(0.001));
+  const auto lens = buildCurvatureLens(thinLens(0.001));
   ASSERT_TRUE(lens);
   const double n = 1.5, f = lens->firstOrder().eflMm;
   AnalysisSetup setup;
@@ -71,7 +71,7 @@ TEST(FieldCurvature, ThinLensWithTheStopAtTheLensFollowsCoddington) {
 TEST(FieldCurvature, RemoteStopMatchesTheSeidelSums) {
   for (double stopGapMm : {20.0, 60.0}) {
     const Prescription p = thinLens(stopGapMm);
-    const auto lens = build(p);
+    const auto lens = buildCurvatureLens(p);
     ASSERT_TRUE(lens);
     const double unitSlope = 0.01;
     const testing::SeidelByHand hand = testing::seidelByHand(p, unitSlope);
@@ -144,7 +144,7 @@ TEST(FieldCurvature, AFieldNoRayReachesIsNullWithAReason) {
   Prescription opening;
   opening.surfaces = {{0.0, 30.0, 0.0, std::nullopt, 20.0}};
   std::string why;
-  EXPECT_FALSE(fieldCurvature(*build(opening), setup, 8, &why));
+  EXPECT_FALSE(fieldCurvature(*buildCurvatureLens(opening), setup, 8, &why));
   EXPECT_NE(why.find("afocal"), std::string::npos);
 }
 

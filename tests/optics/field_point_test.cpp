@@ -18,9 +18,9 @@
 namespace lenslab::optics {
 namespace {
 
-constexpr double kDegrees = 180.0 / std::numbers::pi;
+constexpr double kFieldPointDegrees = 180.0 / std::numbers::pi;
 
-std::shared_ptr<const LensSystem> build(const std::string& text) {
+std::shared_ptr<const LensSystem> buildFieldPointLens(const std::string& text) {
   const auto file = parseLensText(text, "opening.dat");
   EXPECT_TRUE(file.ok());
   return LensSystem::build(file.lens->prescription).system;
@@ -34,7 +34,7 @@ glm::dvec2 onStop(const LensSystem& lens, const LensRay& ray) {
 }
 
 // Where a ray from the object side meets the film plane z = 0 (clear apertures ignored).
-glm::dvec2 onFilm(const LensSystem& lens, const LensRay& ray) {
+glm::dvec2 fieldPointOnFilm(const LensSystem& lens, const LensRay& ray) {
   const auto out = traceFromSceneUnclipped(lens, ray, lens.surfaces().size() - 1);
   EXPECT_TRUE(out.has_value());
   if (!out) return glm::dvec2(NAN);
@@ -45,12 +45,12 @@ glm::dvec2 onFilm(const LensSystem& lens, const LensRay& ray) {
 // A bare 20 mm opening 30 mm from the film: the chief ray of image height h runs straight
 // through the opening's centre at atan(h / 30), and the pupil maps linearly onto the opening.
 TEST(FieldPoint, BareOpeningHasTheClosedForm) {
-  const auto lens = build("0 30 0 20\n");
+  const auto lens = buildFieldPointLens("0 30 0 20\n");
   ASSERT_TRUE(lens);
   for (double h : {0.0, 5.0, 15.0}) {
     const auto field = FieldPoint::resolve(*lens, h, std::nullopt);
     ASSERT_TRUE(field) << h;
-    EXPECT_NEAR(field->fieldAngleDeg(), std::atan(h / 30.0) * kDegrees, 1e-7);
+    EXPECT_NEAR(field->fieldAngleDeg(), std::atan(h / 30.0) * kFieldPointDegrees, 1e-7);
     for (glm::dvec2 pupil :
          {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0, -1), glm::dvec2(0.6, 0.8)}) {
       const glm::dvec2 stop = onStop(*lens, field->ray(pupil));
@@ -75,7 +75,7 @@ TEST(FieldPoint, ChiefRayLandsAtTheRequestedHeight) {
       EXPECT_NEAR(field->fieldAngleDeg(), 0.5 * *fov, 1e-6) << h;
     }
     EXPECT_TRUE(field->objectAtInfinity());
-    const glm::dvec2 film = onFilm(*lens, field->chiefRay());
+    const glm::dvec2 film = fieldPointOnFilm(*lens, field->chiefRay());
     EXPECT_NEAR(film.y, h, 1e-6);
     EXPECT_NEAR(film.x, 0.0, 1e-9);
 
@@ -83,7 +83,7 @@ TEST(FieldPoint, ChiefRayLandsAtTheRequestedHeight) {
     ASSERT_TRUE(near);
     ASSERT_TRUE(near->objectPoint());
     EXPECT_NEAR(near->objectPoint()->z, 2000.0, 1e-9);
-    EXPECT_NEAR(onFilm(*lens, near->chiefRay()).y, h, 1e-6);
+    EXPECT_NEAR(fieldPointOnFilm(*lens, near->chiefRay()).y, h, 1e-6);
   }
 }
 
@@ -122,7 +122,7 @@ TEST(FieldPoint, SaysWhyAFieldCannotBeResolved) {
   const double close = lens->frontVertexZ() + maxSemiAperture + 1.0;
   const auto near = FieldPoint::resolve(*lens, 5.0, close, &why);
   ASSERT_TRUE(near) << why;
-  EXPECT_NEAR(onFilm(*lens, near->chiefRay()).y, 5.0, 1e-6);
+  EXPECT_NEAR(fieldPointOnFilm(*lens, near->chiefRay()).y, 5.0, 1e-6);
   EXPECT_FALSE(FieldPoint::resolve(*lens, NAN, std::nullopt, &why));
   EXPECT_FALSE(why.empty());
 }

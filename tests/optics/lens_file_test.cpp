@@ -17,15 +17,15 @@ const char* kFourRows =
     "0 5 0 10\n"
     "-50 40 1 20\n";
 
-LensFileResult parse(const std::string& text) { return parseLensText(text, "t.dat"); }
+LensFileResult parseDat(const std::string& text) { return parseLensText(text, "t.dat"); }
 
-std::string firstError(const LensFileResult& r) {
+std::string firstDatError(const LensFileResult& r) {
   return r.diagnostics.empty() ? std::string("(no error)") : r.diagnostics.all().front().format();
 }
 
 TEST(LensFile, ReadsPbrtRowsAndComments) {
-  const auto r = parse(kFourRows);
-  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto r = parseDat(kFourRows);
+  ASSERT_TRUE(r.ok()) << firstDatError(r);
   const auto& s = r.lens->prescription.surfaces;
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s[0].radiusMm, 50.0);
@@ -37,56 +37,56 @@ TEST(LensFile, ReadsPbrtRowsAndComments) {
 }
 
 TEST(LensFile, AcceptsCrlfAndNoFinalNewline) {
-  const auto crlf = parse("# x\r\n50\t5\t1.5\t20\r\n0 5 0 10\r\n-50 40 1 20");
-  ASSERT_TRUE(crlf.ok()) << firstError(crlf);
+  const auto crlf = parseDat("# x\r\n50\t5\t1.5\t20\r\n0 5 0 10\r\n-50 40 1 20");
+  ASSERT_TRUE(crlf.ok()) << firstDatError(crlf);
   ASSERT_EQ(crlf.lens->prescription.surfaces.size(), 3u);
   // pbrt drops a last number without trailing whitespace; lenslab keeps it.
   EXPECT_EQ(crlf.lens->prescription.surfaces[2].apertureDiameterMm, 20.0);
 }
 
 TEST(LensFile, SkipsAUtf8ByteOrderMark) {
-  const auto r = parse("\xEF\xBB\xBF# x\n" + std::string(kFourRows));
-  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto r = parseDat("\xEF\xBB\xBF# x\n" + std::string(kFourRows));
+  ASSERT_TRUE(r.ok()) << firstDatError(r);
   EXPECT_EQ(r.lens->prescription.surfaces.size(), 3u);
   EXPECT_EQ(r.lens->headerComments.front(), "x");
   // Right before a number, too; columns count from after the mark.
-  const auto row = parse(
+  const auto row = parseDat(
       "\xEF\xBB\xBF"
       "50 5 1.5 20\n0 5 0 10\n-50 40 1 20\n");
-  ASSERT_TRUE(row.ok()) << firstError(row);
+  ASSERT_TRUE(row.ok()) << firstDatError(row);
   EXPECT_EQ(row.lens->prescription.surfaces[0].radiusMm, 50.0);
-  const auto bad = parse(
+  const auto bad = parseDat(
       "\xEF\xBB\xBF"
       "5x 5 1.5 20\n");
   ASSERT_FALSE(bad.ok());
-  EXPECT_EQ(bad.diagnostics.all().front().location.column, 1) << firstError(bad);
+  EXPECT_EQ(bad.diagnostics.all().front().location.column, 1) << firstDatError(bad);
 }
 
 TEST(LensFile, AcceptsLoneCarriageReturnLineEndings) {
   // Classic Mac OS text: rows end in a CR alone.
-  const auto r = parse("# old Mac\r50 5 1.5 20\r0 5 0 10\r-50 40 1 20\r");
-  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto r = parseDat("# old Mac\r50 5 1.5 20\r0 5 0 10\r-50 40 1 20\r");
+  ASSERT_TRUE(r.ok()) << firstDatError(r);
   ASSERT_EQ(r.lens->prescription.surfaces.size(), 3u);
   EXPECT_EQ(r.lens->prescription.surfaces[2].thicknessMm, 40.0);
   EXPECT_EQ(r.lens->headerComments, std::vector<std::string>{"old Mac"});
   EXPECT_EQ(r.lens->rowLines, (std::vector<int>{2, 3, 4}));
   // Errors count those lines, and a mix of endings is fine.
-  const auto bad = parse("50 5 1.5 20\r\n0 5 0 10\r-50 4x 1 20\n");
+  const auto bad = parseDat("50 5 1.5 20\r\n0 5 0 10\r-50 4x 1 20\n");
   ASSERT_FALSE(bad.ok());
-  EXPECT_EQ(bad.diagnostics.all().front().location.line, 3) << firstError(bad);
-  EXPECT_EQ(bad.diagnostics.all().front().location.column, 5) << firstError(bad);
+  EXPECT_EQ(bad.diagnostics.all().front().location.line, 3) << firstDatError(bad);
+  EXPECT_EQ(bad.diagnostics.all().front().location.column, 5) << firstDatError(bad);
 }
 
 TEST(LensFile, AcceptsStrayQuotesInComments) {
-  const auto r = parse("# US patent 2,673,491 Tronnier\"\t\t\n# Modern Lens Design, p.312\"\n" +
-                       std::string(kFourRows));
-  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto r = parseDat("# US patent 2,673,491 Tronnier\"\t\t\n# Modern Lens Design, p.312\"\n" +
+                          std::string(kFourRows));
+  ASSERT_TRUE(r.ok()) << firstDatError(r);
   EXPECT_EQ(r.lens->prescription.surfaces.size(), 3u);
 }
 
 TEST(LensFile, FifthColumnIsTheAbbeNumberAndInfIsAFlatSurface) {
-  const auto r = parse("50 5 1.67 20 47.1\ninf 1 1 20\n0 5 0 10\n-50 40 1 20\n");
-  ASSERT_TRUE(r.ok()) << firstError(r);
+  const auto r = parseDat("50 5 1.67 20 47.1\ninf 1 1 20\n0 5 0 10\n-50 40 1 20\n");
+  ASSERT_TRUE(r.ok()) << firstDatError(r);
   const auto& s = r.lens->prescription.surfaces;
   ASSERT_TRUE(s[0].abbeD.has_value());
   EXPECT_EQ(*s[0].abbeD, 47.1);
@@ -98,7 +98,7 @@ TEST(LensFile, FifthColumnIsTheAbbeNumberAndInfIsAFlatSurface) {
 TEST(LensFile, ReadsTheCourseReferenceFiles) {
   for (const auto& lens : testing::kCourseLenses) {
     const auto r = readLensFile(testing::referenceLensDir() / lens.file);
-    ASSERT_TRUE(r.ok()) << firstError(r);
+    ASSERT_TRUE(r.ok()) << firstDatError(r);
     EXPECT_GE(r.lens->prescription.surfaces.size(), 7u);
   }
 }
@@ -111,10 +111,10 @@ TEST(LensFile, WritesWhatItReadsIdentically) {
                 {-1.0 / 3.0, 0.1 + 0.2, 1.603, 38.0, 0.6},
                 {-39.73, 36.77, 1.0, std::nullopt, 20.0}};
   const std::string text = formatLensText(p, {"round trip", "second line"});
-  EXPECT_TRUE(parse(text).ok()) << firstError(parse(text));
+  EXPECT_TRUE(parseDat(text).ok()) << firstDatError(parseDat(text));
   p.surfaces[3] = {-14.495, 1.0 / 3.0, 1.603, 38.0, 17.0};
-  const auto again = parse(formatLensText(p, {"round trip"}));
-  ASSERT_TRUE(again.ok()) << firstError(again) << "\n" << formatLensText(p);
+  const auto again = parseDat(formatLensText(p, {"round trip"}));
+  ASSERT_TRUE(again.ok()) << firstDatError(again) << "\n" << formatLensText(p);
   const auto& s = again.lens->prescription.surfaces;
   ASSERT_EQ(s.size(), p.surfaces.size());
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -127,7 +127,7 @@ TEST(LensFile, WritesWhatItReadsIdentically) {
   EXPECT_EQ(again.lens->headerComments.front(), "round trip");
   // And the text itself is a fixed point of read-then-write, header comments included.
   const std::string once = formatLensText(p, {"round trip", "two"});
-  const auto reread = parse(once);
+  const auto reread = parseDat(once);
   ASSERT_TRUE(reread.ok());
   EXPECT_EQ(reread.lens->headerComments, (std::vector<std::string>{"round trip", "two"}));
   EXPECT_EQ(formatLensText(reread.lens->prescription, reread.lens->headerComments), once);
@@ -188,7 +188,7 @@ TEST(LensFile, BadInputGivesFileLineColumnErrors) {
   };
   for (const auto& c : cases) {
     const std::string text(c.text);
-    const auto r = parse(text);
+    const auto r = parseDat(text);
     EXPECT_FALSE(r.ok()) << c.text;
     ASSERT_FALSE(r.diagnostics.empty()) << c.text;
     const auto& e = r.diagnostics.all().front();
@@ -205,7 +205,7 @@ TEST(LensFile, BundledLensesNameTheirSources) {
     if (entry.path().extension() != ".dat") continue;
     ++files;
     const auto r = readLensFile(entry.path());
-    ASSERT_TRUE(r.ok()) << firstError(r);
+    ASSERT_TRUE(r.ok()) << firstDatError(r);
     std::string header;
     for (const std::string& line : r.lens->headerComments) header += line + "\n";
     EXPECT_TRUE(header.find("Source") != std::string::npos ||
@@ -227,7 +227,7 @@ TEST(LensFile, BundledLensesNameTheirSources) {
 
 TEST(LensFile, EmbeddedNulIsBinary) {
   const std::string text("50 5 1.5 20\n0 5\0 0 10\n", 22);
-  const auto r = parse(text);
+  const auto r = parseDat(text);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.diagnostics.all().front().location.line, 2);
   EXPECT_EQ(r.diagnostics.all().front().location.column, 4);
@@ -279,10 +279,10 @@ std::string flatSurfaces(int count) {
 }
 
 TEST(LensFile, AtMost256SurfacesAndTheNextIsAnErrorAtItsRow) {
-  const auto most = parse(flatSurfaces(256));
+  const auto most = parseDat(flatSurfaces(256));
   ASSERT_TRUE(most.lens.has_value()) << most.diagnostics.formatAll();
   EXPECT_EQ(most.lens->prescription.surfaces.size(), 256u);
-  const auto tooMany = parse(flatSurfaces(10'000));
+  const auto tooMany = parseDat(flatSurfaces(10'000));
   EXPECT_FALSE(tooMany.lens.has_value());
   ASSERT_EQ(tooMany.diagnostics.all().size(), 1u);
   EXPECT_EQ(tooMany.diagnostics.formatAll(),

@@ -16,7 +16,7 @@
 namespace lenslab::optics {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kLimitingInf = std::numeric_limits<double>::infinity();
 
 // A plano-convex lens (flat front, rear radius -50 mm, n = 1.5, 3 mm thick, 20 mm clear), the
 // iris 20 mm behind it (diameter `stopDiameter`), a flat air-to-air rim 30 mm further (diameter
@@ -47,7 +47,7 @@ TEST(LimitingAperture, RimBehindTheIrisLimitsTheBeamFromInfinityByHand) {
   const auto built = LensSystem::build(twoApertureSystem(10.0, 5.0));
   ASSERT_TRUE(built.ok());
   const LensSystem& lens = *built.system;
-  const LimitingAperture limit = findLimitingAperture(lens, kInf);
+  const LimitingAperture limit = findLimitingAperture(lens, kLimitingInf);
   ASSERT_TRUE(limit.paraxial);
   EXPECT_EQ(limit.paraxial->surfaceIndex, 3u);
   EXPECT_FALSE(limit.paraxial->isStop);
@@ -102,7 +102,7 @@ TEST(LimitingAperture, IrisLimitsWhenTheRimIsWideEnoughByHand) {
   // A 7 mm rim: 3.5 / 0.5 = 7 > 6.25, so the iris limits: pupil 12.5 mm, f/8.
   const auto built = LensSystem::build(twoApertureSystem(10.0, 7.0));
   ASSERT_TRUE(built.ok());
-  const LimitingAperture limit = findLimitingAperture(*built.system, kInf);
+  const LimitingAperture limit = findLimitingAperture(*built.system, kLimitingInf);
   ASSERT_TRUE(limit.paraxial);
   EXPECT_EQ(limit.paraxial->surfaceIndex, 2u);
   EXPECT_TRUE(limit.paraxial->isStop);
@@ -113,7 +113,7 @@ TEST(LimitingAperture, IrisLimitsWhenTheRimIsWideEnoughByHand) {
   EXPECT_TRUE(limit.limitedByStop(built.system->stopIndex()));
 }
 
-std::shared_ptr<const LensSystem> doubleGauss(double irisDiameterMm = 0.0) {
+std::shared_ptr<const LensSystem> limitingDoubleGauss(double irisDiameterMm = 0.0) {
   auto lens = testing::loadLens(testing::bundledLensDir() / "dgauss-50mm.dat");
   if (lens && irisDiameterMm > 0.0) lens = lens->withStopDiameter(irisDiameterMm);
   return lens;
@@ -136,9 +136,9 @@ TEST(LimitingAperture, ADeepConcaveFrontSurfaceLimitsAtItsRim) {
 }
 
 TEST(LimitingAperture, StockDoubleGaussIsLimitedBySurface3) {
-  const auto lens = doubleGauss();
+  const auto lens = limitingDoubleGauss();
   ASSERT_TRUE(lens);
-  const LimitingAperture limit = findLimitingAperture(*lens, kInf);
+  const LimitingAperture limit = findLimitingAperture(*lens, kLimitingInf);
   ASSERT_TRUE(limit.paraxial);
   EXPECT_EQ(limit.paraxial->surfaceIndex, 2u);  // surface 3 counted from 1
   EXPECT_NEAR(limit.paraxial->entrancePupilDiameterMm, 24.29, 0.005);
@@ -156,16 +156,16 @@ TEST(LimitingAperture, StockDoubleGaussIsLimitedBySurface3) {
 // stock lens's. Before the fix, focus filled the iris: 36.042 mm at 40 mm (only the inner zones
 // passed) and "no real image" at 500 mm.
 TEST(LimitingAperture, OpeningTheIrisPastTheRimsKeepsTheStockFocus) {
-  const auto stock = doubleGauss();
+  const auto stock = limitingDoubleGauss();
   ASSERT_TRUE(stock);
-  const FocusResult stockInfinity = filmDistanceForObjectDistance(*stock, kInf);
+  const FocusResult stockInfinity = filmDistanceForObjectDistance(*stock, kLimitingInf);
   const FocusResult stockNear = filmDistanceForObjectDistance(*stock, 500.0);
   ASSERT_TRUE(stockInfinity.ok() && stockNear.ok());
   for (double iris : {40.0, 500.0}) {
     SCOPED_TRACE(iris);
-    const auto open = doubleGauss(iris);
+    const auto open = limitingDoubleGauss(iris);
     ASSERT_TRUE(open);
-    const FocusResult infinity = filmDistanceForObjectDistance(*open, kInf);
+    const FocusResult infinity = filmDistanceForObjectDistance(*open, kLimitingInf);
     ASSERT_TRUE(infinity.ok()) << infinity.whyNot;
     EXPECT_NEAR(*infinity.valueMm, *stockInfinity.valueMm, 1e-6);
     const FocusResult near = filmDistanceForObjectDistance(*open, 500.0);
@@ -182,7 +182,7 @@ TEST(LimitingAperture, OpeningTheIrisPastTheRimsKeepsTheStockFocus) {
 // across the whole beam that passes, found here by its own scan. The production search uses 8
 // equal-area zones aimed at the stop; the two agree to a few micrometres.
 TEST(LimitingAperture, StockInfinityFocusMatchesADenseLeastSquaresFocus) {
-  const auto lens = doubleGauss(500.0);
+  const auto lens = limitingDoubleGauss(500.0);
   ASSERT_TRUE(lens);
   auto exit = [&](double h) {
     return lens->traceFromScene({{h, 0, lens->frontVertexZ() + 1}, {0, 0, -1}});
@@ -202,14 +202,14 @@ TEST(LimitingAperture, StockInfinityFocusMatchesADenseLeastSquaresFocus) {
     sumBB += h * b * b;
   }
   const double focusBehindRear = lens->rearVertexZ() + sumAB / sumBB;
-  const FocusResult focus = filmDistanceForObjectDistance(*lens, kInf);
+  const FocusResult focus = filmDistanceForObjectDistance(*lens, kLimitingInf);
   ASSERT_TRUE(focus.ok()) << focus.whyNot;
   EXPECT_NEAR(*focus.valueMm, focusBehindRear, 0.005);
 }
 
 TEST(LimitingAperture, FansSpanThePassingBeamWithTheIrisWideOpen) {
-  const auto stock = doubleGauss();
-  const auto open = doubleGauss(500.0);
+  const auto stock = limitingDoubleGauss();
+  const auto open = limitingDoubleGauss(500.0);
   ASSERT_TRUE(stock && open);
   FanSpec spec;
   for (const auto& lens : {stock, open}) {
@@ -241,8 +241,8 @@ TEST(LimitingAperture, FansSpanThePassingBeamWithTheIrisWideOpen) {
 // 500 mm its bins are the same, and far smaller than the iris's paraxial exit pupil (62 and
 // 776 mm across).
 TEST(LimitingAperture, ExitPupilSamplingAlreadyTracesThePassingBeam) {
-  const auto open40 = doubleGauss(40.0);
-  const auto open500 = doubleGauss(500.0);
+  const auto open40 = limitingDoubleGauss(40.0);
+  const auto open500 = limitingDoubleGauss(500.0);
   ASSERT_TRUE(open40 && open500);
   const ExitPupilTable& a = open40->exitPupilTable();
   const ExitPupilTable& b = open500->exitPupilTable();

@@ -19,7 +19,7 @@
 namespace lenslab::optics {
 namespace {
 
-std::shared_ptr<const LensSystem> build(const Prescription& p) {
+std::shared_ptr<const LensSystem> buildSeidelLens(const Prescription& p) {
   BuildResult built = LensSystem::build(p);
   EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors.front().toString());
   return built.system;
@@ -74,7 +74,7 @@ TEST(SeidelSums, ThickSingletMatchesWelfordsFormulasWorkedByHand) {
   p.surfaces = {{0.0, gap, 1.0, std::nullopt, 10.0},
                 {r1, t, n, V, 30.0},
                 {r2, film, 1.0, std::nullopt, 30.0}};
-  const auto lens = build(p);
+  const auto lens = buildSeidelLens(p);
   ASSERT_TRUE(lens);
   std::string whyNot;
   const auto sums = computeSeidelSums(*lens, std::nullopt, field, &whyNot);
@@ -123,7 +123,7 @@ TEST(SeidelSums, NearlyThinLensWithTheStopAtItMatchesWelfordsThinLensFormulas) {
   p.surfaces = {{0.0, 0.0, 1.0, std::nullopt, 4.0},
                 {r1, 0.05, n, V, 4.2},
                 {r2, 100.0, 1.0, std::nullopt, 4.2}};
-  const auto lens = build(p);
+  const auto lens = buildSeidelLens(p);
   ASSERT_TRUE(lens);
   std::string whyNot;
   const auto sums = computeSeidelSums(*lens, std::nullopt, field, &whyNot);
@@ -151,7 +151,7 @@ std::shared_ptr<const LensSystem> slowPlanoConvex(double stopGapMm, double filmM
   p.surfaces = {{0.0, stopGapMm, 1.0, std::nullopt, 5.0},
                 {51.68, 4.0, 1.5168, 64.17, 30.0},
                 {kFlatRadius, filmMm, 1.0, std::nullopt, 30.0}};
-  return build(p);
+  return buildSeidelLens(p);
 }
 
 TEST(SeidelSums, PredictRealMarginalRaySphericalAberrationOfASlowLens) {
@@ -219,7 +219,7 @@ TEST(SeidelSums, SymmetricSystemAtUnitMagnificationHasNoOddAberrations) {
                 {0.0, 6.0, 1.0, std::nullopt, 10.0},
                 {kFlatRadius, 5.0, 1.62, 36.0, 24.0},
                 {-40.0, 50.0, 1.0, std::nullopt, 24.0}};
-  auto lens = build(p);
+  auto lens = buildSeidelLens(p);
   ASSERT_TRUE(lens);
   const FirstOrderData& first = lens->firstOrder();
   const double f = first.eflMm;
@@ -267,7 +267,7 @@ TEST(SeidelSums, TheCartesianOvalFromAirIntoGlassHasNoSphericalAberration) {
     p.surfaces = {{0.0, 0.0, 1.0, std::nullopt, 2.0 * h},
                   {radius, n * radius / (n - 1.0), n, std::nullopt, 30.0}};
     p.surfaces[1].profile = profile;
-    return build(p);
+    return buildSeidelLens(p);
   };
   const auto sphere = lensWith({});
   const auto oval = lensWith(profileOf(-1.0 / (n * n), {}));
@@ -303,7 +303,7 @@ TEST(SeidelSums, TheCartesianOvalFromGlassIntoAirHasNoSphericalAberration) {
                   {kFlatRadius, 5.0, n, std::nullopt, 12.0},
                   {radius, -radius / (n - 1.0), 1.0, std::nullopt, 12.0}};
     p.surfaces[2].profile = profile;
-    return build(p);
+    return buildSeidelLens(p);
   };
   const auto sphere = lensWith({});
   const auto oval = lensWith(profileOf(-n * n, {}));
@@ -333,7 +333,7 @@ std::shared_ptr<const LensSystem> slowAsphericPlanoConvex(double stopGapMm) {
                 {60.0, 4.0, 1.5168, 64.17, 30.0},
                 {kFlatRadius, 100.0, 1.0, std::nullopt, 30.0}};
   p.surfaces[1].profile = profileOf(-1.0, {{2, (paraxial - base) / 2.0}, {4, -1.5e-7}});
-  auto lens = build(p);
+  auto lens = buildSeidelLens(p);
   return lens ? lens->withFilmDistance(lens->firstOrder().bflMm) : nullptr;
 }
 
@@ -414,7 +414,7 @@ TEST(SeidelSums, AnR2TermIsTheParaxialSphereWithItsFourthOrderDeparture) {
                   {frontRadius, d, n, std::nullopt, 16.0},
                   {r2, 60.0, 1.0, std::nullopt, 16.0}};
     p.surfaces[1].profile = profile;
-    const auto lens = build(p);
+    const auto lens = buildSeidelLens(p);
     EXPECT_TRUE(lens);
     std::string whyNot;
     auto sums = lens ? computeSeidelSums(*lens, std::nullopt, field, &whyNot) : std::nullopt;
@@ -473,7 +473,7 @@ TEST(SeidelSums, OddPowerTermsAreLeftOutAndNamed) {
     Prescription p = testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0);
     p.surfaces[0].profile = front;
     p.surfaces[1].profile = rear;
-    const auto lens = build(p);
+    const auto lens = buildSeidelLens(p);
     EXPECT_TRUE(lens);
     auto sums = lens ? computeSeidelSums(*lens, std::nullopt, 5.0) : std::nullopt;
     EXPECT_TRUE(sums);
@@ -498,7 +498,7 @@ TEST(SeidelSums, OddPowerTermsAreLeftOutAndNamed) {
 }
 
 TEST(SeidelSums, LensWithoutAbbeNumbersHasNoChromaticSums) {
-  const auto lens = build(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
+  const auto lens = buildSeidelLens(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
   ASSERT_TRUE(lens);
   const auto sums = computeSeidelSums(*lens, std::nullopt, 5.0);
   ASSERT_TRUE(sums);
@@ -514,12 +514,12 @@ TEST(SeidelSums, RefusesAnAfocalLensAndAZeroField) {
   window.surfaces = {{kFlatRadius, 5.0, 1.5, std::nullopt, 20.0},
                      {kFlatRadius, 1.0, 1.0, std::nullopt, 20.0},
                      {0.0, 50.0, 1.0, std::nullopt, 10.0}};
-  const auto lens = build(window);
+  const auto lens = buildSeidelLens(window);
   ASSERT_TRUE(lens);
   std::string whyNot;
   EXPECT_FALSE(computeSeidelSums(*lens, std::nullopt, 5.0, &whyNot));
   EXPECT_NE(whyNot.find("afocal"), std::string::npos) << whyNot;
-  const auto singlet = build(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
+  const auto singlet = buildSeidelLens(testing::singlet(50.0, -50.0, 5.0, 1.5, 45.0));
   EXPECT_FALSE(computeSeidelSums(*singlet, std::nullopt, 0.0, &whyNot));
   EXPECT_FALSE(computeSeidelSums(*singlet, 10.0, 5.0, &whyNot));  // object inside the lens
 }

@@ -18,7 +18,7 @@
 namespace lenslab::optics {
 namespace {
 
-std::shared_ptr<const LensSystem> build(const std::string& text) {
+std::shared_ptr<const LensSystem> buildSpotLens(const std::string& text) {
   const auto file = parseLensText(text, "spot.dat");
   EXPECT_TRUE(file.ok()) << file.diagnostics.formatAll();
   return file.ok() ? LensSystem::build(file.lens->prescription).system : nullptr;
@@ -103,7 +103,7 @@ TEST(SpotDiagram, RadiiAgreeWithABruteForceTrace) {
 // the chief ray, so the spot is the uniform disk of radius 10 mm: RMS 10 / sqrt(2), GEO 10,
 // centroid on the chief ray. A bundle of parallel rays has no focus, so no Airy disk.
 TEST(SpotDiagram, BareOpeningIsAUniformDisk) {
-  const auto lens = build("0 30 0 20\n");
+  const auto lens = buildSpotLens("0 30 0 20\n");
   ASSERT_TRUE(lens);
   const SpotDiagrams spots = computeSpotDiagrams(*lens, fieldsAt({0.0, 0.5}, 20.0));
   EXPECT_FALSE(spots.airyRadiusMm);
@@ -132,7 +132,8 @@ TEST(SpotDiagram, SlowSingletThroughFocusIsTheParaxialCone) {
   for (double offsetDepths : {0.0, -2.0}) {
     const double depthMm = 2.0 * lambdaMm * workingN * workingN;
     const double film = bfl + offsetDepths * depthMm;
-    const auto lens = build("0 1 0 1\n50 4 1.5 30\ninf " + std::to_string(film) + " 1 30\n");
+    const auto lens =
+        buildSpotLens("0 1 0 1\n50 4 1.5 30\ninf " + std::to_string(film) + " 1 30\n");
     ASSERT_TRUE(lens);
     const double actualOffset = lens->filmDistanceMm() - bfl;
     const SpotDiagrams spots = computeSpotDiagrams(*lens, fieldsAt({0.0}, 10.0));

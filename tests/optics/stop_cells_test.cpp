@@ -23,7 +23,7 @@
 namespace lenslab::optics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kCellsPi = std::numbers::pi;
 
 using testing::blades;
 
@@ -51,8 +51,9 @@ std::vector<ApertureShape> testShapes() {
 
 int sectorOfPoint(glm::dvec2 p) {
   double angle = std::atan2(p.y, p.x);
-  if (angle < 0.0) angle += 2.0 * kPi;
-  return std::min(kStarHullSectors - 1, static_cast<int>(angle / (2.0 * kPi) * kStarHullSectors));
+  if (angle < 0.0) angle += 2.0 * kCellsPi;
+  return std::min(kStarHullSectors - 1,
+                  static_cast<int>(angle / (2.0 * kCellsPi) * kStarHullSectors));
 }
 
 TEST(StopCells, TheStarHullHoldsEveryPointOfTheShapeAndLittleMore) {
@@ -75,7 +76,7 @@ TEST(StopCells, TheStarHullHoldsEveryPointOfTheShapeAndLittleMore) {
     // mask's hull is its bound circle.)
     if (shape.kind == ApertureShape::Kind::Blades) {
       double area = 0.0;
-      for (const float r : hull) area += 0.5 * r * r * 2.0 * kPi / kStarHullSectors;
+      for (const float r : hull) area += 0.5 * r * r * 2.0 * kCellsPi / kStarHullSectors;
       EXPECT_NEAR(area / shape.areaFactor(), 1.0, 0.005);
     }
   }
@@ -88,18 +89,18 @@ TEST(StopCells, FilmAzimuthIsWithinItsErrorBound) {
   for (int i = 0; i < 200000; ++i) {
     const float x = u(rng), y = u(rng);
     double exact = std::atan2(static_cast<double>(y), static_cast<double>(x));
-    if (exact < 0.0) exact += 2.0 * kPi;
+    if (exact < 0.0) exact += 2.0 * kCellsPi;
     double error = std::abs(filmAzimuthRad(x, y) - exact);
-    error = std::min(error, 2.0 * kPi - error);  // across 0 = 2 pi
+    error = std::min(error, 2.0 * kCellsPi - error);  // across 0 = 2 pi
     worst = std::max(worst, error);
   }
   EXPECT_LT(worst, 2e-5);
   EXPECT_LT(worst, 0.05 * kCellSweepMarginRad);
   // The axes and the origin.
   EXPECT_NEAR(filmAzimuthRad(1.0f, 0.0f), 0.0, 1e-6);
-  EXPECT_NEAR(filmAzimuthRad(0.0f, 1.0f), 0.5 * kPi, 1e-5);
-  EXPECT_NEAR(filmAzimuthRad(-1.0f, 0.0f), kPi, 1e-5);
-  EXPECT_NEAR(filmAzimuthRad(0.0f, -1.0f), 1.5 * kPi, 1e-5);
+  EXPECT_NEAR(filmAzimuthRad(0.0f, 1.0f), 0.5 * kCellsPi, 1e-5);
+  EXPECT_NEAR(filmAzimuthRad(-1.0f, 0.0f), kCellsPi, 1e-5);
+  EXPECT_NEAR(filmAzimuthRad(0.0f, -1.0f), 1.5 * kCellsPi, 1e-5);
   EXPECT_EQ(filmAzimuthRad(0.0f, 0.0f), 0.0f);
 }
 
@@ -113,7 +114,7 @@ bool sweepOpen(const ApertureMask& mask, double bound, glm::dvec2 p) {
 }
 
 // The property the table's bound rests on: for a film point at azimuth phi, a plane point p
-// (film point turned onto +x) passes the stop when the shape holds p turned by phi; p must
+// (film point turned onto +x) cellPasses the stop when the shape holds p turned by phi; p must
 // then lie in the sweep of phi's cell (of its mirror image, flipped, for a mirrored cell).
 TEST(StopCells, EachCellsSweepHoldsTheShapeTurnedByEveryAzimuthOfItsCell) {
   std::mt19937 rng(5);
@@ -126,7 +127,7 @@ TEST(StopCells, EachCellsSweepHoldsTheShapeTurnedByEveryAzimuthOfItsCell) {
     ASSERT_FALSE(plan.sweptMasks.empty());
     int held = 0, missed = 0;
     for (int i = 0; i < 600000; ++i) {
-      const double phi = 2.0 * kPi * u(rng);
+      const double phi = 2.0 * kCellsPi * u(rng);
       const glm::dvec2 p{bound * (2.0 * u(rng) - 1.0), bound * (2.0 * u(rng) - 1.0)};
       const glm::dvec2 turned{std::cos(phi) * p.x - std::sin(phi) * p.y,
                               std::sin(phi) * p.x + std::cos(phi) * p.y};
@@ -149,18 +150,18 @@ TEST(StopCells, EachCellsSweepHoldsTheShapeTurnedByEveryAzimuthOfItsCell) {
 
 TEST(StopCells, ThePlanFollowsTheShapesSymmetry) {
   const StopCells triangle = planStopCells(blades(3, 0.0, 10.0));
-  EXPECT_NEAR(triangle.periodRad, 2.0 * kPi / 3.0, 1e-12);
+  EXPECT_NEAR(triangle.periodRad, 2.0 * kCellsPi / 3.0, 1e-12);
   EXPECT_EQ(triangle.count, 8);
   EXPECT_TRUE(triangle.mirrored);
   EXPECT_EQ(triangle.sweptMasks.size(), 4u);
-  EXPECT_NEAR(triangle.offsetRad, 10.0 * kPi / 180.0, 1e-9);
+  EXPECT_NEAR(triangle.offsetRad, 10.0 * kCellsPi / 180.0, 1e-9);
   // The sweep is larger than the triangle (3 sqrt 3 / 4 = 1.299 R^2) by its corners' turn over
   // the cell's 15 degrees, about 23% (a Riemann sum of the turned triangle's radial function).
   EXPECT_GT(triangle.shapeShareOfSweep, 0.75);
   EXPECT_LT(triangle.shapeShareOfSweep, 1.0);
 
   const StopCells seven = planStopCells(blades(7, 0.1, 33.0));
-  EXPECT_NEAR(seven.periodRad, 2.0 * kPi / 7.0, 1e-12);
+  EXPECT_NEAR(seven.periodRad, 2.0 * kCellsPi / 7.0, 1e-12);
   EXPECT_EQ(seven.count, 4);  // 51.4 degrees in cells of at most 15
   EXPECT_EQ(seven.sweptMasks.size(), 2u);
 
@@ -179,7 +180,7 @@ std::shared_ptr<const LensSystem> doubleGauss(double fNumber) {
   return lens->withStopDiameter(lens->stopDiameterMm() * lens->firstOrder().fNumber / fNumber);
 }
 
-bool passes(const LensSystem& lens, glm::dvec2 film, glm::dvec2 plane, double planeZ) {
+bool cellPasses(const LensSystem& lens, glm::dvec2 film, glm::dvec2 plane, double planeZ) {
   const glm::dvec3 o{film, 0.0};
   return lens.traceFromFilm({o, glm::normalize(glm::dvec3{plane, planeZ} - o)}).has_value();
 }
@@ -201,11 +202,11 @@ PassingRays classifyPassingRays(const LensSystem& lens, std::uint32_t seed, int 
   PassingRays out;
   for (int f = 0; f < filmPoints; ++f) {
     const double r = drawRadius(u(rng));
-    const double phi = 2.0 * kPi * u(rng);
+    const double phi = 2.0 * kCellsPi * u(rng);
     const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
     for (int i = 0; i < planePoints; ++i) {
       const glm::dvec2 p{domain * (2 * u(rng) - 1), domain * (2 * u(rng) - 1)};
-      if (!passes(lens, film, p, table.planeZMm())) continue;
+      if (!cellPasses(lens, film, p, table.planeZMm())) continue;
       ++out.passing;
       const double pdf = table.pdf(film, p);
       if (pdf <= 0.0)
@@ -225,8 +226,8 @@ TEST(StopCells, OnlyTheOneWavelengthTableHasCells) {
   const auto lens = base->withStopShape(blades(3, 0.0, 10.0));
   EXPECT_EQ(lens->exitPupilTable().azimuthCells(), 8);
   EXPECT_EQ(lens->spectralExitPupilTable().azimuthCells(), 1);
-  EXPECT_NEAR(lens->spectralExitPupilTable().shapeShareOfSweep(), 3.0 * std::sqrt(3.0) / 4.0 / kPi,
-              1e-9);
+  EXPECT_NEAR(lens->spectralExitPupilTable().shapeShareOfSweep(),
+              3.0 * std::sqrt(3.0) / 4.0 / kCellsPi, 1e-9);
 }
 
 // Unbiased needs every passing ray inside the sampled region, and inside both of the bins the
@@ -300,7 +301,7 @@ TEST(StopCells, TheTablesPassAreaMatchesAUniformCountAndItKeepsMostSamples) {
     int sampled = 0, kept = 0;
     for (int f = 0; f < 12; ++f) {
       const double r = table.imageCircleRadiusMm() * 0.8 * (f / 11.0);
-      const double phi = 2.0 * kPi * u(rng);
+      const double phi = 2.0 * kCellsPi * u(rng);
       const glm::dvec2 film{r * std::cos(phi), r * std::sin(phi)};
       constexpr int kN = 40000;
       double sum = 0.0, sumSq = 0.0;
@@ -308,7 +309,7 @@ TEST(StopCells, TheTablesPassAreaMatchesAUniformCountAndItKeepsMostSamples) {
         const auto s = table.sample(film, {u(rng), u(rng)});
         if (!s) continue;
         ++sampled;
-        if (!passes(*lens, film, {s->pointMm.x, s->pointMm.y}, table.planeZMm())) continue;
+        if (!cellPasses(*lens, film, {s->pointMm.x, s->pointMm.y}, table.planeZMm())) continue;
         ++kept;
         sum += 1.0 / s->pdfPerMm2;
         sumSq += 1.0 / (s->pdfPerMm2 * s->pdfPerMm2);
@@ -317,8 +318,8 @@ TEST(StopCells, TheTablesPassAreaMatchesAUniformCountAndItKeepsMostSamples) {
       const double tableError = std::sqrt(std::max(0.0, sumSq / kN - tableArea * tableArea) / kN);
       int hits = 0;
       for (int i = 0; i < kN; ++i)
-        hits += passes(*lens, film, {domain * (2 * u(rng) - 1), domain * (2 * u(rng) - 1)},
-                       table.planeZMm());
+        hits += cellPasses(*lens, film, {domain * (2 * u(rng) - 1), domain * (2 * u(rng) - 1)},
+                           table.planeZMm());
       const double square = 4.0 * domain * domain, share = static_cast<double>(hits) / kN;
       const double countArea = square * share;
       const double countError = square * std::sqrt(share * (1.0 - share) / kN);

@@ -16,13 +16,13 @@
 namespace lenslab::optics {
 namespace {
 
-std::shared_ptr<const LensSystem> build(const std::string& text) {
+std::shared_ptr<const LensSystem> buildFanLens(const std::string& text) {
   const auto file = parseLensText(text, "fan.dat");
   EXPECT_TRUE(file.ok()) << file.diagnostics.formatAll();
   return file.ok() ? LensSystem::build(file.lens->prescription).system : nullptr;
 }
 
-AnalysisSetup fieldsAt(std::vector<double> fractions, double halfDiagonalMm = 20.0) {
+AnalysisSetup fanFieldsAt(std::vector<double> fractions, double halfDiagonalMm = 20.0) {
   AnalysisSetup setup;
   setup.fieldFractions = std::move(fractions);
   setup.filmHalfDiagonalMm = halfDiagonalMm;
@@ -60,10 +60,10 @@ struct PlanoConvex {
 // from the chief ray: both fans are the line error = 10 mm * pupil, at every field. From an object
 // point D from the film the bundle spreads by D / (D - 30): the fan of a defocused image.
 TEST(TransverseRayFan, BareOpeningIsTheGeometricSpreadOfTheBundle) {
-  const auto lens = build("0 30 0 20\n");
+  const auto lens = buildFanLens("0 30 0 20\n");
   ASSERT_TRUE(lens);
   for (std::optional<double> objectMm : {std::optional<double>(), std::optional<double>(200.0)}) {
-    AnalysisSetup setup = fieldsAt({0.0, 0.25, 0.75});
+    AnalysisSetup setup = fanFieldsAt({0.0, 0.25, 0.75});
     setup.objectDistanceFromFilmMm = objectMm;
     const double slopeMm = objectMm ? 10.0 * 200.0 / (200.0 - 30.0) : 10.0;
     const TransverseRayFans fans = computeTransverseRayFans(*lens, setup);
@@ -94,8 +94,8 @@ TEST(TransverseRayFan, BareOpeningIsTheGeometricSpreadOfTheBundle) {
 TEST(TransverseRayFan, PlanoConvexAxialFanIsItsSphericalAberration) {
   const double R = PlanoConvex::R, t = PlanoConvex::t, n = PlanoConvex::n, stopRadius = 3.0;
   const double bfl = PlanoConvex::backFocusMm();  // 97.333 mm
-  const auto lens = build("0 1 0 " + std::to_string(2 * stopRadius) + "\n50 4 1.5 30\ninf " +
-                          std::to_string(bfl) + " 1 30\n");
+  const auto lens = buildFanLens("0 1 0 " + std::to_string(2 * stopRadius) + "\n50 4 1.5 30\ninf " +
+                                 std::to_string(bfl) + " 1 30\n");
   ASSERT_TRUE(lens);
   ASSERT_NEAR(lens->filmDistanceMm(), bfl, 1e-5);
 
@@ -114,7 +114,7 @@ TEST(TransverseRayFan, PlanoConvexAxialFanIsItsSphericalAberration) {
     return y2 + film * tanOut;  // the ray travels a further `film` toward -z
   };
 
-  const TransverseRayFans fans = computeTransverseRayFans(*lens, fieldsAt({0.0}));
+  const TransverseRayFans fans = computeTransverseRayFans(*lens, fanFieldsAt({0.0}));
   ASSERT_EQ(fans.fields.size(), 1u);
   const TransverseFansAtWavelength& at = fans.fields[0].wavelengths.at(0);
   for (const TransverseFanSample& s : at.tangential) {
@@ -136,11 +136,12 @@ TEST(TransverseRayFan, PlanoConvexAxialFanIsItsSphericalAberration) {
 TEST(TransverseRayFan, DefocusedFanIsALineOfTheParaxialSlope) {
   const double stopRadius = 1.0;
   const double bfl = PlanoConvex::backFocusMm();
-  const auto lens = build("0 1 0 2\n50 4 1.5 30\ninf " + std::to_string(bfl + 10.0) + " 1 30\n");
+  const auto lens =
+      buildFanLens("0 1 0 2\n50 4 1.5 30\ninf " + std::to_string(bfl + 10.0) + " 1 30\n");
   ASSERT_TRUE(lens);
   const double slope =
       -PlanoConvex::paraxial(stopRadius).y2 * (lens->filmDistanceMm() - bfl) / bfl;  // -0.1
-  const TransverseRayFans fans = computeTransverseRayFans(*lens, fieldsAt({0.0}));
+  const TransverseRayFans fans = computeTransverseRayFans(*lens, fanFieldsAt({0.0}));
   const TransverseFansAtWavelength& at = fans.fields.at(0).wavelengths.at(0);
   for (const auto* fan : {&at.tangential, &at.sagittal})
     for (const TransverseFanSample& s : *fan) {
@@ -157,7 +158,7 @@ TEST(TransverseRayFan, DefocusedFanIsALineOfTheParaxialSlope) {
 TEST(TransverseRayFan, AxialFansAreOddAndAlike) {
   const auto lens = testing::loadLens(testing::bundledLensDir() / "dgauss-100mm.dat");
   ASSERT_TRUE(lens);
-  const TransverseRayFans fans = computeTransverseRayFans(*lens, fieldsAt({0.0}));
+  const TransverseRayFans fans = computeTransverseRayFans(*lens, fanFieldsAt({0.0}));
   ASSERT_EQ(fans.fields.at(0).wavelengths.size(), 3u);
   for (const TransverseFansAtWavelength& at : fans.fields[0].wavelengths) {
     const std::size_t n = at.tangential.size();
@@ -181,13 +182,13 @@ TEST(TransverseRayFan, ColourFansOnlyForALensWithAbbeNumbers) {
   // The course's double-Gauss 50 mm, as pbrt has it: no Abbe numbers.
   const auto plain = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
   ASSERT_TRUE(plain);
-  const TransverseRayFans d = computeTransverseRayFans(*plain, fieldsAt({0.0, 0.7}));
+  const TransverseRayFans d = computeTransverseRayFans(*plain, fanFieldsAt({0.0, 0.7}));
   EXPECT_EQ(d.wavelengthsNm, std::vector<double>{kWavelengthDNm});
   for (const TransverseFanField& field : d.fields) EXPECT_EQ(field.wavelengths.size(), 1u);
 
   const auto coloured = testing::loadLens(testing::bundledLensDir() / "dgauss-100mm.dat");
   ASSERT_TRUE(coloured);
-  const TransverseRayFans dfc = computeTransverseRayFans(*coloured, fieldsAt({0.0, 0.7}));
+  const TransverseRayFans dfc = computeTransverseRayFans(*coloured, fanFieldsAt({0.0, 0.7}));
   EXPECT_EQ(dfc.wavelengthsNm,
             (std::vector<double>{kWavelengthDNm, kWavelengthFNm, kWavelengthCNm}));
   // Near the pupil's centre (pupil +-1/63) the F and C errors differ from d's by the lateral
@@ -210,7 +211,7 @@ TEST(TransverseRayFan, BlockedRaysAndUnreachableFieldsAreAbsent) {
   // The course's file (no Abbe numbers), so the fans are at the d line only.
   const auto lens = testing::loadLens(testing::referenceLensDir() / "dgauss.50mm.dat", 36.77);
   ASSERT_TRUE(lens);
-  AnalysisSetup setup = fieldsAt({1.0, 5.0}, 21.6);
+  AnalysisSetup setup = fanFieldsAt({1.0, 5.0}, 21.6);
   const TransverseRayFans fans = computeTransverseRayFans(*lens, setup);
   ASSERT_EQ(fans.fields.size(), 2u);
   const TransverseFanField& corner = fans.fields[0];

@@ -18,7 +18,7 @@ namespace {
 Prescription goodLens() { return testing::singlet(40.0, -60.0, 6.0, 1.5, 50.0); }
 
 // The first error's surface and whether its message contains `fragment`.
-void expectError(const Prescription& p, int surface, const std::string& fragment) {
+void expectValidationError(const Prescription& p, int surface, const std::string& fragment) {
   const auto built = LensSystem::build(p);
   EXPECT_FALSE(built.ok());
   ASSERT_FALSE(built.errors.empty());
@@ -40,13 +40,13 @@ TEST(Validation, CrossingSurfacesHaveNegativeEdgeThickness) {
   p.surfaces[0].radiusMm = 12.0;
   p.surfaces[1].radiusMm = -12.0;
   p.surfaces[0].thicknessMm = 1.0;
-  expectError(p, 1, "edge thickness");
+  expectValidationError(p, 1, "edge thickness");
 }
 
 TEST(Validation, SemiApertureLargerThanRadius) {
   Prescription p = goodLens();
   p.surfaces[0].radiusMm = 9.0;
-  expectError(p, 0, "exceeds |radius|");
+  expectValidationError(p, 0, "exceeds |radius|");
 }
 
 // An aspheric bump that crosses its neighbour at mid-height while the rims stay apart: a flat
@@ -61,7 +61,7 @@ TEST(Validation, AnAsphericBumpCrossingInsideTheApertureIsFound) {
   p.surfaces[0].profile.setCoefficient(4, -54.0 * a6);
   p.surfaces[0].profile.setCoefficient(6, a6);
   p.surfaces[1].radiusMm = kFlatRadius;
-  expectError(p, 1, "crosses the previous surface");
+  expectValidationError(p, 1, "crosses the previous surface");
   const auto errors = validate(p);
   ASSERT_EQ(errors.size(), 1u);
   // The samples are 10/128 mm apart: the deepest lies within one of 6 mm, at most 0.01 mm less
@@ -82,7 +82,7 @@ TEST(Validation, AConicMustHaveARealSagAcrossTheAperture) {
   Prescription p = goodLens();  // semi-aperture 10 mm, front R = 40 mm: c^2 = 1/1600
   // k = 24: (1 + k) c^2 = 25/1600, so the sag is real only out to 1/sqrt(25/1600) = 8 mm.
   p.surfaces[0].profile.setConic(24.0);
-  expectError(p, 0, "no real sag beyond height 8 mm");
+  expectValidationError(p, 0, "no real sag beyond height 8 mm");
   // k = 15 reaches exactly 10 mm: the rim is still on the surface.
   p.surfaces[0].profile.setConic(15.0);
   EXPECT_TRUE(validate(p).empty());
@@ -91,7 +91,7 @@ TEST(Validation, AConicMustHaveARealSagAcrossTheAperture) {
   p.surfaces[0].radiusMm = 9.0;
   p.surfaces[0].thicknessMm = 8.0;
   p.surfaces[0].profile.setConic(0.0);
-  expectError(p, 0, "exceeds |radius|");
+  expectValidationError(p, 0, "exceeds |radius|");
   p.surfaces[0].profile.setConic(-1.0);
   EXPECT_TRUE(validate(p).empty()) << validate(p).front().message;
 }
@@ -99,48 +99,48 @@ TEST(Validation, AConicMustHaveARealSagAcrossTheAperture) {
 TEST(Validation, AsphericTermsMustBeNumbersAndNotOnTheStop) {
   Prescription p = goodLens();
   p.surfaces[0].profile.setCoefficient(4, std::nan(""));
-  expectError(p, 0, "A4");
+  expectValidationError(p, 0, "A4");
   p = goodLens();
   p.surfaces[0].profile.setConic(std::numeric_limits<double>::infinity());
-  expectError(p, 0, "conic constant");
+  expectValidationError(p, 0, "conic constant");
   p = goodLens();
   p.surfaces[2].profile.setCoefficient(4, 1e-6);  // row 3 is the stop
-  expectError(p, 2, "aperture stop is a plane");
+  expectValidationError(p, 2, "aperture stop is a plane");
 }
 
 TEST(Validation, IndexBelowOne) {
   Prescription p = goodLens();
   p.surfaces[0].indexD = 0.8;
-  expectError(p, 0, "below 1");
+  expectValidationError(p, 0, "below 1");
 }
 
 TEST(Validation, NonPositiveAperture) {
   Prescription p = goodLens();
   p.surfaces[1].apertureDiameterMm = 0.0;
-  expectError(p, 1, "must be positive");
+  expectValidationError(p, 1, "must be positive");
   p.surfaces[1].apertureDiameterMm = -2.0;
-  expectError(p, 1, "must be positive");
+  expectValidationError(p, 1, "must be positive");
 }
 
 TEST(Validation, MissingStopAndTwoStops) {
   Prescription p = goodLens();
   p.surfaces.pop_back();
-  expectError(p, -1, "no aperture stop");
+  expectValidationError(p, -1, "no aperture stop");
   p = goodLens();
   p.surfaces.push_back({0.0, 5.0, 1.0, std::nullopt, 10.0});
-  expectError(p, 3, "second aperture stop");
+  expectValidationError(p, 3, "second aperture stop");
 }
 
 TEST(Validation, NonFiniteNumbersAreRejectedNotTraced) {
   Prescription p = goodLens();
   p.surfaces[0].thicknessMm = std::nan("");
-  expectError(p, 0, "thickness");
+  expectValidationError(p, 0, "thickness");
   p = goodLens();
   p.surfaces[2].apertureDiameterMm = std::numeric_limits<double>::infinity();
-  expectError(p, 2, "aperture");
+  expectValidationError(p, 2, "aperture");
   p = goodLens();
   p.surfaces[0].radiusMm = std::nan("");
-  expectError(p, 0, "radius");
+  expectValidationError(p, 0, "radius");
 }
 
 // A table edit of V_d goes through validate() too: zero, negative, NaN and absurd values name the
@@ -149,35 +149,35 @@ TEST(Validation, AbbeNumbersMustBeAGlass) {
   for (const double bad : {0.0, -20.0, std::nan(""), 151.0, 1e300}) {
     Prescription p = goodLens();
     p.surfaces[0].abbeD = bad;
-    expectError(p, 0, "Abbe number");
+    expectValidationError(p, 0, "Abbe number");
   }
   Prescription p = goodLens();
   p.surfaces[0].abbeD = 151.0;
-  expectError(p, 0, "beyond any glass");
+  expectValidationError(p, 0, "beyond any glass");
   p.surfaces[0].abbeD = kMaxAbbeNumber;
   EXPECT_TRUE(LensSystem::build(p).ok());
 }
 
-TEST(Validation, NoSurfaces) { expectError(Prescription{}, -1, "no surfaces"); }
+TEST(Validation, NoSurfaces) { expectValidationError(Prescription{}, -1, "no surfaces"); }
 
 TEST(Validation, AbsurdMagnitudesAreFlagged) {
   // Table edits in the viewer go through validate(): a slip such as 1e300 must not build.
   Prescription p = goodLens();
   p.surfaces[0].radiusMm = 2e6;
-  expectError(p, 0, "radius 2e+06 mm is beyond");
+  expectValidationError(p, 0, "radius 2e+06 mm is beyond");
   p = goodLens();
   p.surfaces[1].radiusMm = -1e300;
-  expectError(p, 1, "radius");
+  expectValidationError(p, 1, "radius");
   p = goodLens();
   p.surfaces[2].thicknessMm = 1e300;
-  expectError(p, 2, "thickness 1e+300 mm is beyond");
+  expectValidationError(p, 2, "thickness 1e+300 mm is beyond");
   p = goodLens();
   p.surfaces[0].apertureDiameterMm = 2e5;
   p.surfaces[0].radiusMm = kFlatRadius;  // so that only the magnitude is wrong
-  expectError(p, 0, "aperture diameter 200000 mm is beyond");
+  expectValidationError(p, 0, "aperture diameter 200000 mm is beyond");
   p = goodLens();
   p.surfaces[0].indexD = 1e300;
-  expectError(p, 0, "refractive index 1e+300 is beyond");
+  expectValidationError(p, 0, "refractive index 1e+300 is beyond");
   // The largest allowed values still build (a flat surface stays inf).
   p = goodLens();
   p.surfaces[2].thicknessMm = kMaxLengthMm;

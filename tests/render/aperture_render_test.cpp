@@ -28,7 +28,7 @@ using render::testing::furnaceWorld;
 using render::testing::loadJob;
 using render::testing::writeFile;
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kApertureRenderPi = std::numbers::pi;
 
 std::string realisticCamera(double stopMm, double focusDistance, const std::string& aperture) {
   return "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" \"string lensfile\" \"dgauss.dat\" "
@@ -80,9 +80,11 @@ TEST(ApertureRender, UniformSkyBrightnessFollowsTheStopArea) {
   // distortion at f/8 is far smaller.
   std::printf(
       "uniform sky, centre: square / circle %.4f (2/pi %.4f), pentagon / circle %.4f (%.4f)\n",
-      square / circle, 2.0 / kPi, pentagon / circle, 2.5 * std::sin(0.4 * kPi) / kPi);
-  EXPECT_NEAR(square / circle, 2.0 / kPi, 0.015);
-  EXPECT_NEAR(pentagon / circle, 2.5 * std::sin(0.4 * kPi) / kPi, 0.015);
+      square / circle, 2.0 / kApertureRenderPi, pentagon / circle,
+      2.5 * std::sin(0.4 * kApertureRenderPi) / kApertureRenderPi);
+  EXPECT_NEAR(square / circle, 2.0 / kApertureRenderPi, 0.015);
+  EXPECT_NEAR(pentagon / circle, 2.5 * std::sin(0.4 * kApertureRenderPi) / kApertureRenderPi,
+              0.015);
   std::printf("uniform sky, centre: gaussian / circle %.4f (1 - 2/e %.4f)\n", gaussian / circle,
               1.0 - 2.0 / std::numbers::e);
   EXPECT_NEAR(gaussian / circle, 1.0 - 2.0 / std::numbers::e, 0.015);
@@ -156,8 +158,9 @@ Blob measureBlob(const RenderSnapshot& image, double fromX, double fromY, double
       if (!inside(x, y)) continue;
       const double v = value(x, y), dx = x + 0.5 - b.cx, dy = y + 0.5 - b.cy;
       double angle = std::atan2(dy, dx);
-      if (angle < 0) angle += 2 * kPi;
-      const int w = std::min(wedges - 1, static_cast<int>(angle / (2 * kPi) * wedges));
+      if (angle < 0) angle += 2 * kApertureRenderPi;
+      const int w =
+          std::min(wedges - 1, static_cast<int>(angle / (2 * kApertureRenderPi) * wedges));
       weight[w] += v;
       moment[w] += v * (dx * dx + dy * dy);
       sxx += v * dx * dx;
@@ -211,8 +214,8 @@ TEST(ApertureRender, TheSamplerFollowsAShapeOrTakesSeveralLensPointsPerSample) {
   EXPECT_GT(raysPerSample(*gaussian), 0.9);
   const double ratio = centralBlockMean(*triangle) / centralBlockMean(*circle);
   std::printf("uniform sky, centre: triangle / circle %.4f (3 sqrt 3 / (4 pi) %.4f)\n", ratio,
-              3.0 * std::sqrt(3.0) / (4.0 * kPi));
-  EXPECT_NEAR(ratio, 3.0 * std::sqrt(3.0) / (4.0 * kPi), 0.015);
+              3.0 * std::sqrt(3.0) / (4.0 * kApertureRenderPi));
+  EXPECT_NEAR(ratio, 3.0 * std::sqrt(3.0) / (4.0 * kApertureRenderPi), 0.015);
 }
 
 // Magnitude of the k-th angular harmonic of the boundary radius, over its mean.
@@ -220,7 +223,7 @@ double harmonic(const std::vector<double>& r, int k) {
   std::complex<double> sum = 0.0;
   double mean = 0.0;
   for (std::size_t i = 0; i < r.size(); ++i) {
-    const double a = 2 * kPi * (i + 0.5) / r.size();
+    const double a = 2 * kApertureRenderPi * (i + 0.5) / r.size();
     sum += r[i] * std::polar(1.0, -k * a);
     mean += r[i];
   }
@@ -235,7 +238,7 @@ TEST(ApertureRender, BokehShowsTheBladesOnAxisAndACatsEyeInTheCorner) {
   // Focused at 0.3 m; two small lights 20 m away, on the axis and toward the image's corner
   // (12 degrees, where the double-Gauss wide open vignettes; the blob stays inside the frame).
   constexpr int kSize = 240;
-  const double t = std::tan(12.0 * kPi / 180.0) / std::sqrt(2.0) * 20.0;
+  const double t = std::tan(12.0 * kApertureRenderPi / 180.0) / std::sqrt(2.0) * 20.0;
   auto render = [&](const char* lens) {
     const auto path = writeFile(
         directory / "bokeh.pbrt",
@@ -306,8 +309,8 @@ TEST(ApertureRender, BokehShowsTheBladesOnAxisAndACatsEyeInTheCorner) {
   }
   const Blob corner = measureBlob(*hexagon, cornerX, cornerY, 45, kWedges);
   std::printf("corner blob: minor/major %.3f, narrow axis %.1f deg, radial %.1f deg\n",
-              corner.minorOverMajor, corner.minorAxisAngle * 180 / kPi,
-              std::atan2(corner.cy - half, corner.cx - half) * 180 / kPi);
+              corner.minorOverMajor, corner.minorAxisAngle * 180 / kApertureRenderPi,
+              std::atan2(corner.cy - half, corner.cx - half) * 180 / kApertureRenderPi);
   EXPECT_LT(corner.minorOverMajor, 0.85);
   const double radial = std::atan2(corner.cy - half, corner.cx - half);
   EXPECT_GT(std::abs(std::cos(corner.minorAxisAngle - radial)), 0.9)

@@ -116,7 +116,7 @@ Comparison compareQueries(const Scene& flat, const Scene& embree, float extent,
     const glm::vec3 target = targets[pick(random)] + 0.5f * randomDirection(random);
     glm::vec3 direction = glm::normalize(target - origin);
     for (int bounce = 0; bounce < 3; ++bounce) {
-      SCOPED_TRACE(testing::Message() << "ray " << i << " bounce " << bounce);
+      SCOPED_TRACE(::testing::Message() << "ray " << i << " bounce " << bounce);
       ++seen.rays;
       seen.surfaceRays += bounce > 0;
       SurfaceHit flatHit, embreeHit;
@@ -134,7 +134,7 @@ Comparison compareQueries(const Scene& flat, const Scene& embree, float extent,
       EXPECT_NEAR(flatHit.uv.x, embreeHit.uv.x, 1e-4f);
       EXPECT_NEAR(flatHit.uv.y, embreeHit.uv.y, 1e-4f);
       EXPECT_FLOAT_EQ(flatHit.uvPerWorldUnit, embreeHit.uvPerWorldUnit);
-      if (testing::Test::HasFailure()) return seen;
+      if (::testing::Test::HasFailure()) return seen;
       // Leave the surface a little off it, on either side, in a new direction.
       direction = randomDirection(random);
       const float side = glm::dot(direction, embreeHit.geometricNormal) >= 0.0f ? 1.0f : -1.0f;
@@ -189,7 +189,7 @@ TEST(FlatPrimitives, AnswersAsEmbreeDoesForEveryKindOfPrimitive) {
 
 // The other kernels (box and triangle tests) than the CPU's fastest: AVX2 (where AVX-512 is the
 // fastest) and the portable loops of CPUs without AVX2.
-class FlatPrimitivesKernels : public testing::TestWithParam<FlatPrimitives::KernelKind> {
+class FlatPrimitivesKernels : public ::testing::TestWithParam<FlatPrimitives::KernelKind> {
  protected:
   void TearDown() override { FlatPrimitives::useKernels(FlatPrimitives::KernelKind::Fastest); }
 };
@@ -204,13 +204,13 @@ TEST_P(FlatPrimitivesKernels, AnswersAsEmbreeDoes) {
   EXPECT_GT(seen.hits, 500);
 }
 
-std::string kernelsName(const testing::TestParamInfo<FlatPrimitives::KernelKind>& kind) {
+std::string kernelsName(const ::testing::TestParamInfo<FlatPrimitives::KernelKind>& kind) {
   return kind.param == FlatPrimitives::KernelKind::Avx2 ? "Avx2" : "Portable";
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, FlatPrimitivesKernels,
-                         testing::Values(FlatPrimitives::KernelKind::Avx2,
-                                         FlatPrimitives::KernelKind::Portable),
+                         ::testing::Values(FlatPrimitives::KernelKind::Avx2,
+                                           FlatPrimitives::KernelKind::Portable),
                          kernelsName);
 
 // The vector triangle test repeats the scalar one's operations lane by lane: its answers must be
@@ -245,7 +245,7 @@ TEST(FlatPrimitives, VectorKernelsAnswerExactlyAsTheScalarLoopsDo) {
     if (kind == FlatPrimitives::KernelKind::Avx2 && !FlatPrimitives::useKernels(kind)) continue;
     int hits = 0;
     for (int i = 0; i < 3000; ++i) {
-      SCOPED_TRACE(testing::Message() << "ray " << i);
+      SCOPED_TRACE(::testing::Message() << "ray " << i);
       const glm::vec3 origin(coordinate(random), coordinate(random), coordinate(random));
       const glm::vec3 target(0.5f * coordinate(random), 0.4f + 0.2f * coordinate(random), 0.3f);
       const glm::vec3 direction = glm::normalize(target - origin);
@@ -297,7 +297,7 @@ TEST(FlatPrimitives, AnswersAsEmbreeDoesForRaysAlongAndAcrossFlatBoxes) {
     const float height = i % 3 == 0 ? 1e-3f : i % 3 == 1 ? 2.0f : coordinate(random);
     const glm::vec3 origin(coordinate(random), height, coordinate(random));
     for (const glm::vec3& direction : directions) {
-      SCOPED_TRACE(testing::Message() << "ray " << i);
+      SCOPED_TRACE(::testing::Message() << "ray " << i);
       SurfaceHit flatHit, embreeHit;
       const bool found = embree->intersect(origin, direction, kInfinity, embreeHit);
       ASSERT_EQ(flat->intersect(origin, direction, kInfinity, flatHit), found);

@@ -87,7 +87,7 @@ struct Built {
   std::string messages;
 };
 
-Built build(const std::string& text) {
+Built buildFlattened(const std::string& text) {
   Built out;
   ParseResult parsed = parsePbrtText(text, "test.pbrt", ".");
   out.messages = parsed.diagnostics.formatAll();
@@ -99,7 +99,7 @@ Built build(const std::string& text) {
   return out;
 }
 
-FloatImage render(const Built& built) {
+FloatImage renderFlattened(const Built& built) {
   RenderJob job;
   Diagnostics diagnostics;
   job.camera = makeCamera(*built.description, {}, diagnostics);
@@ -113,21 +113,22 @@ FloatImage render(const Built& built) {
 }
 
 TEST(InstanceFlattening, SmallObjectsAreCopiedAndBigOnesStayInstances) {
-  const Built built = build(instancedScene(100));  // the big strip: 100 triangles, above 64
+  const Built built =
+      buildFlattened(instancedScene(100));  // the big strip: 100 triangles, above 64
   ASSERT_TRUE(built.scene) << built.messages;
   EXPECT_EQ(built.scene->flattenedInstances(), 3u);
   EXPECT_EQ(built.scene->embreeInstances(), 1u);
-  const Built small = build(instancedScene(8));
+  const Built small = buildFlattened(instancedScene(8));
   ASSERT_TRUE(small.scene) << small.messages;
   EXPECT_EQ(small.scene->flattenedInstances(), 4u);
   EXPECT_EQ(small.scene->embreeInstances(), 0u);
 }
 
 TEST(InstanceFlattening, ThePictureIsTheSceneWrittenOut) {
-  const Built instanced = build(instancedScene(100));
-  const Built writtenOut = build(writtenOutScene(100));
+  const Built instanced = buildFlattened(instancedScene(100));
+  const Built writtenOut = buildFlattened(writtenOutScene(100));
   ASSERT_TRUE(instanced.scene && writtenOut.scene) << instanced.messages << writtenOut.messages;
-  const FloatImage a = render(instanced), b = render(writtenOut);
+  const FloatImage a = renderFlattened(instanced), b = renderFlattened(writtenOut);
   // Same samples, same surfaces; only rounding differs (the instance transform is composed with
   // the shape's in another order, and Embree applies the big strip's in single precision).
   const ImageComparison comparison = compareImages(a, b);
@@ -135,9 +136,9 @@ TEST(InstanceFlattening, ThePictureIsTheSceneWrittenOut) {
   EXPECT_NEAR(comparison.bestScale, 1.0, 1e-3);
   // And the posts are in it: without them the picture differs.
   const std::string noPosts = kHeader + "WorldEnd\n";
-  const Built empty = build(noPosts);
+  const Built empty = buildFlattened(noPosts);
   ASSERT_TRUE(empty.scene);
-  EXPECT_GT(compareImages(render(empty), b).relativeRmse, 0.05);
+  EXPECT_GT(compareImages(renderFlattened(empty), b).relativeRmse, 0.05);
 }
 
 TEST(InstanceFlattening, AnEmitterInAFlattenedObjectIsNoLightAndSaysSo) {
@@ -147,7 +148,7 @@ TEST(InstanceFlattening, AnEmitterInAFlattenedObjectIsNoLightAndSaysSo) {
       "Shape \"sphere\" \"float radius\" [0.1]\nObjectEnd\n"
       "AttributeBegin\nTranslate 0 1 0\nObjectInstance \"lamp\"\nAttributeEnd\n"
       "AttributeBegin\nTranslate 1 1 0\nObjectInstance \"lamp\"\nAttributeEnd\nWorldEnd\n";
-  const Built built = build(text);
+  const Built built = buildFlattened(text);
   ASSERT_TRUE(built.scene) << built.messages;
   EXPECT_EQ(built.scene->flattenedInstances(), 2u);
   EXPECT_EQ(built.scene->lights().size(), 2u);  // the sky and the sun only
@@ -182,7 +183,7 @@ TEST(InstanceFlattening, AScaledInstanceFiltersTexturesAsItsWrittenOutCopy) {
                                   "ObjectInstance \"big\"\nAttributeEnd\nWorldEnd\n";
     const std::string writtenOut =
         kHeader + "AttributeBegin\n" + place.text + strip(100, true) + "AttributeEnd\nWorldEnd\n";
-    const Built a = build(instanced), b = build(writtenOut);
+    const Built a = buildFlattened(instanced), b = buildFlattened(writtenOut);
     ASSERT_TRUE(a.scene && b.scene) << a.messages << b.messages;
     ASSERT_EQ(a.scene->embreeInstances(), 1u);
     // The strip spans x 0..1, y 0..0.3 in its own space: aim inside one triangle near its

@@ -17,8 +17,8 @@ using render::testing::furnaceWorld;
 using render::testing::relativeIllumination;
 using render::testing::writeFile;
 
-constexpr int kSize = 15;  // odd: one pixel sits on the axis
-constexpr double kDiagonalMm = 60.0;
+constexpr int kPinholeSize = 15;  // odd: one pixel sits on the axis
+constexpr double kPinholeDiagonalMm = 60.0;
 constexpr double kRadiance = 2.0;
 
 struct Furnace {
@@ -61,23 +61,24 @@ Furnace makeFurnace(const std::string& name, double stopMm, bool course) {
   return furnace;
 }
 
-struct Case {
+struct PinholeCase {
   const char* name;
   double stopMm;
   bool course;
 };
 
-class MatchedPinhole : public ::testing::TestWithParam<Case> {};
+class MatchedPinhole : public ::testing::TestWithParam<PinholeCase> {};
 
 TEST_P(MatchedPinhole, TakesTheLensExposureAtTheCentreAndFallsOffAsCosineToTheFourth) {
-  const Case& which = GetParam();
+  const PinholeCase& which = GetParam();
   const Furnace furnace =
       makeFurnace(std::string("matched-") + which.name, which.stopMm, which.course);
   ASSERT_TRUE(furnace.description && furnace.scene && furnace.lens);
 
   // The lens's exposure at the film centre, as the camera measures it, against a fine grid over
   // a disk wide enough for every passing ray (the rear disk alone for the course's camera).
-  const auto lensCamera = makeLensCamera(*furnace.description, furnace.lens, kSize, kSize);
+  const auto lensCamera =
+      makeLensCamera(*furnace.description, furnace.lens, kPinholeSize, kPinholeSize);
   const double radiusMm = furnace.lens->rearApertureRadiusMm() * (which.course ? 1.0 : 2.0);
   const double centreExposure = relativeIllumination(*furnace.lens, {0.0, 0.0}, radiusMm);
   ASSERT_GT(centreExposure, 0.0);
@@ -85,31 +86,32 @@ TEST_P(MatchedPinhole, TakesTheLensExposureAtTheCentreAndFallsOffAsCosineToTheFo
 
   // The pinhole's furnace image: the lens's centre exposure in the middle, cos^4 at the corner.
   RenderJob job;
-  job.camera = makeMatchingPinholeCamera(*furnace.description, furnace.lens, kSize, kSize);
+  job.camera =
+      makeMatchingPinholeCamera(*furnace.description, furnace.lens, kPinholeSize, kPinholeSize);
   job.scene = furnace.scene;
   job.settings.samplesPerPixel = 64;
   const auto image = renderToCompletion(job);
   ASSERT_TRUE(image);
   const auto pixel = [&](int x, int y) {
-    return image->rgb[3 * static_cast<std::size_t>(y * kSize + x)];
+    return image->rgb[3 * static_cast<std::size_t>(y * kPinholeSize + x)];
   };
-  const int middle = kSize / 2;
+  const int middle = kPinholeSize / 2;
   EXPECT_NEAR(pixel(middle, middle), kRadiance * centreExposure,
               0.006 * kRadiance * centreExposure);
   // The corner pixel's centre, seen through an ideal lens of the same focal length over the
   // film's side (the pinhole's field of view).
-  const double sideMm = kDiagonalMm / std::sqrt(2.0);
-  const double cornerMm = std::hypot(0.5, 0.5) * (kSize - 1) / kSize * sideMm;
+  const double sideMm = kPinholeDiagonalMm / std::sqrt(2.0);
+  const double cornerMm = std::hypot(0.5, 0.5) * (kPinholeSize - 1) / kPinholeSize * sideMm;
   const double cosTheta = 1.0 / std::hypot(1.0, cornerMm / furnace.lens->firstOrder().eflMm);
   EXPECT_NEAR(pixel(0, 0) / pixel(middle, middle), std::pow(cosTheta, 4.0), 0.01);
-  EXPECT_NEAR(pixel(kSize - 1, 0), pixel(0, kSize - 1), 1e-3 * pixel(0, 0));
+  EXPECT_NEAR(pixel(kPinholeSize - 1, 0), pixel(0, kPinholeSize - 1), 1e-3 * pixel(0, 0));
 }
 
 INSTANTIATE_TEST_SUITE_P(Cameras, MatchedPinhole,
-                         ::testing::Values(Case{"pbrt_v3_full_aperture", 17.1, false},
-                                           Case{"pbrt_v3_stopped_down", 4.0, false},
-                                           Case{"course", 17.1, true}),
-                         [](const ::testing::TestParamInfo<Case>& param) {
+                         ::testing::Values(PinholeCase{"pbrt_v3_full_aperture", 17.1, false},
+                                           PinholeCase{"pbrt_v3_stopped_down", 4.0, false},
+                                           PinholeCase{"course", 17.1, true}),
+                         [](const ::testing::TestParamInfo<PinholeCase>& param) {
                            return param.param.name;
                          });
 

@@ -13,14 +13,14 @@ namespace {
 
 using render::testing::writeFile;
 
-ParseResult parse(const std::string& text) {
+ParseResult parsePbrt(const std::string& text) {
   return parsePbrtText(text, "test.pbrt", std::filesystem::temp_directory_path());
 }
 
 std::string allMessages(const ParseResult& result) { return result.diagnostics.formatAll(); }
 
 TEST(PbrtParser, ReadsCameraFilmSamplerIntegratorAndShapes) {
-  const auto result = parse(R"(
+  const auto result = parsePbrt(R"(
     LookAt 0 0 5  0 0 0  0 1 0
     Camera "perspective" "float fov" [45]
     Film "image" "integer xresolution" [320] "integer yresolution" 200 "string filename" "a.exr"
@@ -56,7 +56,7 @@ TEST(PbrtParser, ReadsCameraFilmSamplerIntegratorAndShapes) {
 }
 
 TEST(PbrtParser, TransformTakesPbrtsColumnOrder) {
-  const auto result = parse(R"(Transform [1 0 0 0  0 1 0 0  0 0 1 0  7 8 9 1]
+  const auto result = parsePbrt(R"(Transform [1 0 0 0  0 1 0 0  0 0 1 0  7 8 9 1]
     Camera "perspective" WorldBegin WorldEnd)");
   ASSERT_TRUE(result.scene) << allMessages(result);
   EXPECT_DOUBLE_EQ(result.scene->camera.cameraFromWorld[3][0], 7.0);
@@ -64,7 +64,7 @@ TEST(PbrtParser, TransformTakesPbrtsColumnOrder) {
 }
 
 TEST(PbrtParser, ObjectInstancesKeepTheirTransforms) {
-  const auto result = parse(R"(WorldBegin
+  const auto result = parsePbrt(R"(WorldBegin
     ObjectBegin "thing" Shape "cone" "float height" 0.15 "float radius" 0.05 ObjectEnd
     Translate 1 0 0 ObjectInstance "thing"
     Translate 1 0 0 ObjectInstance "thing"
@@ -78,7 +78,7 @@ TEST(PbrtParser, ObjectInstancesKeepTheirTransforms) {
 }
 
 TEST(PbrtParser, PbrtV2FormsDefaultToDirectLighting) {
-  const auto result = parse(R"(WorldBegin
+  const auto result = parsePbrt(R"(WorldBegin
     AttributeBegin AreaLightSource "area" "color L" [4 4 4] "integer nsamples" [4]
     Shape "disk" "float radius" [8] AttributeEnd WorldEnd)");
   ASSERT_TRUE(result.scene) << allMessages(result);
@@ -89,7 +89,7 @@ TEST(PbrtParser, PbrtV2FormsDefaultToDirectLighting) {
 }
 
 TEST(PbrtParser, UnknownDirectiveIsAnErrorWithLineAndColumn) {
-  const auto result = parse("WorldBegin\n  Frobnicate 1 2\n");
+  const auto result = parsePbrt("WorldBegin\n  Frobnicate 1 2\n");
   EXPECT_FALSE(result.scene);
   EXPECT_NE(allMessages(result).find("test.pbrt:2:3: error: unknown directive 'Frobnicate'"),
             std::string::npos)
@@ -97,43 +97,44 @@ TEST(PbrtParser, UnknownDirectiveIsAnErrorWithLineAndColumn) {
 }
 
 TEST(PbrtParser, SyntaxErrorsPointAtTheToken) {
-  const auto unterminated = parse("WorldBegin\nShape \"sphere \n");
+  const auto unterminated = parsePbrt("WorldBegin\nShape \"sphere \n");
   EXPECT_FALSE(unterminated.scene);
   EXPECT_NE(allMessages(unterminated).find("test.pbrt:2:7: error: unterminated string"),
             std::string::npos)
       << allMessages(unterminated);
 
-  const auto badNumber = parse("Translate 1 x 3\n");
+  const auto badNumber = parsePbrt("Translate 1 x 3\n");
   EXPECT_FALSE(badNumber.scene);
   EXPECT_NE(allMessages(badNumber).find("test.pbrt:1:13: error: expected a number"),
             std::string::npos)
       << allMessages(badNumber);
 
-  const auto unbalanced = parse("WorldBegin AttributeEnd");
+  const auto unbalanced = parsePbrt("WorldBegin AttributeEnd");
   EXPECT_FALSE(unbalanced.scene);
   EXPECT_NE(allMessages(unbalanced).find("1:12: error: AttributeEnd without"), std::string::npos);
 }
 
 TEST(PbrtParser, MissingFilesAreErrorsAtTheirNames) {
-  const auto include = parse("WorldBegin\nInclude \"no-such-file.pbrt\"\n");
+  const auto include = parsePbrt("WorldBegin\nInclude \"no-such-file.pbrt\"\n");
   EXPECT_FALSE(include.scene);
   EXPECT_NE(allMessages(include).find("test.pbrt:2:9: error: included file"), std::string::npos)
       << allMessages(include);
 
-  const auto texture = parse(
+  const auto texture = parsePbrt(
       "WorldBegin\nTexture \"t\" \"color\" \"imagemap\" \"string filename\" \"missing.exr\"\n");
   EXPECT_FALSE(texture.scene);
   EXPECT_NE(allMessages(texture).find("test.pbrt:2:32: error: texture file"), std::string::npos)
       << allMessages(texture);
 
-  const auto lens = parse("Camera \"realistic\" \"string lensfile\" \"missing.dat\"\nWorldBegin\n");
+  const auto lens =
+      parsePbrt("Camera \"realistic\" \"string lensfile\" \"missing.dat\"\nWorldBegin\n");
   EXPECT_FALSE(lens.scene);
   EXPECT_NE(allMessages(lens).find("test.pbrt:1:20: error: lens file"), std::string::npos)
       << allMessages(lens);
 }
 
 TEST(PbrtParser, DegenerateMeshesAreReported) {
-  const auto nan = parse(
+  const auto nan = parsePbrt(
       "WorldBegin\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1e999 0] \"integer indices\" "
       "[0 1 2]\n");
   EXPECT_FALSE(nan.scene);
@@ -143,7 +144,7 @@ TEST(PbrtParser, DegenerateMeshesAreReported) {
             std::string::npos)
       << allMessages(nan);
 
-  const auto range = parse(
+  const auto range = parsePbrt(
       "WorldBegin\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" "
       "[0 1 3]\n");
   EXPECT_FALSE(range.scene);
@@ -151,7 +152,7 @@ TEST(PbrtParser, DegenerateMeshesAreReported) {
             std::string::npos)
       << allMessages(range);
 
-  const auto flat = parse(
+  const auto flat = parsePbrt(
       "WorldBegin\nShape \"trianglemesh\" \"point P\" [0 0 0 1 0 0 2 0 0 0 1 0] "
       "\"integer indices\" [0 1 2 0 1 3]\nWorldEnd\n");
   ASSERT_TRUE(flat.scene) << allMessages(flat);
@@ -162,7 +163,7 @@ TEST(PbrtParser, DegenerateMeshesAreReported) {
 }
 
 TEST(PbrtParser, UnsupportedThingsWarnAndSaySubstitute) {
-  const auto result = parse(R"(PixelFilter "gaussian"
+  const auto result = parsePbrt(R"(PixelFilter "gaussian"
     Camera "orthographic"
     WorldBegin Material "kdsubsurface" Shape "curve" WorldEnd)");
   ASSERT_TRUE(result.scene) << allMessages(result);

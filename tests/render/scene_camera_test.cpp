@@ -33,7 +33,7 @@ constexpr double kLensLengthMm =
     3.76 + 0.12 + 4.025 + 3.275 + 5.705 + 4.5 + 1.18 + 6.065 + 0.19 + 3.22;
 
 // A 20 x 20 m wall square to the view `wallZ` camera-space units in front of the camera.
-std::string sceneText(const std::string& camera, double wallZ) {
+std::string cameraSceneText(const std::string& camera, double wallZ) {
   const std::string z = std::to_string(wallZ);
   return "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"realistic\" " + camera +
          "\nFilm \"image\" \"integer xresolution\" [32] \"integer yresolution\" [32] "
@@ -57,7 +57,8 @@ LoadedScene load(const std::filesystem::path& path) {
   return loaded;
 }
 
-std::shared_ptr<const optics::LensSystem> build(const optics::Prescription& prescription) {
+std::shared_ptr<const optics::LensSystem> buildCameraScene(
+    const optics::Prescription& prescription) {
   return optics::LensSystem::build(prescription).system;
 }
 
@@ -65,11 +66,12 @@ TEST(LensOfScene, CourseCameraGivesTheFileWithTheScenesStopAndFilmDistance) {
   const auto directory = lenslab::testing::makeTestDirectory("lens-of-course-scene");
   std::filesystem::create_directories(directory / "lenses");
   writeFile(directory / "dgauss.dat", kDoubleGauss50);
-  const auto path = writeFile(directory / "course.pbrt",
-                              sceneText("\"string specfile\" \"lenses/../dgauss.dat\" "
-                                        "\"float filmdistance\" 36.77 \"float aperture_diameter\" "
-                                        "10 \"float filmdiag\" 35",
-                                        1000.0));
+  const auto path =
+      writeFile(directory / "course.pbrt",
+                cameraSceneText("\"string specfile\" \"lenses/../dgauss.dat\" "
+                                "\"float filmdistance\" 36.77 \"float aperture_diameter\" "
+                                "10 \"float filmdiag\" 35",
+                                1000.0));
   const LoadedScene loaded = load(path);
   ASSERT_TRUE(loaded.description);
   Diagnostics diagnostics;
@@ -108,10 +110,11 @@ TEST(LensOfScene, PbrtV3CameraGivesTheFileStoppedDownAndFocusedAtTheFocusDistanc
   const auto directory = lenslab::testing::makeTestDirectory("lens-of-v3-scene");
   writeFile(directory / "dgauss.dat", kDoubleGauss50);
   // f/25: the real-ray focus is within a few micrometres of the paraxial one.
-  const auto path = writeFile(
-      directory / "v3.pbrt", sceneText("\"string lensfile\" \"dgauss.dat\" "
-                                       "\"float aperturediameter\" [2] \"float focusdistance\" [2]",
-                                       2.0));
+  const auto path =
+      writeFile(directory / "v3.pbrt",
+                cameraSceneText("\"string lensfile\" \"dgauss.dat\" "
+                                "\"float aperturediameter\" [2] \"float focusdistance\" [2]",
+                                2.0));
   const LoadedScene loaded = load(path);
   ASSERT_TRUE(loaded.description);
   Diagnostics diagnostics;
@@ -123,7 +126,7 @@ TEST(LensOfScene, PbrtV3CameraGivesTheFileStoppedDownAndFocusedAtTheFocusDistanc
   EXPECT_EQ(surfaces[kStopRow].apertureDiameterMm, 2.0);
   EXPECT_EQ(surfaces[0].apertureDiameterMm, kRows[0][3]);
 
-  const auto asFiled = build(lens->prescription);
+  const auto asFiled = buildCameraScene(lens->prescription);
   ASSERT_TRUE(asFiled);
   const double atTwoMetresMm = paraxialFilmDistanceMm(*asFiled, 2000.0);
   const double atInfinityMm = asFiled->firstOrder().bflMm;
@@ -147,9 +150,9 @@ TEST(LensOfScene, ALensThatCannotFocusThereIsReported) {
   writeFile(directory / "dgauss.dat", kDoubleGauss50);
   // 1 cm from the film: inside the lens.
   const auto path =
-      writeFile(directory / "near.pbrt", sceneText("\"string lensfile\" \"dgauss.dat\" "
-                                                   "\"float focusdistance\" [0.01]",
-                                                   2.0));
+      writeFile(directory / "near.pbrt", cameraSceneText("\"string lensfile\" \"dgauss.dat\" "
+                                                         "\"float focusdistance\" [0.01]",
+                                                         2.0));
   const LoadedScene loaded = load(path);
   ASSERT_TRUE(loaded.description);
   Diagnostics diagnostics;
@@ -163,10 +166,10 @@ TEST(LensOfScene, AnApertureWiderThanTheStopIsReportedInMillimetresAsWritten) {
   const auto directory = lenslab::testing::makeTestDirectory("lens-of-scene-wide-aperture");
   writeFile(directory / "dgauss.dat", kDoubleGauss50);
   const auto path =
-      writeFile(directory / "wide.pbrt", sceneText("\"string lensfile\" \"dgauss.dat\" "
-                                                   "\"float aperturediameter\" [40] "
-                                                   "\"float focusdistance\" [3]",
-                                                   2.0));
+      writeFile(directory / "wide.pbrt", cameraSceneText("\"string lensfile\" \"dgauss.dat\" "
+                                                         "\"float aperturediameter\" [40] "
+                                                         "\"float focusdistance\" [3]",
+                                                         2.0));
   const LoadedScene loaded = load(path);
   ASSERT_TRUE(loaded.description);
   Diagnostics diagnostics;
@@ -187,26 +190,28 @@ std::optional<double> pick(const std::filesystem::path& path, double x, double y
   const auto lens = lensOfScene(*loaded.description, diagnostics);
   EXPECT_TRUE(lens) << diagnostics.formatAll();
   if (!lens) return std::nullopt;
-  return objectDistanceUnderPixelMm(*loaded.description, *loaded.scene, build(lens->prescription),
-                                    32, 32, x, y);
+  return objectDistanceUnderPixelMm(*loaded.description, *loaded.scene,
+                                    buildCameraScene(lens->prescription), 32, 32, x, y);
 }
 
 TEST(FocusPick, AWallTwoMetresFromTheFilmIsTwoMetresAwayInBothCameraConventions) {
   const auto directory = lenslab::testing::makeTestDirectory("focus-pick-wall");
   writeFile(directory / "dgauss.dat", kDoubleGauss50);
   // pbrt-v3: metres, the film at the camera origin: the wall at z = 2.
-  const auto v3 = writeFile(directory / "v3.pbrt",
-                            sceneText("\"string lensfile\" \"dgauss.dat\" "
-                                      "\"float aperturediameter\" [8] \"float focusdistance\" [3]",
-                                      2.0));
+  const auto v3 =
+      writeFile(directory / "v3.pbrt",
+                cameraSceneText("\"string lensfile\" \"dgauss.dat\" "
+                                "\"float aperturediameter\" [8] \"float focusdistance\" [3]",
+                                2.0));
   // The course: millimetres, the front vertex at the camera origin, 36.77 + 32.04 mm in front
   // of the film: the same wall at z = 2000 - 68.81.
   const double frontVertexMm = 36.77 + kLensLengthMm;
-  const auto course = writeFile(directory / "course.pbrt",
-                                sceneText("\"string specfile\" \"dgauss.dat\" "
-                                          "\"float filmdistance\" 36.77 "
-                                          "\"float aperture_diameter\" 17.1 \"float filmdiag\" 35",
-                                          2000.0 - frontVertexMm));
+  const auto course =
+      writeFile(directory / "course.pbrt",
+                cameraSceneText("\"string specfile\" \"dgauss.dat\" "
+                                "\"float filmdistance\" 36.77 "
+                                "\"float aperture_diameter\" 17.1 \"float filmdiag\" 35",
+                                2000.0 - frontVertexMm));
   for (const auto& path : {v3, course}) {
     SCOPED_TRACE(path.filename().string());
     // The centre, and a pixel off axis: the distance is along the axis, not along the ray.
@@ -222,8 +227,8 @@ TEST(FocusPick, NothingWhereThereIsNoSurface) {
   const auto directory = lenslab::testing::makeTestDirectory("focus-pick-sky");
   writeFile(directory / "dgauss.dat", kDoubleGauss50);
   // The wall behind the camera.
-  const auto path =
-      writeFile(directory / "behind.pbrt", sceneText("\"string lensfile\" \"dgauss.dat\"", -2.0));
+  const auto path = writeFile(directory / "behind.pbrt",
+                              cameraSceneText("\"string lensfile\" \"dgauss.dat\"", -2.0));
   EXPECT_FALSE(pick(path, 16.0, 16.0));
 }
 

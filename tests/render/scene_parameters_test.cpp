@@ -17,11 +17,11 @@ namespace {
 
 using render::testing::writeFile;
 
-ParseResult parse(const std::string& text) {
+ParseResult parseParameters(const std::string& text) {
   return parsePbrtText(text, "test.pbrt", std::filesystem::temp_directory_path());
 }
 
-std::string messages(const ParseResult& result) { return result.diagnostics.formatAll(); }
+std::string parameterMessages(const ParseResult& result) { return result.diagnostics.formatAll(); }
 
 // ---- spectra ----
 
@@ -97,15 +97,15 @@ TEST(Spectrum, NamedMetalsHaveTheirMeasuredCharacter) {
 }
 
 TEST(Spectrum, SpectrumParametersAreConverted) {
-  const auto result = parse(
+  const auto result = parseParameters(
       "WorldBegin\n"
       "Material \"metal\" \"spectrum eta\" \"metal-Au-eta\" \"spectrum k\" \"metal-Au-k\"\n"
       "Material \"matte\" \"spectrum Kd\" [300 .3 800 .3]\n"
       "LightSource \"point\" \"blackbody I\" [3000 2]\n"
       "LightSource \"point\" \"blackbody I\" [3000]\n"
       "Material \"matte\" \"xyz Kd\" [0.9505 1 1.089]\nWorldEnd\n");
-  ASSERT_TRUE(result.scene) << messages(result);
-  EXPECT_TRUE(result.diagnostics.all().empty()) << messages(result);
+  ASSERT_TRUE(result.scene) << parameterMessages(result);
+  EXPECT_TRUE(result.diagnostics.all().empty()) << parameterMessages(result);
   const auto& materials = result.scene->materials;
   ASSERT_EQ(materials.size(), 4u);
   EXPECT_EQ(*materials[1].params.getTriple("eta"), *namedSpectrumRgb("metal-Au-eta"));
@@ -127,14 +127,15 @@ TEST(Spectrum, SpectrumParametersAreConverted) {
 }
 
 TEST(Spectrum, UnknownNamedSpectrumWarnsAndUsesTheDefault) {
-  const auto result = parse(
+  const auto result = parseParameters(
       "WorldBegin\nMaterial \"metal\" \"spectrum eta\" \"metal-Unobtainium-eta\"\nWorldEnd\n");
-  ASSERT_TRUE(result.scene) << messages(result);
-  EXPECT_NE(messages(result).find("test.pbrt:2:18: warning: \"spectrum eta\": "
-                                  "\"metal-Unobtainium-eta\" is neither a known named spectrum"),
-            std::string::npos)
-      << messages(result);
-  EXPECT_NE(messages(result).find("; the default value is used"), std::string::npos);
+  ASSERT_TRUE(result.scene) << parameterMessages(result);
+  EXPECT_NE(
+      parameterMessages(result).find("test.pbrt:2:18: warning: \"spectrum eta\": "
+                                     "\"metal-Unobtainium-eta\" is neither a known named spectrum"),
+      std::string::npos)
+      << parameterMessages(result);
+  EXPECT_NE(parameterMessages(result).find("; the default value is used"), std::string::npos);
   EXPECT_FALSE(result.scene->materials[1].params.find("eta"));
 }
 
@@ -144,23 +145,24 @@ TEST(Spectrum, SpdFilesAreRead) {
   writeFile(directory / "scene.pbrt",
             "WorldBegin\nMaterial \"matte\" \"spectrum Kd\" \"grey.spd\"\nWorldEnd\n");
   const auto result = parsePbrtFile(directory / "scene.pbrt");
-  ASSERT_TRUE(result.scene) << messages(result);
+  ASSERT_TRUE(result.scene) << parameterMessages(result);
   EXPECT_NEAR(result.scene->materials[1].params.getTriple("Kd")->g, 0.25, 1e-9);
 }
 
 TEST(Spectrum, MalformedSpectraAreErrors) {
-  const auto odd = parse("WorldBegin\nMaterial \"matte\" \"spectrum Kd\" [.5 .5 .5]\n");
+  const auto odd = parseParameters("WorldBegin\nMaterial \"matte\" \"spectrum Kd\" [.5 .5 .5]\n");
   EXPECT_FALSE(odd.scene);
-  EXPECT_NE(messages(odd).find("test.pbrt:2:18: error: \"spectrum Kd\": a sampled spectrum needs "
-                               "(wavelength, value) pairs, found 3 numbers (for a colour, write "
-                               "\"rgb Kd\" [r g b])"),
+  EXPECT_NE(parameterMessages(odd).find(
+                "test.pbrt:2:18: error: \"spectrum Kd\": a sampled spectrum needs "
+                "(wavelength, value) pairs, found 3 numbers (for a colour, write "
+                "\"rgb Kd\" [r g b])"),
             std::string::npos)
-      << messages(odd);
-  const auto cold = parse("WorldBegin\nLightSource \"point\" \"blackbody I\" [0 1]\n");
+      << parameterMessages(odd);
+  const auto cold = parseParameters("WorldBegin\nLightSource \"point\" \"blackbody I\" [0 1]\n");
   EXPECT_FALSE(cold.scene);
-  EXPECT_NE(messages(cold).find("\"blackbody I\": temperature 0 K is not positive"),
+  EXPECT_NE(parameterMessages(cold).find("\"blackbody I\": temperature 0 K is not positive"),
             std::string::npos)
-      << messages(cold);
+      << parameterMessages(cold);
 }
 
 // ---- unused and unsupported parameters ----
@@ -234,13 +236,13 @@ TEST(UnusedParameters, EachDirectiveSaysWhatIsUsedInstead) {
 }
 
 TEST(UnusedParameters, StratifiedDefaultsFollowThePbrtVersion) {
-  const auto v3 = parse("Sampler \"stratified\"\nWorldBegin WorldEnd");
-  ASSERT_TRUE(v3.scene) << messages(v3);
+  const auto v3 = parseParameters("Sampler \"stratified\"\nWorldBegin WorldEnd");
+  ASSERT_TRUE(v3.scene) << parameterMessages(v3);
   EXPECT_EQ(v3.scene->pixelSamples, 16);  // pbrt-v3: 4 x 4
-  const auto v2 = parse(
+  const auto v2 = parseParameters(
       "Sampler \"stratified\" \"integer xsamples\" 3\n"
       "SurfaceIntegrator \"directlighting\"\nWorldBegin WorldEnd");
-  ASSERT_TRUE(v2.scene) << messages(v2);
+  ASSERT_TRUE(v2.scene) << parameterMessages(v2);
   EXPECT_EQ(v2.scene->pixelSamples, 6);  // pbrt-v2: ysamples defaults to 2
 }
 

@@ -94,8 +94,8 @@ TEST(SpectralFilm, DensityIsNormalisedAndPositiveAndWhiteIsAPositiveSpectrum) {
     EXPECT_GT(b.x + b.y + b.z, 0.0) << nm;
   }
   EXPECT_NEAR(total, 1.0, 1e-6);
-  // Every 1 nm bin is likelier than a cell of the sampler's guide table (see kGuide): the
-  // search after the guide then takes one step at most.
+  // Every 1 nm bin is likely enough that its weight (1 / pdf) stays bounded: the density's
+  // floor.
   double least = 1.0;
   for (double nm = 380.5; nm < 780.0; nm += 1.0) least = std::min(least, film.pdfPerNm(nm));
   std::printf("least likely 1 nm bin: %.3g\n", least);

@@ -20,19 +20,19 @@ namespace {
 
 using testing::loadJob;
 
-std::filesystem::path demoScene() {
+std::filesystem::path vignettingDemoScene() {
   return std::filesystem::path(LENSLAB_SOURCE_DIR) / "scenes" / "vignetting.pbrt";
 }
 
 // The scene's text with its lens file made absolute (so that a copy elsewhere still finds it) and
 // its iris set to `stopDiameterMm`.
 std::string demoSceneWithStop(double stopDiameterMm) {
-  std::ifstream in(demoScene());
+  std::ifstream in(vignettingDemoScene());
   std::stringstream text;
   text << in.rdbuf();
   std::string scene = text.str();
   const std::string lens =
-      (demoScene().parent_path() / ".." / "lenses").lexically_normal().string();
+      (vignettingDemoScene().parent_path() / ".." / "lenses").lexically_normal().string();
   scene = std::regex_replace(scene, std::regex("\"\\.\\./lenses"), "\"" + lens);
   return std::regex_replace(scene, std::regex("\"float aperturediameter\" \\[[0-9.]+\\]"),
                             "\"float aperturediameter\" [" + std::to_string(stopDiameterMm) + "]");
@@ -105,7 +105,7 @@ void compareRenderWithAnalysis(const std::filesystem::path& scenePath, double st
 }
 
 TEST(VignettingDemo, RenderFollowsTheRelativeIlluminationAtFullAperture) {
-  compareRenderWithAnalysis(demoScene(), 8.756);
+  compareRenderWithAnalysis(vignettingDemoScene(), 8.756);
 }
 
 TEST(VignettingDemo, RenderFollowsTheRelativeIlluminationStoppedDown) {

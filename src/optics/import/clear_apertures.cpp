@@ -103,10 +103,44 @@ struct ApertureAimer {
 
   // The start point of the ray of `direction` that passes the stop at `target`: Newton's method
   // with a finite-difference Jacobian, from the paraxial guess, each step halved until the ray
-  // passes the lens.
+  // passes the lens. A wide-angle lens's real entrance pupil moves far from the paraxial one
+  // (a fisheye's toward the edge of its front element), and there the paraxial guess can miss
+  // the lens altogether: then the field angle is walked up from the axis, each angle's ray the
+  // next one's first guess, moved so that it still crosses the paraxial pupil's plane where the
+  // last one did.
   std::optional<glm::dvec2> aim(glm::dvec3 direction, glm::dvec2 target) const {
-    const double back = (startZMm - entrancePupilZMm) / -direction.z;
-    glm::dvec2 start = target * pupilPerStopRatio - back * glm::dvec2(direction.x, direction.y);
+    const double back = startZMm - entrancePupilZMm;
+    const auto lateral = [&](glm::dvec3 d) { return back / -d.z * glm::dvec2(d.x, d.y); };
+    const glm::dvec2 paraxialStart = target * pupilPerStopRatio - lateral(direction);
+    if (const std::optional<glm::dvec2> start = aimFrom(direction, target, paraxialStart))
+      return start;
+    const double angle = std::atan2(std::hypot(direction.x, direction.y), -direction.z);
+    const double azimuth = std::atan2(direction.y, direction.x);
+    // Steps of 1/32 of the angle, halved where a step fails (down to 1/4096), grown again after.
+    glm::dvec3 previous{0.0, 0.0, -1.0};
+    glm::dvec2 start = target * pupilPerStopRatio;
+    double reached = 0.0, step = angle / 32.0;
+    while (reached < angle) {
+      const double a = std::min(angle, reached + step);
+      const glm::dvec3 d{std::sin(a) * std::cos(azimuth), std::sin(a) * std::sin(azimuth),
+                         -std::cos(a)};
+      const std::optional<glm::dvec2> next =
+          aimFrom(d, target, start + lateral(previous) - lateral(d));
+      if (!next) {
+        step *= 0.5;
+        if (step < angle / 4096.0) return std::nullopt;
+        continue;
+      }
+      start = *next;
+      previous = d;
+      reached = a;
+      step *= 1.5;
+    }
+    return start;
+  }
+
+  std::optional<glm::dvec2> aimFrom(glm::dvec3 direction, glm::dvec2 target,
+                                    glm::dvec2 start) const {
     std::optional<glm::dvec2> hit = stopHit(start, direction);
     if (!hit) return std::nullopt;
     const double scaleMm = std::max(1.0, glm::length(target));

@@ -71,6 +71,15 @@ std::optional<AsphSurfaceRef> asphSurfaceRef(const std::string& text) {
     if (const auto n = digitsAt(q, end)) return finish(*n, end);
     return std::nullopt;
   }
+  // "asph 6", "asp 6": a table's own "ASPH" mark repeated before the surface's data
+  for (const std::string_view word : {std::string_view("asph"), std::string_view("asp")}) {
+    if (t.compare(p, word.size(), word) != 0) continue;
+    std::size_t q = p + word.size();
+    if (q >= t.size() || t[q] != ' ') break;
+    while (q < t.size() && t[q] == ' ') ++q;
+    if (const auto n = digitsAt(q, end)) return finish(*n, end);
+    return std::nullopt;
+  }
   // "r7:", "s6"
   if (p < t.size() && (t[p] == 'r' || t[p] == 's')) {
     if (const auto n = digitsAt(p + 1, end)) return finish(*n, end);
@@ -230,7 +239,8 @@ void readAsphericData(const std::vector<FoldedLine>& lines, const std::vector<bo
     }
     std::vector<AsphPair> pairs;
     const std::size_t stop = asphReadPairs(line.text, ref ? ref->end : 0, pairs);
-    if (stop < line.text.size())
+    // A remark after the coefficients, "# from ...", is no coefficient.
+    if (stop < line.text.size() && line.text[stop] != '#')
       diagnostics.error({fileName, line.number, line.columnAt(stop)},
                         "cannot read '" + trimmed(line.text.substr(stop, 24)) +
                             "' as an aspheric coefficient (K = ..., A4 = ...)");
@@ -342,6 +352,7 @@ namespace {
 enum class HeaderKey {
   Focal,
   FNumber,
+  FSlash,  // "F/4.00": an f-number, unless the text names one with a word (a title's "f/3.5-5.6")
   HalfField,
   FullField,
   AngleOfView,
@@ -359,6 +370,7 @@ constexpr HeaderWord kHeaderWords[] = {
     {"half angle of view", HeaderKey::HalfField},
     {"back focal length", HeaderKey::BackFocus},
     {"half field angle", HeaderKey::HalfField},
+    {"half field", HeaderKey::HalfField},
     {"angle of view", HeaderKey::AngleOfView},
     {"image height", HeaderKey::ImageHeight},
     {"focal length", HeaderKey::Focal},
@@ -369,6 +381,8 @@ constexpr HeaderWord kHeaderWords[] = {
     {"2omega", HeaderKey::FullField},
     {"omega", HeaderKey::HalfField},
     {"f/no", HeaderKey::FNumber},
+    {"2w", HeaderKey::FullField},  // 2ω typed without Greek
+    {"f/", HeaderKey::FSlash},
     {"fno.", HeaderKey::FNumber},
     {"f no", HeaderKey::FNumber},
     {"fno", HeaderKey::FNumber},
@@ -387,6 +401,7 @@ const char* headerKeyName(HeaderKey key) {
     case HeaderKey::Focal:
       return "f";
     case HeaderKey::FNumber:
+    case HeaderKey::FSlash:
       return "Fno";
     case HeaderKey::HalfField:
       return "w";
@@ -406,6 +421,7 @@ const char* headerKeyName(HeaderKey key) {
 
 void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bool>& skipLine,
                       const std::string& fileName, PatentHeader& header, Diagnostics& diagnostics) {
+  std::optional<PatentHeaderValue> slashFNumber;
   for (std::size_t li = 0; li < lines.size(); ++li) {
     if (skipLine[li]) continue;
     const FoldedLine& line = lines[li];
@@ -415,7 +431,9 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
       for (const HeaderWord& w : kHeaderWords) {
         if (t.compare(p, w.text.size(), w.text) != 0) continue;
         std::size_t q = p + w.text.size();
-        if (q < t.size() && (asphIsAlnum(t[q]) || t[q] == '/' || t[q] == '-' || t[q] == '\''))
+        // A word ends here ("F/" is followed by its number at once).
+        if (w.text.back() != '/' && q < t.size() &&
+            (asphIsAlnum(t[q]) || t[q] == '/' || t[q] == '-' || t[q] == '\''))
           continue;
         HeaderKey key = w.key;
         while (q < t.size() && (t[q] == ' ' || t[q] == '\t')) ++q;
@@ -460,6 +478,9 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
           case HeaderKey::FNumber:
             slot = &header.fNumber;
             break;
+          case HeaderKey::FSlash:
+            slot = &slashFNumber;
+            break;
           case HeaderKey::HalfField:
             slot = &header.halfFieldDeg;
             break;
@@ -491,6 +512,7 @@ void readHeaderValues(const std::vector<FoldedLine>& lines, const std::vector<bo
       }
     }
   }
+  if (!header.fNumber) header.fNumber = slashFNumber;
 }
 
 }  // namespace lenslab::optics::patent

@@ -128,7 +128,10 @@ std::optional<std::vector<PatentHeadingCell>> patentHeading(const FoldedLine& li
     if (readWholeNumber(cell.text)) return std::nullopt;
     PatentHeadingCell h{patentOriginalSpan(line, cell.begin, cell.end),
                         patentHeadingMeaning(cell.text), cell.begin, cell.end};
-    if (!tabs && !cells.empty() && patentHeadingContinues(cell.text)) {
+    // Two surface-number headings side by side are one ("# surf", "No. Surface").
+    const bool secondSurfaceWord = !tabs && !cells.empty() && h.meaning == PatentColumn::Surface &&
+                                   cells.back().meaning == PatentColumn::Surface;
+    if (!tabs && !cells.empty() && (patentHeadingContinues(cell.text) || secondSurfaceWord)) {
       PatentHeadingCell& previous = cells.back();
       const std::string merged =
           lowerAscii(line.text.substr(previous.begin, cell.end - previous.begin));
@@ -395,6 +398,27 @@ void PatentReader::readColumnRows(std::size_t firstLine,
                                    return true;
                                  }),
                   cells.end());
+    // Words after the label that mark the row: `ASP`/`ASPH` (smartphone patents print "(ASP)"
+    // beside the radius, tables with a remark column "ASPH") and a bare `STOP` in the remark
+    // (but not a "flare stop", a plane surface); they are no column either (an empty cell in
+    // tab-separated text, which keeps its columns by their cells).
+    bool stopWord = false;
+    for (std::size_t c = 1; c < cells.size();) {
+      const std::string word = lowerAscii(cells[c].text);
+      if (word == "asp" || word == "(asp)" || word == "asph" || word == "(asph)") {
+        aspheric = true;
+      } else if (word == "stop" && lowerAscii(cells[c - 1].text) != "flare") {
+        stopWord = true;
+      } else {
+        ++c;
+        continue;
+      }
+      if (tabs) {
+        cells[c++].text.clear();
+      } else {
+        cells.erase(cells.begin() + static_cast<std::ptrdiff_t>(c));
+      }
+    }
     if (cells.empty()) continue;
     // The first cell decides whether this is still the table.
     std::size_t firstColumn = 0;
@@ -445,6 +469,13 @@ void PatentReader::readColumnRows(std::size_t firstLine,
     rowCells.missingAt = line.text.size();
     const std::size_t columnCount = table_.columns.size();
     std::vector<int> columnOfCell(cells.size(), -1);
+    // A remark in a last column of its own ("flare stop", "cover glass") may run to several
+    // words: the words past the columns are part of it.
+    if (cells.size() > columnCount && columnCount > 0 &&
+        table_.columns[columnCount - 1].meaning == PatentColumn::Ignored &&
+        std::none_of(cells.begin() + static_cast<std::ptrdiff_t>(columnCount - 1), cells.end(),
+                     [](const Cell& c) { return readWholeNumber(c.text).has_value(); }))
+      cells.resize(columnCount);
     if (cells.size() > columnCount) {
       error(line, cells[columnCount].begin,
             "this row has " + std::to_string(cells.size()) + " values but the heading (line " +
@@ -493,7 +524,7 @@ void PatentReader::readColumnRows(std::size_t firstLine,
     row.label = hasSurfaceColumn ? patentOriginalSpan(line, cells[tabs ? firstColumn : 0].begin,
                                                       cells[tabs ? firstColumn : 0].end)
                                  : std::to_string(previousNumber + 1);
-    row.stop = stopMark || label.kind == PatentLabel::Stop;
+    row.stop = stopMark || stopWord || label.kind == PatentLabel::Stop;
     row.aspheric = aspheric || label.aspheric;
     row.surfaceNumber = label.number.value_or(previousNumber + 1);
     previousNumber = row.surfaceNumber;

@@ -124,5 +124,41 @@ TEST(ClearApertures, BundleThatWouldMakeNeighboursCrossIsVignettedToTheLargestVa
   EXPECT_GT(0.5 * p.surfaces[3].apertureDiameterMm, 0.98 * crossingHeightMm);
 }
 
+// A fisheye (US 4,256,373, f = 1 scaled by 16, as lenses/minolta-fisheye-16mm.lens): at 80 deg
+// its real entrance pupil sits far off the paraxial one, and a ray aimed by the paraxial guess
+// misses the front meniscus. An independent meridional trace (done for this test: bisection on
+// the ray's entry height until it crosses the stop's centre) puts the 80 deg chief ray at
+// 17.81 mm on the front surface and 11.23 mm on the second.
+TEST(ClearApertures, FisheyeChiefRayIsAimedAtItsFullFieldFarFromTheParaxialPupil) {
+  struct Row {
+    double radiusMm, thicknessMm, indexD, abbeD;
+  };
+  const Row rows[] = {{75.2528, 2.088, 1.713, 53.93},    {13.0336, 9.2064, 1.0, 0.0},
+                      {37.4928, 1.5664, 1.62041, 60.29}, {11.5264, 5.2304, 1.0, 0.0},
+                      {22.8128, 4.016, 1.71736, 29.42},  {-140.5328, 0.1008, 1.0, 0.0},
+                      {44.8256, 2.6112, 1.59551, 39.44}, {-54.216, 1.0448, 1.744, 44.9},
+                      {45.1472, 2.088, 1.0, 0.0},        {kFlatRadius, 1.4656, 1.5186, 60.1},
+                      {kFlatRadius, 1.5664, 1.0, 0.0},   {0.0, 1.5664, 1.0, 0.0},
+                      {-70.4192, 5.2304, 1.497, 81.6},   {-15.0448, 0.1008, 1.0, 0.0},
+                      {59.2704, 4.7088, 1.48749, 70.15}, {-12.0896, 1.4656, 1.84666, 23.88},
+                      {-23.2768, 37.28, 1.0, 0.0}};
+  Prescription p;
+  for (const Row& r : rows) {
+    Surface s;
+    s.radiusMm = r.radiusMm;
+    s.thicknessMm = r.thicknessMm;
+    if (r.indexD > 1.0) {
+      s.indexD = r.indexD;
+      s.abbeD = r.abbeD;
+    }
+    p.surfaces.push_back(s);
+  }
+  const ClearApertureDerivation derived = deriveClearApertures(p, fNumberAndField(2.8, 80.0));
+  ASSERT_TRUE(derived.ok()) << derived.errors.front().message;
+  EXPECT_GE(0.5 * p.surfaces[0].apertureDiameterMm, 17.81);
+  EXPECT_GE(0.5 * p.surfaces[1].apertureDiameterMm, 11.23);
+  EXPECT_TRUE(validate(p).empty());
+}
+
 }  // namespace
 }  // namespace lenslab::optics

@@ -19,10 +19,10 @@
 namespace lenslab::optics {
 namespace {
 
-const std::filesystem::path kReference = LENSLAB_IMPORT_REFERENCE_DIR;
+const std::filesystem::path kSeqReference = LENSLAB_IMPORT_REFERENCE_DIR;
 
-LensFileResult readReference(const std::string& relative) {
-  return readLensFile(kReference / relative);
+LensFileResult readSeqReference(const std::string& relative) {
+  return readLensFile(kSeqReference / relative);
 }
 
 std::string fileText(const std::filesystem::path& path) {
@@ -37,7 +37,7 @@ struct ReadOnly {
 };
 ReadOnly readOnly(const std::string& relative) {
   ReadOnly read;
-  const std::filesystem::path path = kReference / relative;
+  const std::filesystem::path path = kSeqReference / relative;
   read.lens = readCodeVLens(fileText(path), path.string(), read.diagnostics);
   return read;
 }
@@ -113,7 +113,7 @@ std::vector<Surface> refractingRows(const Prescription& prescription) {
 // --- CODE V's own files, against CODE V's own numbers ---------------------------------------
 
 TEST(CodeVFile, DoubleGaussMatchesCodeVsListing) {
-  const LensFileResult result = readReference("ray-optics/codev/ag_dblgauss.seq");
+  const LensFileResult result = readSeqReference("ray-optics/codev/ag_dblgauss.seq");
   ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
   const LensFile& lens = *result.lens;
   EXPECT_EQ(lens.title, "Double Gauss F/2 -  Available Glasses");
@@ -273,7 +273,7 @@ TEST(CodeVFile, HandWrittenSingletIsInCurvatureMode) {
 }
 
 TEST(CodeVFile, LandscapeLensStopIsItsFlatFirstSurface) {
-  const LensFileResult result = readReference("ray-optics/codev/landscape_lens.seq");
+  const LensFileResult result = readSeqReference("ray-optics/codev/landscape_lens.seq");
   ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
   const Prescription& prescription = result.lens->prescription;
   ASSERT_EQ(prescription.surfaces.size(), 3u);
@@ -292,7 +292,7 @@ TEST(CodeVFile, LandscapeLensStopIsItsFlatFirstSurface) {
 TEST(CodeVFile, TestSeqReadsThroughItsContinuationsAndRefusesOnlyItsBk7) {
   // Comments, '&' continuations and ';' on one line; "bk7" (Schott's old BK7, not N-BK7) is in
   // no catalogue lenslab has, and f2 is in three.
-  const LensFileResult result = readReference("ray-optics/codev/test.seq");
+  const LensFileResult result = readSeqReference("ray-optics/codev/test.seq");
   ASSERT_FALSE(result.ok());
   const std::vector<const Diagnostic*> errors = errorsOf(result.diagnostics);
   ASSERT_EQ(errors.size(), 1u) << result.diagnostics.formatAll();
@@ -360,7 +360,7 @@ TEST(CodeVFile, OptilandFNumberAndFields) {
 }
 
 TEST(CodeVFile, OptilandTelescopeObjectiveWithBareNames) {
-  const LensFileResult result = readReference("optiland/codev/telescope_objective.seq");
+  const LensFileResult result = readSeqReference("optiland/codev/telescope_objective.seq");
   ASSERT_TRUE(result.ok()) << result.diagnostics.formatAll();
   const Prescription& prescription = result.lens->prescription;
   ASSERT_EQ(prescription.surfaces.size(), 9u);  // nine S lines, the third the stop
@@ -400,7 +400,7 @@ TEST(CodeVFile, TheLensesLenslabCanModelOpenWithDerivedClearApertures) {
                {"optiland/codev/telescope_objective.seq", ApertureKind::ImageFNumber, 6.0}};
   for (const auto& c : cases) {
     SCOPED_TRACE(c.file);
-    const LensFileResult result = readReference(c.file);
+    const LensFileResult result = readSeqReference(c.file);
     EXPECT_TRUE(result.ok()) << result.diagnostics.formatAll();
     if (!result.ok()) continue;
     const double wavelength =
@@ -437,7 +437,7 @@ TEST(CodeVFile, RefusesMirrorsDecentresPrivateGlassesAndDiffractiveSurfaces) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.file);
-    const LensFileResult result = readReference(c.file);
+    const LensFileResult result = readSeqReference(c.file);
     ASSERT_FALSE(result.ok());
     const std::vector<const Diagnostic*> errors = errorsOf(result.diagnostics);
     ASSERT_FALSE(errors.empty());
@@ -445,11 +445,11 @@ TEST(CodeVFile, RefusesMirrorsDecentresPrivateGlassesAndDiffractiveSurfaces) {
     EXPECT_NE(errors[0]->message.find(c.what), std::string::npos) << errors[0]->message;
   }
   // The tilt test's second tilt, the DAR after it, and the diffractive surface of 65988.
-  const LensFileResult dar = readReference("ray-optics/codev/dar_test.seq");
+  const LensFileResult dar = readSeqReference("ray-optics/codev/dar_test.seq");
   EXPECT_TRUE(std::any_of(
       dar.diagnostics.all().begin(), dar.diagnostics.all().end(),
       [](const Diagnostic& d) { return d.location.line == 9 && d.message.find("DAR:") == 0; }));
-  const LensFileResult doe = readReference("ray-optics/codev/CODV_65988.seq");
+  const LensFileResult doe = readSeqReference("ray-optics/codev/CODV_65988.seq");
   EXPECT_TRUE(std::any_of(
       doe.diagnostics.all().begin(), doe.diagnostics.all().end(), [](const Diagnostic& d) {
         return d.location.line == 32 && d.message.find("DIF: a diffractive surface") == 0;
@@ -459,7 +459,7 @@ TEST(CodeVFile, RefusesMirrorsDecentresPrivateGlassesAndDiffractiveSurfaces) {
 TEST(CodeVFile, EverySequenceInTheReferenceFolderOpensOrIsRefusedAtALine) {
   int opened = 0, refused = 0;
   for (const char* folder : {"ray-optics/codev", "optiland/codev"}) {
-    for (const auto& entry : std::filesystem::directory_iterator(kReference / folder)) {
+    for (const auto& entry : std::filesystem::directory_iterator(kSeqReference / folder)) {
       if (entry.path().extension() != ".seq") continue;
       SCOPED_TRACE(entry.path().filename().string());
       const LensFileResult result = readLensFile(entry.path());

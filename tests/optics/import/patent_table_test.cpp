@@ -360,6 +360,24 @@ TEST(PatentTableConventions, StopMarkings) {
   }
 }
 
+// The layout of ../shared/reference/library/tables: the heading is a comment line ("# surf ..."),
+// air is n_d 1.0 with V_d "-", a semi-diameter column the reader does not use, and the stop is
+// named in the last (note) column of a flat row.
+TEST(PatentTableConventions, CommentedHeadingAndStopInANoteColumn) {
+  const PatentTableResult r = readPatentTable(
+      "# surf  radius   thickness  nd      vd     semi_diam  note\n"
+      "  1     50       5          1.5168  64.2   20\n"
+      "  2     -200     2          1.0     -      20\n"
+      "  3     inf      3          1.0     -      15         STOP\n"
+      "  4     -80      40         1.0     -      20\n",
+      "library.txt");
+  expectSmallLens(r);
+  ASSERT_EQ(r.table.columns.size(), 7u);
+  EXPECT_EQ(r.table.columns[0].meaning, PatentColumn::Surface);
+  EXPECT_EQ(r.table.columns[5].meaning, PatentColumn::Ignored);
+  EXPECT_FALSE(r.table.rows[0].stop);
+  EXPECT_FALSE(r.table.rows[3].stop);
+}
 TEST(PatentTableConventions, StopOnARefractingSurfaceBecomesAStopRowAtItsVertex) {
   // A heading without a surface column: rows start with r.
   const PatentTableResult r = readPatentTable(
@@ -483,6 +501,63 @@ TEST(PatentTableConventions, HeaderValues) {
   // The last row gives no d: the back focus is the film distance.
   ASSERT_TRUE(r.table.filmDistanceMm);
   EXPECT_DOUBLE_EQ(*r.table.filmDistanceMm, 38.2);
+}
+
+// The layout of ../shared/reference/library/tables (this project's transcriptions of 23 patent
+// examples): a `# surf radius ...` heading, a semi-diameter and a remark column whose words mark
+// the stop (`STOP`, not `flare stop`) and the aspheric surfaces (`ASPH`), and `ASPH <row>` naming
+// a surface's coefficients. Largan's smartphone tables print `(ASP)` beside the radius.
+TEST(PatentTableConventions, RemarkWordsMarkTheStopAndTheAsphericSurfaces) {
+  const std::string text =
+      "# published: FNO 4.0\n"
+      "# surf  radius  thickness  nd      vd    semi_diam  note\n"
+      "  1      50      5          1.5168  64.2  -          ASPH\n"
+      "  2      -200    2          1.0     -     -          flare stop\n"
+      "  3      0       3          1.0     -     -          STOP\n"
+      "  4      -80     40         1.0     -     -          cover/filter plate\n"
+      "#\n# aspheric surfaces (surf = row number above)\n"
+      "ASPH 1 k=-0.5 A4=1.0e-05 A6=-2e-08 # from a transcription\n";
+  const PatentTableResult r = readPatentTable(text, "remarks.txt");
+  ASSERT_EQ(r.table.rows.size(), 4u) << errors(r.lens);
+  EXPECT_TRUE(r.table.rows[0].aspheric);
+  EXPECT_FALSE(r.table.rows[1].stop);  // a flare stop is a plane surface, not the iris
+  EXPECT_TRUE(r.table.rows[2].stop);
+  EXPECT_EQ(r.table.rows[2].radiusMm, 0.0);
+  EXPECT_FALSE(r.table.rows[3].aspheric);
+  EXPECT_DOUBLE_EQ(*r.table.rows[0].indexD, 1.5168);
+  EXPECT_FALSE(r.table.rows[1].indexD);  // n_d 1.0: air
+  ASSERT_EQ(r.table.aspheres.size(), 1u) << errors(r.lens);
+  EXPECT_EQ(r.table.aspheres[0].surfaceNumber, 1);
+  EXPECT_DOUBLE_EQ(r.table.aspheres[0].conic, -0.5);
+  EXPECT_DOUBLE_EQ(term(r.table.aspheres[0], 4), 1.0e-5);
+  EXPECT_DOUBLE_EQ(term(r.table.aspheres[0], 6), -2.0e-8);
+  EXPECT_FALSE(r.lens.diagnostics.hasErrors()) << errors(r.lens);
+
+  const PatentTableResult largan = readPatentTable(
+      "Surface # r d nd vd\n1 50 (ASP) 5 1.5168 64.2\n2 -200 2\n3 Stop INF 3\n4 -80 40\n"
+      "\nAspheric coefficients\nSurface 1: K = 0 A4 = 1.0E-05\n",
+      "largan.txt");
+  expectSmallLens(largan);
+  EXPECT_TRUE(largan.table.rows[0].aspheric);
+}
+
+// The header of those tables: `2w` for 2ω, `half field`, and `F/4.00` as the f-number unless a
+// word names one (a title's "f/3.5-5.6G" is not the example's FNO 3.56).
+TEST(PatentTableConventions, HeaderValuesWithoutGreek) {
+  const std::string table =
+      "Surface r d nd vd\n1 50 5 1.5168 64.2\n2 -200 2\n3(Stop) INF 3\n4 -80 40\n";
+  const PatentTableResult slash = readPatentTable(
+      "# published: f = 14.420 mm, F/4.00, 2w = 115.36 deg (half field 57.68 deg)\n" + table,
+      "slash.txt");
+  const PatentHeader& h = slash.table.header;
+  ASSERT_TRUE(h.fNumber && h.halfFieldDeg) << errors(slash.lens);
+  EXPECT_DOUBLE_EQ(h.fNumber->value, 4.0);
+  EXPECT_DOUBLE_EQ(h.halfFieldDeg->value, 57.68);
+  const PatentTableResult worded = readPatentTable(
+      "# title: Zoom 18-55mm f/3.5-5.6G\n# published: f = 18.5, FNO 3.56\n" + table, "worded.txt");
+  ASSERT_TRUE(worded.table.header.fNumber) << errors(worded.lens);
+  EXPECT_DOUBLE_EQ(worded.table.header.fNumber->value, 3.56);
+  EXPECT_FALSE(worded.table.header.halfFieldDeg);
 }
 
 TEST(PatentTableConventions, OverridingAColumnRereads) {

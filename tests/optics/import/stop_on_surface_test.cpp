@@ -8,7 +8,7 @@
 namespace lenslab::optics {
 namespace {
 
-constexpr double kIndex = 1.5168;
+constexpr double kStopTestIndex = 1.5168;
 
 // A singlet as a file without a stop row has it: front radius, 5 mm of glass, back radius, film.
 LensFile singlet(double frontRadiusMm, double backRadiusMm) {
@@ -16,7 +16,7 @@ LensFile singlet(double frontRadiusMm, double backRadiusMm) {
   Surface front;
   front.radiusMm = frontRadiusMm;
   front.thicknessMm = 5.0;
-  front.indexD = kIndex;
+  front.indexD = kStopTestIndex;
   front.apertureDiameterMm = 20.0;
   Surface back;
   back.radiusMm = backRadiusMm;
@@ -43,8 +43,9 @@ TEST(StopOnSurface, ConvexFrontSurfaceGetsTheStopInFrontAtItsVertex) {
   EXPECT_NEAR(first.entrancePupil.positionMm, 0.0, 1e-12);
   EXPECT_NEAR(first.entrancePupil.diameterMm, 16.0, 1e-12);
   // Lensmaker's thick-lens power, by hand: (n-1)(1/R1 - 1/R2) + (n-1)^2 d / (n R1 R2).
-  const double power = (kIndex - 1.0) * (1.0 / 40.0 + 1.0 / 60.0) +
-                       (kIndex - 1.0) * (kIndex - 1.0) * 5.0 / (kIndex * 40.0 * -60.0);
+  const double power =
+      (kStopTestIndex - 1.0) * (1.0 / 40.0 + 1.0 / 60.0) +
+      (kStopTestIndex - 1.0) * (kStopTestIndex - 1.0) * 5.0 / (kStopTestIndex * 40.0 * -60.0);
   EXPECT_NEAR(first.eflMm, 1.0 / power, 1e-9);
 }
 
@@ -62,7 +63,7 @@ TEST(StopOnSurface, BackSurfaceBulgingRearwardGetsTheStopBehindIt) {
   const BuildResult built = LensSystem::build(lens.prescription);
   ASSERT_TRUE(built.ok()) << built.errors.front().message;
   const FirstOrderData& first = built.system->firstOrder();
-  EXPECT_NEAR(first.entrancePupil.positionMm, 5.0 / kIndex, 1e-9);
+  EXPECT_NEAR(first.entrancePupil.positionMm, 5.0 / kStopTestIndex, 1e-9);
   EXPECT_NEAR(first.entrancePupil.diameterMm, 12.0, 1e-9);
 }
 
@@ -74,7 +75,7 @@ TEST(StopOnSurface, ConcaveBackSurfaceGetsTheStopInFrontInsideTheGlass) {
   const std::vector<Surface>& rows = lens.prescription.surfaces;
   EXPECT_EQ(rows[0].thicknessMm, 5.0);
   EXPECT_EQ(rows[1].thicknessMm, 0.0);
-  EXPECT_EQ(rows[1].indexD, kIndex);  // the glass between the front surface and the stop
+  EXPECT_EQ(rows[1].indexD, kStopTestIndex);  // the glass between the front surface and the stop
   EXPECT_TRUE(LensSystem::build(lens.prescription).ok());
 }
 
