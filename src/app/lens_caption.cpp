@@ -38,11 +38,13 @@ LensDetails lensDetails(const ViewerState& state) {
 }
 
 std::string lensName(const ViewerState& state) {
-  const LensDetails details = lensDetails(state);
+  return lensNameOf(lensDetails(state), state.lens.document().path());
+}
+
+std::string lensNameOf(const LensDetails& details, const std::string& path) {
   if (std::string name = withoutNominalFNumber(trimmed(details.title)); !name.empty()) return name;
   // A pbrt .dat has no title: its first header comment names the lens. The notes of a format
   // with a title (a .lens, a .zmx's NOTE: often a vendor's disclaimer) are not a name.
-  const std::string& path = state.lens.document().path();
   const optics::LensFileFormat* format = optics::lensFileFormatOf(path);
   if (!format || std::string_view(format->extension) == ".dat") {
     for (const std::string& comment : details.notes) {

@@ -24,6 +24,8 @@ std::string withoutNominalFNumber(const std::string& name);
 // The lens's name, without its nominal f-number; "Untitled lens" when it has neither a title (or a
 // .dat's header comment) nor a file.
 std::string lensName(const ViewerState& state);
+// The same for a file's details and path (the library browser names its lenses so).
+std::string lensNameOf(const LensDetails& details, const std::string& path);
 // The publication the lens comes from, as its file gives it; "" when it gives none.
 std::string lensSource(const ViewerState& state);
 

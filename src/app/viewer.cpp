@@ -497,6 +497,10 @@ int runViewer(const ViewerOptions& options) {
   // added once it has opened.)
   if (!options.lensPath.empty()) addRecentFile(state.settings, options.lensPath);
   const int exitCode = viewer.run(options, std::move(script));
+  // The library's worker wakes the window and its thumbnails are GL textures: both go while the
+  // window is still there.
+  state.library.catalogue.reset();
+  state.library.thumbnails.clear();
   if (!options.statsJsonPath.empty()) {
     if (const std::string statsError = viewer.stats().writeJson(options.statsJsonPath);
         !statsError.empty()) {

@@ -2,8 +2,9 @@
 // The viewer session: owns the state's window-side parts (preview renderer, statistics), runs
 // the frame loop, and is what scripts drive. Its methods live in five files: viewer.cpp (the
 // loop, drawing, shortcuts), viewer_files.cpp (opening and saving), viewer_preview.cpp (the
-// render preview and click-to-focus), viewer_export.cpp (File > Export render...) and
-// viewer_plots.cpp (the analysis panels: plot export and whether their figures have caught up).
+// render preview and click-to-focus), viewer_export.cpp (File > Export render...),
+// viewer_plots.cpp (the analysis panels: plot export and whether their figures have caught up)
+// and viewer_library.cpp (the library browser's script commands).
 
 #include <future>
 #include <map>
@@ -149,6 +150,10 @@ class Viewer final : public ScriptHost {
     for (std::size_t i = 0; i < std::size(kMtfRangesCyclesPerMm); ++i)
       if (kMtfRangesCyclesPerMm[i] == cyclesPerMm) state_.mtf.rangeChoice = static_cast<int>(i);
   }
+  // The library browser's script commands (viewer_library.cpp).
+  std::optional<std::string> library(const std::vector<std::string>& arguments) override;
+  LibraryProgress libraryProgress() const override;
+  Issued openLibraryLens(const std::string& name) override;
   void setLayout(double lensTable, double preview, double log) override {
     // The bottom area's share, for the log and the plots alike.
     state_.settings.layout = {static_cast<float>(lensTable), static_cast<float>(preview),

@@ -102,21 +102,7 @@ const CrossSectionCache& crossSection(ViewerState& state) {
   cache.showBlocked = showBlocked;
   cache.outline = optics::computeLensOutline(state.lens.prescription());
   cache.drawing = drawLens(cache.outline, 0.5 * state.filmDiagonalMm);
-  // Fit to the lens and film, with room in front for the incoming bundles (the fans start a
-  // quarter of the lens length in front of it), but not to the rays themselves: a near object
-  // would shrink the lens to a dot.
-  cache.fitBounds = cache.drawing.bounds;
-  if (cache.fitBounds.hasPoints) {
-    const double front = cache.outline.frontVertexZMm;
-    const double length = std::max(1.0, cache.fitBounds.maxZ - cache.fitBounds.minZ);
-    double raysStartZ = front + std::max(5.0, 0.25 * length);
-    for (const optics::RayFan& fan : state.rayFans.fans) {
-      for (const optics::FanRay& ray : fan.rays) {
-        if (!ray.path.points.empty()) raysStartZ = std::max(raysStartZ, ray.path.points[0].z);
-      }
-    }
-    cache.fitBounds.include({std::min(raysStartZ, front + 0.5 * length), 0.0});
-  }
+  cache.fitBounds = crossSectionFitBounds(cache.drawing, cache.outline, state.rayFans);
   if (bundle) {
     drawFilmPointBundle(cache.drawing, *bundle);
   } else {

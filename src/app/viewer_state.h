@@ -28,6 +28,7 @@
 #include "app/drawing/cross_section_view.h"
 #include "app/layout.h"
 #include "app/lens_table_state.h"
+#include "app/library/library_browser.h"
 #include "app/log.h"
 #include "app/preview_state.h"
 #include "app/settings.h"
@@ -240,6 +241,8 @@ struct ViewerState {
   bool showExportCrossSection = false;
   // Edit > Paste lens table...: the pasted text and what was understood of it.
   PasteTableState pasteTable;
+  // Lens > Library > Browse library...: the Library panel's lenses, thumbnails and filters.
+  LibraryBrowserState library;
 };
 
 // The exposure the preview shows: the user's, plus the metered one when auto exposure is on.

@@ -360,6 +360,21 @@ bool ScriptRunner::execute(const ScriptCommand& command, ScriptHost& host) {
   }
   if (verb == "dump-ui") return check(host.dumpUi(a[0]));
   if (verb == "check-window") return check(host.checkWindow());
+  if (verb == "library") {
+    if (a[0] == "wait") return host.libraryProgress().finished;
+    if (a[0] == "select") {
+      if (!awaitedCommand_) {
+        if (!host.libraryProgress().listed) return false;  // the name may be in the rest
+        std::string name;
+        for (std::size_t i = 1; i < a.size(); ++i) name += (i > 1 ? " " : "") + a[i];
+        const ScriptHost::Issued issued = host.openLibraryLens(name);
+        if (issued.error) return check(issued.error);
+        awaitedCommand_ = issued.ticket;
+      }
+      return waitForCommand(command, host);
+    }
+    return check(host.library(a));
+  }
   if (verb == "reset-stats") {
     host.resetStats();
     return true;

@@ -74,6 +74,18 @@
 //   set spectral on|off|auto    (the preview's Spectral choice: each sample at a wavelength of
 //                                its own; auto when some glass has a V_d)
 //
+// The library browser (Lens > Library > Browse library..., the Library panel):
+//   library open [FOLDER]       shows the panel on the bundled lenses/ (or FOLDER's lens files)
+//   library reload              reads the folder again
+//   library wait                waits until every lens is listed and its thumbnail shown
+//   library search [WORDS]      the search box's text (none: empty)
+//   library filter type TYPE|any        library filter aspheric yes|no|any
+//   library filter efl MIN MAX|any      library filter year FROM TO|any     (inclusive, mm/years)
+//   library filter clear        every filter and the search off
+//   library select NAME         opens the shown lens NAME (its file name, with or without the
+//                                extension, or its name) as a double-click on its card does, and
+//                                waits until it is open; waits for the list first
+//
 // Pictures for slides (File > Export render..., auto exposure):
 //   export-render FILE SIZE SPP  renders the current lens and scene in the background at SIZE
 //                               (WIDTHxHEIGHT, or film: the scene's film resolution) and SPP
@@ -275,6 +287,20 @@ class ScriptHost {
   virtual void setSpectralMode(render::SpectralMode /*mode*/) {}
   // Forgets the frames measured so far (--stats-json).
   virtual void resetStats() {}
+  // The library browser: `library open|reload|search|filter` (the words after "library").
+  virtual std::optional<std::string> library(const std::vector<std::string>& /*arguments*/) {
+    return "there is no library browser here";
+  }
+  // Whether every lens of the browsed folder is listed, and every thumbnail shown.
+  struct LibraryProgress {
+    bool listed = true;
+    bool finished = true;
+  };
+  virtual LibraryProgress libraryProgress() const { return {}; }
+  // Opens the shown library lens `name` as a double-click on its card does.
+  virtual Issued openLibraryLens(const std::string& name) {
+    return {"there is no library lens " + name + " here"};
+  }
 };
 
 // Runs a parsed script a step per frame: it executes commands until one has to wait (for

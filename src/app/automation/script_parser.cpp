@@ -80,6 +80,8 @@ const std::map<std::string, VerbShape>& verbs() {
       // every step there is.
       {"edit-storm", {2, 2}},
       {"undo-all", {0, 0}},
+      // The library browser (issue 42): library open|reload|wait|search|filter|select ...
+      {"library", {1, 32}},
   };
   return table;
 }
@@ -266,6 +268,56 @@ std::optional<Diagnostic> checkSet(const ScriptCommand& command) {
           "vignetting-overlay, colour-fans, spectral, fields, bottom-area or mtf-range)");
 }
 
+// library open [FOLDER] | reload | wait | search [WORDS] | select NAME | filter type TYPE|any |
+// filter efl MIN MAX|any | filter year FROM TO|any | filter aspheric yes|no|any | filter clear.
+std::optional<Diagnostic> checkLibrary(const ScriptCommand& command) {
+  const auto& a = command.arguments;
+  const std::size_t count = a.size();
+  if (a[0] == "open") {
+    if (count > 2) return problemAt(command, 2, "expected: library open [FOLDER]");
+    return std::nullopt;
+  }
+  if (a[0] == "reload" || a[0] == "wait") {
+    if (count > 1) return problemAt(command, 1, "'library " + a[0] + "' takes no more words");
+    return std::nullopt;
+  }
+  if (a[0] == "search") return std::nullopt;
+  if (a[0] == "select") {
+    if (count < 2) return problemAt(command, 0, "expected: library select NAME");
+    return std::nullopt;
+  }
+  if (a[0] != "filter") {
+    return problemAt(command, 0,
+                     "unknown library command '" + a[0] +
+                         "' (expected open, reload, wait, search, filter or select)");
+  }
+  const std::string what = count > 1 ? a[1] : "";
+  if (what == "clear" && count == 2) return std::nullopt;
+  if (what == "type" && count >= 3) return std::nullopt;
+  if (what == "aspheric" && count == 3 && (a[2] == "yes" || a[2] == "no" || a[2] == "any"))
+    return std::nullopt;
+  if ((what == "efl" || what == "year") && count == 3 && a[2] == "any") return std::nullopt;
+  if (what == "efl" || what == "year") {
+    if (count != 4) {
+      return problemAt(command, 1,
+                       "expected: library filter " + what +
+                           (what == "efl" ? " MIN MAX (mm) or any" : " FROM TO or any"));
+    }
+    for (std::size_t i = 2; i < 4; ++i) {
+      const bool good =
+          what == "efl" ? parseNumber(a[i]).has_value() : parseInteger(a[i]).has_value();
+      if (!good) {
+        return problemAt(command, i,
+                         "'" + a[i] + "' is not " + (what == "efl" ? "a number (mm)" : "a year"));
+      }
+    }
+    return std::nullopt;
+  }
+  return problemAt(command, count > 1 ? 1 : 0,
+                   "expected: library filter type TYPE|any, efl MIN MAX|any, year FROM TO|any, "
+                   "aspheric yes|no|any or clear");
+}
+
 std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
   const auto shape = verbs().find(command.verb);
   if (shape == verbs().end()) {
@@ -284,6 +336,7 @@ std::optional<Diagnostic> checkShape(const ScriptCommand& command) {
     return problemAt(command, kLineStart, message.str());
   }
   if (command.verb == "set") return checkSet(command);
+  if (command.verb == "library") return checkLibrary(command);
   if (command.verb == "asphere-editor" && command.arguments[0] != "close") {
     const auto surface = parseInteger(command.arguments[0]);
     if (!surface || *surface < 1) {

@@ -43,6 +43,57 @@ nlohmann::json referenceJson(const ViewerState& state) {
           {"first_order", rows}};
 }
 
+// The library browser (issue 42): its folder, what it lists with the filters as they are, which
+// have their thumbnail uploaded, and how long it took to show them (ms from the request).
+nlohmann::json libraryDump(const LibraryBrowserState& library) {
+  const auto optionalMs = [](const std::optional<double>& ms) {
+    return ms ? nlohmann::json(*ms) : nlohmann::json(nullptr);
+  };
+  nlohmann::json shown = nlohmann::json::array();
+  const ShownLibrary listed = shownLibraryEntries(library);
+  for (const std::size_t i : listed.indices) {
+    const LibraryEntry& entry = listed.snapshot->entries[i];
+    const auto orNull = [](const auto& value) {
+      return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+    };
+    shown.push_back({{"file", entry.fileName},
+                     {"name", entry.name},
+                     {"type", entry.type},
+                     {"year", orNull(entry.year)},
+                     {"efl_mm", orNull(entry.eflMm)},
+                     {"f_number", orNull(entry.fNumber)},
+                     {"half_field_deg", orNull(entry.halfFieldDeg)},
+                     {"elements", entry.elements},
+                     {"aspheric_surfaces", entry.asphericSurfaces},
+                     {"error", entry.error},
+                     {"thumbnail", library.thumbnails.count(entry.contentHash) > 0}});
+  }
+  const LibraryFilter& filter = library.filter;
+  return {{"folder", library.folder.string()},
+          {"files", listed.snapshot ? listed.snapshot->files : 0},
+          {"listed", listed.snapshot && listed.snapshot->listed},
+          {"thumbnails_from_disk", listed.snapshot ? listed.snapshot->thumbnailsFromDisk : 0},
+          {"thumbnails_drawn", listed.snapshot ? listed.snapshot->thumbnailsDrawn : 0},
+          {"shown", shown},
+          {"selected", library.selectedPath},
+          {"filter",
+           {{"search", filter.search},
+            {"type", filter.type},
+            {"aspheric", asphericChoiceWord(filter.aspheric)},
+            {"efl_mm", filter.minEflMm ? nlohmann::json({*filter.minEflMm, *filter.maxEflMm})
+                                       : nlohmann::json(nullptr)},
+            {"year", filter.minYear ? nlohmann::json({*filter.minYear, *filter.maxYear})
+                                    : nlohmann::json(nullptr)}}},
+          {"panel_shown_ms", optionalMs(library.panelShownMs)},
+          {"panel_shown_after_frames", library.panelShownAfterFrames
+                                           ? nlohmann::json(*library.panelShownAfterFrames)
+                                           : nlohmann::json(nullptr)},
+          {"read_ms", listed.snapshot ? listed.snapshot->listedAfterMs : 0.0},
+          {"thumbnails_made_ms", listed.snapshot ? listed.snapshot->finishedAfterMs : 0.0},
+          {"listed_ms", optionalMs(library.listedMs)},
+          {"thumbnails_shown_ms", optionalMs(library.thumbnailsShownMs)}};
+}
+
 }  // namespace
 
 std::string writeUiDump(const std::filesystem::path& path, const ViewerState& state,
@@ -212,6 +263,7 @@ std::string writeUiDump(const std::filesystem::path& path, const ViewerState& st
                                        {"image_height_mm", measured->imageHeightMm},
                                        {"relative", measured->relative}};
   }
+  about["library"] = libraryDump(state.library);
   const nlohmann::json json = {{"window", {{"width", windowWidth}, {"height", windowHeight}}},
                                {"widgets", widgets},
                                {"state", about}};

@@ -126,6 +126,22 @@ Colour fraunhoferLineColour(double wavelengthNm) {
   return toD <= toC ? palette::kLineD : palette::kLineC;
 }
 
+BoundsMm crossSectionFitBounds(const CrossSectionDrawing& lensDrawing,
+                               const optics::LensOutline& outline, const optics::RayFans& fans) {
+  BoundsMm fit = lensDrawing.bounds;
+  if (!fit.hasPoints) return fit;
+  const double front = outline.frontVertexZMm;
+  const double length = std::max(1.0, fit.maxZ - fit.minZ);
+  double raysStartZ = front + std::max(5.0, 0.25 * length);
+  for (const optics::RayFan& fan : fans.fans) {
+    for (const optics::FanRay& ray : fan.rays) {
+      if (!ray.path.points.empty()) raysStartZ = std::max(raysStartZ, ray.path.points[0].z);
+    }
+  }
+  fit.include({std::min(raysStartZ, front + 0.5 * length), 0.0});
+  return fit;
+}
+
 void drawRayFans(CrossSectionDrawing& drawing, const optics::RayFans& fans, bool showBlocked) {
   constexpr std::size_t kColours = std::size(palette::kFieldColours);
   const auto addRays = [&](const std::vector<optics::FanRay>& rays, Colour colour, int fanIndex,

@@ -96,6 +96,13 @@ Colour fraunhoferLineColour(double wavelengthNm);
 // filmHalfDiagonalMm: half the film diagonal, drawn as the film plane's extent.
 CrossSectionDrawing drawLens(const optics::LensOutline& outline, double filmHalfDiagonalMm);
 
+// What the cross-section fits its view to: the drawing's lens and film (drawLens, before rays are
+// added), with room in front for the incoming bundles (where the fans start, at least a quarter
+// of the lens length in front of it, at most half), but not the rays themselves: a near object
+// would shrink the lens to a dot.
+BoundsMm crossSectionFitBounds(const CrossSectionDrawing& lensDrawing,
+                               const optics::LensOutline& outline, const optics::RayFans& fans);
+
 // Adds the fans' rays: each ends at the film, or at the surface that blocked it (blocked rays are
 // fainter, and left out when showBlocked is false). Chief rays dashed, the marginal ray cyan.
 // Fans traced at other wavelengths too (RayFan::atOtherWavelengths) are drawn by wavelength: every

@@ -68,6 +68,9 @@ void editMenu(ViewerState& state) {
 void lensMenu(ViewerState& state) {
   const std::filesystem::path library = findResourceDirectory("lenses");
   if (ImGui::BeginMenu("Library", !library.empty())) {
+    // The Library panel: every lens with its picture and figures, searched and filtered.
+    if (ImGui::MenuItem("Browse library...")) showLibraryBrowser(state, library);
+    ImGui::Separator();
     std::vector<std::filesystem::path> files;
     for (const std::string& extension : optics::lensFileExtensions())
       for (const auto& file : listFiles(library, extension)) files.push_back(file);

@@ -21,6 +21,8 @@ constexpr PanelSpec kPanels[] = {
     {"distortion", "Distortion", DockArea::Bottom, drawDistortionPanel, true},
     {"field-curves", "Field curves", DockArea::Bottom, drawFieldCurvesPanel, true},
     {"mtf", "MTF", DockArea::Bottom, drawMtfPanel, true},
+    // The library browser: at the plots' height, for two rows of cards.
+    {"library", "Library", DockArea::Bottom, drawLibraryPanel, true},
 };
 
 }  // namespace

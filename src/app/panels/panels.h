@@ -40,6 +40,11 @@ void drawSpotPanel(ViewerState& state, const PanelPlace& place);
 void drawDistortionPanel(ViewerState& state, const PanelPlace& place);
 void drawFieldCurvesPanel(ViewerState& state, const PanelPlace& place);
 void drawMtfPanel(ViewerState& state, const PanelPlace& place);
+void drawLibraryPanel(ViewerState& state, const PanelPlace& place);
+// Lens > Library > Browse library... and a script's `library open`: shows the Library panel on
+// `folder` (read off the UI thread when it is not the one already read, or `reload`).
+void showLibraryBrowser(ViewerState& state, const std::filesystem::path& folder,
+                        bool reload = false);
 
 // The row that starts every analysis panel: the Fields box (fractions of the half diagonal,
 // shared with the cross-section's fans) and "Save plot..." for the plot `plotId`
