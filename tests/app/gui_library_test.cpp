@@ -15,6 +15,7 @@
 #include "support/background_process.h"
 #include "support/png_image.h"
 #include "support/run_process.h"
+#include "support/singlet_lens_text.h"
 #include "support/xdotool_session.h"
 
 namespace lenslab {
@@ -23,20 +24,6 @@ namespace {
 using testing::centreOf;
 using testing::readJson;
 using testing::waitForFile;
-
-std::string guiLibrarySinglet(const std::string& header, double radiusMm,
-                              const std::string& profile, double diameterMm) {
-  const double semi = 0.5 * diameterMm;
-  const double thicknessMm = radiusMm - std::sqrt(radiusMm * radiusMm - semi * semi) + 1.5;
-  char rows[512];
-  std::snprintf(rows, sizeof rows,
-                "stop thickness 1 diameter %g\n"
-                "surface radius %g thickness %.17g nd 1.5 diameter %g%s\n"
-                "surface radius inf thickness %g diameter %g\n",
-                semi, radiusMm, thicknessMm, diameterMm, profile.c_str(), 2.0 * radiusMm,
-                diameterMm);
-  return "lenslab-lens 1\n" + header + rows;
-}
 
 //   file          type           year  f (mm)  aspheric
 //   a-dg.lens     double-Gauss   1953     50   no
@@ -47,14 +34,14 @@ std::string guiLibrarySinglet(const std::string& header, double radiusMm,
 std::filesystem::path writeGuiLibraryFixture(const std::filesystem::path& scratch) {
   const auto folder = scratch / "lenses";
   std::filesystem::create_directories(folder);
-  std::ofstream(folder / "a-dg.lens") << guiLibrarySinglet(
+  std::ofstream(folder / "a-dg.lens") << testing::planoConvexLensText(
       "title Gauss fifty\nsource US 2,532,751\ntype double-Gauss\nyear 1953\n", 25.0, "", 20.0);
-  std::ofstream(folder / "b-tele.lens") << guiLibrarySinglet(
+  std::ofstream(folder / "b-tele.lens") << testing::planoConvexLensText(
       "title Long one\nsource US 3,000,000 (Smith)\ntype telephoto\nyear 1970\n", 100.0, "", 40.0);
-  std::ofstream(folder / "c-phone.lens") << guiLibrarySinglet(
+  std::ofstream(folder / "c-phone.lens") << testing::planoConvexLensText(
       "title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n", 2.0, " a4 -0.001",
       2.0);
-  std::ofstream(folder / "d-dg.lens") << guiLibrarySinglet(
+  std::ofstream(folder / "d-dg.lens") << testing::planoConvexLensText(
       "title Gauss eighty-five\nsource JP 1989-123\ntype double-Gauss\nyear 1989\n", 42.5,
       " conic -0.5 a6 1e-9", 30.0);
   std::ofstream(folder / "f-old.dat") << "# An old singlet, 100 mm\n0 1 0 10\n50 2 1.5 20\ninf "

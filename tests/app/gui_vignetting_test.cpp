@@ -48,7 +48,7 @@ double cornerOverCentre(const testing::PngImage& shot, const Box& image) {
   return corner / centre;
 }
 
-nlohmann::json readJson(const std::filesystem::path& path) {
+nlohmann::json readVignettingJson(const std::filesystem::path& path) {
   std::ifstream in(path);
   return nlohmann::json::parse(in);
 }
@@ -74,7 +74,8 @@ TEST(VignettingToggles, SwitchingOffCos4AndRimsFlattensThePreview) {
   const auto run = testing::runProcess(
       vignettingViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const nlohmann::json on = readJson(scratch / "on.json"), off = readJson(scratch / "off.json");
+  const nlohmann::json on = readVignettingJson(scratch / "on.json"),
+                       off = readVignettingJson(scratch / "off.json");
   EXPECT_EQ(on["state"]["vignetting"]["cos4"], true);
   EXPECT_EQ(on["state"]["vignetting"]["rims"], true);
   EXPECT_EQ(on["state"]["vignetting"]["render_note"], "");
@@ -124,8 +125,8 @@ TEST(VignettingOverlay, TintsTheCornersRedAndShowsAColourBar) {
   const auto run = testing::runProcess(
       vignettingViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const nlohmann::json plain = readJson(scratch / "plain.json");
-  const nlohmann::json overlay = readJson(scratch / "overlay.json");
+  const nlohmann::json plain = readVignettingJson(scratch / "plain.json");
+  const nlohmann::json overlay = readVignettingJson(scratch / "overlay.json");
   EXPECT_EQ(plain["state"]["vignetting"]["overlay"], false);
   EXPECT_EQ(overlay["state"]["vignetting"]["overlay"], true);
   EXPECT_FALSE(plain["widgets"].contains("preview/vignetting-bar"));
@@ -205,7 +206,7 @@ TEST(MeasuredFalloffView, OnTheDemoSceneTheRenderAgreesWithThePlot) {
   const auto run = testing::runProcess(
       vignettingViewer(scratch, "--size 1400x900 --script commands.script"), scratch);
   ASSERT_EQ(run.exitCode, 0) << run.err;
-  const nlohmann::json demo = readJson(scratch / "demo.json");
+  const nlohmann::json demo = readVignettingJson(scratch / "demo.json");
   const auto& vignetting = demo["state"]["vignetting"];
   EXPECT_EQ(vignetting["uniform_field"], true);
   ASSERT_TRUE(vignetting.contains("measured")) << vignetting;
@@ -247,7 +248,7 @@ TEST(MeasuredFalloffView, OnTheDemoSceneTheRenderAgreesWithThePlot) {
   const Box plot = widget(demo, "illumination-plot");
   EXPECT_GT(shot.fractionNear(plot.x0, plot.y0, plot.x1, plot.y1, {0x7e, 0xe0, 0x8a}, 30), 0.001);
 
-  const nlohmann::json chart = readJson(scratch / "chart.json");
+  const nlohmann::json chart = readVignettingJson(scratch / "chart.json");
   EXPECT_EQ(chart["state"]["vignetting"]["uniform_field"], false);
   EXPECT_FALSE(chart["state"]["vignetting"].contains("measured"));
   EXPECT_EQ(readPlotCsv(scratch / "chart.csv").header.size(), 4u);

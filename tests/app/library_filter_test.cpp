@@ -23,41 +23,26 @@
 #include "app/library/library_filter.h"
 #include "optics/lens_loader.h"
 #include "support/run_process.h"
+#include "support/singlet_lens_text.h"
 
 namespace lenslab::app {
 namespace {
 
-std::string librarySinglet(const std::string& header, double radiusMm, const std::string& profile,
-                           double diameterMm) {
-  // Thick enough at the rim: the front surface's sag plus 1.5 mm (the focal length does not
-  // depend on it).
-  const double semi = 0.5 * diameterMm;
-  const double thicknessMm = radiusMm - std::sqrt(radiusMm * radiusMm - semi * semi) + 1.5;
-  char rows[512];
-  std::snprintf(rows, sizeof rows,
-                "stop thickness 1 diameter %g\n"
-                "surface radius %g thickness %.17g nd 1.5 diameter %g%s\n"
-                "surface radius inf thickness %g diameter %g\n",
-                semi, radiusMm, thicknessMm, diameterMm, profile.c_str(), 2.0 * radiusMm,
-                diameterMm);
-  return "lenslab-lens 1\n" + header + rows;
-}
-
 std::filesystem::path writeLibraryFixture() {
   const auto folder = testing::makeTestDirectory("library-fixture");
-  std::ofstream(folder / "a-dg.lens") << librarySinglet(
+  std::ofstream(folder / "a-dg.lens") << testing::planoConvexLensText(
       "title Gauss fifty\nsource US 2,532,751 (Tronnier)\ntype double-Gauss\nyear 1953\n", 25.0, "",
       20.0);
-  std::ofstream(folder / "b-tele.lens") << librarySinglet(
+  std::ofstream(folder / "b-tele.lens") << testing::planoConvexLensText(
       "title Long one\nsource US 3,000,000 (Smith)\ntype telephoto\nyear 1970\n", 100.0, "", 40.0);
-  std::ofstream(folder / "c-phone.lens")
-      << librarySinglet("title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n",
-                        2.0, " a4 -0.001", 2.0);
-  std::ofstream(folder / "d-dg.lens") << librarySinglet(
+  std::ofstream(folder / "c-phone.lens") << testing::planoConvexLensText(
+      "title Phone camera\nsource CN 110,000,000\ntype smartphone\nyear 2019\n", 2.0, " a4 -0.001",
+      2.0);
+  std::ofstream(folder / "d-dg.lens") << testing::planoConvexLensText(
       "title Gauss eighty-five\nsource JP 1989-123\ntype Double-Gauss\nyear 1989\n", 42.5,
       " conic -0.5 a6 1e-9", 30.0);
   std::ofstream(folder / "e-fish.lens")
-      << librarySinglet("title Fish\ntype fisheye\n", 5.0, "", 6.0);
+      << testing::planoConvexLensText("title Fish\ntype fisheye\n", 5.0, "", 6.0);
   // pbrt's columns: radius, thickness, n (0 for the stop's air), aperture diameter.
   std::ofstream(folder / "f-old.dat") << "# An old singlet, 100 mm\n"
                                          "0 1 0 10\n"
