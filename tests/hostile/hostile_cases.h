@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "support/hostile_patent_table.h"
 #include "support/run_process.h"
 
 namespace lenslab::hostile {
@@ -220,19 +221,7 @@ inline std::vector<HostileCase> buildCases(const std::filesystem::path& director
        std::to_string(258 * 4 + 1) + ":6");
   // Patent tables (import/patent_table.h): a valid f/4 table with one thing wrong each.
   const auto patent = [](int replaced, const std::string& row, const std::string& extra = "") {
-    std::vector<std::string> lines = {"f = 52.1  Fno 4.0  2ω 20",
-                                      "Surface r d nd vd",
-                                      "1* 50 5 1.5168 64.2",
-                                      "2 -200 2",
-                                      "3(Stop) INF 3",
-                                      "4 -80 40",
-                                      "",
-                                      "Aspheric coefficients",
-                                      "Surface 1: K = -0.5 A4 = 1.0E-07 A6 = 2.0E-11"};
-    if (replaced > 0) lines[static_cast<std::size_t>(replaced - 1)] = row;
-    std::string text;
-    for (const std::string& line : lines) text += line + "\n";
-    return text + extra;
+    return testing::hostilePatentTable(replaced, row, extra);
   };
   lens("patent-row-without-thickness.txt", patent(4, "2 -200"), "surface 2 has no d", "4:7");
   lens("patent-no-f-number.txt", patent(1, "f = 52.1  2ω 20"), "states no f-number", "5:1");

@@ -10,6 +10,7 @@
 
 #include "optics/lens_system.h"
 #include "optics/limiting_aperture.h"
+#include "support/hostile_patent_table.h"
 
 namespace lenslab::optics {
 namespace {
@@ -665,27 +666,8 @@ std::string firstError(const PatentTableResult& r) {
   return "";
 }
 
-// A valid table (f/4, a stop row on line 5, an aspheric surface 1) with `row` in place of line
-// `replaced` (1-based) and `extra` appended.
-std::string hostileTable(int replaced = 0, const std::string& row = "",
-                         const std::string& extra = "") {
-  std::vector<std::string> lines = {"f = 52.1  Fno 4.0  2ω 20",
-                                    "Surface r d nd vd",
-                                    "1* 50 5 1.5168 64.2",
-                                    "2 -200 2",
-                                    "3(Stop) INF 3",
-                                    "4 -80 40",
-                                    "",
-                                    "Aspheric coefficients",
-                                    "Surface 1: K = -0.5 A4 = 1.0E-07 A6 = 2.0E-11"};
-  if (replaced > 0) lines[static_cast<std::size_t>(replaced - 1)] = row;
-  std::string text;
-  for (const std::string& line : lines) text += line + "\n";
-  return text + extra;
-}
-
 TEST(PatentTableHostile, TheBaseTableOpens) {
-  const PatentTableResult r = readPatentTable(hostileTable(), "base.txt");
+  const PatentTableResult r = readPatentTable(testing::hostilePatentTable(), "base.txt");
   EXPECT_TRUE(r.lens.ok()) << errors(r.lens);
 }
 
@@ -695,47 +677,53 @@ TEST(PatentTableHostile, EachCaseIsAnErrorAtItsPlace) {
     std::string text;
     std::string expected;  // the start of the first error: "line:column: error: message"
   } cases[] = {
-      {"a middle row without its d", hostileTable(4, "2 -200"),
+      {"a middle row without its d", testing::hostilePatentTable(4, "2 -200"),
        "4:7: error: surface 2 has no d (thickness)"},
-      {"a header with no Fno", hostileTable(1, "f = 52.1  2ω 20"),
+      {"a header with no Fno", testing::hostilePatentTable(1, "f = 52.1  2ω 20"),
        "5:1: error: surface 3: the stop has no diameter, and the file states no f-number"},
       {"aspheric data for a surface the table does not have",
-       hostileTable(0, "", "Surface 9: K = 0 A4 = 1.0E-05\n"),
+       testing::hostilePatentTable(0, "", "Surface 9: K = 0 A4 = 1.0E-05\n"),
        "10:1: error: aspheric data for surface 9, which the table does not have"},
-      {"a huge exponent in a coefficient", hostileTable(9, "Surface 1: K = -0.5 A4 = 1.0E+400"),
+      {"a huge exponent in a coefficient",
+       testing::hostilePatentTable(9, "Surface 1: K = -0.5 A4 = 1.0E+400"),
        "9:21: error: aspheric coefficient 'a4' is out of range"},
-      {"a huge exponent in D notation", hostileTable(9, "Surface 1: K = -0.5 A4 = 1.0D+999"),
+      {"a huge exponent in D notation",
+       testing::hostilePatentTable(9, "Surface 1: K = -0.5 A4 = 1.0D+999"),
        "9:21: error: aspheric coefficient 'a4' is out of range"},
-      {"a huge exponent in x10^ notation", hostileTable(9, "Surface 1: K = -0.5 A4 = 1.0×10^999"),
+      {"a huge exponent in x10^ notation",
+       testing::hostilePatentTable(9, "Surface 1: K = -0.5 A4 = 1.0×10^999"),
        "9:21: error: aspheric coefficient 'a4' is out of range"},
-      {"a huge exponent on a radius", hostileTable(4, "2 -2e999 2"),
+      {"a huge exponent on a radius", testing::hostilePatentTable(4, "2 -2e999 2"),
        "4:3: error: r of surface 2 is out of range"},
-      {"a huge thickness", hostileTable(4, "2 -200 1e300"),
+      {"a huge thickness", testing::hostilePatentTable(4, "2 -200 1e300"),
        "4:8: error: d 1e+300 of surface 2 is beyond lenslab's 1e+06 mm"},
-      {"a huge exponent on the f-number", hostileTable(1, "f = 52.1  Fno 2e400  2ω 20"),
+      {"a huge exponent on the f-number",
+       testing::hostilePatentTable(1, "f = 52.1  Fno 2e400  2ω 20"),
        "1:15: error: Fno is out of range"},
-      {"nan as a radius", hostileTable(4, "2 nan 2"),
+      {"nan as a radius", testing::hostilePatentTable(4, "2 nan 2"),
        "4:3: error: 'nan' is not a number (r of surface 2)"},
-      {"inf as a thickness", hostileTable(4, "2 -200 inf"),
+      {"inf as a thickness", testing::hostilePatentTable(4, "2 -200 inf"),
        "4:8: error: d of surface 2 is infinite"},
-      {"NaN as a thickness", hostileTable(4, "2 -200 NaN"),
+      {"NaN as a thickness", testing::hostilePatentTable(4, "2 -200 NaN"),
        "4:8: error: 'NaN' is not a number (d of surface 2)"},
-      {"inf as n_d", hostileTable(3, "1* 50 5 inf 64.2"),
+      {"inf as n_d", testing::hostilePatentTable(3, "1* 50 5 inf 64.2"),
        "3:9: error: n_d inf of surface 1 is not a refractive index (1 to 10)"},
-      {"n_d below 1", hostileTable(3, "1* 50 5 0.5 64.2"),
+      {"n_d below 1", testing::hostilePatentTable(3, "1* 50 5 0.5 64.2"),
        "3:9: error: n_d 0.5 of surface 1 is not a refractive index (1 to 10)"},
-      {"nan as V_d", hostileTable(3, "1* 50 5 1.5168 nan"),
+      {"nan as V_d", testing::hostilePatentTable(3, "1* 50 5 1.5168 nan"),
        "3:16: error: 'nan' is not a number (V_d of surface 1)"},
-      {"-inf as V_d", hostileTable(3, "1* 50 5 1.5168 -inf"),
+      {"-inf as V_d", testing::hostilePatentTable(3, "1* 50 5 1.5168 -inf"),
        "3:16: error: V_d -inf of surface 1 is not an Abbe number"},
-      {"nan as a coefficient", hostileTable(9, "Surface 1: K = -0.5 A4 = nan"), "9:21: error:"},
-      {"inf as the conic constant", hostileTable(9, "Surface 1: K = inf A4 = 1.0E-07"),
+      {"nan as a coefficient", testing::hostilePatentTable(9, "Surface 1: K = -0.5 A4 = nan"),
+       "9:21: error:"},
+      {"inf as the conic constant",
+       testing::hostilePatentTable(9, "Surface 1: K = inf A4 = 1.0E-07"),
        "9:12: error: aspheric coefficient 'k' is infinite"},
-      {"nan as the f-number", hostileTable(1, "f = 52.1  Fno nan  2ω 20"),
+      {"nan as the f-number", testing::hostilePatentTable(1, "f = 52.1  Fno nan  2ω 20"),
        "1:15: error: Fno is not a number ('nan')"},
-      {"a negative f-number", hostileTable(1, "f = 52.1  Fno -4  2ω 20"),
+      {"a negative f-number", testing::hostilePatentTable(1, "f = 52.1  Fno -4  2ω 20"),
        "1:15: error: Fno -4 is below 0.5"},
-      {"inf as the focal length", hostileTable(1, "f = inf  Fno 4.0  2ω 20"),
+      {"inf as the focal length", testing::hostilePatentTable(1, "f = inf  Fno 4.0  2ω 20"),
        "1:5: error: f is out of range"},
   };
   for (const auto& c : cases) {
@@ -747,7 +735,8 @@ TEST(PatentTableHostile, EachCaseIsAnErrorAtItsPlace) {
 }
 
 TEST(PatentTableHostile, AHugeRadiusIsFlatWithANote) {
-  const PatentTableResult r = readPatentTable(hostileTable(4, "2 1e300 2"), "huge.txt");
+  const PatentTableResult r =
+      readPatentTable(testing::hostilePatentTable(4, "2 1e300 2"), "huge.txt");
   ASSERT_TRUE(r.lens.ok()) << errors(r.lens);
   EXPECT_TRUE(r.lens.lens->prescription.surfaces[1].isFlat());
   EXPECT_NE(errors(r.lens).find("huge.txt:4:3: note: r 1e+300 of surface 2 is taken as flat"),
