@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fuzz_check.h"
+#include "imported_lens_checks.h"
 #include "optics/import/patent_table.h"
 #include "optics/lens_system.h"
 #include "optics/native_lens_file.h"
@@ -22,19 +23,6 @@
 namespace {
 
 bool finiteOrAbsent(const std::optional<double>& value) { return !value || std::isfinite(*value); }
-
-bool patentSamePrescription(const lenslab::optics::Prescription& a,
-                            const lenslab::optics::Prescription& b) {
-  if (a.surfaces.size() != b.surfaces.size()) return false;
-  for (std::size_t i = 0; i < a.surfaces.size(); ++i) {
-    const auto &s = a.surfaces[i], &t = b.surfaces[i];
-    if (s.radiusMm != t.radiusMm || s.thicknessMm != t.thicknessMm || s.indexD != t.indexD ||
-        s.apertureDiameterMm != t.apertureDiameterMm || s.abbeD != t.abbeD ||
-        !(s.profile == t.profile))
-      return false;
-  }
-  return true;
-}
 
 void checkUnderstood(const lenslab::optics::PatentTable& table) {
   using lenslab::fuzz::check;
@@ -73,26 +61,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!result.lens.ok()) return 0;
 
   const optics::LensFile& lens = *result.lens.lens;
-  fuzz::check(lens.rowLines.size() == lens.prescription.surfaces.size(),
-              "every surface has its line");
   fuzz::check(lens.prescription.stopIndex().has_value(), "an accepted table has one stop");
-  fuzz::check(optics::LensSystem::build(lens.prescription).ok(),
-              "an accepted table builds a LensSystem");
-  const optics::DesignConditions& design = lens.design;
-  for (double nm : design.wavelengths.nanometres)
-    fuzz::check(std::isfinite(nm) && nm > 0.0, "design wavelengths are finite and positive");
-  for (double value : design.fields.values)
-    fuzz::check(std::isfinite(value), "design fields are finite");
-  fuzz::check(
-      !design.aperture || (std::isfinite(design.aperture->value) && design.aperture->value > 0.0),
-      "the design aperture is finite and positive");
-  fuzz::check(!lens.publishedEflMm || std::isfinite(*lens.publishedEflMm),
-              "the published focal length is finite");
-
-  const optics::LensFileResult again =
-      optics::parseNativeLensText(optics::formatNativeLensText(lens), "written.lens");
-  fuzz::check(again.ok(), "lenslab's .lens text of a table's lens reads back");
-  fuzz::check(patentSamePrescription(again.lens->prescription, lens.prescription),
-              "the .lens text reads back to the identical prescription");
+  fuzz::checkImportedLens(lens);
   return 0;
 }
